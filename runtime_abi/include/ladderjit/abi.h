@@ -1,0 +1,157 @@
+/* ladderjit runtime ABI v1: the process image, per-instance state, fault counters and the
+ * scan-entry signatures shared by the interpreter, the JIT and AOT shared objects.
+ *
+ * Everything a program touches lives in one host-owned `lj_state`, so code can be swapped at a
+ * tick boundary without moving state. The layout is pinned with static asserts below; the
+ * lowering builds its matching llvm::StructType from the same offsets (lowering/AbiTypes.cpp).
+ * Plain C so a controller host can include it without C++. */
+#ifndef LADDERJIT_ABI_H
+#define LADDERJIT_ABI_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define LJ_ABI_VERSION 1u
+
+/* Element counts of every area (DIALECT.md section 1). */
+#define LJ_X_COUNT 513
+#define LJ_Y_COUNT 513
+#define LJ_F_COUNT 3120
+#define LJ_G_COUNT 3120
+#define LJ_R_COUNT 400
+#define LJ_W_COUNT 200
+#define LJ_D_COUNT 100
+#define LJ_B_COUNT 50
+#define LJ_P_COUNT 200
+/* Timers T0..T127 and T300..T427 (likewise counters) live in 256 slots:
+ * slot = n for n < 128, slot = n - 300 + 128 for n >= 300. */
+#define LJ_TC_SLOTS 256
+/* Instance numbers of PLS / PLF / ALT blocks: 0..511 (docs/dialect-notes.md). */
+#define LJ_BLOCK_SLOTS 512
+/* Edge-memory bits of edge contacts (LDP...ORF) and CTR instances, one byte per instance. */
+#define LJ_EDGE_SLOTS 16384
+
+/* Fault codes returned by scan entries and recorded in lj_state.last_fault. */
+#define LJ_FAULT_NONE 0
+#define LJ_FAULT_WATCHDOG 1 /* more than max_backward_steps backward jumps/loop iterations */
+
+/** The process image: every area at its exact width, little-endian. */
+typedef struct lj_image {
+  int32_t D[LJ_D_COUNT];
+  int32_t B[LJ_B_COUNT];
+  int32_t P[LJ_P_COUNT];
+  int16_t F[LJ_F_COUNT];
+  int16_t G[LJ_G_COUNT];
+  int16_t W[LJ_W_COUNT];
+  uint8_t X[LJ_X_COUNT];
+  uint8_t Y[LJ_Y_COUNT];
+  uint8_t R[LJ_R_COUNT];
+  uint8_t pad_[6];
+} lj_image;
+
+/** One timer (TMRB on-delay or STMR off-delay). */
+typedef struct lj_timer {
+  int64_t start_ms;   /* now_ms when the current timing started */
+  int64_t elapsed_ms; /* current value in ms, capped at the preset (read as `Tn`) */
+  uint8_t out;        /* output bit (read as `Tn.0`) */
+  uint8_t running;    /* TMRB: input on and timing; STMR: off-delay in progress */
+  uint8_t pad_[6];
+} lj_timer;
+
+/** One counter (CTRC / CTUD state; CTR keeps its value in a user register). */
+typedef struct lj_counter {
+  int32_t value; /* current count (read as `Cn`) */
+  uint8_t out;   /* "count reached" bit (read as `Cn.0`) */
+  uint8_t prev;  /* last level of the count input (rising-edge detection) */
+  uint8_t pad_[2];
+} lj_counter;
+
+/** Complete per-instance state of one running program. Zero-initialise before init. */
+typedef struct lj_state {
+  lj_image img;
+  lj_timer T[LJ_TC_SLOTS];
+  lj_counter C[LJ_TC_SLOTS];
+  uint8_t pls_prev[LJ_BLOCK_SLOTS];
+  uint8_t plf_prev[LJ_BLOCK_SLOTS];
+  uint8_t alt_prev[LJ_BLOCK_SLOTS];
+  uint8_t alt_state[LJ_BLOCK_SLOTS];
+  uint8_t edge[LJ_EDGE_SLOTS]; /* per-instance edge memory, indices assigned by the verifier */
+  uint64_t now_ms;             /* written by the host before every tick */
+  uint64_t max_backward_steps; /* watchdog limit per tick (default 1,000,000) */
+  uint64_t steps;              /* backward steps taken in the current tick */
+  uint32_t plc2_next_slice;    /* slice the next tick runs */
+  uint32_t last_fault;         /* fault code of the last tick, LJ_FAULT_* */
+  uint32_t fault_watchdog;     /* ticks aborted by the watchdog */
+  uint32_t fault_index;        /* indirect accesses out of range */
+  uint32_t fault_divzero;      /* divisions by zero (harmless, counted) */
+  uint32_t pad_;
+} lj_state;
+
+/** Scan entries. Each returns LJ_FAULT_NONE or a fault code (the part stopped there). `ctx` is
+ * the engine's own context (the interpreter's instance); compiled code ignores it. */
+typedef uint32_t (*lj_part_fn)(void *ctx, lj_state *s);
+typedef uint32_t (*lj_slice_fn)(void *ctx, lj_state *s, uint32_t slice);
+
+/** The entry points of one compiled program, as the JIT returns them and an AOT .so exports. */
+typedef struct lj_entries {
+  void *ctx;
+  lj_part_fn init;
+  lj_part_fn plc1;
+  lj_slice_fn plc2_slice;
+  uint32_t plc2_slice_count; /* >= 1 */
+} lj_entries;
+
+/** Timer / counter slot of number n, or -1 when n is not a valid T/C number. */
+static inline int lj_tc_slot(int32_t n) {
+  if (n >= 0 && n < 128) return (int)n;
+  if (n >= 300 && n < 428) return (int)(n - 300 + 128);
+  return -1;
+}
+
+/** Reset a state to power-up (everything zero) with the default watchdog limit. */
+void lj_state_reset(lj_state *s);
+
+/** Run the init part: clears the per-tick step counter, then init. */
+uint32_t lj_run_init(lj_state *s, const lj_entries *e);
+
+/** One tick (DIALECT.md section 4): PLC1 completely, then the next PLC2 slice. The host writes
+ * inputs and now_ms before calling. A watchdog abort in PLC1 skips the slice; the slice index
+ * advances whatever the slice returned. Returns the tick's fault code (also in last_fault). */
+uint32_t lj_tick(lj_state *s, const lj_entries *e);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+/* Layout pins. Changing any of these is an ABI change: bump LJ_ABI_VERSION. */
+#ifdef __cplusplus
+#define LJ_STATIC_ASSERT static_assert
+#else
+#define LJ_STATIC_ASSERT _Static_assert
+#endif
+LJ_STATIC_ASSERT(offsetof(lj_image, D) == 0, "image D");
+LJ_STATIC_ASSERT(offsetof(lj_image, B) == 400, "image B");
+LJ_STATIC_ASSERT(offsetof(lj_image, P) == 600, "image P");
+LJ_STATIC_ASSERT(offsetof(lj_image, F) == 1400, "image F");
+LJ_STATIC_ASSERT(offsetof(lj_image, G) == 7640, "image G");
+LJ_STATIC_ASSERT(offsetof(lj_image, W) == 13880, "image W");
+LJ_STATIC_ASSERT(offsetof(lj_image, X) == 14280, "image X");
+LJ_STATIC_ASSERT(offsetof(lj_image, Y) == 14793, "image Y");
+LJ_STATIC_ASSERT(offsetof(lj_image, R) == 15306, "image R");
+LJ_STATIC_ASSERT(sizeof(lj_image) == 15712, "image size");
+LJ_STATIC_ASSERT(sizeof(lj_timer) == 24, "timer size");
+LJ_STATIC_ASSERT(sizeof(lj_counter) == 8, "counter size");
+LJ_STATIC_ASSERT(offsetof(lj_state, T) == 15712, "state T");
+LJ_STATIC_ASSERT(offsetof(lj_state, C) == 15712 + 256 * 24, "state C");
+LJ_STATIC_ASSERT(offsetof(lj_state, pls_prev) == 15712 + 256 * 24 + 256 * 8, "state pls");
+LJ_STATIC_ASSERT(offsetof(lj_state, edge) == 15712 + 256 * 24 + 256 * 8 + 4 * 512, "state edge");
+LJ_STATIC_ASSERT(offsetof(lj_state, now_ms) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384,
+                 "state now_ms");
+LJ_STATIC_ASSERT(sizeof(lj_state) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48,
+                 "state size");
+
+#endif /* LADDERJIT_ABI_H */
