@@ -33,4 +33,7 @@ std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::strin
 /// used by `ladderjit check --print` and golden tests.
 std::string printProgram(const VerifiedProgram &prog);
 
+/// An operand as STL text: `X1.0`, `D5`, `L3`, `S7`, `-12`.
+std::string formatOperand(const Operand &op);
+
 } // namespace lj

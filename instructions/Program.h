@@ -37,10 +37,18 @@ struct Stmt {
   SourceLoc loc;
 };
 
+/// A line the parser dropped although its mnemonic was known (bad operands or count). The
+/// verifier applies its stack effect, silently, so one bad operand causes no follow-on errors.
+struct DroppedStmt {
+  int32_t before = 0; ///< index in ParsedProgram::stmts of the next kept statement
+  Op op = Op::LDT;
+};
+
 /// What the parser produces: statements in source order (markers included).
 struct ParsedProgram {
   std::string file; ///< name used in diagnostics
   std::vector<Stmt> stmts;
+  std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
 };
 
 /// A half-open range of statement indices [begin, end).
