@@ -1,1 +1,733 @@
-// placeholder, replaced by its owner
+// The reference interpreter (the oracle). Written straight from DIALECT.md, docs/dialect-notes.md
+// and the reference tables; it shares no code with the lowering or the JIT (STYLE.md 8).
+//
+// Shape: operands are decoded once into byte offsets of lj_state; each scope (part, subroutine,
+// loop body) runs as a statement range with explicit ST/MS stacks. Recursion is a compile error,
+// so every subroutine can own one preallocated pair of stacks; loops run on their scope's stacks
+// (they are emptied at LOOP and NEXT anyway).
+#include "instructions/Interpreter.h"
+
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
+namespace lj {
+
+// Bit operands are reduced to "one byte and a mask", which matches DIALECT.md 1 (bit k of a
+// little-endian element) only on a little-endian host; the ABI is little-endian by definition.
+static_assert(std::endian::native == std::endian::little, "lj_state is little-endian");
+
+namespace {
+
+/// An operand decoded once: a constant, an element (read rule by width) or one bit.
+struct Ref {
+  enum class Kind : uint8_t { None, Const, U8, I16, I32, Bit } kind = Kind::None;
+  uint8_t mask = 0;  ///< Bit: mask inside the byte at `off`
+  uint32_t off = 0;  ///< byte offset inside lj_state
+  int32_t value = 0; ///< Const
+};
+
+/// One statement ready to run.
+struct Code {
+  Op op = Op::LDT;
+  Ref a, b, c;         ///< operands in table order (L/S operands are not decoded)
+  int32_t target = -1; ///< JMP: its LBL; LOOP: its NEXT; CALL: index into subs
+  int32_t slot = -1;   ///< edge / timer / counter / PLS-PLF-ALT slot
+};
+
+/// How a statement range ended.
+enum class Flow { Done, Return, Watchdog };
+
+/// The ST and MS stacks of one active scope. Entries are 0/1; top is [sp - 1].
+struct Frame {
+  uint8_t *st;
+  uint8_t *ms;
+  int32_t stCap, msCap;
+  int32_t sp = 0, msp = 0;
+
+  void clear() { sp = msp = 0; }
+  void push(bool v) {
+    assert(sp < stCap && "ST deeper than the verifier said");
+    st[sp++] = v;
+  }
+  bool pop() {
+    assert(sp > 0 && "ST underflow the verifier should have rejected");
+    return st[--sp] != 0;
+  }
+  bool top() const {
+    assert(sp > 0);
+    return st[sp - 1] != 0;
+  }
+  void setTop(bool v) {
+    assert(sp > 0);
+    st[sp - 1] = v;
+  }
+  /// EN of a single-input block: ST0, or 1 (left rail) when ST is empty (DIALECT.md 3).
+  bool input() const { return sp > 0 ? st[sp - 1] != 0 : true; }
+  /// Output of a single-input block: replaces ST0, or is pushed when ST was empty.
+  void output(bool v) {
+    if (sp > 0)
+      st[sp - 1] = v;
+    else
+      push(v);
+  }
+};
+
+uint32_t areaOffset(Area a) {
+  switch (a) {
+  case Area::X:
+    return offsetof(lj_state, img.X);
+  case Area::Y:
+    return offsetof(lj_state, img.Y);
+  case Area::F:
+    return offsetof(lj_state, img.F);
+  case Area::G:
+    return offsetof(lj_state, img.G);
+  case Area::R:
+    return offsetof(lj_state, img.R);
+  case Area::W:
+    return offsetof(lj_state, img.W);
+  case Area::D:
+    return offsetof(lj_state, img.D);
+  case Area::B:
+    return offsetof(lj_state, img.B);
+  case Area::P:
+    return offsetof(lj_state, img.P);
+  default:
+    return 0;
+  }
+}
+
+/// Element width in bytes of the numeric areas (DIALECT.md 1 table).
+uint32_t areaBytes(Area a) {
+  switch (a) {
+  case Area::X:
+  case Area::Y:
+  case Area::R:
+    return 1;
+  case Area::F:
+  case Area::G:
+  case Area::W:
+    return 2;
+  case Area::D:
+  case Area::B:
+  case Area::P:
+    return 4;
+  default:
+    return 0;
+  }
+}
+
+Ref decode(const Operand &o) {
+  Ref r;
+  switch (o.kind) {
+  case Operand::Kind::None:
+    return r;
+  case Operand::Kind::Const:
+    r.kind = Ref::Kind::Const;
+    r.value = o.value;
+    return r;
+  case Operand::Kind::Reg: {
+    uint32_t bytes = areaBytes(o.area);
+    if (bytes == 0) return r; // L, S: handled through StmtInfo::target
+    r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
+    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
+    return r;
+  }
+  case Operand::Kind::Bit: {
+    r.kind = Ref::Kind::Bit;
+    if (o.area == Area::T || o.area == Area::C) {
+      // Tn.0 / Cn.0 read the output bit of the timer / counter (dialect-notes "Function blocks").
+      int slot = lj_tc_slot(o.index);
+      assert(slot >= 0 && o.bit == 0);
+      r.off = o.area == Area::T
+                  ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
+                                          offsetof(lj_timer, out))
+                  : static_cast<uint32_t>(offsetof(lj_state, C) + slot * sizeof(lj_counter) +
+                                          offsetof(lj_counter, out));
+      r.mask = 1;
+      return r;
+    }
+    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * areaBytes(o.area) +
+            static_cast<uint32_t>(o.bit / 8);
+    r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
+    return r;
+  }
+  }
+  return r;
+}
+
+unsigned char *bytes(lj_state *s) { return reinterpret_cast<unsigned char *>(s); }
+
+/// Read rule of DIALECT.md 1: X/Y/R zero-extend, F/G/W sign-extend, D/B/P as is.
+int32_t readValue(lj_state *s, const Ref &r) {
+  const unsigned char *p = bytes(s) + r.off;
+  switch (r.kind) {
+  case Ref::Kind::Const:
+    return r.value;
+  case Ref::Kind::U8:
+    return *p;
+  case Ref::Kind::I16: {
+    int16_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  case Ref::Kind::I32: {
+    int32_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  case Ref::Kind::Bit:
+    return (*p & r.mask) != 0;
+  case Ref::Kind::None:
+    break;
+  }
+  assert(false && "reading an operand that is not a value");
+  return 0;
+}
+
+/// A write keeps the low 8/16/32 bits of the destination (DIALECT.md 1).
+void writeValue(lj_state *s, const Ref &r, int32_t v) {
+  unsigned char *p = bytes(s) + r.off;
+  switch (r.kind) {
+  case Ref::Kind::U8:
+    *p = static_cast<uint8_t>(static_cast<uint32_t>(v) & 0xFFu);
+    return;
+  case Ref::Kind::I16: {
+    uint16_t w = static_cast<uint16_t>(static_cast<uint32_t>(v) & 0xFFFFu);
+    std::memcpy(p, &w, sizeof w);
+    return;
+  }
+  case Ref::Kind::I32:
+    std::memcpy(p, &v, sizeof v);
+    return;
+  default:
+    assert(false && "writing an operand that is not a register");
+  }
+}
+
+bool readBit(lj_state *s, const Ref &r) { return (bytes(s)[r.off] & r.mask) != 0; }
+
+void writeBit(lj_state *s, const Ref &r, bool v) {
+  unsigned char &b = bytes(s)[r.off];
+  b = static_cast<unsigned char>(v ? (b | r.mask) : (b & ~r.mask));
+}
+
+// int32 two's-complement arithmetic without undefined behaviour (DIALECT.md 1).
+int32_t wrap(uint32_t v) { return static_cast<int32_t>(v); }
+int32_t addWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) + uint32_t(b)); }
+int32_t subWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) - uint32_t(b)); }
+int32_t mulWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) * uint32_t(b)); }
+
+/// Edge contact on one instance's memory m (DIALECT.md 3): always updates m.
+bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising) {
+  bool m = s->edge[slot] != 0;
+  s->edge[slot] = cur;
+  return rising ? (cur && !m) : (!cur && m);
+}
+
+/// The common counter algorithm of hnc8-functions-1.md 3.3, verbatim. `cv` and `prev` are the
+/// instance's value and edge memory; returns the output.
+bool countStep(bool cnt, bool s1, bool dn, bool rst, int32_t pv, int32_t &cv, bool &prev) {
+  int32_t init = s1 ? 1 : 0;
+  bool out;
+  if (rst) {
+    cv = dn ? pv : init;
+    out = false;
+  } else {
+    if (cnt && !prev) {
+      if (!dn)
+        cv = (cv >= pv) ? init : cv + 1; // cv < pv <= INT32_MAX: no overflow
+      else
+        cv = (cv <= init) ? pv : cv - 1; // cv > init >= 0: no overflow
+    }
+    out = dn ? (cv <= init) : (cv >= pv);
+  }
+  prev = cnt;
+  return out;
+}
+
+/// Timer preset in ms, 64-bit; a negative preset counts as 0 (dialect-notes "Timers").
+int64_t presetMs(int32_t unit, int32_t len) {
+  static constexpr int64_t kUnitMs[4] = {1, 1000, 60000, 3600000};
+  int64_t p = int64_t(len) * kUnitMs[unit & 3];
+  return p < 0 ? 0 : p;
+}
+
+int64_t elapsedSince(const lj_state *s, int64_t start) {
+  int64_t now = static_cast<int64_t>(s->now_ms);
+  return now > start ? now - start : 0;
+}
+
+/// Whether a verifier-assigned slot indexes its lj_state array (checked once, in asserts).
+[[maybe_unused]] bool slotInRange(StateKind k, int32_t slot) {
+  switch (k) {
+  case StateKind::None:
+    return true;
+  case StateKind::Edge:
+    return slot >= 0 && slot < LJ_EDGE_SLOTS;
+  case StateKind::Timer:
+  case StateKind::Counter:
+    return slot >= 0 && slot < LJ_TC_SLOTS;
+  default:
+    return slot >= 0 && slot < LJ_BLOCK_SLOTS;
+  }
+}
+
+} // namespace
+
+struct Interpreter::Impl {
+  const VerifiedProgram &prog;
+  std::vector<Code> code; ///< parallel to prog.stmts
+  // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
+  std::vector<std::vector<uint8_t>> stStore, msStore;
+
+  explicit Impl(const VerifiedProgram &p);
+  Frame frame(size_t scope);
+  uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);
+  Flow run(lj_state *s, Frame &f, int32_t begin, int32_t end);
+  Flow call(lj_state *s, int32_t sub);
+  void block(lj_state *s, Frame &f, const Code &c);
+};
+
+Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
+  code.resize(p.stmts.size());
+  for (size_t i = 0; i < p.stmts.size(); ++i) {
+    const Stmt &st = p.stmts[i];
+    Code &c = code[i];
+    c.op = st.op;
+    c.a = decode(st.ops[0]);
+    c.b = decode(st.ops[1]);
+    c.c = decode(st.ops[2]);
+    c.target = p.info[i].target;
+    c.slot = p.info[i].slot;
+    assert(slotInRange(instrInfo(c.op).state, c.slot) && "state slot out of range");
+    assert((c.op != Op::JMP && c.op != Op::LOOP) ||
+           (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
+    assert(c.op != Op::CALL || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));
+  }
+  // Stack capacity per scope: the deepest "depth before" in the scope, plus one because a
+  // statement raises the depth by at most one.
+  auto need = [&](StmtRange r, int32_t &st, int32_t &ms) {
+    for (int32_t i = r.begin; i < r.end; ++i) {
+      st = std::max(st, p.info[i].depth + 1);
+      ms = std::max(ms, p.info[i].msDepth + 1);
+    }
+  };
+  int32_t st = std::max(p.maxDepth, 0) + 1, ms = std::max(p.maxMsDepth, 0) + 1;
+  need(p.init, st, ms);
+  need(p.plc1, st, ms);
+  need(p.plc2, st, ms);
+  for (int32_t d : p.sliceDepth) st = std::max(st, d + 1);
+  stStore.emplace_back(st);
+  msStore.emplace_back(ms);
+  for (const Subroutine &sub : p.subs) {
+    int32_t sst = 1, sms = 1;
+    need(sub.body, sst, sms);
+    stStore.emplace_back(sst);
+    msStore.emplace_back(sms);
+  }
+}
+
+Frame Interpreter::Impl::frame(size_t scope) {
+  return Frame{stStore[scope].data(), msStore[scope].data(),
+               static_cast<int32_t>(stStore[scope].size()),
+               static_cast<int32_t>(msStore[scope].size())};
+}
+
+uint32_t Interpreter::Impl::runPart(lj_state *s, StmtRange range, int32_t startDepth) {
+  Frame f = frame(0);
+  // A part (or a PLC2 slice) starts with empty MS; a slice starts with the dead entries the
+  // previous slice left, as zeros (dialect-notes "PLC2 slicing").
+  for (int32_t i = 0; i < startDepth; ++i) f.push(false);
+  return run(s, f, range.begin, range.end) == Flow::Watchdog ? LJ_FAULT_WATCHDOG : LJ_FAULT_NONE;
+}
+
+Flow Interpreter::Impl::call(lj_state *s, int32_t sub) {
+  // The callee starts with empty stacks of its own; the caller's frame is untouched.
+  Frame f = frame(1 + static_cast<size_t>(sub));
+  const StmtRange body = prog.subs[sub].body;
+  Flow r = run(s, f, body.begin, body.end);
+  return r == Flow::Watchdog ? Flow::Watchdog : Flow::Done;
+}
+
+Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
+  int32_t pc = begin;
+  while (pc < end) {
+    const Code &c = code[pc];
+    // The dynamic depth must equal the verifier's static one, except at a label reached by a
+    // jump (the LBL empties the stacks anyway).
+    assert((c.op == Op::LBL || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
+    switch (c.op) {
+    // Contacts (hnc8-core.md 4.2).
+    case Op::LD:
+      f.push(readBit(s, c.a));
+      break;
+    case Op::LDI:
+      f.push(!readBit(s, c.a));
+      break;
+    case Op::LDT:
+      f.push(true);
+      break;
+    case Op::LDP:
+      f.push(edgeSample(s, c.slot, readBit(s, c.a), true));
+      break;
+    case Op::LDF:
+      f.push(edgeSample(s, c.slot, readBit(s, c.a), false));
+      break;
+    case Op::AND:
+      f.setTop(f.top() && readBit(s, c.a));
+      break;
+    case Op::ANI:
+      f.setTop(f.top() && !readBit(s, c.a));
+      break;
+    case Op::OR:
+      f.setTop(f.top() || readBit(s, c.a));
+      break;
+    case Op::ORI:
+      f.setTop(f.top() || !readBit(s, c.a));
+      break;
+    // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
+    case Op::ANDP: {
+      bool e = edgeSample(s, c.slot, readBit(s, c.a), true);
+      f.setTop(f.top() && e);
+      break;
+    }
+    case Op::ANDF: {
+      bool e = edgeSample(s, c.slot, readBit(s, c.a), false);
+      f.setTop(f.top() && e);
+      break;
+    }
+    case Op::ORP: {
+      bool e = edgeSample(s, c.slot, readBit(s, c.a), true);
+      f.setTop(f.top() || e);
+      break;
+    }
+    case Op::ORF: {
+      bool e = edgeSample(s, c.slot, readBit(s, c.a), false);
+      f.setTop(f.top() || e);
+      break;
+    }
+    case Op::ANB: {
+      bool t = f.pop();
+      f.setTop(f.top() && t);
+      break;
+    }
+    case Op::ORB: {
+      bool t = f.pop();
+      f.setTop(f.top() || t);
+      break;
+    }
+    case Op::MPS:
+      assert(f.msp < f.msCap);
+      f.ms[f.msp++] = f.top();
+      break;
+    case Op::MRD:
+      assert(f.msp > 0);
+      f.setTop(f.ms[f.msp - 1] != 0);
+      break;
+    case Op::MPP:
+      assert(f.msp > 0);
+      f.setTop(f.ms[--f.msp] != 0);
+      break;
+    // Coils leave ST unchanged.
+    case Op::OUT:
+      writeBit(s, c.a, f.top());
+      break;
+    case Op::OOUT:
+      writeBit(s, c.a, !f.top());
+      break;
+    case Op::SET:
+      writeBit(s, c.a, readBit(s, c.a) || f.top());
+      break;
+    case Op::RST:
+      writeBit(s, c.a, readBit(s, c.a) && !f.top());
+      break;
+
+    // Structure: both stacks are emptied (dialect-notes "Stacks and blocks").
+    case Op::IEND:
+    case Op::END1:
+    case Op::END2:
+    case Op::SP:
+    case Op::SPE:
+    case Op::LBL:
+    case Op::NEXT:
+      f.clear();
+      break;
+    case Op::JMP:
+      if (f.input()) {
+        // A taken backward jump counts one watchdog step, checked before jumping.
+        if (c.target < pc && ++s->steps > s->max_backward_steps) return Flow::Watchdog;
+        pc = c.target; // the LBL runs next and empties the stacks
+        continue;
+      }
+      break;
+    case Op::CALL:
+      if (f.input() && call(s, c.target) == Flow::Watchdog) return Flow::Watchdog;
+      break;
+    case Op::RETN:
+      if (f.input()) return Flow::Return;
+      break;
+    case Op::LOOP: {
+      int32_t n = readValue(s, c.a); // read once on entry
+      const int32_t next = c.target;
+      f.clear();
+      for (int32_t i = 0; i < n; ++i) {
+        if (++s->steps > s->max_backward_steps) return Flow::Watchdog;
+        f.clear();
+        Flow r = run(s, f, pc + 1, next);
+        if (r != Flow::Done) return r; // RETN inside a loop leaves the subroutine
+      }
+      f.clear();
+      pc = next + 1;
+      continue;
+    }
+    default:
+      block(s, f, c);
+      break;
+    }
+    ++pc;
+  }
+  return Flow::Done;
+}
+
+// Function blocks with data (DIALECT.md 5, hnc8-functions-1/-2.md).
+void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
+  switch (c.op) {
+  case Op::ADD:
+  case Op::SUB:
+  case Op::MUL:
+  case Op::WAND:
+  case Op::WOR:
+  case Op::WXOR: {
+    bool en = f.input();
+    if (en) {
+      int32_t a = readValue(s, c.a), b = readValue(s, c.b), r = 0;
+      switch (c.op) {
+      case Op::ADD:
+        r = addWrap(a, b);
+        break;
+      case Op::SUB:
+        r = subWrap(a, b);
+        break;
+      case Op::MUL:
+        r = mulWrap(a, b);
+        break;
+      case Op::WAND:
+        r = a & b;
+        break;
+      case Op::WOR:
+        r = a | b;
+        break;
+      default:
+        r = a ^ b;
+        break;
+      }
+      writeValue(s, c.c, r);
+    }
+    f.output(en);
+    return;
+  }
+  case Op::DIV: {
+    bool en = f.input(), out = en;
+    if (en) {
+      int32_t a = readValue(s, c.a), b = readValue(s, c.b);
+      if (b == 0) {
+        ++s->fault_divzero; // nothing written, output 0
+        out = false;
+      } else {
+        writeValue(s, c.c, (a == INT32_MIN && b == -1) ? INT32_MIN : a / b);
+      }
+    }
+    f.output(out);
+    return;
+  }
+  case Op::INC:
+  case Op::DEC:
+  case Op::NEG: {
+    bool en = f.input();
+    if (en) {
+      int32_t x = readValue(s, c.a);
+      int32_t r = c.op == Op::INC ? addWrap(x, 1) : c.op == Op::DEC ? subWrap(x, 1) : subWrap(0, x);
+      writeValue(s, c.a, r);
+    }
+    f.output(en);
+    return;
+  }
+  case Op::MOV: {
+    bool en = f.input();
+    if (en) writeValue(s, c.b, readValue(s, c.a));
+    f.output(en);
+    return;
+  }
+  case Op::CMP:
+    f.output(f.input() && readValue(s, c.a) <= readValue(s, c.b));
+    return;
+  case Op::LT:
+    f.output(f.input() && readValue(s, c.a) < readValue(s, c.b));
+    return;
+  case Op::COIN:
+    f.output(f.input() && readValue(s, c.a) == readValue(s, c.b));
+    return;
+  case Op::ACMP: {
+    int32_t lo = readValue(s, c.a), hi = readValue(s, c.b), x = readValue(s, c.c);
+    f.output(f.input() && lo < x && x < hi);
+    return;
+  }
+
+  // Counters: pop k inputs (first loaded = input 1 = deepest), push the output.
+  case Op::CTR: {
+    bool rst = f.pop(), dn = f.pop(), s1 = f.pop(), cnt = f.pop();
+    int32_t cv = readValue(s, c.a);
+    bool prev = s->edge[c.slot] != 0;
+    bool out = countStep(cnt, s1, dn, rst, readValue(s, c.b), cv, prev);
+    writeValue(s, c.a, cv);
+    s->edge[c.slot] = prev;
+    f.push(out);
+    return;
+  }
+  case Op::CTRC:
+  case Op::CTUD: {
+    bool rst = f.pop(), dn = false, s1 = false;
+    if (c.op == Op::CTUD) {
+      dn = f.pop();
+      s1 = f.pop();
+    }
+    bool cnt = f.pop();
+    lj_counter &k = s->C[c.slot];
+    bool prev = k.prev != 0;
+    bool out = countStep(cnt, s1, dn, rst, readValue(s, c.b), k.value, prev);
+    k.prev = prev;
+    k.out = out;
+    f.push(out);
+    return;
+  }
+
+  // Timers (dialect-notes "Timers"); state in T[slot], time from now_ms.
+  case Op::TMRB: {
+    lj_timer &t = s->T[c.slot];
+    int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
+    if (f.input()) {
+      if (!t.running) {
+        t.running = 1;
+        t.start_ms = static_cast<int64_t>(s->now_ms);
+      }
+      int64_t el = elapsedSince(s, t.start_ms);
+      t.out = el >= preset;
+      t.elapsed_ms = std::min(el, preset);
+    } else {
+      t.running = 0;
+      t.out = 0;
+      t.elapsed_ms = 0;
+    }
+    f.output(t.out != 0);
+    return;
+  }
+  case Op::STMR: {
+    lj_timer &t = s->T[c.slot];
+    int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
+    if (f.input()) {
+      t.out = 1;
+      t.running = 0;
+      t.elapsed_ms = 0;
+    } else if (t.out) {
+      if (!t.running) {
+        t.running = 1;
+        t.start_ms = static_cast<int64_t>(s->now_ms);
+      }
+      int64_t el = elapsedSince(s, t.start_ms);
+      if (el >= preset) {
+        t.out = 0;
+        t.running = 0;
+        t.elapsed_ms = preset;
+      } else {
+        t.elapsed_ms = el;
+      }
+    }
+    f.output(t.out != 0);
+    return;
+  }
+
+  // Power-flow edge and toggle blocks; prev = EN on every execution.
+  case Op::PLS: {
+    bool en = f.input();
+    bool out = en && !s->pls_prev[c.slot];
+    s->pls_prev[c.slot] = en;
+    f.output(out);
+    return;
+  }
+  case Op::PLF: {
+    bool en = f.input();
+    bool out = !en && s->plf_prev[c.slot];
+    s->plf_prev[c.slot] = en;
+    f.output(out);
+    return;
+  }
+  case Op::ALT: {
+    bool en = f.input();
+    if (en && !s->alt_prev[c.slot]) s->alt_state[c.slot] = !s->alt_state[c.slot];
+    s->alt_prev[c.slot] = en;
+    f.output(s->alt_state[c.slot] != 0);
+    return;
+  }
+  default:
+    assert(false && "instruction without interpreter semantics");
+    return;
+  }
+}
+
+namespace {
+uint32_t initEntry(void *ctx, lj_state *s) { return static_cast<Interpreter *>(ctx)->runInit(s); }
+uint32_t plc1Entry(void *ctx, lj_state *s) { return static_cast<Interpreter *>(ctx)->runPlc1(s); }
+uint32_t sliceEntry(void *ctx, lj_state *s, uint32_t k) {
+  return static_cast<Interpreter *>(ctx)->runPlc2Slice(s, k);
+}
+} // namespace
+
+Interpreter::Interpreter(const VerifiedProgram &prog) : impl_(std::make_unique<Impl>(prog)) {
+  entries_.ctx = this;
+  entries_.init = initEntry;
+  entries_.plc1 = plc1Entry;
+  entries_.plc2_slice = sliceEntry;
+  entries_.plc2_slice_count = sliceCount();
+}
+
+Interpreter::~Interpreter() = default;
+
+uint32_t Interpreter::runInit(lj_state *s) { return impl_->runPart(s, impl_->prog.init, 0); }
+
+uint32_t Interpreter::runPlc1(lj_state *s) { return impl_->runPart(s, impl_->prog.plc1, 0); }
+
+uint32_t Interpreter::runPlc2Slice(lj_state *s, uint32_t slice) {
+  const VerifiedProgram &p = impl_->prog;
+  if (p.slices.empty()) return slice == 0 ? impl_->runPart(s, p.plc2, 0) : LJ_FAULT_NONE;
+  if (slice >= p.slices.size()) return LJ_FAULT_NONE;
+  int32_t depth = slice < p.sliceDepth.size() ? p.sliceDepth[slice] : 0;
+  return impl_->runPart(s, p.slices[slice], depth);
+}
+
+uint32_t Interpreter::sliceCount() const {
+  return std::max<uint32_t>(1u, static_cast<uint32_t>(impl_->prog.slices.size()));
+}
+
+namespace {
+/// The interpreter behind the common Engine interface (instructions/Engine.h).
+class InterpreterEngine final : public Engine {
+public:
+  explicit InterpreterEngine(const VerifiedProgram &prog) : interp_(prog) {}
+  const lj_entries &entries() const override { return interp_.entries(); }
+  const char *name() const override { return "interp"; }
+
+private:
+  Interpreter interp_;
+};
+} // namespace
+
+std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog) {
+  return std::make_unique<InterpreterEngine>(prog);
+}
+
+} // namespace lj

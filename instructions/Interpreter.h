@@ -2,6 +2,7 @@
 // statement with explicit ST/MS stacks, written straight from DIALECT.md (STYLE.md 8).
 #pragma once
 
+#include "instructions/Engine.h"
 #include "instructions/Program.h"
 #include "ladderjit/abi.h"
 
@@ -10,17 +11,23 @@
 namespace lj {
 
 /// Runs one verified program. Holds no program state of its own: everything persistent is in
-/// the lj_state passed to each call, exactly as for compiled code.
+/// the lj_state passed to each call, exactly as for compiled code. The interpreter only keeps
+/// scratch stacks (preallocated) and the operands decoded once at construction.
 class Interpreter {
 public:
+  /// Binds to `prog`, which must outlive the interpreter.
   explicit Interpreter(const VerifiedProgram &prog);
   ~Interpreter();
   Interpreter(const Interpreter &) = delete;
   Interpreter &operator=(const Interpreter &) = delete;
 
+  /// Run the init part. Returns LJ_FAULT_NONE or the fault that stopped it.
   uint32_t runInit(lj_state *s);
+  /// Run PLC1 completely (or until a fault).
   uint32_t runPlc1(lj_state *s);
+  /// Run PLC2 slice `slice` (an index >= sliceCount() runs nothing).
   uint32_t runPlc2Slice(lj_state *s, uint32_t slice);
+  /// Number of PLC2 slices (>= 1).
   uint32_t sliceCount() const;
 
   /// Entry table bound to this interpreter, for lj_tick / lj_run_init. Valid while `this` lives.

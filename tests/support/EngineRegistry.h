@@ -1,0 +1,33 @@
+// The registry of engines every execution test runs on (interpreter, JIT, ...).
+#pragma once
+
+#include "instructions/Engine.h"
+#include "instructions/Program.h"
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace lj::test {
+
+/// Builds one engine for a verified program (which outlives the engine). Returns null and sets
+/// `error` when the engine cannot be built.
+using MakeEngineFn =
+    std::function<std::unique_ptr<Engine>(const VerifiedProgram &prog, std::string &error)>;
+
+/// One registered engine: a short name (used in test names, so [A-Za-z0-9_]) and its factory.
+struct EngineFactory {
+  std::string name;
+  MakeEngineFn make;
+};
+
+/// Every registered engine, the reference interpreter first. To add an engine, add ONE line to
+/// the list in EngineRegistry.cpp (and link its library in tests/support/CMakeLists.txt).
+const std::vector<EngineFactory> &registeredEngines();
+
+/// GoogleTest prints parameters with this.
+inline std::ostream &operator<<(std::ostream &os, const EngineFactory &f) { return os << f.name; }
+
+} // namespace lj::test
