@@ -5,6 +5,7 @@
 #include "instructions/Engine.h"
 #include "instructions/Program.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,9 @@ enum class Tier { Fast, Optimizing };
 
 struct JitOptions {
   Tier tier = Tier::Optimizing;
+  /// Statements per generated function for long bodies (0 = one function per body). Only cut
+  /// where no logic-stack entry is live, so the result never depends on it.
+  int32_t chunkStatements = 150;
 };
 
 /// Wall-clock time of each compile phase, in microseconds.
@@ -29,5 +33,30 @@ std::unique_ptr<Engine> compile(const VerifiedProgram &prog, const JitOptions &o
 
 /// The LLVM IR the JIT would compile, after the given -O level (0..3).
 bool emitLlvm(const VerifiedProgram &prog, int optLevel, std::string &out, std::string &error);
+
+/// One ORC JIT instance of one tier holding any number of program versions, each in its own
+/// JITDylib (STYLE.md 10). For hot reload: compile v2 while v1 keeps running, swap the entry
+/// table at a tick boundary, then destroy v1's engine, which removes its JITDylib. Engines keep
+/// their session alive. Safe to compile from several threads.
+class Session : public std::enable_shared_from_this<Session> {
+public:
+  /// A new JIT for `tier`; null with `error` set when the host target is unusable.
+  static std::shared_ptr<Session> create(Tier tier, std::string &error);
+  ~Session();
+  Session(const Session &) = delete;
+  Session &operator=(const Session &) = delete;
+
+  /// Compile `prog` as a new version in this session (same contract as jit::compile; the
+  /// session's tier applies, `opts.tier` is ignored).
+  std::unique_ptr<Engine> compile(const VerifiedProgram &prog, const JitOptions &opts,
+                                  std::string &error, CompileTimes *times = nullptr);
+  Tier tier() const;
+
+  struct Impl; ///< ORC state, defined in jit/OrcSession.cpp
+
+private:
+  explicit Session(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
 
 } // namespace lj::jit

@@ -1,0 +1,26 @@
+// Shared JIT plumbing below the facade: one-time native target setup, the host target machine
+// and the IR optimization pipelines of both tiers.
+#pragma once
+
+#include <llvm/IR/Module.h>
+#include <llvm/Support/CodeGen.h>
+#include <llvm/Support/Error.h>
+#include <llvm/Target/TargetMachine.h>
+
+#include <memory>
+
+namespace lj::jit {
+
+/// Initialize the native target, asm printer and parser once per process (thread-safe).
+void initNativeTarget();
+
+/// A TargetMachine for the host CPU and features at codegen level `level`.
+llvm::Expected<std::unique_ptr<llvm::TargetMachine>> hostTargetMachine(llvm::CodeGenOptLevel level);
+
+/// Run the new-PM pipeline of -O`level` (0..3) on `m`; `tm` supplies the cost model.
+void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm);
+
+/// Monotonic time in microseconds, for CompileTimes.
+double nowUs();
+
+} // namespace lj::jit

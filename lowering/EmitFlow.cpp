@@ -1,0 +1,222 @@
+// Statement dispatch and control flow (docs/dialect-notes.md "Flow"): JMP/LBL become basic
+// blocks, LOOP/NEXT a counted loop with a phi, CALL a call of the subroutine's function whose
+// fault code is propagated, and the watchdog `if (++steps > max) return LJ_FAULT_WATCHDOG`.
+#include "lowering/FunctionEmitter.h"
+
+#include "ladderjit/abi.h"
+
+namespace lj::lower {
+
+FunctionEmitter::FunctionEmitter(ModuleContext &mc, llvm::Function *fn, llvm::Value *state,
+                                 uint32_t retnStatus)
+    : mc_(mc), prog_(mc.prog), fn_(fn),
+      b_(fn->getContext(), llvm::InstSimplifyFolder(mc.mod.getDataLayout())), state_(state),
+      cache_(mc.layout, b_, state), retnStatus_(retnStatus) {
+  b_.SetInsertPoint(llvm::BasicBlock::Create(fn->getContext(), "entry", fn));
+}
+
+llvm::Error FunctionEmitter::fail(int32_t i, const std::string &what) const {
+  const Stmt &s = prog_.stmts[i];
+  return llvm::createStringError("%s:%d:%d: internal error: lowering %s: %s", prog_.file.c_str(),
+                                 s.loc.line, s.loc.col, instrInfo(s.op).mnemonic, what.c_str());
+}
+
+llvm::BasicBlock *FunctionEmitter::newBlock(const char *name) {
+  return llvm::BasicBlock::Create(fn_->getContext(), name, fn_);
+}
+
+void FunctionEmitter::continueIn(llvm::BasicBlock *bb) {
+  cache_.flush();
+  b_.CreateBr(bb);
+  b_.SetInsertPoint(bb);
+}
+
+llvm::BasicBlock *FunctionEmitter::labelBlock(int32_t lblIndex) {
+  auto [it, fresh] = labels_.try_emplace(lblIndex, nullptr);
+  if (fresh) {
+    it->second = llvm::BasicBlock::Create(
+        fn_->getContext(), "L" + std::to_string(prog_.stmts[lblIndex].ops[0].index), fn_);
+  }
+  return it->second;
+}
+
+llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth) {
+  st_.assign(static_cast<size_t>(deadDepth), b_.getFalse()); // dead entries read as 0
+  ms_.clear();
+  for (int32_t i = r.begin; i < r.end; ++i) {
+    const StmtInfo &info = prog_.info[i];
+    if (static_cast<int32_t>(st_.size()) != info.depth ||
+        static_cast<int32_t>(ms_.size()) != info.msDepth)
+      return fail(i, "stack depth " + std::to_string(st_.size()) + "/" +
+                         std::to_string(ms_.size()) + " differs from the verifier's " +
+                         std::to_string(info.depth) + "/" + std::to_string(info.msDepth));
+    if (llvm::Error e = emitStmt(i)) return e;
+  }
+  if (!loops_.empty()) return fail(loops_.back().loopIndex, "LOOP without NEXT in this body");
+  return llvm::Error::success();
+}
+
+llvm::Error FunctionEmitter::finish() {
+  cache_.flush();
+  b_.CreateRet(b_.getInt32(LJ_FAULT_NONE));
+  for (auto &[index, bb] : labels_)
+    if (!bb->getTerminator()) return fail(index, "jump target outside the lowered body");
+  return llvm::Error::success();
+}
+
+llvm::Error FunctionEmitter::emitStmt(int32_t i) {
+  const Stmt &s = prog_.stmts[i];
+  const InstrInfo &row = instrInfo(s.op);
+  switch (s.op) {
+  case Op::JMP:
+    return emitJmp(i);
+  case Op::LBL:
+    emitLabel(i);
+    return llvm::Error::success();
+  case Op::LOOP:
+    emitLoop(i);
+    return llvm::Error::success();
+  case Op::NEXT:
+    return emitNext(i);
+  case Op::CALL:
+    return emitCall(i);
+  case Op::RETN:
+    emitRetn();
+    return llvm::Error::success();
+  default:
+    break;
+  }
+  switch (row.stack) {
+  case StackRule::Structural: // markers, SP, SPE: both stacks emptied
+    st_.clear();
+    ms_.clear();
+    return llvm::Error::success();
+  case StackRule::Block: {
+    const StmtInfo &info = prog_.info[i];
+    if (row.inputs == 1 && info.hasInput == st_.empty())
+      return fail(i, "verifier's hasInput disagrees with the ST depth");
+    return emitBlock(i);
+  }
+  default:
+    return emitBasic(i);
+  }
+}
+
+void FunctionEmitter::watchdogStep(llvm::BasicBlock *next) {
+  // Checked in the current block after the cache was flushed, so an abort leaves the image
+  // exactly as written so far. The abort path stores the incremented count too.
+  StateLoc stepsL = mc_.layout.scalar(Scalar::Steps);
+  llvm::Value *steps = b_.CreateAdd(cache_.load(stepsL), b_.getInt64(1), "steps.next");
+  llvm::Value *max = cache_.load(mc_.layout.scalar(Scalar::MaxSteps));
+  cache_.store(stepsL, steps);
+  cache_.flush();
+  if (!abort_) {
+    abort_ = llvm::BasicBlock::Create(fn_->getContext(), "watchdog", fn_);
+    llvm::IRBuilder<> ab(abort_);
+    ab.CreateRet(ab.getInt32(LJ_FAULT_WATCHDOG));
+  }
+  b_.CreateCondBr(b_.CreateICmpUGT(steps, max), abort_, next);
+}
+
+llvm::Error FunctionEmitter::emitJmp(int32_t i) {
+  const StmtInfo &info = prog_.info[i];
+  if (info.target < 0 || prog_.stmts[info.target].op != Op::LBL)
+    return fail(i, "jump target is not a LBL");
+  llvm::Value *en = enable(); // ST is left as it is
+  llvm::BasicBlock *target = labelBlock(info.target);
+  llvm::BasicBlock *cont = newBlock("nojump");
+  cache_.flush();
+  if (info.backward) {
+    llvm::BasicBlock *taken = newBlock("backjump");
+    b_.CreateCondBr(en, taken, cont);
+    b_.SetInsertPoint(taken);
+    watchdogStep(target);
+  } else {
+    b_.CreateCondBr(en, target, cont);
+  }
+  b_.SetInsertPoint(cont);
+  return llvm::Error::success();
+}
+
+void FunctionEmitter::emitLabel(int32_t i) {
+  continueIn(labelBlock(i));
+  st_.clear();
+  ms_.clear();
+}
+
+void FunctionEmitter::emitLoop(int32_t i) {
+  // The count is read once on entry; each iteration (the first included) is one watchdog step
+  // taken before its body; a count <= 0 skips the body.
+  llvm::Value *count = readInt(prog_.stmts[i].ops[0]);
+  cache_.flush();
+  llvm::BasicBlock *pre = b_.GetInsertBlock();
+  llvm::BasicBlock *header = newBlock("loop");
+  llvm::BasicBlock *check = newBlock("loop.step");
+  llvm::BasicBlock *body = newBlock("loop.body");
+  llvm::BasicBlock *exit = newBlock("loop.end");
+  b_.CreateBr(header);
+  b_.SetInsertPoint(header);
+  llvm::PHINode *remaining = b_.CreatePHI(b_.getInt32Ty(), 2, "remaining");
+  remaining->addIncoming(count, pre);
+  // Built without the simplifying folder: with only its entry value yet, the phi would let
+  // InstSimplify fold the test to a constant.
+  llvm::Value *more =
+      b_.Insert(new llvm::ICmpInst(llvm::ICmpInst::ICMP_SGT, remaining, b_.getInt32(0)));
+  b_.CreateCondBr(more, check, exit);
+  b_.SetInsertPoint(check);
+  watchdogStep(body);
+  b_.SetInsertPoint(body);
+  loops_.push_back({i, header, remaining, exit});
+  st_.clear();
+  ms_.clear();
+}
+
+llvm::Error FunctionEmitter::emitNext(int32_t i) {
+  if (loops_.empty() || prog_.info[i].target != loops_.back().loopIndex)
+    return fail(i, "NEXT does not close the innermost LOOP");
+  Loop l = loops_.back();
+  loops_.pop_back();
+  cache_.flush();
+  l.remaining->addIncoming(b_.Insert(llvm::BinaryOperator::CreateSub(l.remaining, b_.getInt32(1))),
+                           b_.GetInsertBlock());
+  b_.CreateBr(l.header);
+  b_.SetInsertPoint(l.exit);
+  st_.clear();
+  ms_.clear();
+  return llvm::Error::success();
+}
+
+llvm::Error FunctionEmitter::emitCall(int32_t i) {
+  const StmtInfo &info = prog_.info[i];
+  if (info.target < 0 || info.target >= static_cast<int32_t>(mc_.subFns.size()))
+    return fail(i, "CALL of an unknown subroutine");
+  // The caller's ST/MS are compile-time values here, so they survive the call untouched.
+  llvm::Value *en = enable();
+  llvm::BasicBlock *cont = newBlock("after.call");
+  cache_.flush();
+  if (auto *c = llvm::dyn_cast<llvm::ConstantInt>(en); !(c && c->isOne())) {
+    llvm::BasicBlock *doCall = newBlock("call");
+    b_.CreateCondBr(en, doCall, cont);
+    b_.SetInsertPoint(doCall);
+  }
+  llvm::Value *status = b_.CreateCall(mc_.subFns[info.target], {state_}, "status");
+  llvm::BasicBlock *propagate = newBlock("call.fault");
+  b_.CreateCondBr(b_.CreateICmpNE(status, b_.getInt32(LJ_FAULT_NONE)), propagate, cont);
+  b_.SetInsertPoint(propagate);
+  b_.CreateRet(status); // a watchdog abort stops the whole tick
+  b_.SetInsertPoint(cont);
+  return llvm::Error::success();
+}
+
+void FunctionEmitter::emitRetn() {
+  llvm::Value *en = enable();
+  cache_.flush();
+  llvm::BasicBlock *ret = newBlock("retn");
+  llvm::BasicBlock *cont = newBlock("noretn");
+  b_.CreateCondBr(en, ret, cont);
+  b_.SetInsertPoint(ret);
+  b_.CreateRet(b_.getInt32(retnStatus_));
+  b_.SetInsertPoint(cont);
+}
+
+} // namespace lj::lower

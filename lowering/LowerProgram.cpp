@@ -1,0 +1,151 @@
+// Assembles the module of one program: a function per subroutine, the init / PLC1 entries, one
+// function per PLC2 slice behind the lj_plc2 switch, and long bodies cut into chunk functions.
+#include "lowering/FunctionEmitter.h"
+#include "lowering/Lower.h"
+
+#include "ladderjit/abi.h"
+
+#include <llvm/IR/Verifier.h>
+#include <llvm/Support/raw_ostream.h>
+
+namespace lj::lower {
+
+namespace {
+
+enum class FnKind { Entry, SliceEntry, Body };
+
+// Attributes promised for the state pointer: it is the only way generated code reaches memory,
+// so LLVM may keep image bytes in registers and merge stores.
+void markStateParam(llvm::Function *fn, unsigned argNo) {
+  llvm::AttrBuilder ab(fn->getContext());
+  ab.addAttribute(llvm::Attribute::NoAlias);
+  ab.addAttribute(llvm::Attribute::NoCapture);
+  ab.addAttribute(llvm::Attribute::NonNull);
+  ab.addAttribute(llvm::Attribute::NoUndef);
+  ab.addAlignmentAttr(llvm::Align(8));
+  ab.addDereferenceableAttr(StateLayout::stateSize());
+  fn->addParamAttrs(argNo, ab);
+  fn->getArg(argNo)->setName("s");
+}
+
+llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind kind) {
+  llvm::LLVMContext &ctx = m.getContext();
+  llvm::Type *i32 = llvm::Type::getInt32Ty(ctx);
+  llvm::Type *ptr = llvm::PointerType::getUnqual(ctx);
+  std::vector<llvm::Type *> params;
+  if (kind == FnKind::Body) params = {ptr};
+  if (kind == FnKind::Entry) params = {ptr, ptr};
+  if (kind == FnKind::SliceEntry) params = {ptr, ptr, i32};
+  auto linkage = kind == FnKind::Body ? llvm::GlobalValue::InternalLinkage
+                                      : llvm::GlobalValue::ExternalLinkage;
+  llvm::Function *fn =
+      llvm::Function::Create(llvm::FunctionType::get(i32, params, false), linkage, name, m);
+  fn->addFnAttr(llvm::Attribute::NoUnwind);
+  markStateParam(fn, kind == FnKind::Body ? 0 : 1);
+  if (kind != FnKind::Body) {
+    fn->getArg(0)->setName("ctx"); // the engine context; compiled code does not use it
+    if (kind == FnKind::SliceEntry) fn->getArg(2)->setName("slice");
+  }
+  return fn;
+}
+
+llvm::Value *stateArg(llvm::Function *fn) { return fn->getArg(fn->arg_size() == 1 ? 0 : 1); }
+
+// Lowers one body (a part, a slice or a subroutine) into `fn`, cutting it into chunk functions
+// when it is long. In a subroutine (`isSub`), a RETN inside a chunk returns kStatusReturn,
+// which the driver turns into a normal return.
+llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
+                      bool isSub) {
+  std::vector<StmtRange> chunks = planChunks(mc.prog, r, mc.opts.chunkStatements);
+  if (chunks.size() <= 1) {
+    FunctionEmitter fe(mc, fn, stateArg(fn), LJ_FAULT_NONE);
+    if (llvm::Error e = fe.emitRange(r, deadDepth)) return e;
+    return fe.finish();
+  }
+  llvm::LLVMContext &ctx = fn->getContext();
+  llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", fn));
+  llvm::BasicBlock *stop = llvm::BasicBlock::Create(ctx, "stop", fn);
+  llvm::PHINode *stopStatus = llvm::PHINode::Create(b.getInt32Ty(), chunks.size(), "status", stop);
+  for (size_t k = 0; k < chunks.size(); ++k) {
+    llvm::Function *cfn =
+        makeFunction(mc.mod, fn->getName().str() + ".c" + std::to_string(k), FnKind::Body);
+    cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
+    FunctionEmitter fe(mc, cfn, cfn->getArg(0), isSub ? kStatusReturn : LJ_FAULT_NONE);
+    int32_t dead = k == 0 ? deadDepth : mc.prog.info[chunks[k].begin].depth;
+    if (llvm::Error e = fe.emitRange(chunks[k], dead)) return e;
+    if (llvm::Error e = fe.finish()) return e;
+    llvm::Value *st = b.CreateCall(cfn, {stateArg(fn)}, "st");
+    llvm::BasicBlock *next = llvm::BasicBlock::Create(ctx, "next", fn);
+    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), stop, next);
+    stopStatus->addIncoming(st, b.GetInsertBlock());
+    b.SetInsertPoint(next);
+  }
+  b.CreateRet(b.getInt32(LJ_FAULT_NONE));
+  b.SetInsertPoint(stop);
+  llvm::Value *status = stopStatus;
+  if (isSub) // a RETN ends the subroutine normally
+    status = b.CreateSelect(b.CreateICmpEQ(status, b.getInt32(kStatusReturn)),
+                            b.getInt32(LJ_FAULT_NONE), status);
+  b.CreateRet(status);
+  return llvm::Error::success();
+}
+
+void emitSliceSwitch(llvm::Function *plc2, const std::vector<llvm::Function *> &slices) {
+  llvm::LLVMContext &ctx = plc2->getContext();
+  llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", plc2));
+  llvm::BasicBlock *none = llvm::BasicBlock::Create(ctx, "no.slice", plc2);
+  llvm::SwitchInst *sw = b.CreateSwitch(plc2->getArg(2), none, slices.size());
+  for (size_t k = 0; k < slices.size(); ++k) {
+    llvm::BasicBlock *bb = llvm::BasicBlock::Create(ctx, "slice" + std::to_string(k), plc2);
+    sw->addCase(b.getInt32(static_cast<uint32_t>(k)), bb);
+    b.SetInsertPoint(bb);
+    b.CreateRet(b.CreateCall(slices[k], {stateArg(plc2)}));
+  }
+  b.SetInsertPoint(none);
+  b.CreateRet(b.getInt32(LJ_FAULT_NONE)); // lj_tick never asks for a slice that does not exist
+}
+
+} // namespace
+
+llvm::Expected<std::unique_ptr<llvm::Module>>
+lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
+             const std::string &triple, const LowerOptions &opts) {
+  auto mod = std::make_unique<llvm::Module>(prog.file.empty() ? "program" : prog.file, ctx);
+  mod->setDataLayout(dl);
+  mod->setTargetTriple(triple);
+  llvm::Expected<StateLayout> layout = StateLayout::create(ctx, dl, opts.readableNames);
+  if (!layout) return layout.takeError();
+  if (prog.info.size() != prog.stmts.size())
+    return llvm::createStringError("verified program without statement facts");
+  ModuleContext mc{prog, *mod, *layout, opts, {}};
+
+  for (const Subroutine &sub : prog.subs)
+    mc.subFns.push_back(makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body));
+  for (size_t k = 0; k < prog.subs.size(); ++k)
+    if (llvm::Error e = lowerBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
+
+  llvm::Function *init = makeFunction(*mod, kInitSymbol, FnKind::Entry);
+  if (llvm::Error e = lowerBody(mc, init, prog.init, 0, false)) return e;
+  llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
+  if (llvm::Error e = lowerBody(mc, plc1, prog.plc1, 0, false)) return e;
+
+  std::vector<StmtRange> slices = prog.slices;
+  if (slices.empty()) slices.push_back(prog.plc2);
+  std::vector<llvm::Function *> sliceFns;
+  for (size_t k = 0; k < slices.size(); ++k) {
+    llvm::Function *fn = makeFunction(*mod, "lj_plc2.s" + std::to_string(k), FnKind::Body);
+    fn->addFnAttr(llvm::Attribute::NoInline);
+    int32_t dead = k < prog.sliceDepth.size() ? prog.sliceDepth[k] : 0;
+    if (llvm::Error e = lowerBody(mc, fn, slices[k], dead, false)) return e;
+    sliceFns.push_back(fn);
+  }
+  emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
+
+  std::string msg;
+  llvm::raw_string_ostream os(msg);
+  if (llvm::verifyModule(*mod, &os))
+    return llvm::createStringError("internal error: lowered module is invalid: %s", msg.c_str());
+  return mod;
+}
+
+} // namespace lj::lower
