@@ -3,18 +3,68 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
+#include <memory>
+#include <string>
+
+namespace lj {
+class Engine;
+struct VerifiedProgram;
+} // namespace lj
 
 namespace lj::fuzz {
+
+/// Which JIT tier each program is compiled with.
+enum class TierMode : uint8_t { Mixed, Fast, Optimizing };
 
 struct FuzzOptions {
   uint64_t seed = 1;
   uint64_t programs = 1000;
   uint32_t ticks = 50;
+  // Additive extensions (defaults keep the CLI contract `--seed/--programs/--ticks`).
+  TierMode tiers = TierMode::Mixed; ///< Mixed: chosen per program from the seed
+  int32_t statements = 60;          ///< approximate size of each generated program
+  bool minimize = true;             ///< delta-debug mismatches before printing them
+  uint32_t minimizeBudget = 1500;   ///< engine runs per minimization
+  uint32_t maxReports = 3;          ///< mismatches printed in full; later ones are only counted
 };
 
+/// Campaign counters, also printed as the summary.
+struct FuzzStats {
+  uint64_t programs = 0;
+  uint64_t notVerified = 0;  ///< generated programs the verifier rejected (generator/verifier bug)
+  uint64_t mismatches = 0;   ///< programs whose states or fault codes differed
+  uint64_t engineErrors = 0; ///< programs the engine under test failed to build
+  uint64_t ticks = 0;
+  uint64_t statements = 0; ///< PLC1 + PLC2-slice statements of all ticks run (static count)
+  uint64_t watchdogTicks = 0;
+  uint64_t divZero = 0;    ///< division-by-zero faults counted by the programs
+  uint64_t multiSlice = 0; ///< programs whose PLC2 ran in more than one slice
+  uint64_t fastPrograms = 0, optimizingPrograms = 0;
+  double seconds = 0;
+  /// Mismatches + engine errors + programs that did not verify.
+  uint64_t failures() const { return notVerified + mismatches + engineErrors; }
+};
+
+/// Builds the engine under test for one verified program (which outlives it). `fastTier` selects
+/// the JIT tier. Returns null and sets `error` on failure.
+using EngineFactory = std::function<std::unique_ptr<Engine>(const VerifiedProgram &, bool fastTier,
+                                                            std::string &error)>;
+
+/// Whether this build links the JIT (target ladderjit_jit existed at configure time).
+bool haveJit();
+
+/// The JIT as the engine under test; without the JIT it always fails with a clear message.
+EngineFactory jitFactory();
+
 /// Run the campaign, printing a summary (and any minimized mismatch) to `out`.
-/// Returns the number of mismatching programs (0 = pass).
+/// Returns the number of mismatching programs (0 = pass); programs that did not verify and
+/// engine build failures count as mismatches here. Without the JIT it prints an error and
+/// returns a non-zero count.
 uint64_t run(const FuzzOptions &opts, std::ostream &out);
+
+/// The campaign against any engine (tests inject faulty engines to check the harness).
+FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate);
 
 } // namespace lj::fuzz

@@ -1,0 +1,47 @@
+// JIT compile latency per program size and tier, with the lower / optimize / codegen phase
+// times (targets: optimizing < 1 s, fast < 150 ms for 10k statements).
+#include "bench/BenchPrograms.h"
+#include "jit/Jit.h"
+
+namespace lj::bench {
+namespace {
+
+void BM_Compile(benchmark::State &state, jit::Tier tier) {
+  const int n = static_cast<int>(state.range(0));
+  const VerifiedProgram &p = verifiedProgram(n);
+  jit::JitOptions o;
+  o.tier = tier;
+  jit::CompileTimes sum;
+  Stopwatch sw;
+  for (auto _ : state) {
+    std::string err;
+    jit::CompileTimes t;
+    std::unique_ptr<Engine> e = jit::compile(p, o, err, &t);
+    if (!e) {
+      state.SkipWithError(("JIT compile failed: " + err).c_str());
+      break;
+    }
+    benchmark::DoNotOptimize(e.get());
+    sum.lowerUs += t.lowerUs;
+    sum.optimizeUs += t.optimizeUs;
+    sum.codegenUs += t.codegenUs;
+  }
+  const double it = static_cast<double>(std::max<int64_t>(state.iterations(), 1));
+  state.counters["lower_ms"] = sum.lowerUs / it / 1000;
+  state.counters["optimize_ms"] = sum.optimizeUs / it / 1000;
+  state.counters["codegen_ms"] = sum.codegenUs / it / 1000;
+  setStatementCounters(state, n, sw.ns());
+}
+
+// Each compile of a 10k program takes long enough that a handful of iterations is plenty.
+BENCHMARK_CAPTURE(BM_Compile, fast, jit::Tier::Fast)
+    ->Apply(programSizes)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Compile, optimizing, jit::Tier::Optimizing)
+    ->Apply(programSizes)
+    ->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace lj::bench
+
+BENCHMARK_MAIN();

@@ -1,0 +1,410 @@
+// Random valid STL programs for differential fuzzing, driven by the instruction table: every row
+// that is not a flow instruction is chosen and given operands from its OperandSpecs, stack rule
+// and input count alone; a structural planner places parts, jumps, loops and subroutines.
+#include "bench/GenPools.h"
+#include "bench/ProgramGenerator.h"
+#include "instructions/InstrTable.h"
+
+#include <array>
+#include <cassert>
+#include <cctype>
+#include <map>
+
+namespace lj::gen {
+
+namespace {
+
+/// Flow instructions whose placement needs the planner (labels, subroutines, scopes).
+bool isPlanned(const InstrInfo &in) {
+  if (in.stack == StackRule::Structural) return true;
+  for (int i = 0; i < in.operandCount; ++i)
+    if (hasArea(in.operands[i].areas, Area::L) || hasArea(in.operands[i].areas, Area::S))
+      return true;
+  return in.op == Op::RETN; // only valid inside a subroutine
+}
+
+/// Per-program mix of stack behaviour: deep block nesting, or flat rungs with dead entries
+/// (which give the slice planner rung boundaries).
+struct Profile {
+  std::array<int, 9> weight; ///< indexed by StackRule
+  int32_t depthCap;
+};
+
+constexpr Profile kProfiles[] = {
+    // Push Combine BlockPop MpsPush MsRead MsPop Coil Structural Block
+    {{6, 5, 6, 2, 1, 2, 4, 0, 8}, 16}, // deep ANB/ORB nesting
+    {{4, 6, 1, 1, 1, 1, 6, 0, 8}, 8},  // rung style, entries die
+    {{3, 3, 2, 3, 3, 3, 4, 0, 12}, 6}, // MPS branches and blocks
+};
+
+class RandomGen {
+public:
+  explicit RandomGen(const RandomOptions &o) : o_(o), rng_(o.seed) {
+    for (const InstrInfo &in : instrTable())
+      if (!isPlanned(in)) generic_[static_cast<int>(in.stack)].push_back(&in);
+  }
+
+  GenProgram run();
+
+private:
+  void emit(std::string s) {
+    // Case-insensitive mnemonics (DIALECT.md 2): now and then exercise the lexer with lower case.
+    if (rng_.chance(2))
+      for (char &c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    lines_.push_back(std::move(s));
+  }
+  int32_t size() const { return static_cast<int32_t>(lines_.size()); }
+
+  bool eligible(const InstrInfo &in) const;
+  void emitGeneric(const InstrInfo &in);
+  void emitOneGeneric();
+  void emitPush();
+  std::string operand(const InstrInfo &in, int i);
+  std::string regAddress(AreaMask mask, bool writes);
+  std::string bitAddress(AreaMask mask, bool writes);
+  int32_t constFor(const InstrInfo &in, int i);
+  int32_t tcFor(const InstrInfo &in);
+  void closeMs();
+  void resetStacks() { depth_ = ms_ = 0; }
+
+  void block(int32_t budget, int nest);
+  void forwardJump(int32_t budget, int nest);
+  void backwardJump(int32_t budget, int nest);
+  void loop(int32_t budget, int nest);
+  void call();
+  void retn();
+
+  RandomOptions o_;
+  Rng rng_;
+  Profile prof_{};
+  std::array<std::vector<const InstrInfo *>, 9> generic_;
+  std::vector<std::string> lines_;
+  int32_t depth_ = 0, ms_ = 0;
+  int32_t nextLabel_ = 0;
+  int32_t nextGuard_ = 0;
+  std::vector<int32_t> subNumbers_;  ///< subroutine i may call only j > i (no recursion)
+  int32_t curSub_ = -1;              ///< -1 in the main parts
+  std::map<int32_t, Op> tcOwner_[2]; ///< timer / counter number -> the one kind using it
+};
+
+bool RandomGen::eligible(const InstrInfo &in) const {
+  switch (in.stack) {
+  case StackRule::Push:
+    return depth_ < prof_.depthCap;
+  case StackRule::Combine:
+  case StackRule::Coil:
+    return depth_ >= 1;
+  case StackRule::BlockPop:
+    return depth_ >= 2;
+  case StackRule::MpsPush:
+    return depth_ >= 1 && ms_ < o_.maxMsDepth;
+  case StackRule::MsRead:
+  case StackRule::MsPop:
+    return depth_ >= 1 && ms_ >= 1;
+  case StackRule::Block:
+    return in.inputs <= 1 || depth_ >= in.inputs;
+  case StackRule::Structural:
+    return false;
+  }
+  return false;
+}
+
+void RandomGen::emitOneGeneric() {
+  std::array<int, 9> w{};
+  for (int r = 0; r < 9; ++r) {
+    bool any = false;
+    for (const InstrInfo *in : generic_[r]) any = any || eligible(*in);
+    w[r] = any ? prof_.weight[r] : 0;
+  }
+  // An empty ST leaves only pushes and blocks; a block that needs an input with an empty ST
+  // only draws a warning, so prefer a push there.
+  if (depth_ == 0) w[static_cast<int>(StackRule::Block)] = 1;
+  const auto &rows = generic_[rng_.weighted(w)];
+  for (;;) {
+    const InstrInfo *in = rows[rng_.below(rows.size())];
+    if (eligible(*in)) return emitGeneric(*in);
+  }
+}
+
+void RandomGen::emitPush() {
+  const auto &rows = generic_[static_cast<int>(StackRule::Push)];
+  emitGeneric(*rows[rng_.below(rows.size())]);
+}
+
+void RandomGen::emitGeneric(const InstrInfo &in) {
+  std::string s = in.mnemonic;
+  if (in.op == Op::OUT && rng_.chance(5)) s = "WRT"; // alias (DIALECT.md 2)
+  for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
+  emit(std::move(s));
+  switch (in.stack) {
+  case StackRule::Push:
+    ++depth_;
+    break;
+  case StackRule::BlockPop:
+    --depth_;
+    break;
+  case StackRule::MpsPush:
+    ++ms_;
+    break;
+  case StackRule::MsPop:
+    --ms_;
+    break;
+  case StackRule::Block:
+    // dialect-notes "Stacks and blocks": pop the inputs, push the output; a single-input block
+    // with an empty ST pushes its output.
+    if (in.output == OutputRule::None) break;
+    depth_ = depth_ == 0 ? 1 : depth_ - in.inputs + 1;
+    break;
+  default:
+    break;
+  }
+}
+
+int32_t RandomGen::tcFor(const InstrInfo &in) {
+  auto &owner = tcOwner_[in.state == StateKind::Timer ? 0 : 1];
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    int32_t n = tcNumber(rng_);
+    auto it = owner.find(n);
+    if (it == owner.end() || it->second == in.op) {
+      owner[n] = in.op;
+      return n;
+    }
+  }
+  for (int32_t n = 0; n < 428; ++n) {
+    if (lj_tc_slot(n) < 0) continue;
+    auto it = owner.find(n);
+    if (it == owner.end() || it->second == in.op) {
+      owner[n] = in.op;
+      return n;
+    }
+  }
+  assert(false && "more timer/counter kinds than numbers");
+  return 0;
+}
+
+int32_t RandomGen::constFor(const InstrInfo &in, int i) {
+  const OperandSpec &sp = in.operands[i];
+  int64_t lo = sp.cmin, hi = sp.cmax;
+  if (hi - lo <= 1024) {
+    // Small ranges (time units, block numbers): mostly the low end, so blocks share state and
+    // timers run in milliseconds, but every value of the range shows up.
+    if (rng_.chance(60)) return static_cast<int32_t>(rng_.range(lo, std::min(hi, lo + 3)));
+    return static_cast<int32_t>(rng_.range(lo, hi));
+  }
+  bool timing = in.state == StateKind::Timer || in.state == StateKind::Counter;
+  if (timing && rng_.chance(75)) return static_cast<int32_t>(rng_.range(-2, 30));
+  // The two division faults (DIALECT.md 1, dialect-notes DIV): x / 0 and INT32_MIN / -1.
+  if (in.op == Op::DIV && i == 1 && rng_.chance(30)) return rng_.chance(50) ? 0 : -1;
+  if (in.op == Op::DIV && i == 0 && rng_.chance(20)) return INT32_MIN;
+  int32_t v = interestingConst(rng_);
+  if (v < lo || v > hi) v = static_cast<int32_t>(rng_.range(lo, hi));
+  return v;
+}
+
+std::string RandomGen::regAddress(AreaMask mask, bool writes) {
+  static constexpr Area kRegs[] = {Area::X, Area::Y, Area::F, Area::G, Area::R,
+                                   Area::W, Area::D, Area::B, Area::P};
+  Area cand[9];
+  int n = 0;
+  for (Area a : kRegs)
+    if (hasArea(mask, a)) cand[n++] = a;
+  assert(n > 0);
+  Area a = cand[rng_.below(static_cast<uint64_t>(n))];
+  int32_t idx = pickIndex(rng_, a);
+  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
+  return std::string(1, areaInfo(a).letter) + std::to_string(idx);
+}
+
+std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
+  static constexpr Area kBits[] = {Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W,
+                                   Area::D, Area::B, Area::P, Area::T, Area::C};
+  static constexpr int kWeight[] = {6, 3, 3, 3, 6, 2, 2, 1, 1, 2, 2};
+  std::array<int, 11> w{};
+  for (int i = 0; i < 11; ++i) w[i] = hasArea(mask, kBits[i]) ? kWeight[i] : 0;
+  Area a = kBits[rng_.weighted(w)];
+  std::string s(1, areaInfo(a).letter);
+  if (a == Area::T || a == Area::C) return s + std::to_string(tcNumber(rng_)) + ".0";
+  int32_t idx = pickIndex(rng_, a);
+  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
+  int bitNo = static_cast<int>(rng_.below(static_cast<uint64_t>(bitWidth(a))));
+  return s + std::to_string(idx) + "." + std::to_string(bitNo);
+}
+
+std::string RandomGen::operand(const InstrInfo &in, int i) {
+  const OperandSpec &sp = in.operands[i];
+  bool tcNo =
+      (in.state == StateKind::Timer || in.state == StateKind::Counter) && i == 0 && sp.areas == 0;
+  if (tcNo) return std::to_string(tcFor(in));
+  if (sp.isBit) return bitAddress(sp.areas, sp.writes);
+  if (sp.constOk && (sp.areas == 0 || rng_.chance(40))) return std::to_string(constFor(in, i));
+  return regAddress(sp.areas, sp.writes);
+}
+
+void RandomGen::closeMs() {
+  while (ms_ > 0) {
+    assert(depth_ >= 1);
+    emit("MPP");
+    --ms_;
+  }
+}
+
+void RandomGen::block(int32_t budget, int nest) {
+  const int32_t end = size() + budget;
+  while (size() < end) {
+    int32_t left = end - size();
+    bool deeper = nest < o_.maxNest && left >= 6;
+    bool canCall = curSub_ + 1 < static_cast<int32_t>(subNumbers_.size());
+    // Main parts call more often than subroutines, so most subroutines are reached.
+    const int w[] = {90,
+                     deeper ? 3 : 0,
+                     deeper ? 2 : 0,
+                     deeper ? 3 : 0,
+                     canCall ? (curSub_ < 0 ? 8 : 3) : 0,
+                     curSub_ >= 0 ? 2 : 0};
+    int choice = rng_.weighted(w);
+    int32_t inner = choice >= 1 && choice <= 3
+                        ? static_cast<int32_t>(rng_.range(2, std::min<int64_t>(left - 4, 16)))
+                        : 0;
+    switch (choice) {
+    case 0:
+      emitOneGeneric();
+      break;
+    case 1:
+      forwardJump(inner, nest);
+      break;
+    case 2:
+      backwardJump(inner, nest);
+      break;
+    case 3:
+      loop(inner, nest);
+      break;
+    case 4:
+      call();
+      break;
+    default:
+      retn();
+      break;
+    }
+  }
+  closeMs();
+}
+
+void RandomGen::forwardJump(int32_t budget, int nest) {
+  closeMs();
+  // With an empty ST the jump is unconditional (a warning); mostly give it a condition.
+  if (depth_ == 0 ? rng_.chance(90) : rng_.chance(30)) emitPush();
+  int32_t l = nextLabel_++;
+  emit("JMP L" + std::to_string(l));
+  block(budget, nest + 1);
+  emit("LBL L" + std::to_string(l));
+  resetStacks();
+}
+
+void RandomGen::backwardJump(int32_t budget, int nest) {
+  closeMs();
+  int32_t l = nextLabel_++;
+  std::string g = "D" + std::to_string(kGuardFirst + nextGuard_++ % kGuardCount);
+  int mode = rng_.weighted(std::array<int, 3>{82, 12, 6});
+  if (mode == 0) {
+    emit("LDT");
+    emit("MOV 0 " + g);
+  }
+  emit("LBL L" + std::to_string(l));
+  resetStacks();
+  block(budget, nest + 1);
+  // Guards: a counted loop (a huge bound runs into the watchdog), an input bit (runs into the
+  // watchdog while the stimulus holds it), or unconditional (always the watchdog once reached).
+  if (mode == 0) {
+    int32_t bound = rng_.chance(90) ? static_cast<int32_t>(rng_.range(1, 6)) : 100000;
+    emit("LDT");
+    emit("INC " + g);
+    emit("LT " + g + " " + std::to_string(bound));
+  } else if (mode == 1) {
+    emit("LD X" + std::to_string(pickIndex(rng_, Area::X)) + "." + std::to_string(rng_.below(8)));
+  } else {
+    emit("LDT");
+  }
+  emit("JMP L" + std::to_string(l));
+  // The label resets the stacks; after the JMP falls through ST holds the guard's entry.
+  depth_ = 1;
+  ms_ = 0;
+}
+
+void RandomGen::loop(int32_t budget, int nest) {
+  closeMs();
+  std::string n;
+  if (rng_.chance(60)) {
+    static constexpr int32_t kCounts[] = {-1, 0, 1, 2, 3, 5};
+    n = std::to_string(kCounts[rng_.below(6)]);
+  } else if (rng_.chance(60)) {
+    // A register count: whatever the program left there (often large: the watchdog).
+    const OperandSpec &sp = instrInfo(Op::LOOP).operands[0];
+    n = regAddress(sp.areas, false);
+  } else {
+    n = operand(instrInfo(Op::LOOP), 0);
+  }
+  emit("LOOP " + n);
+  resetStacks();
+  block(budget, nest + 1);
+  emit("NEXT");
+  resetStacks();
+}
+
+void RandomGen::call() {
+  if (depth_ == 0 ? rng_.chance(60) : rng_.chance(20)) emitPush();
+  int32_t first = curSub_ + 1;
+  int32_t k = static_cast<int32_t>(rng_.range(first, static_cast<int64_t>(subNumbers_.size()) - 1));
+  emit("CALL S" + std::to_string(subNumbers_[k]));
+}
+
+void RandomGen::retn() {
+  if (depth_ == 0 ? rng_.chance(85) : rng_.chance(20)) emitPush();
+  emit("RETN");
+}
+
+GenProgram RandomGen::run() {
+  prof_ = kProfiles[rng_.below(std::size(kProfiles))];
+  prof_.depthCap = std::min(prof_.depthCap, o_.maxDepth);
+  int32_t subs = static_cast<int32_t>(rng_.range(0, o_.maxSubs));
+  while (static_cast<int32_t>(subNumbers_.size()) < subs) {
+    int32_t n = static_cast<int32_t>(rng_.chance(50) ? rng_.below(8) : rng_.below(512));
+    bool dup = false;
+    for (int32_t s : subNumbers_) dup = dup || s == n;
+    if (!dup) subNumbers_.push_back(n);
+  }
+  // Markers: usually all three; otherwise any ordered subset (DIALECT.md 2 decides the parts).
+  const char *markers[] = {"IEND", "1END", "2END"};
+  bool present[3] = {true, true, true};
+  if (rng_.chance(25))
+    for (bool &p : present) p = rng_.chance(50);
+  const int32_t total = std::max<int32_t>(o_.statements, 8);
+  const int32_t subBudget = subs ? total / 5 / subs + 2 : 0;
+  const int32_t mainBudget = std::max<int32_t>(total - subBudget * subs, 4);
+  const int32_t share[4] = {mainBudget / 6, mainBudget / 3, mainBudget / 2, mainBudget / 3};
+  for (int m = 0; m < 3; ++m) {
+    if (!present[m]) continue;
+    block(std::max<int32_t>(share[m], 1), 0);
+    emit(markers[m]);
+    resetStacks();
+  }
+  if (!present[2]) block(std::max<int32_t>(share[3], 1), 0);
+  for (int32_t i = 0; i < subs; ++i) {
+    curSub_ = i;
+    emit("SP S" + std::to_string(subNumbers_[i]));
+    resetStacks();
+    block(subBudget, 0);
+    emit("SPE");
+    resetStacks();
+  }
+  GenProgram p;
+  p.lines = std::move(lines_);
+  static constexpr int32_t kNvalues[] = {0, 1, 2, 3, 5, 10, 200};
+  p.plc2Nvalue = kNvalues[rng_.below(std::size(kNvalues))];
+  return p;
+}
+
+} // namespace
+
+GenProgram generateRandom(const RandomOptions &opts) { return RandomGen(opts).run(); }
+
+} // namespace lj::gen

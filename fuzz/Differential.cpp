@@ -1,0 +1,157 @@
+// Runs one case on the reference interpreter and the engine under test in lock step and names
+// the first field of lj_state where they part.
+#include "fuzz/Differential.h"
+
+#include "instructions/FrontEnd.h"
+
+#include <cstring>
+#include <memory>
+#include <sstream>
+
+namespace lj::fuzz {
+
+namespace {
+
+/// Timer/counter number of a slot (inverse of lj_tc_slot).
+int32_t tcNumber(size_t slot) {
+  return slot < 128 ? static_cast<int32_t>(slot) : static_cast<int32_t>(slot - 128 + 300);
+}
+
+struct Differ {
+  const char *cand;
+  std::ostringstream o;
+  bool found = false;
+
+  template <typename T> void field(const std::string &name, const T &a, const T &b) {
+    if (found || a == b) return;
+    found = true;
+    o << name << ": interp=" << +a << ' ' << cand << '=' << +b;
+  }
+  template <typename T, size_t N> void array(const char *name, const T (&a)[N], const T (&b)[N]) {
+    // Image areas read like addresses (`D5`), other arrays like arrays (`edge[5]`).
+    bool area = std::strlen(name) == 1;
+    for (size_t i = 0; i < N && !found; ++i) {
+      if (a[i] == b[i]) continue;
+      field(area ? name + std::to_string(i) : std::string(name) + "[" + std::to_string(i) + "]",
+            a[i], b[i]);
+    }
+  }
+};
+
+} // namespace
+
+std::string firstDifference(const lj_state &a, const lj_state &b, const char *candName) {
+  Differ d{candName, {}, false};
+  d.array("D", a.img.D, b.img.D);
+  d.array("B", a.img.B, b.img.B);
+  d.array("P", a.img.P, b.img.P);
+  d.array("F", a.img.F, b.img.F);
+  d.array("G", a.img.G, b.img.G);
+  d.array("W", a.img.W, b.img.W);
+  d.array("X", a.img.X, b.img.X);
+  d.array("Y", a.img.Y, b.img.Y);
+  d.array("R", a.img.R, b.img.R);
+  for (size_t i = 0; i < LJ_TC_SLOTS && !d.found; ++i) {
+    std::string t = "T" + std::to_string(tcNumber(i));
+    d.field(t + ".start_ms", a.T[i].start_ms, b.T[i].start_ms);
+    d.field(t + " (elapsed_ms)", a.T[i].elapsed_ms, b.T[i].elapsed_ms);
+    d.field(t + ".0 (out)", a.T[i].out, b.T[i].out);
+    d.field(t + ".running", a.T[i].running, b.T[i].running);
+  }
+  for (size_t i = 0; i < LJ_TC_SLOTS && !d.found; ++i) {
+    std::string c = "C" + std::to_string(tcNumber(i));
+    d.field(c + " (value)", a.C[i].value, b.C[i].value);
+    d.field(c + ".0 (out)", a.C[i].out, b.C[i].out);
+    d.field(c + ".prev", a.C[i].prev, b.C[i].prev);
+  }
+  d.array("pls_prev", a.pls_prev, b.pls_prev);
+  d.array("plf_prev", a.plf_prev, b.plf_prev);
+  d.array("alt_prev", a.alt_prev, b.alt_prev);
+  d.array("alt_state", a.alt_state, b.alt_state);
+  d.array("edge", a.edge, b.edge);
+  d.field("now_ms", a.now_ms, b.now_ms);
+  d.field("max_backward_steps", a.max_backward_steps, b.max_backward_steps);
+  d.field("steps", a.steps, b.steps);
+  d.field("plc2_next_slice", a.plc2_next_slice, b.plc2_next_slice);
+  d.field("last_fault", a.last_fault, b.last_fault);
+  d.field("fault_watchdog", a.fault_watchdog, b.fault_watchdog);
+  d.field("fault_index", a.fault_index, b.fault_index);
+  d.field("fault_divzero", a.fault_divzero, b.fault_divzero);
+  if (!d.found && std::memcmp(&a, &b, sizeof a) != 0) {
+    const auto *pa = reinterpret_cast<const unsigned char *>(&a);
+    const auto *pb = reinterpret_cast<const unsigned char *>(&b);
+    size_t off = 0;
+    while (pa[off] == pb[off]) ++off;
+    d.o << "padding byte at offset " << off << ": interp=" << +pa[off] << ' ' << candName << '='
+        << +pb[off];
+    d.found = true;
+  }
+  return d.o.str();
+}
+
+Outcome runCase(const Case &c, const EngineFactory &factory) {
+  Outcome r;
+  std::string text;
+  for (const std::string &l : c.lines) text += l + "\n";
+  Diagnostics diags("fuzz.stl");
+  VerifyOptions vo;
+  vo.plc2Nvalue = c.plc2Nvalue;
+  std::optional<VerifiedProgram> prog = compileFrontEnd(text, "fuzz.stl", vo, diags);
+  if (!prog) {
+    r.kind = Outcome::Kind::NotVerified;
+    r.detail = diags.render();
+    return r;
+  }
+  std::unique_ptr<Engine> ref = makeInterpreterEngine(*prog);
+  std::string error;
+  std::unique_ptr<Engine> cand = factory(*prog, c.fastTier, error);
+  if (!cand) {
+    r.kind = Outcome::Kind::EngineError;
+    r.detail = error.empty() ? "engine build failed without a message" : error;
+    return r;
+  }
+  // Two full states on the heap (each is ~40 KB).
+  auto sa = std::make_unique<lj_state>();
+  auto sb = std::make_unique<lj_state>();
+  for (lj_state *s : {sa.get(), sb.get()}) {
+    lj_state_reset(s);
+    s->max_backward_steps = c.stim.maxBackwardSteps;
+    gen::applyWrites(*s, c.stim.beforeInit);
+    s->now_ms = c.stim.initNowMs;
+  }
+  const lj_entries &ea = ref->entries();
+  const lj_entries &eb = cand->entries();
+  r.slices = ea.plc2_slice_count;
+  auto compare = [&](uint32_t fa, uint32_t fb, uint32_t tick) {
+    if (fa == fb && std::memcmp(sa.get(), sb.get(), sizeof(lj_state)) == 0) return true;
+    r.kind = Outcome::Kind::Mismatch;
+    r.tick = tick;
+    r.detail = fa != fb ? "fault code: interp=" + std::to_string(fa) + ' ' + cand->name() + '=' +
+                              std::to_string(fb)
+                        : firstDifference(*sa, *sb, cand->name());
+    return false;
+  };
+  uint32_t fa = lj_run_init(sa.get(), &ea);
+  uint32_t fb = lj_run_init(sb.get(), &eb);
+  r.statements += static_cast<uint64_t>(prog->init.end - prog->init.begin);
+  if (!compare(fa, fb, Outcome::kInitTick)) return r;
+  const int32_t plc1 = prog->plc1.end - prog->plc1.begin;
+  for (uint32_t t = 0; t < c.stim.ticks(); ++t) {
+    uint32_t slice = sa->plc2_next_slice < prog->slices.size() ? sa->plc2_next_slice : 0;
+    for (lj_state *s : {sa.get(), sb.get()}) {
+      gen::applyWrites(*s, c.stim.writes[t]);
+      s->now_ms = c.stim.nowMs[t];
+    }
+    fa = lj_tick(sa.get(), &ea);
+    fb = lj_tick(sb.get(), &eb);
+    r.statements += static_cast<uint64_t>(plc1);
+    if (slice < prog->slices.size())
+      r.statements += static_cast<uint64_t>(prog->slices[slice].end - prog->slices[slice].begin);
+    if (fa == LJ_FAULT_WATCHDOG) ++r.watchdogTicks;
+    if (!compare(fa, fb, t)) return r;
+  }
+  r.divZero = sa->fault_divzero;
+  return r;
+}
+
+} // namespace lj::fuzz

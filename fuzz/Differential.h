@@ -1,0 +1,55 @@
+// One differential case (program lines + stimulus) run on the interpreter and an engine under
+// test, the state comparison, and the delta-debugging minimizer. Internal to the fuzzer and its
+// tests.
+#pragma once
+
+#include "bench/ProgramGenerator.h"
+#include "fuzz/Fuzz.h"
+#include "instructions/Engine.h"
+#include "ladderjit/abi.h"
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace lj::fuzz {
+
+/// A reproducible case: what the minimizer shrinks.
+struct Case {
+  std::vector<std::string> lines;
+  int32_t plc2Nvalue = 200;
+  gen::Stimulus stim;
+  bool fastTier = true;
+};
+
+/// What running a case on both engines gave.
+struct Outcome {
+  enum class Kind : uint8_t { Same, Mismatch, NotVerified, EngineError } kind = Kind::Same;
+  /// Tick of the first difference; kInitTick when it was after init.
+  uint32_t tick = 0;
+  static constexpr uint32_t kInitTick = UINT32_MAX;
+  std::string detail;      ///< first differing field, diagnostics or the engine's error
+  uint64_t statements = 0; ///< PLC1 + slice statements of the ticks run (static count)
+  uint32_t watchdogTicks = 0;
+  uint32_t divZero = 0; ///< fault_divzero at the end (interpreter)
+  uint32_t slices = 0;
+};
+
+/// Parse + verify `c.lines`, build the interpreter and `factory`'s engine, run init and every
+/// tick of the stimulus on both, and compare the complete lj_state and the fault codes after
+/// init and after every tick. Stops at the first difference.
+Outcome runCase(const Case &c, const EngineFactory &factory);
+
+/// The first field (in struct order) where two states differ, as `D5: interp=3 jit=4`; empty when
+/// the states are byte-identical.
+std::string firstDifference(const lj_state &ref, const lj_state &cand, const char *candName);
+
+/// Delta-debug a failing case: drop chunks of lines (ddmin) while the program still verifies and
+/// the engines still disagree, then single lines, then cut ticks after the first difference,
+/// drop stimulus writes, and try a linear clock and the default watchdog so the result replays
+/// with `ladderjit run`. At most `budget` runs.
+Case minimize(const Case &failing, Outcome::Kind kind, const EngineFactory &factory,
+              uint32_t budget);
+
+} // namespace lj::fuzz

@@ -1,0 +1,135 @@
+// The differential fuzzing campaign behind `ladderjit fuzz`: per program a derived seed, a random
+// valid program and stimulus, interpreter and JIT in lock step; mismatches minimized and printed.
+#include "fuzz/Fuzz.h"
+#include "fuzz/Differential.h"
+
+#include "bench/Rng.h"
+
+#include <chrono>
+#include <iomanip>
+#include <ostream>
+
+namespace lj::fuzz {
+
+namespace {
+
+const char *tierName(bool fast) { return fast ? "fast" : "optimizing"; }
+
+const char *modeName(TierMode m) {
+  switch (m) {
+  case TierMode::Fast:
+    return "fast";
+  case TierMode::Optimizing:
+    return "optimizing";
+  default:
+    return "mixed";
+  }
+}
+
+/// Print a case so it replays: the program, the slicing, the stimulus file.
+void printCase(std::ostream &out, const Case &c) {
+  out << "--- program (" << c.lines.size() << " statements; --plc2-nvalue " << c.plc2Nvalue
+      << ", JIT tier " << tierName(c.fastTier) << ") ---\n";
+  for (const std::string &l : c.lines) out << l << "\n";
+  out << "--- stimulus (" << c.stim.ticks() << " ticks; --stimulus file) ---\n";
+  out << gen::formatStimulus(c.stim);
+  out << "--- end ---\n";
+}
+
+const char *kindName(Outcome::Kind k) {
+  switch (k) {
+  case Outcome::Kind::Mismatch:
+    return "MISMATCH";
+  case Outcome::Kind::EngineError:
+    return "ENGINE ERROR";
+  case Outcome::Kind::NotVerified:
+    return "NOT VERIFIED";
+  default:
+    return "same";
+  }
+}
+
+std::string where(const Outcome &o) {
+  return o.tick == Outcome::kInitTick ? "after init" : "at tick " + std::to_string(o.tick);
+}
+
+} // namespace
+
+FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  FuzzStats st;
+  uint32_t reported = 0;
+  gen::Rng master(opts.seed);
+  for (uint64_t i = 0; i < opts.programs; ++i) {
+    // One derived seed per program: program i replays alone with the same campaign seed.
+    const uint64_t pseed = master.next();
+    gen::Rng rng(pseed);
+    gen::RandomOptions ro;
+    ro.seed = rng.fork();
+    ro.statements = static_cast<int32_t>(rng.range(opts.statements / 4 + 1, opts.statements));
+    gen::GenProgram gp = gen::generateRandom(ro);
+    Case c;
+    c.lines = std::move(gp.lines);
+    c.plc2Nvalue = gp.plc2Nvalue;
+    c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
+    c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
+    ++(c.fastTier ? st.fastPrograms : st.optimizingPrograms);
+    ++st.programs;
+
+    Outcome o = runCase(c, candidate);
+    st.statements += o.statements;
+    st.watchdogTicks += o.watchdogTicks;
+    st.divZero += o.divZero;
+    st.multiSlice += o.slices > 1;
+    st.ticks += o.kind == Outcome::Kind::Same ? c.stim.ticks()
+                                              : (o.tick == Outcome::kInitTick ? 0 : o.tick + 1);
+    if (o.kind == Outcome::Kind::Same) continue;
+    if (o.kind == Outcome::Kind::NotVerified) ++st.notVerified;
+    if (o.kind == Outcome::Kind::Mismatch) ++st.mismatches;
+    if (o.kind == Outcome::Kind::EngineError) ++st.engineErrors;
+    if (reported >= opts.maxReports) continue;
+    ++reported;
+    out << kindName(o.kind) << ": program " << i << " of seed " << opts.seed << " (program seed "
+        << pseed << ")";
+    if (o.kind == Outcome::Kind::Mismatch) out << ' ' << where(o);
+    out << "\n  " << o.detail << "\n";
+    if (opts.minimize && o.kind != Outcome::Kind::NotVerified) {
+      Case m = minimize(c, o.kind, candidate, opts.minimizeBudget);
+      Outcome mo = runCase(m, candidate);
+      out << "minimized " << c.lines.size() << " -> " << m.lines.size() << " statements, "
+          << c.stim.ticks() << " -> " << m.stim.ticks() << " ticks; " << kindName(mo.kind)
+          << (mo.kind == Outcome::Kind::Mismatch ? " " + where(mo) : "")
+          << "\n  first difference: " << mo.detail << "\n";
+      printCase(out, m);
+    } else {
+      printCase(out, c);
+    }
+  }
+  st.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+
+  out << "fuzz summary: seed " << opts.seed << ", programs " << st.programs << ", ticks/program "
+      << opts.ticks << ", tiers " << modeName(opts.tiers) << " (fast " << st.fastPrograms
+      << ", optimizing " << st.optimizingPrograms << ")\n"
+      << "  ticks run " << st.ticks << ", statements executed " << st.statements
+      << " (PLC1 + slice per tick, loops and calls counted once), watchdog ticks "
+      << st.watchdogTicks << ", division-by-zero faults " << st.divZero
+      << ", programs with PLC2 slices > 1 " << st.multiSlice << "\n"
+      << "  mismatches " << st.mismatches << ", engine errors " << st.engineErrors
+      << ", programs not verified " << st.notVerified << "\n"
+      << "  time " << std::fixed << std::setprecision(2) << st.seconds << " s\n";
+  out << (st.failures() == 0 ? "PASS\n" : "FAIL\n");
+  return st;
+}
+
+uint64_t run(const FuzzOptions &opts, std::ostream &out) {
+  if (!haveJit()) {
+    out << "error: ladderjit fuzz needs the JIT, but this build has no ladderjit_jit target; "
+           "rebuild with the jit/ library to run the differential fuzzer\n";
+    return opts.programs ? opts.programs : 1;
+  }
+  FuzzStats st = runWith(opts, out, jitFactory());
+  return st.failures();
+}
+
+} // namespace lj::fuzz
