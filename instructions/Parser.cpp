@@ -214,7 +214,10 @@ private:
   static std::string addrText(const RawOperand &r) {
     std::string s(1, areaInfo(r.area).letter);
     s += std::to_string(r.index);
-    if (r.bit >= 0) s += "." + std::to_string(r.bit);
+    if (r.bit >= 0) {
+      s += '.'; // appended separately: GCC 12 -O3 warns (-Wrestrict) on "." + std::string
+      s += std::to_string(r.bit);
+    }
     return s;
   }
 
