@@ -1,0 +1,55 @@
+// Addresses and values as a user writes them on the command line and in stimulus files
+// (CLI.md "Addresses on the command line"), and reading/writing them in an lj_state.
+#pragma once
+
+#include "instructions/Area.h"
+#include "ladderjit/abi.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace lj::io {
+
+/// One command-line address: a bit (`X1.0`, `T5.0`) or a whole element (`D5`, `T5`, `C3`).
+struct CliAddress {
+  Area area = Area::None;
+  int32_t index = 0; ///< element number (T/C: the timer/counter number, not its slot)
+  int8_t bit = -1;   ///< bit number, -1 for the whole element
+  std::string text;  ///< as the user wrote it (used as the watch column name)
+
+  bool isBit() const { return bit >= 0; }
+};
+
+/// Parse `X1.0`, `d05`, `T5.0`, `C3`... Area letters are case-insensitive and numbers accept
+/// leading zeros (docs/dialect-notes.md "Text"). Areas X Y F G R W D B P T C are accepted; the
+/// index must be in range (DIALECT.md 1) and the bit below the element width (T/C: only .0).
+/// On failure returns nothing and sets `error` to a message naming the address.
+std::optional<CliAddress> parseAddress(std::string_view text, std::string &error);
+
+/// Parse a value: decimal with optional sign, or `0x` hex (docs/dialect-notes.md "Text"), in
+/// the range INT32_MIN..UINT32_MAX so `0xFFFFFFFF` is the bit pattern -1 of a 32-bit element.
+std::optional<int64_t> parseValue(std::string_view text, std::string &error);
+
+/// Check that `value` can be written to `addr`: a bit takes only 0 or 1, an element anything
+/// parseValue accepts (it is truncated on write). Timers are read-only (their state is derived
+/// from timestamps); counters can be preset. Returns false and sets `error` otherwise.
+bool checkWritable(const CliAddress &addr, int64_t value, std::string &error);
+
+/// The value of `addr`: a bit as 0/1; an element at its width and signedness (DIALECT.md 1);
+/// `Tn` = elapsed_ms, `Cn` = count, `Tn.0` / `Cn.0` = output bit.
+int64_t readAddress(const lj_state &s, const CliAddress &addr);
+
+/// Write `value` to `addr`: a bit sets only that bit, an element keeps the low 8/16/32 bits.
+/// `Cn` sets the count, `Cn.0` the output bit. Call checkWritable first.
+void writeAddress(lj_state &s, const CliAddress &addr, int64_t value);
+
+/// `addr=value` parsed into its parts (no spaces inside); errors name the whole item.
+struct Assignment {
+  CliAddress addr;
+  int64_t value = 0;
+};
+std::optional<Assignment> parseAssignment(std::string_view item, std::string &error);
+
+} // namespace lj::io

@@ -1,0 +1,149 @@
+// Stimulus and parameter file parsers: line-oriented, located errors, no exceptions.
+#include "io/InputFiles.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace lj::io {
+
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Split text into lines, dropping `#` comments; calls fn(lineNumber, content).
+template <typename Fn> bool forEachLine(std::string_view text, Fn fn) {
+  int32_t lineNo = 0;
+  size_t pos = 0;
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    ++lineNo;
+    if (size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    if (!fn(lineNo, line)) return false;
+    if (end == text.size()) break;
+    pos = end + 1;
+  }
+  return true;
+}
+
+std::vector<std::string_view> splitBlanks(std::string_view line) {
+  std::vector<std::string_view> items;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && isBlank(line[i])) ++i;
+    size_t start = i;
+    while (i < line.size() && !isBlank(line[i])) ++i;
+    if (i > start) items.push_back(line.substr(start, i - start));
+  }
+  return items;
+}
+
+std::string where(const std::string &file, int32_t line) {
+  return file + ":" + std::to_string(line) + ": ";
+}
+
+} // namespace
+
+std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
+                                      std::string &error) {
+  Stimulus stim;
+  bool ok = forEachLine(text, [&](int32_t lineNo, std::string_view line) {
+    std::vector<std::string_view> items = splitBlanks(line);
+    if (items.empty()) return true;
+    std::string_view head = items[0];
+    if (head[0] != '@') {
+      error = where(file, lineNo) + "expected '@TICK' at the start of the line, found '" +
+              std::string(head) + "'";
+      return false;
+    }
+    std::string_view digits = head.substr(1);
+    bool allDigits = !digits.empty() && digits.size() <= 18;
+    for (char c : digits) allDigits = allDigits && c >= '0' && c <= '9';
+    if (!allDigits) {
+      error = where(file, lineNo) + "bad tick '" + std::string(head) +
+              "': expected '@' and a decimal tick number";
+      return false;
+    }
+    StimulusEvent ev;
+    ev.tick = std::stoull(std::string(digits));
+    ev.line = lineNo;
+    if (!stim.events.empty() && ev.tick < stim.events.back().tick) {
+      error = where(file, lineNo) + "tick " + std::to_string(ev.tick) + " comes after tick " +
+              std::to_string(stim.events.back().tick) + " (line " +
+              std::to_string(stim.events.back().line) + "); ticks must not decrease";
+      return false;
+    }
+    if (items.size() == 1) {
+      error = where(file, lineNo) + "no assignment after '" + std::string(head) +
+              "' (expected ADDR=VALUE)";
+      return false;
+    }
+    for (size_t i = 1; i < items.size(); ++i) {
+      std::string why;
+      std::optional<Assignment> a = parseAssignment(items[i], why);
+      if (!a) {
+        error = where(file, lineNo) + why;
+        return false;
+      }
+      ev.sets.push_back(std::move(*a));
+    }
+    stim.events.push_back(std::move(ev));
+    return true;
+  });
+  if (!ok) return std::nullopt;
+  return stim;
+}
+
+std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
+                                                   std::string &error) {
+  std::vector<Assignment> params;
+  bool ok = forEachLine(text, [&](int32_t lineNo, std::string_view line) {
+    // Spaces around '=' are allowed (a configuration file, not a command line): drop them all.
+    std::string compact;
+    for (char c : line)
+      if (!isBlank(c)) compact.push_back(c);
+    if (compact.empty()) return true;
+    std::string why;
+    std::optional<Assignment> a = parseAssignment(compact, why);
+    if (!a) {
+      error = where(file, lineNo) + why;
+      return false;
+    }
+    if (a->addr.area != Area::P || a->addr.isBit()) {
+      error = where(file, lineNo) + "'" + a->addr.text +
+              "' is not a parameter; expected Pn=VALUE (P0..P199)";
+      return false;
+    }
+    params.push_back(std::move(*a));
+    return true;
+  });
+  if (!ok) return std::nullopt;
+  return params;
+}
+
+bool readFile(const std::string &path, std::string &out, std::string &error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    error = "cannot read '" + path + "': is a directory";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot read '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) {
+    error = "cannot read '" + path + "': read error";
+    return false;
+  }
+  out = ss.str();
+  return true;
+}
+
+} // namespace lj::io

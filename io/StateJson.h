@@ -1,0 +1,20 @@
+// The complete lj_state as JSON (`ladderjit run --dump`): every area, timer, counter, edge bit,
+// PLS/PLF/ALT state, fault counter and the tick bookkeeping.
+#pragma once
+
+#include "ladderjit/abi.h"
+
+#include <nlohmann/json.hpp>
+
+namespace lj::io {
+
+/// The state as a JSON object:
+/// `{"abi_version", "now_ms", "plc2_next_slice", "max_backward_steps", "steps", "last_fault",
+///   "faults": {"watchdog", "index", "divzero"},
+///   "areas": {"X": [...], ..., "P": [...]}       (values by the area's read rule)
+///   "timers": [{"n", "elapsed_ms", "start_ms", "out", "running"}, ...]  (T0..T127, T300..T427)
+///   "counters": [{"n", "value", "out", "prev"}, ...]
+///   "pls_prev", "plf_prev", "alt_prev", "alt_state": [512 x 0/1], "edge": [16384 x 0/1]}`.
+nlohmann::ordered_json stateToJson(const lj_state &s);
+
+} // namespace lj::io

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages ladderjit needs to build and test. Idempotent: prints nothing
+# and touches nothing when all of them are present. Works as root or through sudo.
+set -euo pipefail
+
+# Build: cmake + make + g++ (ccache is picked up automatically when present).
+# Engine: llvm-19-dev (libLLVM-19 and its CMake package; pulls libffi/libxml2/libz3 headers),
+#   llvm-19-tools (FileCheck and lit for the golden tests, with python3).
+# Libraries: CLI11, nlohmann-json, Google Benchmark, GoogleTest + GoogleMock (Debian's GTest
+#   CMake package references the gmock libraries, so both are needed).
+# Fuzzing builds (-DLADDERJIT_FUZZERS=ON): clang-19 and its libFuzzer runtime.
+# zlib/zstd/libedit/libcurl headers are not listed: LLVMConfig looks for them optionally and
+# the project links only the shared libLLVM (checked by configuring with them disabled).
+PACKAGES=(
+  cmake make g++ ccache python3
+  llvm-19-dev llvm-19-tools clang-19 libclang-rt-19-dev
+  libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$pkg")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+if [[ $(id -u) -eq 0 ]]; then
+  as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+  as_root=(sudo)
+else
+  echo "setup.sh: need root or sudo to install: ${missing[*]}" >&2
+  exit 1
+fi
+
+echo "setup.sh: installing ${missing[*]}"
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup.sh: done"

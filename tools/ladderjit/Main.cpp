@@ -1,0 +1,134 @@
+// The `ladderjit` driver: CLI11 subcommands exactly as /work/shared/spec/CLI.md; the work is in
+// the command functions (Commands.h). Usage errors exit 2, never a crash or an exception.
+#include "tools/ladderjit/Commands.h"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+
+namespace {
+
+using namespace lj::cli;
+
+// One value per occurrence, so `--set A=1 PROGRAM` never swallows PROGRAM.
+template <typename T>
+CLI::Option *repeatable(CLI::App *app, const char *name, T &v, const char *help) {
+  return app->add_option(name, v, help)->expected(1)->allow_extra_args(false)->take_all();
+}
+
+// Non-negative integer options: plain decimal digits that fit in 64 bits. CLI11 alone would
+// wrap "-5" to 2^64 - 5 for an unsigned option, turning a typo into an endless run.
+const CLI::Validator kUnsigned(
+    [](std::string &text) -> std::string {
+      uint64_t v = 0;
+      auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+        return "expected a non-negative integer, got '" + text + "'";
+      return {};
+    },
+    "UINT");
+
+// A single-valued option given twice: the last one wins, as in most command-line tools.
+CLI::Option *lastWins(CLI::Option *o) {
+  return o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+}
+
+int notAvailable(const char *what) {
+  return usageError(std::string(what) + " is not available yet in this release");
+}
+
+int mainImpl(int argc, char **argv) {
+  CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "
+               "JIT",
+               "ladderjit"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ladderjit 0.1.0");
+
+  CheckArgs check;
+  CLI::App *cCheck = app.add_subcommand("check", "parse and verify; print diagnostics");
+  cCheck->add_option("PROGRAM", check.program, "STL file")->required();
+  cCheck->add_flag("--print", check.print, "print the verified program");
+  lastWins(
+      cCheck->add_option("--plc2-nvalue", check.plc2Nvalue, "PLC2 statements per tick (0 = all)")
+          ->check(kUnsigned));
+
+  RunArgs run;
+  CLI::App *cRun = app.add_subcommand("run", "simulate ticks and print the watch table");
+  cRun->add_option("PROGRAM", run.program, "STL file")->required();
+  lastWins(cRun->add_option("--engine", run.engine, "interp | jit | aot:PATH.so (default jit)"));
+  lastWins(cRun->add_option("--ticks", run.ticks, "number of ticks (default 1)")->check(kUnsigned));
+  lastWins(cRun->add_option("--period-ms", run.periodMs, "PLC1 period in ms (default 1)")
+               ->check(kUnsigned));
+  lastWins(
+      cRun->add_option("--plc2-nvalue", run.plc2Nvalue, "PLC2 statements per tick (default 200)")
+          ->check(kUnsigned));
+  lastWins(cRun->add_option("--max-backward-steps", run.maxBackwardSteps,
+                            "watchdog limit per tick (default 1000000)")
+               ->check(kUnsigned));
+  repeatable(cRun, "--set", run.sets, "ADDR=VALUE applied before init; repeatable");
+  lastWins(cRun->add_option("--stimulus", run.stimulus, "file of '@TICK ADDR=VALUE ...' lines"));
+  repeatable(cRun, "--watch", run.watch, "ADDR[,ADDR...] printed after every tick; repeatable");
+  lastWins(cRun->add_option("--format", run.format, "csv | jsonl (default csv)"));
+  lastWins(
+      cRun->add_option("--dump", run.dump, "write the final state as JSON to FILE ('-' = stdout)"));
+  lastWins(cRun->add_option("--params", run.params, "P values, 'P12=345' per line"));
+
+  EmitArgs emit;
+  CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
+  cEmit->add_option("PROGRAM", emit.program, "STL file")->required();
+  lastWins(cEmit->add_option("-O", emit.optLevel, "optimization level 0..3 (default 2)")
+               ->check(CLI::Range(0, 3)));
+  lastWins(
+      cEmit->add_option("--plc2-nvalue", emit.plc2Nvalue, "PLC2 statements per tick (default 200)")
+          ->check(kUnsigned));
+
+  FuzzArgs fz;
+  CLI::App *cFuzz = app.add_subcommand("fuzz", "differential test: interpreter against JIT");
+  lastWins(cFuzz->add_option("--seed", fz.seed, "random seed (default 1)")->check(kUnsigned));
+  lastWins(cFuzz->add_option("--programs", fz.programs, "number of programs (default 1000)")
+               ->check(kUnsigned));
+  lastWins(
+      cFuzz->add_option("--ticks", fz.ticks, "ticks per program (default 50)")->check(kUnsigned));
+
+  // Announced by CLI.md, not in this release: accept any arguments and say so.
+  CLI::App *cCompile = app.add_subcommand("compile", "ahead-of-time build (not available yet)");
+  cCompile->allow_extras();
+  CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (not available yet)");
+  cServe->allow_extras();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp &e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion &e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError &e) {
+    app.exit(e); // prints the message and a hint
+    return kUsage;
+  }
+
+  if (cCheck->parsed()) return runCheck(check);
+  if (cRun->parsed()) return runRun(run);
+  if (cEmit->parsed()) return runEmitLlvm(emit);
+  if (cFuzz->parsed()) return runFuzz(fz);
+  if (cCompile->parsed()) return notAvailable("compile");
+  if (cServe->parsed()) return notAvailable("serve");
+  return usageError("no subcommand");
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  // Last line of defence: an exception (bad_alloc, a JSON error) must not end in a core dump.
+  try {
+    return mainImpl(argc, argv);
+  } catch (const std::exception &e) {
+    std::fprintf(stderr, "ladderjit: error: %s\n", e.what());
+  } catch (...) {
+    std::fprintf(stderr, "ladderjit: error: unexpected exception\n");
+  }
+  return kUsage;
+}
