@@ -1,6 +1,6 @@
 // Lexer and parser for STL text (DIALECT.md 2, docs/dialect-notes.md "Text"): one statement per
-// line, every operand checked against the instruction table; bad lines become located
-// diagnostics and are dropped, parsing always continues.
+// line, every operand (or the symbol standing for one) checked against the instruction table;
+// bad lines become located diagnostics and are dropped, parsing always continues.
 #include "instructions/FrontEnd.h"
 
 #include <cstdint>
@@ -94,7 +94,8 @@ struct Token {
 /// Parses the statements of one line; reports every problem it finds on that line.
 class LineParser {
 public:
-  LineParser(Diagnostics &diags, int32_t line) : diags_(diags), line_(line) {}
+  LineParser(Diagnostics &diags, int32_t line, const SymbolTable *symbols)
+      : diags_(diags), line_(line), symbols_(symbols) {}
 
   /// Returns true and fills `stmt` when the line holds one valid statement.
   bool parse(const std::vector<Token> &toks, Stmt &stmt) {
@@ -119,7 +120,12 @@ public:
   }
 
 private:
-  void error(const Token &t, std::string msg) { diags_.error({line_, t.col}, std::move(msg)); }
+  // While an operand written as a symbol is checked, every message says what it stands for.
+  void error(const Token &t, std::string msg) {
+    if (symbol_)
+      msg += " (symbol " + SymbolTable::quote(symbol_->name) + " = " + symbol_->address + ")";
+    diags_.error({line_, t.col}, std::move(msg));
+  }
 
   void countError(const InstrInfo &info, const std::vector<Token> &toks, size_t given) {
     std::string want;
@@ -140,6 +146,18 @@ private:
 
   bool lex(const Token &t, RawOperand &raw) {
     std::string_view s = t.text;
+    symbol_ = nullptr;
+    if (symbols_ && SymbolTable::isNameShaped(s)) {
+      const Symbol *sym = symbols_->find(s);
+      if (!sym) {
+        error(t, "unknown symbol " + SymbolTable::quote(s));
+        return false;
+      }
+      symbol_ = sym;
+      // The table holds canonical addresses, so this lexes; the checks that follow are exactly
+      // those of the address written out.
+      return lexAddress({sym->address, t.col}, raw);
+    }
     if (isLetter(s[0])) return lexAddress(t, raw);
     if (isDigit(s[0]) || s[0] == '+' || s[0] == '-') return lexConstant(t, raw);
     error(t, "malformed operand " + quote(s));
@@ -304,6 +322,8 @@ private:
 
   Diagnostics &diags_;
   int32_t line_;
+  const SymbolTable *symbols_;
+  const Symbol *symbol_ = nullptr; ///< the symbol of the operand being checked, if any
 };
 
 /// Splits one line (without its newline) into tokens, dropping `;` and `//` comments.
@@ -330,6 +350,20 @@ void tokenize(std::string_view line, std::vector<Token> &toks) {
 } // namespace
 
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags) {
+  return parseStl(text, std::move(file), diags, nullptr);
+}
+
+std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
+                                               const VerifyOptions &opts, Diagnostics &diags,
+                                               const SymbolTable *symbols) {
+  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols);
+  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
+  if (diags.hasErrors()) return std::nullopt;
+  return prog;
+}
+
+ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags,
+                       const SymbolTable *symbols) {
   ParsedProgram prog;
   prog.file = std::move(file);
   // A UTF-8 byte-order mark from a Windows editor is not part of the first statement.
@@ -345,7 +379,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     pos = nl + 1;
     if (toks.empty()) continue;
     Stmt stmt;
-    LineParser lp(diags, line);
+    LineParser lp(diags, line, symbols);
     Op known;
     if (lp.parse(toks, stmt))
       prog.stmts.push_back(stmt);

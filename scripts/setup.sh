@@ -8,13 +8,14 @@ set -euo pipefail
 #   llvm-19-tools (FileCheck and lit for the golden tests, with python3).
 # Libraries: CLI11, nlohmann-json, Google Benchmark, GoogleTest + GoogleMock (Debian's GTest
 #   CMake package references the gmock libraries, so both are needed).
+# plc.dit content hash: OpenSSL libcrypto (libssl-dev), SHA-256 through the EVP API.
 # Fuzzing builds (-DLADDERJIT_FUZZERS=ON): clang-19 and its libFuzzer runtime.
 # zlib/zstd/libedit/libcurl headers are not listed: LLVMConfig looks for them optionally and
 # the project links only the shared libLLVM (checked by configuring with them disabled).
 PACKAGES=(
   cmake make g++ ccache python3
   llvm-19-dev llvm-19-tools clang-19 libclang-rt-19-dev
-  libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev
+  libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev libssl-dev
 )
 
 missing=()

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "instructions/Program.h"
+#include "io/PlcDit.h"
 
 #include <cstdint>
 #include <optional>
@@ -17,15 +18,30 @@ enum Exit : int { kOk = 0, kProgramErrors = 1, kUsage = 2 };
 /// Print `ladderjit: error: <msg>` to stderr and return kUsage.
 int usageError(const std::string &msg);
 
-/// Read and verify PROGRAM; diagnostics go to stderr. On failure sets `exitCode` (1 for program
-/// errors, 2 for an unreadable file) and returns nothing.
-std::optional<VerifiedProgram> loadProgram(const std::string &path, int32_t plc2Nvalue,
+/// PROGRAM as read: an STL file, or a plc.dit container (recognized by its magic line).
+struct ProgramSource {
+  std::string path;
+  std::string text;               ///< what the STL parser reads (container: padded program)
+  std::optional<io::DitFile> dit; ///< the container, when PROGRAM is one
+};
+
+/// Read PROGRAM into `src`. An unreadable file or a bad container is an input error: prints
+/// it, sets `exitCode` to 2 and returns false (docs/plc-dit.md "Exit codes").
+bool readProgram(const std::string &path, ProgramSource &src, int &exitCode);
+
+/// The PLC2 nvalue to plan with: the option when given, else the container's, else 200.
+int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven);
+
+/// Verify a read PROGRAM (with its symbols, for a container); diagnostics go to stderr. On
+/// failure sets `exitCode` to 1 and returns nothing.
+std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                            int &exitCode);
 
 struct CheckArgs {
   std::string program;
   int32_t plc2Nvalue = 200;
-  bool print = false; ///< dump the verified program (lj::printProgram) to stdout
+  bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line
+  bool print = false;           ///< dump the verified program (lj::printProgram) to stdout
 };
 int runCheck(const CheckArgs &a);
 
@@ -34,7 +50,9 @@ struct RunArgs {
   std::string engine = "jit"; ///< interp | jit | aot:PATH
   uint64_t ticks = 1;
   uint64_t periodMs = 1;
+  bool periodMsGiven = false; ///< --period-ms was on the command line (beats a plc.dit)
   int32_t plc2Nvalue = 200;
+  bool plc2NvalueGiven = false;        ///< --plc2-nvalue was on the command line (beats a plc.dit)
   uint64_t maxBackwardSteps = 1000000; ///< watchdog limit per tick (DIALECT.md 4)
   std::vector<std::string> sets;       ///< ADDR=VALUE items
   std::string stimulus;                ///< file, empty = none
@@ -49,8 +67,20 @@ struct EmitArgs {
   std::string program;
   int optLevel = 2;
   int32_t plc2Nvalue = 200;
+  bool plc2NvalueGiven = false;
 };
 int runEmitLlvm(const EmitArgs &a);
+
+struct DitArgs {
+  std::string program; ///< STL file
+  std::string symbols; ///< symbols file, empty = none
+  std::string params;  ///< P values file, empty = none
+  int32_t plc2Nvalue = 200;
+  uint64_t periodMs = 1;
+  std::string output; ///< container path, "-" = stdout
+};
+/// `ladderjit dit`: write a plc.dit from an STL file, symbols and parameters (docs/plc-dit.md).
+int runDit(const DitArgs &a);
 
 struct FuzzArgs {
   uint64_t seed = 1;

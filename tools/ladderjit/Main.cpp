@@ -36,6 +36,8 @@ CLI::Option *lastWins(CLI::Option *o) {
   return o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
+const char *const kProgramHelp = "STL file or plc.dit container";
+
 int notAvailable(const char *what) {
   return usageError(std::string(what) + " is not available yet in this release");
 }
@@ -49,22 +51,25 @@ int mainImpl(int argc, char **argv) {
 
   CheckArgs check;
   CLI::App *cCheck = app.add_subcommand("check", "parse and verify; print diagnostics");
-  cCheck->add_option("PROGRAM", check.program, "STL file")->required();
+  cCheck->add_option("PROGRAM", check.program, kProgramHelp)->required();
   cCheck->add_flag("--print", check.print, "print the verified program");
-  lastWins(
+  CLI::Option *checkNvalue = lastWins(
       cCheck->add_option("--plc2-nvalue", check.plc2Nvalue, "PLC2 statements per tick (0 = all)")
           ->check(kUnsigned));
 
   RunArgs run;
   CLI::App *cRun = app.add_subcommand("run", "simulate ticks and print the watch table");
-  cRun->add_option("PROGRAM", run.program, "STL file")->required();
+  cRun->add_option("PROGRAM", run.program, kProgramHelp)->required();
   lastWins(cRun->add_option("--engine", run.engine, "interp | jit | aot:PATH.so (default jit)"));
   lastWins(cRun->add_option("--ticks", run.ticks, "number of ticks (default 1)")->check(kUnsigned));
-  lastWins(cRun->add_option("--period-ms", run.periodMs, "PLC1 period in ms (default 1)")
-               ->check(kUnsigned));
-  lastWins(
-      cRun->add_option("--plc2-nvalue", run.plc2Nvalue, "PLC2 statements per tick (default 200)")
-          ->check(kUnsigned));
+  CLI::Option *runPeriod =
+      lastWins(cRun->add_option("--period-ms", run.periodMs,
+                                "PLC1 period in ms (default: the plc.dit's, else 1)")
+                   ->check(kUnsigned));
+  CLI::Option *runNvalue =
+      lastWins(cRun->add_option("--plc2-nvalue", run.plc2Nvalue,
+                                "PLC2 statements per tick (default: the plc.dit's, else 200)")
+                   ->check(kUnsigned));
   lastWins(cRun->add_option("--max-backward-steps", run.maxBackwardSteps,
                             "watchdog limit per tick (default 1000000)")
                ->check(kUnsigned));
@@ -78,12 +83,27 @@ int mainImpl(int argc, char **argv) {
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
-  cEmit->add_option("PROGRAM", emit.program, "STL file")->required();
+  cEmit->add_option("PROGRAM", emit.program, kProgramHelp)->required();
   lastWins(cEmit->add_option("-O", emit.optLevel, "optimization level 0..3 (default 2)")
                ->check(CLI::Range(0, 3)));
+  CLI::Option *emitNvalue =
+      lastWins(cEmit
+                   ->add_option("--plc2-nvalue", emit.plc2Nvalue,
+                                "PLC2 statements per tick (default: the plc.dit's, else 200)")
+                   ->check(kUnsigned));
+
+  DitArgs dit;
+  CLI::App *cDit = app.add_subcommand("dit", "write a plc.dit container from an STL file");
+  cDit->add_option("PROGRAM", dit.program, "STL file")->required();
+  lastWins(cDit->add_option("--symbols", dit.symbols, "symbols file, 'NAME ADDR [comment]' lines"));
+  lastWins(cDit->add_option("--params", dit.params, "P values, 'P12=345' per line"));
   lastWins(
-      cEmit->add_option("--plc2-nvalue", emit.plc2Nvalue, "PLC2 statements per tick (default 200)")
+      cDit->add_option("--plc2-nvalue", dit.plc2Nvalue, "PLC2 statements per tick (default 200)")
           ->check(kUnsigned));
+  lastWins(cDit->add_option("--period-ms", dit.periodMs, "PLC1 period in ms (default 1)")
+               ->check(kUnsigned));
+  lastWins(cDit->add_option("-o,--output", dit.output, "container to write ('-' = stdout)"))
+      ->required();
 
   FuzzArgs fz;
   CLI::App *cFuzz = app.add_subcommand("fuzz", "differential test: interpreter against JIT");
@@ -110,7 +130,13 @@ int mainImpl(int argc, char **argv) {
     return kUsage;
   }
 
+  check.plc2NvalueGiven = checkNvalue->count() > 0;
+  run.periodMsGiven = runPeriod->count() > 0;
+  run.plc2NvalueGiven = runNvalue->count() > 0;
+  emit.plc2NvalueGiven = emitNvalue->count() > 0;
+
   if (cCheck->parsed()) return runCheck(check);
+  if (cDit->parsed()) return runDit(dit);
   if (cRun->parsed()) return runRun(run);
   if (cEmit->parsed()) return runEmitLlvm(emit);
   if (cFuzz->parsed()) return runFuzz(fz);

@@ -1,5 +1,6 @@
-// `ladderjit run`: validate every input first (usage errors exit 2 before anything runs), build
-// the chosen engine, simulate, stream the watch table, optionally dump the final state.
+// `ladderjit run` (PROGRAM an STL file or a plc.dit): validate every input first (usage errors
+// exit 2 before anything runs), build the chosen engine, simulate, stream the watch table,
+// optionally dump the final state.
 #include "tools/ladderjit/Commands.h"
 
 #include "instructions/Engine.h"
@@ -161,7 +162,16 @@ int runRun(const RunArgs &a) {
   if (!parseInputs(a, sim, error)) return usageError(error);
 
   int code = kOk;
-  std::optional<VerifiedProgram> prog = loadProgram(a.program, a.plc2Nvalue, code);
+  ProgramSource src;
+  if (!readProgram(a.program, src, code)) return code;
+  if (src.dit) {
+    // A container's parameters are defaults: its P values go first so --params and --set
+    // override them; its period counts unless --period-ms was given (docs/plc-dit.md "run").
+    sim.params.insert(sim.params.begin(), src.dit->params.begin(), src.dit->params.end());
+    if (!a.periodMsGiven) sim.periodMs = src.dit->periodMs;
+  }
+  std::optional<VerifiedProgram> prog =
+      loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
 
   std::unique_ptr<Engine> engine;

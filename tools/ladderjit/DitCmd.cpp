@@ -1,0 +1,89 @@
+// `ladderjit dit`: build a plc.dit container from an STL file, a symbols file and parameters.
+// The program is verified (with its symbols) first, so a container never holds a broken one.
+#include "tools/ladderjit/Commands.h"
+
+#include "instructions/FrontEnd.h"
+#include "io/InputFiles.h"
+
+#include <cstdio>
+#include <fstream>
+
+namespace lj::cli {
+
+namespace {
+
+// P values from a params file: one entry per element, first position, last value (a params
+// file lets later lines win, a container lists each P once).
+std::vector<io::Assignment> collapseParams(const std::vector<io::Assignment> &in) {
+  std::vector<io::Assignment> out;
+  for (const io::Assignment &a : in) {
+    bool merged = false;
+    for (io::Assignment &o : out)
+      if (o.addr.index == a.addr.index) {
+        o.value = a.value;
+        merged = true;
+      }
+    if (!merged) out.push_back(a);
+  }
+  return out;
+}
+
+bool writeOutput(const std::string &path, const std::string &text, std::string &error) {
+  if (path == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+    return true;
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out || !(out << text) || !out.flush()) {
+    error = "cannot write '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+int runDit(const DitArgs &a) {
+  if (a.periodMs < 1 || a.periodMs > (uint64_t{1} << 40))
+    return usageError("--period-ms: expected 1..2^40 for a plc.dit, got " +
+                      std::to_string(a.periodMs));
+  std::string stl, error;
+  if (!io::readFile(a.program, stl, error)) return usageError(error);
+  if (io::looksLikeDit(stl))
+    return usageError("'" + a.program + "' is already a plc.dit container; give the STL file");
+
+  io::DitFile dit;
+  dit.plc2Nvalue = a.plc2Nvalue;
+  dit.periodMs = a.periodMs;
+  if (!io::normalizeProgram(stl, a.program, dit.program, error)) return usageError(error);
+  std::string text;
+  if (!a.symbols.empty()) {
+    if (!io::readFile(a.symbols, text, error)) return usageError(error);
+    if (!io::parseSymbols(text, a.symbols, dit.symbols, error)) return usageError(error);
+  }
+  if (!a.params.empty()) {
+    if (!io::readFile(a.params, text, error)) return usageError(error);
+    std::optional<std::vector<io::Assignment>> ps = io::parseParams(text, a.params, error);
+    if (!ps) return usageError(error);
+    dit.params = collapseParams(*ps);
+  }
+
+  // The STL file's own line numbers: the user fixes the STL, not the container.
+  Diagnostics diags(a.program);
+  VerifyOptions opts;
+  opts.plc2Nvalue = a.plc2Nvalue;
+  std::optional<VerifiedProgram> prog =
+      compileFrontEnd(dit.program, a.program, opts, diags, &dit.symbols);
+  std::string rendered = diags.render();
+  if (!rendered.empty()) std::fputs(rendered.c_str(), stderr);
+  if (!prog || diags.hasErrors()) {
+    std::fprintf(stderr, "ladderjit: error: no plc.dit written: '%s' has errors\n",
+                 a.program.c_str());
+    return kProgramErrors;
+  }
+  if (!writeOutput(a.output, io::writeDit(dit), error)) return usageError(error);
+  return kOk;
+}
+
+} // namespace lj::cli
