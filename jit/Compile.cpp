@@ -1,5 +1,6 @@
 // The two free functions of the facade: compile() on a fresh Session, and emitLlvm() for the
-// `ladderjit emit-llvm` dump (lowered IR after the -O0..-O3 pipeline, names kept).
+// `ladderjit emit-llvm` dump (lowered IR after the -O level's pipeline, names kept; -O2 is exactly
+// the optimizing tier's, -O0 the fast tier's).
 #include "jit/Jit.h"
 #include "jit/Pipeline.h"
 #include "lowering/Lower.h"

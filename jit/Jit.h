@@ -11,7 +11,8 @@
 
 namespace lj::jit {
 
-/// Compile tier: Fast = IR O0 + FastISel; Optimizing = O2 pipeline + full codegen.
+/// Compile tier: Fast = no IR passes + FastISel; Optimizing = a tailored InstCombine/SimplifyCFG
+/// pipeline + SelectionDAG codegen at CodeGenOptLevel::Less (jit/Pipeline.cpp).
 enum class Tier { Fast, Optimizing };
 
 struct JitOptions {
@@ -19,9 +20,18 @@ struct JitOptions {
   /// Statements per generated function for long bodies (0 = one function per body). Only cut
   /// where no logic-stack entry is live, so the result never depends on it.
   int32_t chunkStatements = 150;
+  /// Threads compiling at once: the program is lowered into this many modules (contiguous groups
+  /// of bodies of about equal size), each compiled to an object on its own thread and linked
+  /// into the version's JITDylib. 1 = everything on the calling thread. The generated code is
+  /// the same either way, apart from cross-module calls.
+  int32_t compileThreads = 2;
+  /// Fewer threads for smaller programs: each needs this many statements (a thread, a context
+  /// and a TargetMachine cost about a millisecond). Tests set 1 to force partitioning.
+  int32_t minStatementsPerThread = 500;
 };
 
-/// Wall-clock time of each compile phase, in microseconds.
+/// Wall-clock time of each compile phase, in microseconds. With several compile threads,
+/// lower/optimize are the slowest thread's, codegen runs to the end of linking.
 struct CompileTimes {
   double lowerUs = 0, optimizeUs = 0, codegenUs = 0;
 };

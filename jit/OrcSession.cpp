@@ -1,16 +1,24 @@
 // The only file that talks to ORC (STYLE.md 3, 9, 10): one LLJIT per Session, a runtime
 // JITDylib of explicitly bound helpers (no process symbol search), one JITDylib per program
-// version, removed when its engine dies. llvm::Error stays inside; callers get strings.
+// version, removed when its engine dies. A program is lowered into a few modules compiled to
+// objects on parallel threads, then linked by JITLink. llvm::Error stays inside; callers get
+// strings.
 #include "jit/Jit.h"
 #include "jit/Pipeline.h"
 #include "lowering/Lower.h"
 
+#include <llvm/ExecutionEngine/Orc/CompileUtils.h>
 #include <llvm/ExecutionEngine/Orc/Core.h>
 #include <llvm/ExecutionEngine/Orc/LLJIT.h>
 #include <llvm/ExecutionEngine/Orc/ThreadSafeModule.h>
 
+#include <algorithm>
 #include <cstring>
 #include <mutex>
+#include <optional>
+#include <system_error>
+#include <thread>
+#include <vector>
 
 namespace lj::jit {
 
@@ -18,8 +26,10 @@ struct Session::Impl {
   Tier tier = Tier::Optimizing;
   std::unique_ptr<llvm::orc::LLJIT> jit;
   llvm::orc::JITDylib *runtime = nullptr;
-  std::unique_ptr<llvm::TargetMachine> optTM; ///< cost model of the IR pipeline
-  std::mutex mu;                              ///< guards optTM and nextVersion
+  /// Settings of the tier's code generator; every compile thread makes its own TargetMachine
+  /// from it (a TargetMachine is not safe to share between concurrent compiles).
+  std::optional<llvm::orc::JITTargetMachineBuilder> jtmb;
+  std::mutex mu; ///< guards nextVersion
   uint64_t nextVersion = 1;
 };
 
@@ -67,11 +77,16 @@ llvm::Expected<std::unique_ptr<Session::Impl>> createImpl(Tier tier) {
     jtmb->setCodeGenOptLevel(llvm::CodeGenOptLevel::None);
     jtmb->getOptions().EnableFastISel = true;
   } else {
-    jtmb->setCodeGenOptLevel(llvm::CodeGenOptLevel::Default);
-    auto tm = jtmb->createTargetMachine();
-    if (!tm) return tm.takeError();
-    impl->optTM = std::move(*tm);
+    // Less rather than Default: ~8% less codegen time for the same code size on the benchmark
+    // program (straight-line byte logic gives the extra Default passes nothing to do).
+    jtmb->setCodeGenOptLevel(llvm::CodeGenOptLevel::Less);
   }
+  // Objects are compiled outside the LLJIT (one TargetMachine per thread) and linked by JITLink,
+  // so use the settings LLJITBuilder picks for JITLink itself: PIC (jump tables are PC-relative,
+  // JIT memory is far above 2 GiB) and the small code model (JITLink adds stubs where needed).
+  jtmb->setRelocationModel(llvm::Reloc::PIC_);
+  jtmb->setCodeModel(llvm::CodeModel::Small);
+  impl->jtmb = *jtmb;
   auto jit = llvm::orc::LLJITBuilder()
                  .setJITTargetMachineBuilder(std::move(*jtmb))
                  .setLinkProcessSymbolsByDefault(false)
@@ -93,6 +108,57 @@ llvm::Expected<Fn> lookupEntry(Session::Impl &impl, llvm::orc::JITDylib &jd, con
   return addr->toPtr<Fn>();
 }
 
+/// What one compile thread produced: an object file, or the error that stopped it.
+struct PartResult {
+  std::unique_ptr<llvm::MemoryBuffer> obj;
+  std::string error;
+  double lowerUs = 0, optimizeUs = 0;
+};
+
+/// Partitions for `prog`: a thread only pays off for a program of some size (a thread, a
+/// context and a TargetMachine cost ~1 ms; codegen runs at ~5-50 us per statement).
+uint32_t partitionCount(const VerifiedProgram &prog, const JitOptions &opts) {
+  size_t byThreads = static_cast<size_t>(std::max(opts.compileThreads, 1));
+  size_t perThread = static_cast<size_t>(std::max(opts.minStatementsPerThread, 1));
+  size_t bySize = std::max<size_t>(prog.stmts.size() / perThread, 1);
+  return static_cast<uint32_t>(std::min({byThreads, bySize, size_t{16}}));
+}
+
+/// Lower, optimize and compile partition `part` of `parts` into an object (runs on any thread).
+PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
+                       llvm::orc::JITTargetMachineBuilder jtmb, Tier tier, uint32_t parts,
+                       uint32_t part) {
+  // `jtmb` by value: createTargetMachine is not const, and each thread needs its own copy.
+  PartResult r;
+  auto fail = [&](llvm::Error e) {
+    r.error = llvm::toString(std::move(e));
+    return std::move(r);
+  };
+  double t0 = nowUs();
+  auto tm = jtmb.createTargetMachine();
+  if (!tm) return fail(tm.takeError());
+  llvm::LLVMContext ctx;
+  ctx.setDiscardValueNames(true); // names only matter in emit-llvm dumps
+  lower::LowerOptions lo;
+  lo.chunkStatements = opts.chunkStatements;
+  lo.readableNames = false;
+  lo.partitions = parts;
+  lo.partition = part;
+  auto mod =
+      lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);
+  if (!mod) return fail(mod.takeError());
+  (*mod)->setModuleIdentifier((*mod)->getModuleIdentifier() + "#" + std::to_string(part));
+  double t1 = nowUs();
+  r.lowerUs = t1 - t0;
+  if (tier == Tier::Optimizing) optimizeModule(**mod, 2, tm->get());
+  r.optimizeUs = nowUs() - t1;
+  llvm::orc::SimpleCompiler compiler(**tm);
+  auto obj = compiler(**mod);
+  if (!obj) return fail(obj.takeError());
+  r.obj = std::move(*obj);
+  return r;
+}
+
 } // namespace
 
 Session::Session(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -111,30 +177,36 @@ std::shared_ptr<Session> Session::create(Tier tier, std::string &error) {
 std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitOptions &opts,
                                          std::string &error, CompileTimes *times) {
   Impl &im = *impl_;
-  CompileTimes t;
-  double t0 = nowUs();
-  auto ctx = std::make_unique<llvm::LLVMContext>(); // one context per version (notes 4)
-  ctx->setDiscardValueNames(true);                  // names only matter in emit-llvm dumps
-  lower::LowerOptions lo;
-  lo.chunkStatements = opts.chunkStatements;
-  lo.readableNames = false;
-  auto mod =
-      lower::lowerProgram(prog, *ctx, im.jit->getDataLayout(), im.jit->getTargetTriple().str(), lo);
-  if (!mod) {
-    error = llvm::toString(mod.takeError());
-    return nullptr;
+  const double t0 = nowUs();
+  const uint32_t parts = partitionCount(prog, opts);
+  std::vector<PartResult> res(parts);
+  {
+    // Partition 0 on this thread, the others on their own; every partition has its own
+    // LLVMContext and TargetMachine (notes 4: one context per concurrently compiled module).
+    std::vector<std::thread> workers;
+    for (uint32_t p = 1; p < parts; ++p) try {
+        workers.emplace_back(
+            [&, p] { res[p] = compilePart(prog, opts, *im.jtmb, im.tier, parts, p); });
+      } catch (const std::system_error &) { // no thread to be had: compile it here instead
+        res[p] = compilePart(prog, opts, *im.jtmb, im.tier, parts, p);
+      }
+    res[0] = compilePart(prog, opts, *im.jtmb, im.tier, parts, 0);
+    for (std::thread &w : workers) w.join();
   }
-  double t1 = nowUs();
-  t.lowerUs = t1 - t0;
+  CompileTimes t;
+  for (const PartResult &r : res) {
+    if (!r.obj) {
+      error = r.error;
+      return nullptr;
+    }
+    t.lowerUs = std::max(t.lowerUs, r.lowerUs);
+    t.optimizeUs = std::max(t.optimizeUs, r.optimizeUs);
+  }
   std::string name;
   {
     std::lock_guard<std::mutex> lock(im.mu);
-    if (im.tier == Tier::Optimizing) optimizeModule(**mod, 2, im.optTM.get());
     name = "prog_v" + std::to_string(im.nextVersion++);
   }
-  double t2 = nowUs();
-  t.optimizeUs = t2 - t1;
-
   auto jd = im.jit->createJITDylib(name);
   if (!jd) {
     error = llvm::toString(jd.takeError());
@@ -146,10 +218,9 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     llvm::consumeError(im.jit->getExecutionSession().removeJITDylib(*jd));
     return nullptr;
   };
-  if (llvm::Error e =
-          im.jit->addIRModule(*jd, llvm::orc::ThreadSafeModule(std::move(*mod), std::move(ctx))))
-    return failWith(std::move(e));
-  // The first lookup materializes (compiles) the whole module.
+  for (PartResult &r : res)
+    if (llvm::Error e = im.jit->addObjectFile(*jd, std::move(r.obj))) return failWith(std::move(e));
+  // The first lookup links the objects (JITLink resolves the calls between them).
   lj_entries entries{};
   auto init = lookupEntry<lj_part_fn>(im, *jd, lower::kInitSymbol);
   if (!init) return failWith(init.takeError());
@@ -162,7 +233,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   entries.plc1 = *plc1;
   entries.plc2_slice = *plc2;
   entries.plc2_slice_count = prog.slices.empty() ? 1u : static_cast<uint32_t>(prog.slices.size());
-  t.codegenUs = nowUs() - t2;
+  t.codegenUs = nowUs() - t0 - t.lowerUs - t.optimizeUs;
   if (times) *times = t;
   return std::make_unique<JitEngine>(shared_from_this(), impl_.get(), &*jd, entries);
 }

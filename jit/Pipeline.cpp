@@ -4,6 +4,8 @@
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/Passes/PassBuilder.h>
 #include <llvm/Support/TargetSelect.h>
+#include <llvm/Transforms/InstCombine/InstCombine.h>
+#include <llvm/Transforms/Scalar/SimplifyCFG.h>
 
 #include <chrono>
 #include <mutex>
@@ -33,9 +35,8 @@ void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm) {
   llvm::FunctionAnalysisManager fam;
   llvm::CGSCCAnalysisManager cgam;
   llvm::ModuleAnalysisManager mam;
-  // The standard pipeline of the level, minus the vectorizers and the unroller: scan code is
-  // scalar byte logic with a few counted loops, and the SLP vectorizer alone cost ~10% of the
-  // O2 time on a 10,000-statement program without changing the generated code's speed.
+  // The standard pipelines minus the vectorizers and the unroller: scan code is scalar byte
+  // logic with a few counted loops.
   llvm::PipelineTuningOptions pto;
   pto.LoopVectorization = false;
   pto.SLPVectorization = false;
@@ -46,12 +47,24 @@ void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm) {
   pb.registerFunctionAnalyses(fam);
   pb.registerLoopAnalyses(lam);
   pb.crossRegisterProxies(lam, fam, cgam, mam);
-  static const llvm::OptimizationLevel kLevels[] = {
-      llvm::OptimizationLevel::O0, llvm::OptimizationLevel::O1, llvm::OptimizationLevel::O2,
-      llvm::OptimizationLevel::O3};
-  llvm::OptimizationLevel ol = kLevels[level < 0 ? 0 : level > 3 ? 3 : level];
-  llvm::ModulePassManager mpm =
-      level <= 0 ? pb.buildO0DefaultPipeline(ol) : pb.buildPerModuleDefaultPipeline(ol);
+  llvm::ModulePassManager mpm;
+  if (level == 2) {
+    // The optimizing tier's own pipeline. The lowering already emits SSA without allocas, one
+    // load per field per block and no dead stores (ImageCache), so the one thing left to do is
+    // peephole work on the bit logic. Measured on the 10,000-statement benchmark program:
+    // default<O2> costs ~1.1 s of CPU and this ~0.14 s, for object code within 1% of O2's
+    // size and the same scan time. No fixpoint iteration: a second round changes ~0.1%.
+    llvm::FunctionPassManager fpm;
+    fpm.addPass(llvm::InstCombinePass(
+        llvm::InstCombineOptions().setMaxIterations(1).setVerifyFixpoint(false)));
+    fpm.addPass(llvm::SimplifyCFGPass()); // the few JMP / CALL / RETN diamonds
+    mpm.addPass(llvm::createModuleToFunctionPassAdaptor(std::move(fpm)));
+  } else if (level <= 0) {
+    mpm = pb.buildO0DefaultPipeline(llvm::OptimizationLevel::O0);
+  } else {
+    mpm = pb.buildPerModuleDefaultPipeline(level == 1 ? llvm::OptimizationLevel::O1
+                                                      : llvm::OptimizationLevel::O3);
+  }
   mpm.run(m, mam);
 }
 

@@ -17,7 +17,9 @@ void initNativeTarget();
 /// A TargetMachine for the host CPU and features at codegen level `level`.
 llvm::Expected<std::unique_ptr<llvm::TargetMachine>> hostTargetMachine(llvm::CodeGenOptLevel level);
 
-/// Run the new-PM pipeline of -O`level` (0..3) on `m`; `tm` supplies the cost model.
+/// Optimize `m` for -O`level`: 0 = none (the fast tier), 2 = the optimizing tier's tailored
+/// function pipeline, 1 and 3 = LLVM's standard O1 / O3 (for comparison dumps only).
+/// `tm` supplies the cost model.
 void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm);
 
 /// Monotonic time in microseconds, for CompileTimes.

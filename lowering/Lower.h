@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lj::lower {
 
@@ -25,7 +26,18 @@ struct LowerOptions {
   int32_t chunkStatements = 150;
   /// Name the IR values after the addresses they hold (readable dumps; costs compile time).
   bool readableNames = true;
+  /// Split the program into `partitions` modules compiled independently (in parallel): this
+  /// module defines only the bodies of partition `partition` and declares the functions of the
+  /// others it calls. Subroutine and slice functions then get external linkage so the modules
+  /// link together; the entry symbols keep their names in whichever module defines them.
+  uint32_t partitions = 1;
+  uint32_t partition = 0;
 };
+
+/// Which of `partitions` modules defines the body of each top-level function, in the order
+/// subroutines, init, PLC1, PLC2 slices (the lj_plc2 switch is always in partition 0): contiguous
+/// groups of about equal statement counts, so parallel compiles take about the same time.
+std::vector<uint32_t> planPartitions(const VerifiedProgram &prog, uint32_t partitions);
 
 /// Lower `prog` for a target with `dl` / `triple`. Fails (never crashes) if the program
 /// contradicts the facts the verifier promised (a front-end bug) or the ABI layout mismatches.

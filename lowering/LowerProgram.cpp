@@ -5,8 +5,11 @@
 
 #include "ladderjit/abi.h"
 
+#include <llvm/ADT/STLExtras.h>
 #include <llvm/IR/Verifier.h>
 #include <llvm/Support/raw_ostream.h>
+
+#include <algorithm>
 
 namespace lj::lower {
 
@@ -28,7 +31,8 @@ void markStateParam(llvm::Function *fn, unsigned argNo) {
   fn->getArg(argNo)->setName("s");
 }
 
-llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind kind) {
+llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind kind,
+                             bool shared = false) {
   llvm::LLVMContext &ctx = m.getContext();
   llvm::Type *i32 = llvm::Type::getInt32Ty(ctx);
   llvm::Type *ptr = llvm::PointerType::getUnqual(ctx);
@@ -36,11 +40,13 @@ llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind ki
   if (kind == FnKind::Body) params = {ptr};
   if (kind == FnKind::Entry) params = {ptr, ptr};
   if (kind == FnKind::SliceEntry) params = {ptr, ptr, i32};
-  auto linkage = kind == FnKind::Body ? llvm::GlobalValue::InternalLinkage
-                                      : llvm::GlobalValue::ExternalLinkage;
+  // `shared`: a body another partition's module may call, so it must be visible to the linker.
+  auto linkage = kind == FnKind::Body && !shared ? llvm::GlobalValue::InternalLinkage
+                                                 : llvm::GlobalValue::ExternalLinkage;
   llvm::Function *fn =
       llvm::Function::Create(llvm::FunctionType::get(i32, params, false), linkage, name, m);
   fn->addFnAttr(llvm::Attribute::NoUnwind);
+  if (shared) fn->setDSOLocal(true); // the partitions are linked together: direct calls, no PLT
   markStateParam(fn, kind == FnKind::Body ? 0 : 1);
   if (kind != FnKind::Body) {
     fn->getArg(0)->setName("ctx"); // the engine context; compiled code does not use it
@@ -107,6 +113,27 @@ void emitSliceSwitch(llvm::Function *plc2, const std::vector<llvm::Function *> &
 
 } // namespace
 
+std::vector<uint32_t> planPartitions(const VerifiedProgram &prog, uint32_t partitions) {
+  std::vector<int64_t> weight;
+  for (const Subroutine &sub : prog.subs) weight.push_back(sub.body.end - sub.body.begin);
+  weight.push_back(prog.init.end - prog.init.begin);
+  weight.push_back(prog.plc1.end - prog.plc1.begin);
+  if (prog.slices.empty()) weight.push_back(prog.plc2.end - prog.plc2.begin);
+  for (const StmtRange &r : prog.slices) weight.push_back(r.end - r.begin);
+  int64_t total = 0;
+  for (int64_t &w : weight) total += (w += 1); // +1: even an empty body costs a function
+  std::vector<uint32_t> owner;
+  int64_t before = 0;
+  const int64_t parts = std::max<uint32_t>(partitions, 1);
+  for (int64_t w : weight) {
+    // The partition holding the unit's midpoint: contiguous groups of about total/parts.
+    owner.push_back(
+        static_cast<uint32_t>(std::min(parts - 1, (2 * before + w) * parts / (2 * total))));
+    before += w;
+  }
+  return owner;
+}
+
 llvm::Expected<std::unique_ptr<llvm::Module>>
 lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
              const std::string &triple, const LowerOptions &opts) {
@@ -118,28 +145,44 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
   if (prog.info.size() != prog.stmts.size())
     return llvm::createStringError("verified program without statement facts");
   ModuleContext mc{prog, *mod, *layout, opts, {}};
+  const uint32_t parts = std::max<uint32_t>(opts.partitions, 1);
+  const bool shared = parts > 1;
+  const std::vector<uint32_t> owner = planPartitions(prog, parts);
+  size_t unit = 0; // index into `owner`
+  auto mine = [&](size_t u) { return owner[u] == opts.partition; };
 
   for (const Subroutine &sub : prog.subs)
-    mc.subFns.push_back(makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body));
-  for (size_t k = 0; k < prog.subs.size(); ++k)
-    if (llvm::Error e = lowerBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
+    mc.subFns.push_back(
+        makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body, shared));
+  for (size_t k = 0; k < prog.subs.size(); ++k, ++unit)
+    if (mine(unit))
+      if (llvm::Error e = lowerBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
 
-  llvm::Function *init = makeFunction(*mod, kInitSymbol, FnKind::Entry);
-  if (llvm::Error e = lowerBody(mc, init, prog.init, 0, false)) return e;
-  llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
-  if (llvm::Error e = lowerBody(mc, plc1, prog.plc1, 0, false)) return e;
+  if (mine(unit++)) {
+    llvm::Function *init = makeFunction(*mod, kInitSymbol, FnKind::Entry);
+    if (llvm::Error e = lowerBody(mc, init, prog.init, 0, false)) return e;
+  }
+  if (mine(unit++)) {
+    llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
+    if (llvm::Error e = lowerBody(mc, plc1, prog.plc1, 0, false)) return e;
+  }
 
   std::vector<StmtRange> slices = prog.slices;
   if (slices.empty()) slices.push_back(prog.plc2);
   std::vector<llvm::Function *> sliceFns;
-  for (size_t k = 0; k < slices.size(); ++k) {
-    llvm::Function *fn = makeFunction(*mod, "lj_plc2.s" + std::to_string(k), FnKind::Body);
+  for (size_t k = 0; k < slices.size(); ++k, ++unit) {
+    llvm::Function *fn = makeFunction(*mod, "lj_plc2.s" + std::to_string(k), FnKind::Body, shared);
+    sliceFns.push_back(fn);
+    if (!mine(unit)) continue; // declared only: another partition defines it
     fn->addFnAttr(llvm::Attribute::NoInline);
     int32_t dead = k < prog.sliceDepth.size() ? prog.sliceDepth[k] : 0;
     if (llvm::Error e = lowerBody(mc, fn, slices[k], dead, false)) return e;
-    sliceFns.push_back(fn);
   }
-  emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
+  if (opts.partition == 0)
+    emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
+  // Declarations nobody here calls would only be noise in the object's symbol table.
+  for (llvm::Function &f : llvm::make_early_inc_range(*mod))
+    if (f.isDeclaration() && f.use_empty() && !f.isIntrinsic()) f.eraseFromParent();
 
   std::string msg;
   llvm::raw_string_ostream os(msg);
