@@ -41,6 +41,10 @@ struct RandomOptions {
   int32_t maxMsDepth = 4;
   int32_t maxSubs = 4;
   int32_t maxNest = 3; ///< nesting of jump regions and loops
+  /// Keep backward jumps and loops short (counted guards with small bounds, constant LOOP
+  /// counts), so a tick rarely ends in the watchdog and all of a long program runs; for tests
+  /// that compare whole programs. Off (the default) leaves the generated programs unchanged.
+  bool avoidWatchdog = false;
 };
 
 /// A random program that must verify without errors. Instructions are chosen by iterating the

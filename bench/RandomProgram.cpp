@@ -305,6 +305,7 @@ void RandomGen::backwardJump(int32_t budget, int nest) {
   int32_t l = nextLabel_++;
   std::string g = "D" + std::to_string(kGuardFirst + nextGuard_++ % kGuardCount);
   int mode = rng_.weighted(std::array<int, 3>{82, 12, 6});
+  if (o_.avoidWatchdog) mode = 0;
   if (mode == 0) {
     emit("LDT");
     emit("MOV 0 " + g);
@@ -316,6 +317,7 @@ void RandomGen::backwardJump(int32_t budget, int nest) {
   // watchdog while the stimulus holds it), or unconditional (always the watchdog once reached).
   if (mode == 0) {
     int32_t bound = rng_.chance(90) ? static_cast<int32_t>(rng_.range(1, 6)) : 100000;
+    if (o_.avoidWatchdog && bound > 6) bound = 6;
     emit("LDT");
     emit("INC " + g);
     emit("LT " + g + " " + std::to_string(bound));
@@ -330,12 +332,14 @@ void RandomGen::backwardJump(int32_t budget, int nest) {
   ms_ = 0;
 }
 
+/// Constant LOOP counts: skipped (-1, 0), once, and a few iterations.
+constexpr int32_t kLoopCounts[] = {-1, 0, 1, 2, 3, 5};
+
 void RandomGen::loop(int32_t budget, int nest) {
   closeMs();
   std::string n;
   if (rng_.chance(60)) {
-    static constexpr int32_t kCounts[] = {-1, 0, 1, 2, 3, 5};
-    n = std::to_string(kCounts[rng_.below(6)]);
+    n = std::to_string(kLoopCounts[rng_.below(6)]);
   } else if (rng_.chance(60)) {
     // A register count: whatever the program left there (often large: the watchdog).
     const OperandSpec &sp = instrInfo(Op::LOOP).operands[0];
@@ -343,6 +347,11 @@ void RandomGen::loop(int32_t budget, int nest) {
   } else {
     n = operand(instrInfo(Op::LOOP), 0);
   }
+  // Drawn after the default choice, so the default programs stay the same. A register count
+  // then comes from an input byte (only the host writes X: at most 255 iterations).
+  if (o_.avoidWatchdog)
+    n = rng_.chance(40) ? "X" + std::to_string(pickIndex(rng_, Area::X))
+                        : std::to_string(kLoopCounts[rng_.below(std::size(kLoopCounts))]);
   emit("LOOP " + n);
   resetStacks();
   block(budget, nest + 1);

@@ -10,12 +10,12 @@ class FlowJit : public ::testing::TestWithParam<jit::Tier> {};
 TEST_P(FlowJit, JmpExample) {
   // 3.5 JMP test: X35.5=1 -> Y0.0 unchanged, Y0.1=1; X35.5=0 -> both 1. The edge contact in
   // the skipped code keeps its memory (DIALECT.md 3): skipped code does not update m.
-  auto prog = verifyOrFail("LD X35.5\nJMP L1111\nLDT\nOUT Y0.0\nLDP X1.0\nOUT Y0.2\n"
-                           "LBL L1111\nLDT\nOUT Y0.1\n");
+  auto prog = compileOrFail("LD X35.5\nJMP L1111\nLDT\nOUT Y0.0\nLDP X1.0\nOUT Y0.2\n"
+                            "LBL L1111\nLDT\nOUT Y0.1\n");
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 4;
-  d.inputs = [](uint32_t t, lj_state &s) {
+  d.hostInputs = [](uint32_t t, lj_state &s) {
     s.img.X[35] = t < 2 ? 0x20 : 0;
     s.img.X[1] = 1;
   };
@@ -33,13 +33,13 @@ TEST_P(FlowJit, IendLoopAndNestedLoops) {
   // NEXT` -> +5 per scan. Nested LOOP 3 / LOOP R8: the register count is read once on entry
   // (the inner body clears R8, the outer body restores it from R9), so the inner body runs
   // 3 * R9 times; each iteration is one watchdog step; LOOP -2 skips its body.
-  auto prog = verifyOrFail("LDT\nINC D0\nIEND\nLOOP 5\nLDT\nINC D1\nNEXT\nLOOP 3\nLOOP R8\n"
-                           "LDT\nINC D2\nLDT\nMOV 0 R8\nNEXT\nLDT\nMOV R9 R8\nNEXT\nLOOP -2\n"
-                           "LDT\nINC D3\nNEXT\n");
+  auto prog = compileOrFail("LDT\nINC D0\nIEND\nLOOP 5\nLDT\nINC D1\nNEXT\nLOOP 3\nLOOP R8\n"
+                            "LDT\nINC D2\nLDT\nMOV 0 R8\nNEXT\nLDT\nMOV R9 R8\nNEXT\nLOOP -2\n"
+                            "LDT\nINC D3\nNEXT\n");
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 4;
-  d.inputs = [](uint32_t t, lj_state &s) {
+  d.hostInputs = [](uint32_t t, lj_state &s) {
     s.img.R[8] = s.img.R[9] = static_cast<uint8_t>(2 * t);
     s.img.D[2] = 0;
   };
@@ -57,14 +57,14 @@ TEST_P(FlowJit, CallRetnAndCallerStack) {
   // 3.5 RETN test: SP S1 / LDI R100.0 / RETN / LDT / OUT Y0.0 / SPE: with R100.0=0 Y0.0 is not
   // written, with R100.0=1 Y0.0=1. The caller's ST survives the call (depth 2 across CALL),
   // and nested calls S2 -> S3 run with their own stacks.
-  auto prog = verifyOrFail("LD X0.1\nLD X0.0\nCALL S1\nANB\nOUT Y1.0\nLDT\nCALL S2\nOUT Y1.1\n"
-                           "1END\n2END\nSP S1\nLDI R100.0\nRETN\nLDT\nOUT Y0.0\nSPE\n"
-                           "SP S2\nLD X0.2\nCALL S3\nOUT Y2.0\nSPE\n"
-                           "SP S3\nLDT\nINC D0\nLDT\nRETN\nSPE\n");
+  auto prog = compileOrFail("LD X0.1\nLD X0.0\nCALL S1\nANB\nOUT Y1.0\nLDT\nCALL S2\nOUT Y1.1\n"
+                            "1END\n2END\nSP S1\nLDI R100.0\nRETN\nLDT\nOUT Y0.0\nSPE\n"
+                            "SP S2\nLD X0.2\nCALL S3\nOUT Y2.0\nSPE\n"
+                            "SP S3\nLDT\nINC D0\nLDT\nRETN\nSPE\n");
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 16;
-  d.inputs = [](uint32_t t, lj_state &s) {
+  d.hostInputs = [](uint32_t t, lj_state &s) {
     s.img.X[0] = static_cast<uint8_t>(t & 7);
     s.img.R[100] = (t >> 3) & 1;
     s.img.Y[0] = 0;
@@ -82,11 +82,11 @@ TEST_P(FlowJit, CallRetnAndCallerStack) {
 TEST_P(FlowJit, WatchdogOnBackwardJump) {
   // dialect-notes: `if (++steps > max) abort` before each taken backward JMP; the image keeps
   // what was written so far. With max 10 an endless loop runs its body 11 times per tick.
-  auto prog = verifyOrFail("LDT\nINC D1\nLBL L1\nLDT\nINC D0\nLDT\nJMP L1\n1END\nLDT\nINC D2\n");
+  auto prog = compileOrFail("LDT\nINC D1\nLBL L1\nLDT\nINC D0\nLDT\nJMP L1\n1END\nLDT\nINC D2\n");
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 3;
-  d.maxSteps = 10;
+  d.maxBackwardSteps = 10;
   EXPECT_TRUE(jitMatchesInterpreter(
       *prog, GetParam(), d, [](uint32_t t, const lj_state &s, uint32_t fault) {
         EXPECT_EQ(fault, static_cast<uint32_t>(LJ_FAULT_WATCHDOG));
@@ -103,14 +103,14 @@ TEST_P(FlowJit, WatchdogPropagatesThroughCallsAndLoops) {
   // (steps 11, 12) and ends with D8 = 3. Odd ticks: R8 = 30, the subroutine's loop exhausts the
   // budget at step 51 in the second outer iteration; the abort returns through S1 and the
   // caller's loop, INC D1 of that iteration and everything after it do not run, PLC2 is skipped.
-  auto prog = verifyOrFail("LOOP 10\nLDT\nCALL S1\nLDT\nINC D1\nNEXT\nLDT\nINC D2\n1END\n"
-                           "LDT\nMOV 0 D7\nLBL L5\nLDT\nINC D7\nLT D7 3\nJMP L5\nLDT\nMOV D7 D8\n"
-                           "2END\nSP S1\nLOOP R8\nLDT\nINC D0\nNEXT\nSPE\n");
+  auto prog = compileOrFail("LOOP 10\nLDT\nCALL S1\nLDT\nINC D1\nNEXT\nLDT\nINC D2\n1END\n"
+                            "LDT\nMOV 0 D7\nLBL L5\nLDT\nINC D7\nLT D7 3\nJMP L5\nLDT\nMOV D7 D8\n"
+                            "2END\nSP S1\nLOOP R8\nLDT\nINC D0\nNEXT\nSPE\n");
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 4;
-  d.maxSteps = 50;
-  d.inputs = [](uint32_t t, lj_state &s) {
+  d.maxBackwardSteps = 50;
+  d.hostInputs = [](uint32_t t, lj_state &s) {
     s.img.R[8] = (t & 1) ? 30 : 0;
     s.img.D[8] = 0;
   };
@@ -136,12 +136,12 @@ TEST_P(FlowJit, SlicesRunRoundRobinWithDeadEntries) {
     text += "LD X1." + std::to_string(i % 8) + "\nOUT Y" + std::to_string(i) + "." +
             std::to_string(i % 8) + "\nLDT\nINC D" + std::to_string(1 + i) + "\n";
   text += "2END\n";
-  auto prog = verifyOrFail(text, 4);
+  auto prog = compileOrFail(text, optionsWithNvalue(4));
   ASSERT_TRUE(prog);
   ASSERT_GT(prog->slices.size(), 2u);
-  Drive d;
+  Scenario d;
   d.ticks = 40;
-  d.inputs = [](uint32_t t, lj_state &s) { s.img.X[1] = static_cast<uint8_t>(t * 29); };
+  d.hostInputs = [](uint32_t t, lj_state &s) { s.img.X[1] = static_cast<uint8_t>(t * 29); };
   EXPECT_TRUE(jitMatchesInterpreter(*prog, GetParam(), d));
 }
 
@@ -162,11 +162,11 @@ TEST_P(FlowJit, ChunkedBodiesMatch) {
     sub += "LD X5." + std::to_string(i) + "\nRETN\nLDT\nINC W" + std::to_string(i) + "\n";
   std::string text = body + "LD X6.0\nOR X6.1\nLD X6.2\nCALL S1\nANB\nOUT Y20.0\n1END\n" + body +
                      "2END\nSP S1\n" + sub + "SPE\n";
-  auto prog = verifyOrFail(text, 10);
+  auto prog = compileOrFail(text, optionsWithNvalue(10));
   ASSERT_TRUE(prog);
-  Drive d;
+  Scenario d;
   d.ticks = 30;
-  d.inputs = [](uint32_t t, lj_state &s) {
+  d.hostInputs = [](uint32_t t, lj_state &s) {
     for (int n = 2; n <= 6; ++n) s.img.X[n] = static_cast<uint8_t>((t + 1) * (n * 37 + 11) >> 2);
   };
   for (int chunk : {0, 3, 7}) {

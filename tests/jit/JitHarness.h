@@ -1,63 +1,51 @@
-// Test harness of the JIT: compile STL, run it on the reference interpreter and on the JIT in
-// lock-step with identical host writes, and compare the complete lj_state after every step.
+// JIT-specific test helpers: JIT engines built with explicit options (tier, chunking, partitioned
+// compile), run against the reference interpreter by the shared lock-step harness of
+// tests/support (CrossEngine.h), which compares fault codes and the complete lj_state.
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/FrontEnd.h"
 #include "jit/Jit.h"
-#include "ladderjit/abi.h"
+#include "tests/support/CrossEngine.h"
+#include "tests/support/Machine.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
-#include <string_view>
 
 namespace lj::test {
 
-/// Front end or a recorded test failure.
-std::optional<VerifiedProgram> verifyOrFail(std::string_view text, int32_t plc2Nvalue = 200);
+/// An engine factory for the JIT with exactly `opts` (the registry's JIT uses the defaults).
+EngineFactory jitEngine(const jit::JitOptions &opts);
 
-/// Host writes of one run: `before` after reset and before init, `inputs` before each tick.
-struct Drive {
-  uint32_t ticks = 1;
-  uint64_t periodMs = 1;
-  uint64_t maxSteps = 1000000;
-  std::function<void(lj_state &)> before;
-  std::function<void(uint32_t tick, lj_state &)> inputs;
-};
+/// Expected-value check on the interpreter's state after each tick (tick, state, fault code).
+using StateCheck = std::function<void(uint32_t tick, const lj_state &ref, uint32_t fault)>;
 
-/// One program on one engine with its own state (reset to power-up).
-struct Run {
-  std::unique_ptr<Engine> engine;
-  std::unique_ptr<lj_state> state;
-};
+/// sameStateOnEngines on {reference interpreter, JIT built with `opts`}: fault codes and every
+/// byte of lj_state equal after init and after every tick. `check` sees the interpreter's state
+/// after every tick.
+::testing::AssertionResult jitMatchesInterpreter(const VerifiedProgram &prog,
+                                                 const jit::JitOptions &opts, const Scenario &sc,
+                                                 const StateCheck &check = {});
 
-/// The JIT engine of `prog` or a recorded failure (null).
-std::unique_ptr<Engine> jitOrFail(const VerifiedProgram &prog, jit::Tier tier,
-                                  int32_t chunkStatements = 150);
+/// The same for the JIT of `tier` cutting bodies every `chunkStatements` statements.
+::testing::AssertionResult jitMatchesInterpreter(const VerifiedProgram &prog, jit::Tier tier,
+                                                 const Scenario &sc, const StateCheck &check = {},
+                                                 int32_t chunkStatements = 150);
 
-/// Name of the lj_state field holding byte `offset` ("img.R[10]", "T[3].out", "edge[7]").
-std::string fieldAt(size_t offset);
+/// The differential fuzzer's random program for `seed` of about `statements` statements
+/// (bench/ProgramGenerator.h: every table row, deep ANB/ORB and MPS nesting, loops, jumps,
+/// nested calls, RETN, faults), verified with `plc2Nvalue` or, when negative, with the slicing
+/// parameter it was generated for. `text`, when given, receives the program.
+std::optional<VerifiedProgram> randomProgramOrFail(uint64_t seed, int32_t statements,
+                                                   std::string *text = nullptr,
+                                                   int32_t plc2Nvalue = -1);
 
-/// First differing byte of two states, or success.
-::testing::AssertionResult sameState(const lj_state &ref, const lj_state &got);
-
-/// Run `prog` on the interpreter and on the JIT of `tier` (with `chunkStatements`), comparing
-/// fault codes and full state after init and after every tick. `check`, if given, sees the
-/// interpreter's state after each tick (tick index, state, fault) for expected-value checks.
-::testing::AssertionResult
-jitMatchesInterpreter(const VerifiedProgram &prog, jit::Tier tier, const Drive &drive,
-                      const std::function<void(uint32_t, const lj_state &, uint32_t)> &check = {},
-                      int32_t chunkStatements = 150);
-
-/// Run `prog` on one engine alone and return the final state (for expected-value tests).
-std::unique_ptr<lj_state>
-runAlone(const Engine &engine, const Drive &drive,
-         const std::function<void(uint32_t, const lj_state &, uint32_t)> &check = {});
+/// `ticks` ticks of the fuzzer's random stimulus for `seed` (P/B/X/F before init, X/F writes
+/// before every tick) at now_ms = tick * `periodMs`, with the watchdog at `maxBackwardSteps`.
+Scenario randomScenario(uint64_t seed, uint32_t ticks, uint32_t periodMs,
+                        uint64_t maxBackwardSteps);
 
 /// Bit `bit` of byte array element (X/Y/R), for readable expectations.
 inline int bitOf(uint8_t v, int bit) { return (v >> bit) & 1; }

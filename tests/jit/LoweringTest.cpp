@@ -4,7 +4,9 @@
 #include "jit/Jit.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/FunctionEmitter.h"
-#include "tests/jit/JitHarness.h"
+#include "tests/support/Machine.h"
+
+#include <gtest/gtest.h>
 
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
@@ -60,7 +62,7 @@ TEST(Chunking, CutsOnlyWhereNothingIsLive) {
   text += "LD X0.2\nMPS\nAND X0.3\nOUT Y3.0\nMPP\nOUT Y3.1\n";
   text += "LOOP 2\nLDT\nINC D0\nLDT\nINC D1\nNEXT\nLD X0.4\nJMP L1\nLDT\nINC D2\nLDT\nINC D3\n"
           "LBL L1\nLDT\nOUT Y4.0\n";
-  auto prog = verifyOrFail(text);
+  auto prog = compileOrFail(text);
   ASSERT_TRUE(prog);
   std::vector<StmtRange> chunks = lower::planChunks(*prog, prog->plc1, 1);
   ASSERT_GT(chunks.size(), 30u);
@@ -79,8 +81,8 @@ TEST(Chunking, CutsOnlyWhereNothingIsLive) {
 }
 
 TEST(EmitLlvm, NoMemoryStackAndStatesArePointers) {
-  auto prog = verifyOrFail("LD X1.0\nOR X1.1\nLD X2.0\nAND X4.4\nLD X1.2\nAND X2.1\nORB\n"
-                           "OR X1.3\nANB\nOR X2.2\nOUT R10.0\n");
+  auto prog = compileOrFail("LD X1.0\nOR X1.1\nLD X2.0\nAND X4.4\nLD X1.2\nAND X2.1\nORB\n"
+                            "OR X1.3\nANB\nOR X2.2\nOUT R10.0\n");
   ASSERT_TRUE(prog);
   for (int level = 0; level <= 3; ++level) {
     std::string ir, error;
@@ -97,7 +99,7 @@ TEST(EmitLlvm, NoMemoryStackAndStatesArePointers) {
 
 TEST(EmitLlvm, OneStoreForSeveralCoilsOfOneByte) {
   // The image cache writes Y0 once although three coils change it (MPS-1, hnc8-core.md 4.10).
-  auto prog = verifyOrFail("LD X1.0\nMPS\nAND X1.7\nOUT Y0.3\nMRD\nOUT Y0.2\nMPP\nOOUT Y0.4\n");
+  auto prog = compileOrFail("LD X1.0\nMPS\nAND X1.7\nOUT Y0.3\nMRD\nOUT Y0.2\nMPP\nOOUT Y0.4\n");
   ASSERT_TRUE(prog);
   std::string ir, error;
   ASSERT_TRUE(jit::emitLlvm(*prog, 0, ir, error)) << error;
@@ -107,8 +109,8 @@ TEST(EmitLlvm, OneStoreForSeveralCoilsOfOneByte) {
 }
 
 TEST(Facade, PhaseTimesAndVersionsInOneSession) {
-  auto v1 = verifyOrFail("LDT\nMOV 1 D0\n");
-  auto v2 = verifyOrFail("LDT\nMOV 2 D0\n");
+  auto v1 = compileOrFail("LDT\nMOV 1 D0\n");
+  auto v2 = compileOrFail("LDT\nMOV 2 D0\n");
   ASSERT_TRUE(v1 && v2);
   for (jit::Tier tier : {jit::Tier::Fast, jit::Tier::Optimizing}) {
     std::string error;
@@ -147,7 +149,7 @@ TEST(Facade, PhaseTimesAndVersionsInOneSession) {
 
 TEST(Facade, InconsistentProgramIsAnErrorNotACrash) {
   // A verified program whose facts contradict its statements (a front-end bug) is reported.
-  auto prog = verifyOrFail("LD X0.0\nLD X0.1\nANB\nOUT Y0.0\n");
+  auto prog = compileOrFail("LD X0.0\nLD X0.1\nANB\nOUT Y0.0\n");
   ASSERT_TRUE(prog);
   prog->info[prog->plc1.begin + 2].depth = 5;
   std::string error;

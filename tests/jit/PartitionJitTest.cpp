@@ -4,7 +4,6 @@
 // number of partitions and wherever the cross-module calls (slices, subroutines) fall.
 #include "lowering/Lower.h"
 #include "tests/jit/JitHarness.h"
-#include "tests/jit/RandomPrograms.h"
 
 namespace lj::test {
 namespace {
@@ -16,48 +15,19 @@ struct PartitionCase {
 
 class PartitionJit : public ::testing::TestWithParam<PartitionCase> {};
 
-// Lock-step run of the interpreter and a JIT built with `opts` (the harness builds its JIT with
-// default options, which do not partition programs this small).
-::testing::AssertionResult matches(const VerifiedProgram &prog, const jit::JitOptions &opts,
-                                   uint64_t seed) {
-  std::string error;
-  std::unique_ptr<Engine> ref = makeInterpreterEngine(prog);
-  std::unique_ptr<Engine> jit = jit::compile(prog, opts, error);
-  if (!jit) return ::testing::AssertionFailure() << "JIT compile failed: " << error;
-  auto a = std::make_unique<lj_state>(), b = std::make_unique<lj_state>();
-  lj_state_reset(a.get());
-  lj_state_reset(b.get());
-  a->max_backward_steps = b->max_backward_steps = 3000;
-  uint32_t fa = lj_run_init(a.get(), &ref->entries());
-  uint32_t fb = lj_run_init(b.get(), &jit->entries());
-  if (fa != fb) return ::testing::AssertionFailure() << "init fault " << fa << " vs " << fb;
-  if (auto r = sameState(*a, *b); !r) return r << " after init";
-  for (uint32_t t = 0; t < 30; ++t) {
-    a->now_ms = b->now_ms = t * (1 + seed % 23);
-    randomInputs(seed, t, *a);
-    randomInputs(seed, t, *b);
-    fa = lj_tick(a.get(), &ref->entries());
-    fb = lj_tick(b.get(), &jit->entries());
-    if (fa != fb)
-      return ::testing::AssertionFailure() << "tick " << t << " fault " << fa << " vs " << fb;
-    if (auto r = sameState(*a, *b); !r) return r << " after tick " << t;
-  }
-  return ::testing::AssertionSuccess();
-}
-
 TEST_P(PartitionJit, PartitionedProgramMatchesInterpreter) {
   const PartitionCase c = GetParam();
-  static const int32_t kNvalues[] = {0, 7, 30, 200};
-  std::string text = randomProgram(c.seed, 60);
-  auto prog = verifyOrFail(text, kNvalues[c.seed % 4]);
+  std::string text;
+  auto prog = randomProgramOrFail(c.seed, 1500, &text);
   ASSERT_TRUE(prog) << text;
+  Scenario sc = randomScenario(c.seed, 30, static_cast<uint32_t>(1 + c.seed % 23), 3000);
   for (int32_t threads : {2, 3, 5}) {
     jit::JitOptions o;
     o.tier = c.tier;
     o.compileThreads = threads;
-    o.minStatementsPerThread = 1; // partition even this small program
+    o.minStatementsPerThread = 1; // partition even a small program
     o.chunkStatements = c.seed % 2 ? 150 : 8;
-    ::testing::AssertionResult same = matches(*prog, o, c.seed);
+    ::testing::AssertionResult same = jitMatchesInterpreter(*prog, o, sc);
     EXPECT_TRUE(same) << "seed " << c.seed << ", " << threads << " threads\n" << text;
     if (!same) break;
   }
@@ -81,7 +51,7 @@ INSTANTIATE_TEST_SUITE_P(Seeds, PartitionJit, ::testing::ValuesIn(cases()),
 // The partition plan: contiguous, starting at 0, every partition used when there are enough
 // bodies, and a single partition when asked for one.
 TEST(PartitionPlan, ContiguousAndBalanced) {
-  auto prog = verifyOrFail(randomProgram(7, 80), 20);
+  auto prog = randomProgramOrFail(7, 2000, nullptr, 20);
   ASSERT_TRUE(prog);
   std::vector<uint32_t> one = lower::planPartitions(*prog, 1);
   for (uint32_t p : one) EXPECT_EQ(p, 0u);

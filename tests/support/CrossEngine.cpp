@@ -40,6 +40,7 @@ namespace {
     m->setPeriodMs(sc.periodMs);
     m->state().max_backward_steps = sc.maxBackwardSteps;
     for (const Stimulus &st : sc.before) m->set(st.addr, st.value);
+    if (sc.hostBefore) sc.hostBefore(m->state());
     ms.push_back(std::move(m));
   }
   std::vector<uint32_t> faults(ms.size());

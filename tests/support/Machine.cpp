@@ -64,6 +64,7 @@ uint32_t Machine::ticks(uint32_t n) {
 uint32_t Machine::tick(const Scenario &sc) {
   for (const Stimulus &st : sc.inputs)
     if (st.tick == tick_) set(st.addr, st.value);
+  if (sc.hostInputs) sc.hostInputs(tick_, *state_);
   return tick();
 }
 

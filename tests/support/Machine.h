@@ -9,6 +9,7 @@
 #include "tests/support/EngineRegistry.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,6 +40,11 @@ struct Scenario {
   uint64_t maxBackwardSteps = 1000000;
   std::vector<Stimulus> before; ///< applied after reset, before init
   std::vector<Stimulus> inputs; ///< applied before their tick
+  /// Host writes that address text cannot express compactly (computed from the tick number,
+  /// whole arrays, generated stimuli). `hostBefore` runs after `before`; `hostInputs(tick, s)`
+  /// runs before every tick, after that tick's `inputs`.
+  std::function<void(lj_state &)> hostBefore;
+  std::function<void(uint32_t tick, lj_state &)> hostInputs;
 
   Scenario &preset(std::string addr, int64_t v) {
     before.push_back({0, std::move(addr), v});
@@ -65,7 +71,7 @@ public:
   uint32_t tick();
   /// `n` ticks; returns the fault code of the last one.
   uint32_t ticks(uint32_t n);
-  /// Apply the scenario writes meant for the next tick, then run it.
+  /// Apply the scenario writes meant for the next tick (`inputs`, then `hostInputs`), then run it.
   uint32_t tick(const Scenario &sc);
 
   /// Read a bit, element, timer or counter (TestAddress.h forms).
