@@ -1,17 +1,23 @@
 // Scan speed: one full scan (PLC1 + every PLC2 slice, entries called directly) of realistic
 // 1k/5k/10k programs on the interpreter and the JIT tiers, plus a same-run JIT/interpreter ratio
-// (targets: JIT full scan of 10k < 10 us and >= 30x the interpreter).
+// (targets: JIT full scan of 10k < 10 us and >= 30x the interpreter), and AOT shared objects
+// (`ladderjit compile`) against the optimizing JIT in the same run.
 #include "bench/BenchPrograms.h"
 #include "instructions/Engine.h"
 
 #ifdef LADDERJIT_HAVE_JIT
+#include "io/AotLoader.h"
+#include "jit/Aot.h"
 #include "jit/Jit.h"
+#include "jit/ObjectCache.h"
+
+#include <unistd.h>
 #endif
 
 namespace lj::bench {
 namespace {
 
-enum class Kind { Interp, JitFast, JitOpt };
+enum class Kind { Interp, JitFast, JitOpt, Aot };
 
 /// Engines are built once per (size, kind): Google Benchmark calls a benchmark function several
 /// times, and a 10k optimizing compile should not be repeated for each call.
@@ -24,6 +30,22 @@ const Engine &engineFor(int n, Kind k) {
   std::unique_ptr<Engine> e;
   if (k == Kind::Interp) {
     e = makeInterpreterEngine(p);
+  } else if (k == Kind::Aot) {
+#ifdef LADDERJIT_HAVE_JIT
+    // `ladderjit compile` (host CPU) into a temp .so, loaded like `run --engine aot:` does.
+    std::string so = "/tmp/ladderjit-bench-" + std::to_string(getpid()) + "-" + std::to_string(n) +
+                     ".so",
+                err;
+    jit::AotOptions o;
+    o.output = so;
+    o.programHash = "sha256:" + jit::programDigest(p);
+    if (jit::compileSharedObject(p, o, err)) e = io::loadAot(so, o.programHash, err);
+    std::remove(so.c_str());
+    if (!e) {
+      std::fprintf(stderr, "AOT build of the %d-statement program failed: %s\n", n, err.c_str());
+      std::abort();
+    }
+#endif
   } else {
 #ifdef LADDERJIT_HAVE_JIT
     jit::JitOptions o;
@@ -119,6 +141,39 @@ void BM_ScanRatio(benchmark::State &state, Kind jitKind) {
   state.counters["jit_ns_per_stmt"] = jitNs / scans / stmts;
   state.counters["speedup"] = jitNs > 0 ? interpNs / jitNs : 0;
 }
+
+BENCHMARK_CAPTURE(BM_Scan, aot, Kind::Aot)->Apply(programSizes)->Unit(benchmark::kMicrosecond);
+
+/// The optimizing JIT and the AOT .so of the same program timed in alternating blocks of the
+/// same run: same lowering and pipeline, so the ratio should be 1 within noise.
+void BM_ScanAotVsJit(benchmark::State &state) {
+  const int n = static_cast<int>(state.range(0));
+  const int kBlock = std::max(8, 100000 / n);
+  const Engine &je = engineFor(n, Kind::JitOpt);
+  const Engine &ae = engineFor(n, Kind::Aot);
+  auto sj = preparedState(je);
+  auto sa = preparedState(ae);
+  double jitNs = 0, aotNs = 0;
+  uint64_t i = 0;
+  for (auto _ : state) {
+    Stopwatch a;
+    for (int k = 0; k < kBlock; ++k) fullScan(je.entries(), sj.get(), i + k);
+    benchmark::ClobberMemory();
+    jitNs += a.ns();
+    Stopwatch b;
+    for (int k = 0; k < kBlock; ++k) fullScan(ae.entries(), sa.get(), i + k);
+    benchmark::ClobberMemory();
+    aotNs += b.ns();
+    i += kBlock;
+    benchmark::DoNotOptimize(sj.get());
+    benchmark::DoNotOptimize(sa.get());
+  }
+  const double scans = static_cast<double>(state.iterations()) * kBlock;
+  state.counters["jit_us_per_scan"] = jitNs / scans / 1000;
+  state.counters["aot_us_per_scan"] = aotNs / scans / 1000;
+  state.counters["aot_over_jit"] = jitNs > 0 ? aotNs / jitNs : 0;
+}
+BENCHMARK(BM_ScanAotVsJit)->Apply(programSizes)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_CAPTURE(BM_ScanRatio, jit_fast, Kind::JitFast)
     ->Apply(programSizes)

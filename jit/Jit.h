@@ -11,6 +11,8 @@
 
 namespace lj::jit {
 
+class ObjectCache; // jit/ObjectCache.h
+
 /// Compile tier: Fast = no IR passes + FastISel; Optimizing = a tailored InstCombine/SimplifyCFG
 /// pipeline + SelectionDAG codegen at CodeGenOptLevel::Less (jit/Pipeline.cpp).
 enum class Tier { Fast, Optimizing };
@@ -28,6 +30,9 @@ struct JitOptions {
   /// Fewer threads for smaller programs: each needs this many statements (a thread, a context
   /// and a TargetMachine cost about a millisecond). Tests set 1 to force partitioning.
   int32_t minStatementsPerThread = 500;
+  /// Reuse objects of an identical earlier compile (checked before any IR is built) and store
+  /// new ones; null = always compile. `ladderjit run` passes ObjectCache::fromEnvironment().
+  std::shared_ptr<ObjectCache> cache = nullptr;
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,

@@ -4,6 +4,7 @@
 // objects on parallel threads, then linked by JITLink. llvm::Error stays inside; callers get
 // strings.
 #include "jit/Jit.h"
+#include "jit/ObjectCache.h"
 #include "jit/Pipeline.h"
 #include "lowering/Lower.h"
 
@@ -180,7 +181,19 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   const double t0 = nowUs();
   const uint32_t parts = partitionCount(prog, opts);
   std::vector<PartResult> res(parts);
-  {
+  // The object cache is consulted before any IR is built (docs/aot.md "Object cache").
+  std::string cacheKey;
+  std::vector<std::string> cached;
+  if (opts.cache) {
+    CacheKeyInputs in{
+        im.jtmb->getTargetTriple().str(), im.jtmb->getCPU(),    im.jtmb->getFeatures().getString(),
+        static_cast<int>(im.tier),        opts.chunkStatements, parts};
+    cacheKey = objectCacheKey(prog, in);
+    if (opts.cache->lookup(cacheKey, cached) && cached.size() != parts) cached.clear();
+    for (uint32_t p = 0; p < parts && !cached.empty(); ++p)
+      res[p].obj = llvm::MemoryBuffer::getMemBufferCopy(cached[p], "cached#" + std::to_string(p));
+  }
+  if (!res[0].obj) {
     // Partition 0 on this thread, the others on their own; every partition has its own
     // LLVMContext and TargetMachine (notes 4: one context per concurrently compiled module).
     std::vector<std::thread> workers;
@@ -201,6 +214,12 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     }
     t.lowerUs = std::max(t.lowerUs, r.lowerUs);
     t.optimizeUs = std::max(t.optimizeUs, r.optimizeUs);
+  }
+  if (opts.cache && cached.empty()) {
+    std::vector<std::string_view> objs;
+    for (const PartResult &r : res)
+      objs.emplace_back(r.obj->getBufferStart(), r.obj->getBufferSize());
+    opts.cache->store(cacheKey, objs);
   }
   std::string name;
   {

@@ -53,8 +53,8 @@ TEST(Usage, HelpExitsZero) {
 
 TEST(Usage, AnnouncedCommandsNotAvailableYet) {
   std::string prog = writeScratch("na.stl", kFollow);
-  for (auto args : {std::vector<std::string>{"compile", prog, "-o", scratchDir() + "/x.so"},
-                    std::vector<std::string>{"serve", prog}}) {
+  // `compile` is available since issue 5 (docs/aot.md; tested in tests/aot).
+  for (auto args : {std::vector<std::string>{"serve", prog}}) {
     CliResult r = runCli(args);
     EXPECT_EQ(r.exitCode, 2) << args[0];
     EXPECT_NE(r.err.find("not available yet"), std::string::npos) << r.err;

@@ -2,10 +2,12 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
+#include "instructions/Engine.h"
 #include "instructions/Program.h"
 #include "io/PlcDit.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,6 +83,24 @@ struct DitArgs {
 };
 /// `ladderjit dit`: write a plc.dit from an STL file, symbols and parameters (docs/plc-dit.md).
 int runDit(const DitArgs &a);
+
+struct CompileArgs {
+  std::string program;
+  std::string output;       ///< the .so to write
+  std::string cpu = "host"; ///< host | generic
+  int32_t plc2Nvalue = 200;
+  bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line (beats a plc.dit)
+};
+/// `ladderjit compile`: build PROGRAM into a shared object with the C ABI (docs/aot.md).
+int runCompile(const CompileArgs &a);
+
+/// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (io::programHash).
+std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue);
+
+/// `--engine aot:PATH`: load the .so and check it was built from `src` with `plc2Nvalue`. Null
+/// with `error` set on any problem (docs/aot.md "Loading").
+std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
+                                      int32_t plc2Nvalue, std::string &error);
 
 struct FuzzArgs {
   uint64_t seed = 1;

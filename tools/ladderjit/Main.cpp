@@ -113,9 +113,19 @@ int mainImpl(int argc, char **argv) {
   lastWins(
       cFuzz->add_option("--ticks", fz.ticks, "ticks per program (default 50)")->check(kUnsigned));
 
+  CompileArgs comp;
+  CLI::App *cCompile =
+      app.add_subcommand("compile", "ahead-of-time build to a shared object with the C ABI");
+  cCompile->add_option("PROGRAM", comp.program, kProgramHelp)->required();
+  lastWins(cCompile->add_option("-o,--output", comp.output, "shared object to write"))->required();
+  lastWins(cCompile->add_option("--cpu", comp.cpu, "host | generic (default host)"));
+  CLI::Option *compNvalue =
+      lastWins(cCompile
+                   ->add_option("--plc2-nvalue", comp.plc2Nvalue,
+                                "PLC2 statements per tick (default: the plc.dit's, else 200)")
+                   ->check(kUnsigned));
+
   // Announced by CLI.md, not in this release: accept any arguments and say so.
-  CLI::App *cCompile = app.add_subcommand("compile", "ahead-of-time build (not available yet)");
-  cCompile->allow_extras();
   CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (not available yet)");
   cServe->allow_extras();
 
@@ -134,13 +144,14 @@ int mainImpl(int argc, char **argv) {
   run.periodMsGiven = runPeriod->count() > 0;
   run.plc2NvalueGiven = runNvalue->count() > 0;
   emit.plc2NvalueGiven = emitNvalue->count() > 0;
+  comp.plc2NvalueGiven = compNvalue->count() > 0;
 
   if (cCheck->parsed()) return runCheck(check);
   if (cDit->parsed()) return runDit(dit);
   if (cRun->parsed()) return runRun(run);
   if (cEmit->parsed()) return runEmitLlvm(emit);
   if (cFuzz->parsed()) return runFuzz(fz);
-  if (cCompile->parsed()) return notAvailable("compile");
+  if (cCompile->parsed()) return runCompile(comp);
   if (cServe->parsed()) return notAvailable("serve");
   return usageError("no subcommand");
 }

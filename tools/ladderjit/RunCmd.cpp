@@ -9,6 +9,7 @@
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Jit.h"
+#include "jit/ObjectCache.h"
 #endif
 
 #include <charconv>
@@ -170,8 +171,8 @@ int runRun(const RunArgs &a) {
     sim.params.insert(sim.params.begin(), src.dit->params.begin(), src.dit->params.end());
     if (!a.periodMsGiven) sim.periodMs = src.dit->periodMs;
   }
-  std::optional<VerifiedProgram> prog =
-      loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
+  const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
+  std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
 
   std::unique_ptr<Engine> engine;
@@ -179,15 +180,17 @@ int runRun(const RunArgs &a) {
     engine = makeInterpreterEngine(*prog);
   } else if (a.engine == "jit") {
 #ifdef LADDERJIT_HAVE_JIT
-    engine = jit::compile(*prog, jit::JitOptions{}, error);
+    jit::JitOptions jo;
+    jo.cache = jit::ObjectCache::fromEnvironment(); // docs/aot.md "Object cache"
+    engine = jit::compile(*prog, jo, error);
     if (!engine) return usageError("jit: " + error);
 #else
     return usageError("--engine jit is not built yet (this build has no JIT library); "
                       "use --engine interp");
 #endif
   } else {
-    return usageError("--engine aot: ahead-of-time shared objects are not available yet; "
-                      "use --engine interp");
+    engine = loadAotEngine(a.engine.substr(4), src, nvalue, error);
+    if (!engine) return usageError("--engine aot: " + error);
   }
 
   DumpTarget dump; // opened only once the program is known to run

@@ -1,0 +1,29 @@
+// Ahead-of-time build (docs/aot.md): a verified program becomes a shared object exporting the
+// C ABI of runtime_abi/include/ladderjit/program.h. Same lowering and optimizing pipeline as the
+// JIT; the system C compiler (`cc`, or $LADDERJIT_CC) links it.
+#pragma once
+
+#include "instructions/Program.h"
+
+#include <cstdint>
+#include <string>
+
+namespace lj::jit {
+
+struct AotOptions {
+  std::string output;      ///< path of the .so to write (replaced atomically)
+  std::string programHash; ///< what ljprog_hash() returns: "sha256:" + 64 lowercase hex digits
+  /// false: the host CPU and its features (fastest, may not run elsewhere); true: the portable
+  /// baseline of the architecture (x86-64 without extensions).
+  bool genericCpu = false;
+  int32_t chunkStatements = 150; ///< as JitOptions::chunkStatements
+};
+
+/// Compile `prog` into a shared object at `opts.output`. On failure returns false, sets `error`
+/// and leaves no output file behind. Spawns the C compiler without a shell.
+bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, std::string &error);
+
+/// Whether `hash` has the form ljprog_hash() promises ("sha256:" + 64 lowercase hex digits).
+bool isProgramHash(const std::string &hash);
+
+} // namespace lj::jit
