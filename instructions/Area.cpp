@@ -28,7 +28,8 @@ std::optional<Area> areaFromLetter(char c) {
 
 bool validIndex(Area a, int64_t n) {
   if (n < 0) return false;
-  if (a == Area::T || a == Area::C) return lj_tc_slot(static_cast<int32_t>(n > 100000 ? -1 : n)) >= 0;
+  if (a == Area::T || a == Area::C)
+    return lj_tc_slot(static_cast<int32_t>(n > 100000 ? -1 : n)) >= 0;
   return n < areaInfo(a).count;
 }
 

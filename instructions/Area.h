@@ -20,10 +20,10 @@ constexpr bool hasArea(AreaMask m, Area a) { return (m & bit(a)) != 0; }
 /// Static facts about one area.
 struct AreaInfo {
   char letter;
-  int32_t count;     ///< elements when contiguous from 0 (T/C: see validIndex)
-  uint8_t bytes;     ///< element width in bytes (0 for T/C/L/S)
-  bool isSigned;     ///< read rule: sign-extend (true) or zero-extend (false)
-  bool writable;     ///< writable by ordinary program instructions
+  int32_t count; ///< elements when contiguous from 0 (T/C: see validIndex)
+  uint8_t bytes; ///< element width in bytes (0 for T/C/L/S)
+  bool isSigned; ///< read rule: sign-extend (true) or zero-extend (false)
+  bool writable; ///< writable by ordinary program instructions
 };
 
 const AreaInfo &areaInfo(Area a);

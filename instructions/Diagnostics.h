@@ -19,11 +19,15 @@ class Diagnostics {
 public:
   explicit Diagnostics(std::string file = {}) : file_(std::move(file)) {}
 
-  void error(SourceLoc loc, std::string msg) { add(Diagnostic::Severity::Error, loc, std::move(msg)); }
+  void error(SourceLoc loc, std::string msg) {
+    add(Diagnostic::Severity::Error, loc, std::move(msg));
+  }
   void warning(SourceLoc loc, std::string msg) {
     add(Diagnostic::Severity::Warning, loc, std::move(msg));
   }
-  void note(SourceLoc loc, std::string msg) { add(Diagnostic::Severity::Note, loc, std::move(msg)); }
+  void note(SourceLoc loc, std::string msg) {
+    add(Diagnostic::Severity::Note, loc, std::move(msg));
+  }
 
   bool hasErrors() const { return errors_ > 0; }
   int errorCount() const { return errors_; }

@@ -23,20 +23,18 @@ constexpr OperandSpec bitWrite(const char *role) {
 constexpr OperandSpec src(const char *role) {
   return {role, kSrcAreas, false, true, kI32Min, kI32Max, false};
 }
-constexpr OperandSpec dst(const char *role) {
-  return {role, kDstAreas, false, false, 0, 0, true};
-}
-constexpr OperandSpec inout(const char *role) {
-  return {role, kDstAreas, false, false, 0, 0, true};
-}
+constexpr OperandSpec dst(const char *role) { return {role, kDstAreas, false, false, 0, 0, true}; }
+/// Read and written in place (INC, DEC, NEG): the destination areas.
+constexpr OperandSpec inout(const char *role) { return dst(role); }
 constexpr OperandSpec konst(const char *role, int64_t lo, int64_t hi) {
   return {role, 0, false, true, lo, hi, false};
 }
 constexpr OperandSpec label() { return {"label", areas(Area::L), false, false, 0, 0, false}; }
 constexpr OperandSpec sub() { return {"subroutine", areas(Area::S), false, false, 0, 0, false}; }
 constexpr OperandSpec preset() {
-  return {"preset", areas(Area::R, Area::W, Area::D, Area::B, Area::P), false, true, kI32Min,
-          kI32Max, false};
+  return {
+      "preset", areas(Area::R, Area::W, Area::D, Area::B, Area::P), false, true, kI32Min, kI32Max,
+      false};
 }
 constexpr OperandSpec none() { return {nullptr, 0, false, false, 0, 0, false}; }
 
@@ -86,8 +84,7 @@ constexpr InstrInfo kTable[] = {
     ROW(MPS, MpsPush, None, 0, None, None, 0, none(), none(), none(), none(), "MS push ST0"),
     ROW(MRD, MsRead, None, 0, None, None, 0, none(), none(), none(), none(), "ST0 := top(MS)"),
     ROW(MPP, MsPop, None, 0, None, None, 0, none(), none(), none(), none(), "ST0 := pop(MS)"),
-    ROW(OUT, Coil, None, 0, None, None, 1, bitWrite("coil"), none(), none(), none(),
-        "bit := ST0"),
+    ROW(OUT, Coil, None, 0, None, None, 1, bitWrite("coil"), none(), none(), none(), "bit := ST0"),
     ROW(OOUT, Coil, None, 0, None, None, 1, bitWrite("coil"), none(), none(), none(),
         "bit := not ST0"),
     ROW(SET, Coil, None, 0, None, None, 1, bitWrite("coil"), none(), none(), none(),
@@ -117,8 +114,8 @@ constexpr InstrInfo kTable[] = {
     ROW(NEXT, Structural, None, 0, None, None, 0, none(), none(), none(), none(),
         "end of a loop body"),
 
-    ROW(ADD, Block, Required, 1, Enable, None, 3, src("augend"), src("addend"),
-        dst("destination"), none(), "dst := a + b"),
+    ROW(ADD, Block, Required, 1, Enable, None, 3, src("augend"), src("addend"), dst("destination"),
+        none(), "dst := a + b"),
     ROW(SUB, Block, Required, 1, Enable, None, 3, src("minuend"), src("subtrahend"),
         dst("destination"), none(), "dst := a - b"),
     ROW(MUL, Block, Required, 1, Enable, None, 3, src("multiplicand"), src("multiplier"),
@@ -138,41 +135,41 @@ constexpr InstrInfo kTable[] = {
     ROW(NEG, Block, Required, 1, Enable, None, 1, inout("operand"), none(), none(), none(),
         "x := -x"),
 
-    ROW(CMP, Block, Optional, 1, Compare, None, 2, src("compared data"), src("reference"),
-        none(), none(), "out := EN and a <= b"),
+    ROW(CMP, Block, Optional, 1, Compare, None, 2, src("compared data"), src("reference"), none(),
+        none(), "out := EN and a <= b"),
     ROW(LT, Block, Optional, 1, Compare, None, 2, src("compared data"), src("reference"), none(),
         none(), "out := EN and a < b"),
     ROW(ACMP, Block, Optional, 1, Compare, None, 3, src("lower limit"), src("upper limit"),
         src("compared data"), none(), "out := EN and lo < x < hi"),
-    ROW(COIN, Block, Optional, 1, Compare, None, 2, src("reference"), src("compared data"),
-        none(), none(), "out := EN and a == b"),
+    ROW(COIN, Block, Optional, 1, Compare, None, 2, src("reference"), src("compared data"), none(),
+        none(), "out := EN and a == b"),
 
-    ROW(MOV, Block, Optional, 1, Enable, None, 2, src("source"), dst("destination"), none(),
-        none(), "dst := src"),
+    ROW(MOV, Block, Optional, 1, Enable, None, 2, src("source"), dst("destination"), none(), none(),
+        "dst := src"),
 
     ROW(CTR, Block, Required, 4, Result, Edge, 2,
         (OperandSpec{"count register", areas(Area::R, Area::W, Area::D, Area::B), false, false, 0,
                      0, true}),
         preset(), none(), none(), "up/down ring counter, value in a register"),
-    ROW(CTRC, Block, Required, 2, Result, Counter, 2, tcNumber("counter number"), preset(),
-        none(), none(), "ring counter Cn counting up from 0"),
-    ROW(CTUD, Block, Required, 4, Result, Counter, 2, tcNumber("counter number"), preset(),
-        none(), none(), "up/down ring counter Cn with start value 0/1"),
+    ROW(CTRC, Block, Required, 2, Result, Counter, 2, tcNumber("counter number"), preset(), none(),
+        none(), "ring counter Cn counting up from 0"),
+    ROW(CTUD, Block, Required, 4, Result, Counter, 2, tcNumber("counter number"), preset(), none(),
+        none(), "up/down ring counter Cn with start value 0/1"),
     ROW(TMRB, Block, Required, 1, Result, Timer, 3, tcNumber("timer number"),
         konst("time unit", 0, 3),
-        (OperandSpec{"time length", areas(Area::R, Area::W, Area::D, Area::P), false, true,
-                     kI32Min, kI32Max, false}),
+        (OperandSpec{"time length", areas(Area::R, Area::W, Area::D, Area::P), false, true, kI32Min,
+                     kI32Max, false}),
         none(), "on-delay timer Tn"),
     ROW(STMR, Block, Required, 1, Result, Timer, 3, tcNumber("timer number"),
         konst("time unit", 0, 3),
-        (OperandSpec{"time length", areas(Area::R, Area::W, Area::D, Area::P), false, true,
-                     kI32Min, kI32Max, false}),
+        (OperandSpec{"time length", areas(Area::R, Area::W, Area::D, Area::P), false, true, kI32Min,
+                     kI32Max, false}),
         none(), "off-delay timer Tn"),
 
-    ROW(PLS, Block, Optional, 1, Result, Pls, 1, konst("edge block number", 0, 511), none(),
-        none(), none(), "out := EN and not previous EN"),
-    ROW(PLF, Block, Optional, 1, Result, Plf, 1, konst("edge block number", 0, 511), none(),
-        none(), none(), "out := not EN and previous EN"),
+    ROW(PLS, Block, Optional, 1, Result, Pls, 1, konst("edge block number", 0, 511), none(), none(),
+        none(), "out := EN and not previous EN"),
+    ROW(PLF, Block, Optional, 1, Result, Plf, 1, konst("edge block number", 0, 511), none(), none(),
+        none(), "out := not EN and previous EN"),
     ROW(ALT, Block, Required, 1, Result, Alt, 1, konst("toggle block number", 0, 511), none(),
         none(), none(), "toggle the held output on each rising edge of EN"),
 };

@@ -13,20 +13,68 @@ namespace lj {
 /// Every mnemonic the engine knows. Aliases (WRT, END1, END2) map onto these.
 enum class Op : uint8_t {
   // basic (hnc8-core.md 4.2)
-  LD, LDI, LDT, LDP, LDF, AND, ANI, OR, ORI, ANDP, ANDF, ORP, ORF, ANB, ORB, MPS, MRD, MPP,
-  OUT, OOUT, SET, RST,
+  LD,
+  LDI,
+  LDT,
+  LDP,
+  LDF,
+  AND,
+  ANI,
+  OR,
+  ORI,
+  ANDP,
+  ANDF,
+  ORP,
+  ORF,
+  ANB,
+  ORB,
+  MPS,
+  MRD,
+  MPP,
+  OUT,
+  OOUT,
+  SET,
+  RST,
   // flow (hnc8-functions-1.md 3.5)
-  IEND, END1, END2, JMP, LBL, CALL, SP, SPE, RETN, LOOP, NEXT,
+  IEND,
+  END1,
+  END2,
+  JMP,
+  LBL,
+  CALL,
+  SP,
+  SPE,
+  RETN,
+  LOOP,
+  NEXT,
   // math (3.2)
-  ADD, SUB, MUL, DIV, INC, DEC, WAND, WOR, WXOR, NEG,
+  ADD,
+  SUB,
+  MUL,
+  DIV,
+  INC,
+  DEC,
+  WAND,
+  WOR,
+  WXOR,
+  NEG,
   // compare (3.6, functions-2 1.x)
-  CMP, LT, ACMP, COIN,
+  CMP,
+  LT,
+  ACMP,
+  COIN,
   // moves (functions-2 2.1)
   MOV,
   // counters (3.3), timers (3.4)
-  CTR, CTRC, CTUD, TMRB, STMR,
+  CTR,
+  CTRC,
+  CTUD,
+  TMRB,
+  STMR,
   // edge and toggle blocks (functions-2 2.14-2.16)
-  PLS, PLF, ALT,
+  PLS,
+  PLF,
+  ALT,
   Count_
 };
 
@@ -50,10 +98,10 @@ enum class InputRule : uint8_t { None, Optional, Required };
 
 /// What a block leaves in ST (后置), applied after popping its `inputs`.
 enum class OutputRule : uint8_t {
-  None,     ///< leaves ST unchanged (后置 ×); with an empty ST nothing is pushed
-  Enable,   ///< ST0 := EN (math/move pass-through; DIV by zero gives 0)
-  Compare,  ///< ST0 := EN and condition
-  Result,   ///< ST0 := the block's own result (timers, PLS/PLF/ALT)
+  None,    ///< leaves ST unchanged (后置 ×); with an empty ST nothing is pushed
+  Enable,  ///< ST0 := EN (math/move pass-through; DIV by zero gives 0)
+  Compare, ///< ST0 := EN and condition
+  Result,  ///< ST0 := the block's own result (timers, PLS/PLF/ALT)
 };
 
 /// Kind of persistent state an instruction instance owns.
@@ -96,8 +144,8 @@ bool lookupMnemonic(std::string_view mnemonic, Op &out);
 constexpr AreaMask kContactAreas = areas(Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W,
                                          Area::D, Area::B, Area::P, Area::T, Area::C);
 constexpr AreaMask kCoilAreas = areas(Area::Y, Area::G, Area::R, Area::W, Area::D, Area::B);
-constexpr AreaMask kSrcAreas = areas(Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W,
-                                     Area::D, Area::B, Area::P);
+constexpr AreaMask kSrcAreas =
+    areas(Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W, Area::D, Area::B, Area::P);
 constexpr AreaMask kDstAreas = kCoilAreas;
 
 } // namespace lj

@@ -60,13 +60,13 @@ struct StmtRange {
 
 /// Facts the verifier computes for one statement.
 struct StmtInfo {
-  int32_t depth = 0;      ///< ST depth before the statement (statically known)
-  int32_t msDepth = 0;    ///< MS depth before the statement
-  int32_t target = -1;    ///< JMP: index of its LBL; LOOP: index of its NEXT; NEXT: its LOOP;
-                          ///< CALL: index into VerifiedProgram::subs
-  int32_t slot = -1;      ///< edge slot (LDP..ORF, CTR) or timer/counter slot (lj_tc_slot)
-  bool hasInput = false;  ///< a block reads ST0 (false: ST empty, input is 1)
-  bool backward = false;  ///< JMP whose label comes before it (counts a watchdog step)
+  int32_t depth = 0;     ///< ST depth before the statement (statically known)
+  int32_t msDepth = 0;   ///< MS depth before the statement
+  int32_t target = -1;   ///< JMP: index of its LBL; LOOP: index of its NEXT; NEXT: its LOOP;
+                         ///< CALL: index into VerifiedProgram::subs
+  int32_t slot = -1;     ///< edge slot (LDP..ORF, CTR) or timer/counter slot (lj_tc_slot)
+  bool hasInput = false; ///< a block reads ST0 (false: ST empty, input is 1)
+  bool backward = false; ///< JMP whose label comes before it (counts a watchdog step)
 };
 
 /// A subroutine `SP Sn ... SPE`: body = statements strictly between SP and SPE.
