@@ -5,6 +5,24 @@
 
 namespace lj {
 
+std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out = "'";
+  for (size_t i = 0; i < text.size() && i < maxBytes; ++i) {
+    auto c = static_cast<unsigned char>(text[i]);
+    if ((c >= 0x20 && c < 0x7f && c != '\\') || (keepNonAscii && c >= 0x80)) {
+      out += static_cast<char>(c);
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  if (text.size() > maxBytes) out += "...";
+  out += '\'';
+  return out;
+}
+
 namespace {
 
 const char *severityName(Diagnostic::Severity s) {

@@ -4,9 +4,15 @@
 #include "instructions/Program.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lj {
+
+/// A token as it may appear in a message, in single quotes: printable ASCII kept, other bytes as
+/// \xNN (input may be any bytes; with `keepNonAscii`, bytes >= 0x80 are kept so UTF-8 names stay
+/// readable), cut after `maxBytes` with "..." so one bad line cannot produce megabytes of text.
+std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii = false);
 
 struct Diagnostic {
   enum class Severity : uint8_t { Error, Warning, Note } severity = Severity::Error;

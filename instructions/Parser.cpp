@@ -23,26 +23,8 @@ int hexValue(char c) {
   return -1;
 }
 
-/// The token as it may appear in a message: printable ASCII kept, other bytes as \xNN (input may
-/// be any bytes), long tokens cut so one bad line cannot produce a megabyte of diagnostics.
-std::string quote(std::string_view t) {
-  static constexpr size_t kMax = 40;
-  std::string out = "'";
-  for (size_t i = 0; i < t.size() && i < kMax; ++i) {
-    auto c = static_cast<unsigned char>(t[i]);
-    if (c >= 0x20 && c < 0x7f && c != '\\') {
-      out += static_cast<char>(c);
-    } else {
-      static constexpr char kHex[] = "0123456789ABCDEF";
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    }
-  }
-  if (t.size() > kMax) out += "...";
-  out += '\'';
-  return out;
-}
+/// The token as it may appear in a message (40 bytes at most).
+std::string quote(std::string_view t) { return quoteToken(t, 40); }
 
 /// Reads decimal digits from `t` at `pos`, saturating; returns false if there are none.
 bool readDecimal(std::string_view t, size_t &pos, int64_t &value) {

@@ -3,6 +3,7 @@
 #include "instructions/Symbols.h"
 
 #include "instructions/Area.h"
+#include "instructions/Diagnostics.h"
 
 namespace lj {
 
@@ -15,22 +16,8 @@ bool isHigh(char c) { return static_cast<unsigned char>(c) >= 0x80; }
 } // namespace
 
 std::string SymbolTable::quote(std::string_view text) {
-  static constexpr size_t kMax = 80;
-  std::string out = "'";
-  for (size_t i = 0; i < text.size() && i < kMax; ++i) {
-    auto c = static_cast<unsigned char>(text[i]);
-    // Non-ASCII bytes are kept: symbol names are often Chinese (UTF-8).
-    if ((c >= 0x20 && c < 0x7f && c != '\\') || c >= 0x80) {
-      out += static_cast<char>(c);
-    } else {
-      static constexpr char kHex[] = "0123456789ABCDEF";
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    }
-  }
-  if (text.size() > kMax) out += "...";
-  return out + "'";
+  // Non-ASCII bytes are kept: symbol names are often Chinese (UTF-8).
+  return quoteToken(text, 80, /*keepNonAscii=*/true);
 }
 
 bool SymbolTable::isNameShaped(std::string_view t) {

@@ -19,13 +19,6 @@ namespace lj::clitest {
 
 namespace {
 
-std::string slurp(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string &scratchPath() {
   static std::string dir;
   return dir;
@@ -61,6 +54,13 @@ std::string writeScratch(const std::string &name, const std::string &text) {
   std::string path = scratchDir() + "/" + name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
+}
+
+std::string slurp(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 std::string sourcePath(const std::string &rel) {

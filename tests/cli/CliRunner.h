@@ -20,6 +20,9 @@ CliResult runCli(const std::vector<std::string> &args);
 /// Absolute path of a file in the source tree (`examples/lathe_panel.stl`).
 std::string sourcePath(const std::string &rel);
 
+/// The whole content of a file (empty if it cannot be read).
+std::string slurp(const std::string &path);
+
 /// A fresh scratch directory for this test process, removed at exit unless a test failed (then
 /// its files are left for inspection).
 std::string scratchDir();

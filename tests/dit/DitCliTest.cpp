@@ -13,13 +13,6 @@
 namespace lj::clitest {
 namespace {
 
-std::string slurp(const std::string &path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 const std::vector<std::string> kLatheRun = {
     "--engine",   "interp",
     "--ticks",    "100",
