@@ -192,7 +192,10 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
     return static_cast<int32_t>(rng_.range(lo, hi));
   }
   bool timing = in.state == StateKind::Timer || in.state == StateKind::Counter;
-  if (timing && rng_.chance(75)) return static_cast<int32_t>(rng_.range(-2, 30));
+  // Presets near the counters' boundaries (start value 0/1, reload, ring wrap) and near-zero
+  // timer lengths come up within a few ticks only when they are tiny, so a good share is 0..3.
+  if (timing && rng_.chance(35)) return static_cast<int32_t>(rng_.range(-1, 3));
+  if (timing && rng_.chance(60)) return static_cast<int32_t>(rng_.range(-2, 30));
   // The two division faults (DIALECT.md 1, dialect-notes DIV): x / 0 and INT32_MIN / -1.
   if (in.op == Op::DIV && i == 1 && rng_.chance(30)) return rng_.chance(50) ? 0 : -1;
   if (in.op == Op::DIV && i == 0 && rng_.chance(20)) return INT32_MIN;
