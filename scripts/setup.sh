@@ -10,12 +10,14 @@ set -euo pipefail
 #   CMake package references the gmock libraries, so both are needed).
 # plc.dit content hash: OpenSSL libcrypto (libssl-dev), SHA-256 through the EVP API.
 # Fuzzing builds (-DLADDERJIT_FUZZERS=ON): clang-19 and its libFuzzer runtime.
-# zlib/zstd/libedit/libcurl headers are not listed: LLVMConfig looks for them optionally and
-# the project links only the shared libLLVM (checked by configuring with them disabled).
+# zlib/zstd headers: LLVMConfig looks for them and its exported static targets name them; we
+# link only the shared libLLVM (configuring without them works), but Debian's LLVM packaging has
+# failed on a missing zstd target before (llvm19-orc-notes.md 1), so they are installed too.
 PACKAGES=(
   cmake make g++ ccache python3
   llvm-19-dev llvm-19-tools clang-19 libclang-rt-19-dev
   libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev libssl-dev
+  zlib1g-dev libzstd-dev
 )
 
 missing=()
