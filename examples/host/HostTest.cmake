@@ -12,6 +12,15 @@ function(run_checked out)
   set(${out} "${stdout}" PARENT_SCOPE)
 endfunction()
 
+# The host sees nothing of the source tree: only what `cmake --install` puts in the prefix.
+run_checked(ignored ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK}/prefix)
+if(NOT EXISTS ${WORK}/prefix/include/ladderjit/program.h)
+  message(FATAL_ERROR "install did not provide include/ladderjit/program.h")
+endif()
+run_checked(ignored ${CC} -std=c11 -Wall -Wextra -Werror -I${WORK}/prefix/include
+  ${HOST_SOURCE} -o ${WORK}/host -ldl)
+set(HOST ${WORK}/host)
+set(LADDERJIT ${WORK}/prefix/bin/ladderjit)
 run_checked(ignored ${LADDERJIT} compile ${PROGRAM} -o ${WORK}/prog.so)
 run_checked(host_table ${HOST} ${WORK}/prog.so 120 ${WORK}/host.stim ${WORK}/host.params)
 run_checked(interp_table ${LADDERJIT} run ${PROGRAM} --engine interp --ticks 120
