@@ -101,26 +101,6 @@ uint32_t areaOffset(Area a) {
   }
 }
 
-/// Element width in bytes of the numeric areas (DIALECT.md 1 table).
-uint32_t areaBytes(Area a) {
-  switch (a) {
-  case Area::X:
-  case Area::Y:
-  case Area::R:
-    return 1;
-  case Area::F:
-  case Area::G:
-  case Area::W:
-    return 2;
-  case Area::D:
-  case Area::B:
-  case Area::P:
-    return 4;
-  default:
-    return 0;
-  }
-}
-
 Ref decode(const Operand &o) {
   Ref r;
   switch (o.kind) {
@@ -131,7 +111,7 @@ Ref decode(const Operand &o) {
     r.value = o.value;
     return r;
   case Operand::Kind::Reg: {
-    uint32_t bytes = areaBytes(o.area);
+    uint32_t bytes = areaInfo(o.area).bytes;
     if (bytes == 0) return r; // L, S: handled through StmtInfo::target
     r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
     r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
@@ -151,7 +131,7 @@ Ref decode(const Operand &o) {
       r.mask = 1;
       return r;
     }
-    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * areaBytes(o.area) +
+    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
             static_cast<uint32_t>(o.bit / 8);
     r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
     return r;

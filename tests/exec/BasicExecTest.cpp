@@ -105,39 +105,33 @@ OUT  R10.2
   });
 }
 
-// hnc8-core.md 4.7: SET and RST, each with R10.0 preset to 0 and to 1.
-TEST_P(BasicExec, SetExample) {
-  auto m = load("LD R1.0\nOR X5.0\nSET R10.0\n");
-  ASSERT_TRUE(m);
+// hnc8-core.md 4.7: SET and RST, each with R10.0 preset to 0 and to 1 and every combination of
+// A = R1.0, B = X5.0; `expect(preset, A or B)` is the coil's value after the scan.
+template <typename Expect> void coilExample(Machine &m, Expect expect) {
   for (int preset = 0; preset <= 1; ++preset) {
     for (uint32_t combo = 0; combo < 4; ++combo) {
       bool a = combo & 1, b = combo & 2;
-      m->set("R1.0", a);
-      m->set("X5.0", b);
-      m->set("R10.0", preset);
-      m->tick();
+      m.set("R1.0", a);
+      m.set("X5.0", b);
+      m.set("R10.0", preset);
+      m.tick();
       SCOPED_TRACE("preset=" + std::to_string(preset) + " A=" + std::to_string(a) +
                    " B=" + std::to_string(b));
-      EXPECT_EQ(m->get("R10.0"), preset || (a || b));
+      EXPECT_EQ(m.get("R10.0"), expect(preset != 0, a || b));
     }
   }
+}
+
+TEST_P(BasicExec, SetExample) {
+  auto m = load("LD R1.0\nOR X5.0\nSET R10.0\n");
+  ASSERT_TRUE(m);
+  coilExample(*m, [](bool preset, bool st0) { return preset || st0; });
 }
 
 TEST_P(BasicExec, RstExample) {
   auto m = load("LD R1.0\nOR X5.0\nRST R10.0\n");
   ASSERT_TRUE(m);
-  for (int preset = 0; preset <= 1; ++preset) {
-    for (uint32_t combo = 0; combo < 4; ++combo) {
-      bool a = combo & 1, b = combo & 2;
-      m->set("R1.0", a);
-      m->set("X5.0", b);
-      m->set("R10.0", preset);
-      m->tick();
-      SCOPED_TRACE("preset=" + std::to_string(preset) + " A=" + std::to_string(a) +
-                   " B=" + std::to_string(b));
-      EXPECT_EQ(m->get("R10.0"), preset && !(a || b));
-    }
-  }
+  coilExample(*m, [](bool preset, bool st0) { return preset && !st0; });
 }
 
 // hnc8-core.md 4.9, ORB example.
