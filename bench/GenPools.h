@@ -31,6 +31,15 @@ constexpr int32_t poolSize(Area a) {
 constexpr int32_t kGuardFirst = 88;
 constexpr int32_t kGuardCount = 12;
 
+/// M and T codes the stimulus puts into the channel words FC[48..55] / FC[56] and the generator
+/// gives MGET / MACK / TGET, so requests and blocks match now and then (cnc-interface 1.6).
+constexpr int32_t kMCodes[] = {3, 5, 6, 30, 0};
+constexpr int32_t kTCodes[] = {0, 1, 12, 99};
+
+/// F word `k` of channel `ch` (FC[k], cnc-interface 1.3) and of axis `axis` (FA[k], 1.1).
+constexpr int32_t fcWord(int32_t ch, int32_t k) { return 2560 + 80 * ch + k; }
+constexpr int32_t faWord(int32_t axis, int32_t k) { return 80 * axis + k; }
+
 /// A hot element of `a`, or (rarely) its last valid element. T and C numbers come from
 /// tcNumber().
 inline int32_t pickIndex(Rng &rng, Area a) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "instructions/Area.h"
+#include "instructions/InstrTable.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -53,8 +54,17 @@ struct RandomOptions {
 /// CALL/SP/SPE/RETN, the part markers) are placed by a structural planner. Covers deep ANB/ORB
 /// and MPS nesting, edges, timers, counters, forward and guarded backward jumps (some of which
 /// run into the watchdog), nested loops with register counts, nested subroutine calls with
-/// conditional RETN, faults (DIV by zero, INT32_MIN / -1) and small PLC2 slices.
+/// conditional RETN, faults (DIV by zero, INT32_MIN / -1) and small PLC2 slices. Now and then a
+/// range of 33..100 elements (BMOV overlapping within one area in either direction, FMOV, ZRST
+/// word and bit forms, COD/SER tables), which the lowering turns into loops, and index registers
+/// (XMOV/XCH formats 1/2, runtime axes) loaded with the edges of their range just before use.
 GenProgram generateRandom(const RandomOptions &opts);
+
+/// A small complete program that executes `op` on every tick with EN = 1 (LDT feeds each of
+/// its inputs), its operands chosen by the random generator's own operand rules; flow
+/// instructions come in a minimal valid frame (a label for JMP, a subroutine for CALL...).
+/// Used by the catalogue completeness test: it proves the generator can emit every row.
+GenProgram generateSnippet(Op op, uint64_t seed);
 
 /// One host write: a whole element (`bit` < 0) or one bit.
 struct HostWrite {

@@ -3,14 +3,18 @@
 // and input count alone; a structural planner places parts, jumps, loops and subroutines.
 #include "bench/GenPools.h"
 #include "bench/ProgramGenerator.h"
+#include "bench/RandomGen.h"
 #include "instructions/InstrTable.h"
 
 #include <array>
 #include <cassert>
 #include <cctype>
+#include <iterator>
 #include <map>
 
 namespace lj::gen {
+
+namespace detail {
 
 namespace {
 
@@ -23,13 +27,7 @@ bool isPlanned(const InstrInfo &in) {
   return in.op == Op::RETN; // only valid inside a subroutine
 }
 
-/// Per-program mix of stack behaviour: deep block nesting, or flat rungs with dead entries
-/// (which give the slice planner rung boundaries).
-struct Profile {
-  std::array<int, 9> weight; ///< indexed by StackRule
-  int32_t depthCap;
-};
-
+/// The per-program stack mixes (Profile, bench/RandomGen.h).
 constexpr Profile kProfiles[] = {
     // Push Combine BlockPop MpsPush MsRead MsPop Coil Structural Block
     {{6, 5, 6, 2, 1, 2, 4, 0, 8}, 16}, // deep ANB/ORB nesting
@@ -37,55 +35,14 @@ constexpr Profile kProfiles[] = {
     {{3, 3, 2, 3, 3, 3, 4, 0, 12}, 6}, // MPS branches and blocks
 };
 
-class RandomGen {
-public:
-  explicit RandomGen(const RandomOptions &o) : o_(o), rng_(o.seed) {
-    for (const InstrInfo &in : instrTable())
-      if (!isPlanned(in)) generic_[static_cast<int>(in.stack)].push_back(&in);
-  }
+} // namespace
 
-  GenProgram run();
-
-private:
-  void emit(std::string s) {
-    // Case-insensitive mnemonics (DIALECT.md 2): now and then exercise the lexer with lower case.
-    if (rng_.chance(2))
-      for (char &c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    lines_.push_back(std::move(s));
-  }
-  int32_t size() const { return static_cast<int32_t>(lines_.size()); }
-
-  bool eligible(const InstrInfo &in) const;
-  void emitGeneric(const InstrInfo &in);
-  void emitOneGeneric();
-  void emitPush();
-  std::string operand(const InstrInfo &in, int i);
-  std::string regAddress(AreaMask mask, bool writes);
-  std::string bitAddress(AreaMask mask, bool writes);
-  int32_t constFor(const InstrInfo &in, int i);
-  int32_t tcFor(const InstrInfo &in);
-  void closeMs();
-  void resetStacks() { depth_ = ms_ = 0; }
-
-  void block(int32_t budget, int nest);
-  void forwardJump(int32_t budget, int nest);
-  void backwardJump(int32_t budget, int nest);
-  void loop(int32_t budget, int nest);
-  void call();
-  void retn();
-
-  RandomOptions o_;
-  Rng rng_;
-  Profile prof_{};
-  std::array<std::vector<const InstrInfo *>, 9> generic_;
-  std::vector<std::string> lines_;
-  int32_t depth_ = 0, ms_ = 0;
-  int32_t nextLabel_ = 0;
-  int32_t nextGuard_ = 0;
-  std::vector<int32_t> subNumbers_;  ///< subroutine i may call only j > i (no recursion)
-  int32_t curSub_ = -1;              ///< -1 in the main parts
-  std::map<int32_t, Op> tcOwner_[2]; ///< timer / counter number -> the one kind using it
-};
+RandomGen::RandomGen(const RandomOptions &o) : o_(o), rng_(o.seed) {
+  for (const InstrInfo &in : instrTable())
+    if (!isPlanned(in)) generic_[static_cast<int>(in.stack)].push_back(&in);
+  for (const InstrInfo *in : generic_[static_cast<int>(StackRule::Block)])
+    if (in->inputs > 1) multi_.push_back(in);
+}
 
 bool RandomGen::eligible(const InstrInfo &in) const {
   switch (in.stack) {
@@ -119,6 +76,21 @@ void RandomGen::emitOneGeneric() {
   // An empty ST leaves only pushes and blocks; a block that needs an input with an empty ST
   // only draws a warning, so prefer a push there.
   if (depth_ == 0) w[static_cast<int>(StackRule::Block)] = 1;
+  // Blocks with several power-flow inputs (counters: 2/4, ROT: 5) are rare among ~100 block
+  // rows and need a deep ST: now and then build the inputs up and emit one.
+  if (rng_.chance(3)) {
+    const InstrInfo *in = multi_[rng_.below(multi_.size())];
+    if (in->inputs <= prof_.depthCap) {
+      while (depth_ < in->inputs) emitPush();
+      return emitGeneric(*in);
+    }
+  }
+  if (rng_.below(1000) < kLongPerMille) {
+    forceLong_ = true;
+    emitGeneric(instrInfo(kLongRows[rng_.below(std::size(kLongRows))]));
+    forceLong_ = false;
+    return;
+  }
   const auto &rows = generic_[rng_.weighted(w)];
   for (;;) {
     const InstrInfo *in = rows[rng_.below(rows.size())];
@@ -134,7 +106,8 @@ void RandomGen::emitPush() {
 void RandomGen::emitGeneric(const InstrInfo &in) {
   std::string s = in.mnemonic;
   if (in.op == Op::OUT && rng_.chance(5)) s = "WRT"; // alias (DIALECT.md 2)
-  for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
+  if (!specialOperands(in, s))
+    for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
   emit(std::move(s));
   switch (in.stack) {
   case StackRule::Push:
@@ -158,89 +131,6 @@ void RandomGen::emitGeneric(const InstrInfo &in) {
   default:
     break;
   }
-}
-
-int32_t RandomGen::tcFor(const InstrInfo &in) {
-  auto &owner = tcOwner_[in.state == StateKind::Timer ? 0 : 1];
-  for (int attempt = 0; attempt < 16; ++attempt) {
-    int32_t n = tcNumber(rng_);
-    auto it = owner.find(n);
-    if (it == owner.end() || it->second == in.op) {
-      owner[n] = in.op;
-      return n;
-    }
-  }
-  for (int32_t n = 0; n < 428; ++n) {
-    if (lj_tc_slot(n) < 0) continue;
-    auto it = owner.find(n);
-    if (it == owner.end() || it->second == in.op) {
-      owner[n] = in.op;
-      return n;
-    }
-  }
-  assert(false && "more timer/counter kinds than numbers");
-  return 0;
-}
-
-int32_t RandomGen::constFor(const InstrInfo &in, int i) {
-  const OperandSpec &sp = in.operands[i];
-  int64_t lo = sp.cmin, hi = sp.cmax;
-  if (hi - lo <= 1024) {
-    // Small ranges (time units, block numbers): mostly the low end, so blocks share state and
-    // timers run in milliseconds, but every value of the range shows up.
-    if (rng_.chance(60)) return static_cast<int32_t>(rng_.range(lo, std::min(hi, lo + 3)));
-    return static_cast<int32_t>(rng_.range(lo, hi));
-  }
-  bool timing = in.state == StateKind::Timer || in.state == StateKind::Counter;
-  // Presets near the counters' boundaries (start value 0/1, reload, ring wrap) and near-zero
-  // timer lengths come up within a few ticks only when they are tiny, so a good share is 0..3.
-  if (timing && rng_.chance(35)) return static_cast<int32_t>(rng_.range(-1, 3));
-  if (timing && rng_.chance(60)) return static_cast<int32_t>(rng_.range(-2, 30));
-  // The two division faults (DIALECT.md 1, dialect-notes DIV): x / 0 and INT32_MIN / -1.
-  if (in.op == Op::DIV && i == 1 && rng_.chance(30)) return rng_.chance(50) ? 0 : -1;
-  if (in.op == Op::DIV && i == 0 && rng_.chance(20)) return INT32_MIN;
-  int32_t v = interestingConst(rng_);
-  if (v < lo || v > hi) v = static_cast<int32_t>(rng_.range(lo, hi));
-  return v;
-}
-
-std::string RandomGen::regAddress(AreaMask mask, bool writes) {
-  static constexpr Area kRegs[] = {Area::X, Area::Y, Area::F, Area::G, Area::R,
-                                   Area::W, Area::D, Area::B, Area::P};
-  Area cand[9];
-  int n = 0;
-  for (Area a : kRegs)
-    if (hasArea(mask, a)) cand[n++] = a;
-  assert(n > 0);
-  Area a = cand[rng_.below(static_cast<uint64_t>(n))];
-  int32_t idx = pickIndex(rng_, a);
-  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
-  return std::string(1, areaInfo(a).letter) + std::to_string(idx);
-}
-
-std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
-  static constexpr Area kBits[] = {Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W,
-                                   Area::D, Area::B, Area::P, Area::T, Area::C};
-  static constexpr int kWeight[] = {6, 3, 3, 3, 6, 2, 2, 1, 1, 2, 2};
-  std::array<int, 11> w{};
-  for (int i = 0; i < 11; ++i) w[i] = hasArea(mask, kBits[i]) ? kWeight[i] : 0;
-  Area a = kBits[rng_.weighted(w)];
-  std::string s(1, areaInfo(a).letter);
-  if (a == Area::T || a == Area::C) return s + std::to_string(tcNumber(rng_)) + ".0";
-  int32_t idx = pickIndex(rng_, a);
-  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
-  int bitNo = static_cast<int>(rng_.below(static_cast<uint64_t>(bitWidth(a))));
-  return s + std::to_string(idx) + "." + std::to_string(bitNo);
-}
-
-std::string RandomGen::operand(const InstrInfo &in, int i) {
-  const OperandSpec &sp = in.operands[i];
-  bool tcNo =
-      (in.state == StateKind::Timer || in.state == StateKind::Counter) && i == 0 && sp.areas == 0;
-  if (tcNo) return std::to_string(tcFor(in));
-  if (sp.isBit) return bitAddress(sp.areas, sp.writes);
-  if (sp.constOk && (sp.areas == 0 || rng_.chance(40))) return std::to_string(constFor(in, i));
-  return regAddress(sp.areas, sp.writes);
 }
 
 void RandomGen::closeMs() {
@@ -415,8 +305,67 @@ GenProgram RandomGen::run() {
   return p;
 }
 
-} // namespace
+GenProgram RandomGen::snippet(Op op) {
+  prof_ = kProfiles[0];
+  const InstrInfo &in = instrInfo(op);
+  auto lines = [](std::initializer_list<const char *> l) {
+    GenProgram p;
+    for (const char *x : l) p.lines.emplace_back(x);
+    return p;
+  };
+  switch (op) {
+  case Op::IEND:
+  case Op::END1:
+  case Op::END2:
+    return lines({"LDT", "OUT R0.0", "IEND", "LDT", "OUT R0.1", "1END", "LDT", "OUT R0.2", "2END"});
+  case Op::JMP:
+  case Op::LBL:
+    return lines({"LDT", "JMP L1", "LDT", "OUT R0.0", "LBL L1", "LDT", "OUT R0.1"});
+  case Op::CALL:
+  case Op::SP:
+  case Op::SPE:
+  case Op::RETN:
+    return lines({"LDT", "CALL S1", "1END", "2END", "SP S1", "LDT", "OUT R0.0", "LDT", "RETN",
+                  "LDT", "OUT R0.1", "SPE"});
+  case Op::LOOP:
+  case Op::NEXT:
+    return lines({"LOOP 3", "LDT", "INC D0", "NEXT"});
+  default:
+    break;
+  }
+  switch (in.stack) {
+  case StackRule::Push:
+    break;
+  case StackRule::BlockPop:
+    emitGeneric(instrInfo(Op::LDT));
+    emitGeneric(instrInfo(Op::LDT));
+    break;
+  case StackRule::MsRead:
+  case StackRule::MsPop:
+    emitGeneric(instrInfo(Op::LDT));
+    emitGeneric(instrInfo(Op::MPS));
+    break;
+  default:
+    for (int k = 0; k < std::max<int>(in.inputs, 1); ++k) emitGeneric(instrInfo(Op::LDT));
+    break;
+  }
+  emitGeneric(in);
+  if (op == Op::MRD) emitGeneric(instrInfo(Op::MPP));
+  closeMs();
+  GenProgram p;
+  p.lines = std::move(lines_);
+  p.plc2Nvalue = 0;
+  return p;
+}
 
-GenProgram generateRandom(const RandomOptions &opts) { return RandomGen(opts).run(); }
+} // namespace detail
+
+GenProgram generateRandom(const RandomOptions &opts) { return detail::RandomGen(opts).run(); }
+
+GenProgram generateSnippet(Op op, uint64_t seed) {
+  RandomOptions o;
+  o.seed = seed;
+  return detail::RandomGen(o).snippet(op);
+}
 
 } // namespace lj::gen

@@ -4,6 +4,7 @@
 #include "bench/ProgramGenerator.h"
 
 #include <cstring>
+#include <iterator>
 #include <sstream>
 
 namespace lj::gen {
@@ -19,8 +20,47 @@ std::string GenProgram::text() const {
 
 namespace {
 
+/// A write to the F words the CNC blocks read (cnc-interface 1.1, 1.3, 1.6): FC[0] status bits
+/// (reset request .12, hold .4, cycle .5, mode .0-3), the M-code slots FC[48..55] and the T code
+/// FC[56] with matching codes or -1 (nothing pending), S/G31/spindle words, and FA[0..3] axis
+/// status bits, mostly for channel 0 and the low axes the generator picks most.
+HostWrite cncInput(Rng &rng) {
+  HostWrite w;
+  w.area = Area::F;
+  const int32_t ch = static_cast<int32_t>(rng.chance(60) ? 0 : rng.below(4));
+  const int32_t axis = static_cast<int32_t>(rng.chance(80) ? rng.below(4) : rng.below(32));
+  switch (rng.below(6)) {
+  case 0:
+    w.index = fcWord(ch, 0);
+    w.bit = static_cast<int8_t>(rng.chance(40) ? 12 : rng.below(16));
+    w.value = static_cast<int32_t>(rng.below(2));
+    break;
+  case 1:
+    w.index = fcWord(ch, 48 + static_cast<int32_t>(rng.below(8)));
+    w.value = rng.chance(30) ? -1 : kMCodes[rng.below(std::size(kMCodes))];
+    break;
+  case 2:
+    w.index = fcWord(ch, 56);
+    w.value = rng.chance(30) ? -1 : kTCodes[rng.below(std::size(kTCodes))];
+    break;
+  case 3: {
+    static constexpr int32_t kWords[] = {0, 2, 10, 11, 18, 19, 30, 31, 78};
+    w.index = fcWord(ch, kWords[rng.below(std::size(kWords))]);
+    w.value = static_cast<int16_t>(interestingConst(rng));
+    break;
+  }
+  default:
+    w.index = faWord(axis, static_cast<int32_t>(rng.below(4)));
+    w.bit = static_cast<int8_t>(rng.below(16));
+    w.value = static_cast<int32_t>(rng.below(2));
+    break;
+  }
+  return w;
+}
+
 /// One random X or F write: a whole element or a single bit.
 HostWrite randomInput(Rng &rng) {
+  if (rng.chance(20)) return cncInput(rng);
   HostWrite w;
   w.area = rng.chance(60) ? Area::X : Area::F;
   w.index = pickIndex(rng, w.area);
@@ -82,6 +122,11 @@ Stimulus generateStimulus(uint64_t seed, uint32_t ticks) {
   for (Area a : {Area::P, Area::B}) {
     for (int32_t i = 0; i < poolSize(a); ++i)
       if (rng.chance(70)) st.beforeInit.push_back({a, i, -1, interestingConst(rng)});
+  }
+  // Most programs start with no M / T code pending in any channel (FC[48..56] = -1).
+  for (int32_t ch = 0; ch < 4; ++ch) {
+    if (!rng.chance(80)) continue;
+    for (int32_t k = 48; k <= 56; ++k) st.beforeInit.push_back({Area::F, fcWord(ch, k), -1, -1});
   }
   int initial = static_cast<int>(rng.range(0, 6));
   for (int i = 0; i < initial; ++i) st.beforeInit.push_back(randomInput(rng));

@@ -3,6 +3,7 @@
 #include "fuzz/Differential.h"
 
 #include "instructions/FrontEnd.h"
+#include "tests/support/TestHost.h"
 
 #include <cstring>
 #include <memory>
@@ -77,7 +78,8 @@ std::string firstDifference(const lj_state &a, const lj_state &b, const char *ca
   d.field("fault_watchdog", a.fault_watchdog, b.fault_watchdog);
   d.field("fault_index", a.fault_index, b.fault_index);
   d.field("fault_divzero", a.fault_divzero, b.fault_divzero);
-  if (!d.found && std::memcmp(&a, &b, sizeof a) != 0) {
+  d.array("inst_word", a.inst_word, b.inst_word);
+  if (!d.found && std::memcmp(&a, &b, LJ_STATE_COMPARED_BYTES) != 0) {
     const auto *pa = reinterpret_cast<const unsigned char *>(&a);
     const auto *pb = reinterpret_cast<const unsigned char *>(&b);
     size_t off = 0;
@@ -87,6 +89,17 @@ std::string firstDifference(const lj_state &a, const lj_state &b, const char *ca
     d.found = true;
   }
   return d.o.str();
+}
+
+std::string firstCallDifference(const std::vector<test::HostCall> &a,
+                                const std::vector<test::HostCall> &b, const char *candName) {
+  size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  auto show = [](const std::vector<test::HostCall> &v, size_t k) {
+    return k < v.size() ? v[k].str() : std::string("(no call)");
+  };
+  return "host call " + std::to_string(i) + ": interp=" + show(a, i) + ' ' + candName + '=' +
+         show(b, i);
 }
 
 Outcome runCase(const Case &c, const EngineFactory &factory) {
@@ -110,11 +123,13 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     r.detail = error.empty() ? "engine build failed without a message" : error;
     return r;
   }
-  // Two full states on the heap (each is ~40 KB).
+  // Two full states on the heap (each is ~40 KB), each with its own NC host of equal content.
   auto sa = std::make_unique<lj_state>();
   auto sb = std::make_unique<lj_state>();
+  test::TestHost ha(c.hostSeed), hb(c.hostSeed);
   for (lj_state *s : {sa.get(), sb.get()}) {
     lj_state_reset(s);
+    (s == sa.get() ? ha : hb).attach(*s);
     s->max_backward_steps = c.stim.maxBackwardSteps;
     gen::applyWrites(*s, c.stim.beforeInit);
     s->now_ms = c.stim.initNowMs;
@@ -123,12 +138,18 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   const lj_entries &eb = cand->entries();
   r.slices = ea.plc2_slice_count;
   auto compare = [&](uint32_t fa, uint32_t fb, uint32_t tick) {
-    if (fa == fb && std::memcmp(sa.get(), sb.get(), sizeof(lj_state)) == 0) return true;
+    const bool sameCalls = ha.calls() == hb.calls();
+    if (fa == fb && sameCalls && std::memcmp(sa.get(), sb.get(), LJ_STATE_COMPARED_BYTES) == 0)
+      return true;
     r.kind = Outcome::Kind::Mismatch;
     r.tick = tick;
-    r.detail = fa != fb ? "fault code: interp=" + std::to_string(fa) + ' ' + cand->name() + '=' +
-                              std::to_string(fb)
-                        : firstDifference(*sa, *sb, cand->name());
+    if (fa != fb)
+      r.detail = "fault code: interp=" + std::to_string(fa) + ' ' + cand->name() + '=' +
+                 std::to_string(fb);
+    else if (!sameCalls)
+      r.detail = firstCallDifference(ha.calls(), hb.calls(), cand->name());
+    else
+      r.detail = firstDifference(*sa, *sb, cand->name());
     return false;
   };
   uint32_t fa = lj_run_init(sa.get(), &ea);

@@ -7,6 +7,7 @@
 #include "fuzz/Fuzz.h"
 #include "instructions/Engine.h"
 #include "ladderjit/abi.h"
+#include "tests/support/TestHost.h"
 
 #include <cstdint>
 #include <ostream>
@@ -21,6 +22,9 @@ struct Case {
   int32_t plc2Nvalue = 200;
   gen::Stimulus stim;
   bool fastTier = true;
+  /// Content seed of the recording NC host (tests/support/TestHost.h) each engine gets a copy
+  /// of; 0 = empty content.
+  uint64_t hostSeed = 0;
 };
 
 /// What running a case on both engines gave.
@@ -36,14 +40,20 @@ struct Outcome {
   uint32_t slices = 0;
 };
 
-/// Parse + verify `c.lines`, build the interpreter and `factory`'s engine, run init and every
-/// tick of the stimulus on both, and compare the complete lj_state and the fault codes after
-/// init and after every tick. Stops at the first difference.
+/// Parse + verify `c.lines`, build the interpreter and `factory`'s engine, give each its own
+/// TestHost with the same content, run init and every tick of the stimulus on both, and compare
+/// the program state (LJ_STATE_COMPARED_BYTES), the fault codes and the two hosts' call logs
+/// after init and after every tick. Stops at the first difference.
 Outcome runCase(const Case &c, const EngineFactory &factory);
 
 /// The first field (in struct order) where two states differ, as `D5: interp=3 jit=4`; empty when
 /// the states are byte-identical.
 std::string firstDifference(const lj_state &ref, const lj_state &cand, const char *candName);
+
+/// The first host call where two call logs differ, as `host call 3: interp=event(5) -> 0
+/// jit=(no call)`.
+std::string firstCallDifference(const std::vector<test::HostCall> &ref,
+                                const std::vector<test::HostCall> &cand, const char *candName);
 
 /// Delta-debug a failing case: drop chunks of lines (ddmin) while the program still verifies and
 /// the engines still disagree, then single lines, then cut ticks after the first difference,

@@ -31,6 +31,7 @@ void printCase(std::ostream &out, const Case &c) {
   out << "--- program (" << c.lines.size() << " statements; --plc2-nvalue " << c.plc2Nvalue
       << ", JIT tier " << tierName(c.fastTier) << ") ---\n";
   for (const std::string &l : c.lines) out << l << "\n";
+  out << "--- NC host: tests/support/TestHost(" << c.hostSeed << ") per engine ---\n";
   out << "--- stimulus (" << c.stim.ticks() << " ticks; --stimulus file) ---\n";
   out << gen::formatStimulus(c.stim);
   out << "--- end ---\n";
@@ -74,6 +75,7 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     c.plc2Nvalue = gp.plc2Nvalue;
     c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
     c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
+    c.hostSeed = rng.next() | 1; // never 0: the host serves seeded variables, deltas, pockets
     ++(c.fastTier ? st.fastPrograms : st.optimizingPrograms);
     ++st.programs;
 

@@ -38,6 +38,36 @@ constexpr OperandSpec preset() {
 }
 constexpr OperandSpec none() { return {nullptr, 0, false, false, 0, 0, false}; }
 
+// Builders of the data, NC and CNC rows.
+constexpr AreaMask kIndirectAreas = areas(Area::G, Area::R, Area::W, Area::D, Area::B);
+constexpr AreaMask kBitSrcAreas =
+    areas(Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W, Area::D, Area::P, Area::B);
+/// A register (never a constant) from `mask`.
+constexpr OperandSpec reg(const char *role, AreaMask mask, bool writes) {
+  return {role, mask, false, false, 0, 0, writes};
+}
+/// A constant or a register from `mask`, written by the instruction when `writes`.
+constexpr OperandSpec regOrConst(const char *role, AreaMask mask, bool writes) {
+  return {role, mask, false, true, kI32Min, kI32Max, writes};
+}
+constexpr OperandSpec i32Const(const char *role) { return konst(role, kI32Min, kI32Max); }
+constexpr OperandSpec bitDir(const char *role) {
+  return {role, kBitSrcAreas, true, false, 0, 0, false};
+}
+/// ZRST bounds: a bit address or a whole register of a writable area.
+constexpr OperandSpec zoneBound(const char *role) {
+  return {role, kDstAreas, true, false, 0, 0, true, true};
+}
+constexpr OperandSpec chan() { return konst("channel", 0, 3); }
+constexpr OperandSpec axis() { return konst("axis", 0, 31); }
+constexpr OperandSpec spindle() { return konst("spindle", 0, 3); }
+/// A constant 0..31 or any readable register holding the axis number.
+constexpr OperandSpec axisAny() { return {"axis", kSrcAreas, false, true, 0, 31, false}; }
+constexpr OperandSpec gear() {
+  return regOrConst("gear", areas(Area::Y, Area::G, Area::R, Area::W, Area::D, Area::B), false);
+}
+constexpr OperandSpec pblock() { return reg("parameter block", areas(Area::P), false); }
+
 // Timer/counter numbers are constants 0..427; the gap 128..299 is rejected by the verifier.
 constexpr OperandSpec tcNumber(const char *role) { return konst(role, 0, 427); }
 
@@ -50,6 +80,10 @@ using SK = StateKind;
   InstrInfo { Op::op, #op, SR::stack, IR::in, k, OR_::out, SK::st, n, {o0, o1, o2, o3}, text }
 #define ROWN(op, name, stack, in, k, out, st, n, o0, o1, o2, o3, text)                             \
   InstrInfo { Op::op, name, SR::stack, IR::in, k, OR_::out, SK::st, n, {o0, o1, o2, o3}, text }
+
+// Rows with more than four operands.
+#define ROWX(op, stack, in, k, out, st, n, text, ...)                                              \
+  InstrInfo { Op::op, #op, SR::stack, IR::in, k, OR_::out, SK::st, n, {__VA_ARGS__}, text }
 
 constexpr InstrInfo kTable[] = {
     ROW(LD, Push, None, 0, None, None, 1, bitRead("contact"), none(), none(), none(),
@@ -172,10 +206,203 @@ constexpr InstrInfo kTable[] = {
         none(), "out := not EN and previous EN"),
     ROW(ALT, Block, Required, 1, Result, Alt, 1, konst("toggle block number", 0, 511), none(),
         none(), none(), "toggle the held output on each rising edge of EN"),
+
+    // ---- Data operations (hnc8-functions-2.md 2.2-2.13, 2.17-2.18; summary section 5) ----
+    ROW(XMOV, Block, Optional, 1, Enable, None, 4, konst("format 1", 0, 2),
+        reg("address 1", kIndirectAreas, false), konst("format 2", 0, 2),
+        reg("address 2", kIndirectAreas, true),
+        "operand 2 := operand 1 (formats 0 reg, 1 B[], 2 P[])"),
+    ROW(BMOV, Block, Optional, 1, Enable, None, 3, reg("source start", kSrcAreas, false),
+        dst("destination start"), konst("count", 1, 1000), none(), "copy count elements (memmove)"),
+    ROW(FMOV, Block, Optional, 1, None, None, 3, dst("destination start"), dst("destination end"),
+        src("value"), none(), "fill start..end with the value"),
+    ROW(XCH, Block, Optional, 1, None, None, 4, konst("format 1", 0, 2),
+        reg("address 1", kIndirectAreas, true), konst("format 2", 0, 2),
+        reg("address 2", kIndirectAreas, true), "exchange operand 1 and operand 2"),
+    ROW(ZRST, Block, Optional, 1, Enable, None, 2, zoneBound("start"), zoneBound("end"), none(),
+        none(), "reset the registers or bits start..end"),
+    ROW(ENCO, Block, Optional, 1, None, None, 4, reg("table start", kSrcAreas, false),
+        konst("table length", 1, 32), src("value"), dst("destination"),
+        "one-hot bit of the first table entry equal to the value"),
+    ROW(DECO, Block, Required, 1, None, None, 4, reg("table start", kSrcAreas, false),
+        konst("table length", 1, 32), src("value"), dst("destination"),
+        "table entry of the lowest set bit of the value"),
+    ROW(COD, Block, Required, 1, None, None, 4, reg("table start", kSrcAreas, false),
+        konst("table length", 1, 1000), src("index"), dst("destination"),
+        "destination := table[index]"),
+    ROW(SER, Block, Required, 1, Compare, None, 4, reg("table start", kSrcAreas, false),
+        konst("table length", 1, 1000), src("value"), dst("index destination"),
+        "index of the first table entry equal to the value; output = found"),
+    ROW(ASSEM, Block, Required, 1, None, None, 3, reg("source start", kSrcAreas, false),
+        konst("count", 1, 32), reg("destination", areas(Area::G, Area::W, Area::D, Area::B), true),
+        none(), "pack count registers into one"),
+    ROW(DISAS, Block, Required, 1, None, None, 3,
+        reg("source", areas(Area::F, Area::G, Area::W, Area::D, Area::P, Area::B), false),
+        konst("count", 1, 32),
+        reg("destination start", areas(Area::Y, Area::G, Area::R, Area::W), true), none(),
+        "split one register into count registers"),
+    ROW(ACVT, Block, Required, 1, None, None, 3, pblock(), src("value"), dst("destination"), none(),
+        "linear range conversion with the P parameter block"),
+    ROWX(PTN, Block, Optional, 1, None, None, 9, "destination := number of the first active point",
+         dst("destination"), bitRead("point 1"), i32Const("number 1"), bitRead("point 2"),
+         i32Const("number 2"), bitRead("point 3"), i32Const("number 3"), bitRead("point 4"),
+         i32Const("number 4")),
+    ROWX(NTP, Block, Optional, 1, None, None, 9, "point i := (source == number i)",
+         reg("source", kSrcAreas, false), i32Const("number 1"), bitWrite("point 1"),
+         i32Const("number 2"), bitWrite("point 2"), i32Const("number 3"), bitWrite("point 3"),
+         i32Const("number 4"), bitWrite("point 4")),
+
+    // ---- NC services (functions-1 3.1, functions-2 2.19-2.23, cnc-interface 2 / 3.4) ----
+    ROW(MGET, Block, Optional, 1, Compare, None, 2, chan(), konst("M code", 0, 32767), none(),
+        none(), "out := EN and the channel requests the M code"),
+    ROW(MACK, Block, Optional, 1, None, None, 2, chan(), konst("M code", 0, 32767), none(), none(),
+        "acknowledge the M code"),
+    ROW(TGET, Block, Optional, 1, Compare, None, 2, chan(),
+        regOrConst("T code destination", kDstAreas, true), none(), none(),
+        "out := EN and a T code is pending (stored in the destination)"),
+    ROW(TACK, Block, Optional, 1, None, None, 1, chan(), none(), none(), none(),
+        "acknowledge the channel's T code"),
+    ROW(RTOMPG, Block, Optional, 1, None, None, 2, src("pulse register"), konst("handwheel", 0, 9),
+        none(), none(), "pass the pulse register to the handwheel (host)"),
+    ROW(TEMPSEN, Block, Optional, 1, None, None, 4, konst("sensor", 0, 19),
+        reg("X group", areas(Area::X), false), konst("board type", 0, 4), pblock(),
+        "temperature sensor input (host)"),
+    ROW(PARTCNT, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "part count of the channel + 1"),
+    ROW(PARTCLR, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "part count of the channel := 0"),
+    ROW(HEADSEN, Block, Optional, 1, None, None, 3, konst("count", 1, 20), i32Const("enable"),
+        reg("storage start", areas(Area::D), true), none(),
+        "copy count temperatures to D registers when enable = 0"),
+    ROW(VARGET, Block, Required, 1, Enable, None, 4, konst("variable type", 0, 9), src("offset"),
+        konst("exponent", 0, 4), dst("result"), "read a CNC variable (host)"),
+    ROW(VARSET, Block, Required, 1, Enable, None, 4, konst("variable type", 0, 9), src("offset"),
+        konst("exponent", 0, 4), src("data source"), "write a CNC variable (host)"),
+    ROW(TOOLSET, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "tool-vector direction on (host)"),
+    ROW(TOOLCLR, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "tool-vector direction off (host)"),
+    ROW(NIXIE, Block, Required, 1, Enable, None, 3, src("value"), konst("width", 0, 1),
+        reg("display", areas(Area::Y, Area::R, Area::W, Area::D, Area::B), true), none(),
+        "show the value on the panel display"),
+    ROW(TOOLUSE, Block, Optional, 1, None, None, 2, src("channel"), src("tool"), none(), none(),
+        "tool in use (host)"),
+    ROW(TOOLLIFE, Block, Optional, 1, None, Words, 3, chan(), konst("count", 1, kI32Max),
+        reg("response", areas(Area::R), true), none(), "tool-install counter"),
+    ROW(TOOL, Block, Optional, 1, Result, None, 4, src("spindle tool"), src("commanded tool"),
+        dst("error"), dst("target pocket"), "select the pocket of the commanded tool (host)"),
+    ROWX(SPDA, Block, Optional, 1, None, None, 5, "analog (DA) spindle (host scaling)", chan(),
+         spindle(), gear(),
+         reg("reference", areas(Area::Y, Area::G, Area::R, Area::W, Area::D, Area::B), true),
+         pblock()),
+    ROW(SUBAXEN, Block, Required, 1, None, None, 1, axis(), none(), none(), none(),
+        "slave-axis homing enable (host)"),
+    ROW(MPGSET, Block, Required, 1, None, None, 3, konst("handwheel", 0, 9), axisAny(),
+        src("override"), none(), "handwheel axis and multiplier"),
+    ROW(ROT, Block, Optional, 5, Result, None, 4, konst("positions", 1, 32767),
+        reg("current position", kSrcAreas, false), reg("target position", kSrcAreas, false),
+        dst("result"), "rotary magazine direction and steps"),
+    ROW(EVENT, Block, Required, 1, None, Edge, 1, konst("event", 0, 255), none(), none(), none(),
+        "raise a PLC event"),
+    ROW(SAVEDATA, Block, Required, 1, None, Edge, 0, none(), none(), none(), none(),
+        "save the retentive data (host)"),
+
+    // ---- Chapter-6 blocks on F/G words (cnc-interface 2, summary section 4) ----
+    ROW(MDST, Block, Optional, 1, None, None, 2, chan(), src("mode"), none(), none(),
+        "channel mode set"),
+    ROW(MDGT, Block, Optional, 1, None, None, 2, chan(), dst("mode destination"), none(), none(),
+        "channel mode get"),
+    ROW(MDI, Block, Optional, 1, None, None, 1, chan(), none(), none(), none(), "MDI mode"),
+    ROW(MST, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "lock MST"),
+    ROW(CYCLE, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "cycle start"),
+    ROW(STOP, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "emergency stop"),
+    ROW(RESET, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "reset"),
+    ROW(CHANSW, Block, Required, 1, None, None, 1, chan(), none(), none(), none(),
+        "channel switch"),
+    ROW(HOLD, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "feed hold"),
+    ROW(CYCLED, Block, Optional, 1, Compare, None, 1, chan(), none(), none(), none(),
+        "cycle-start lamp"),
+    ROW(HOLDLED, Block, Optional, 1, Compare, None, 1, chan(), none(), none(), none(),
+        "feed-hold lamp"),
+    ROW(ESCBLK, Block, Optional, 1, None, None, 2, chan(), konst("G31 number", 0, 32767), none(),
+        none(), "G31 skip"),
+    ROW(RPOVRD, Block, Optional, 1, None, None, 2, chan(), src("override"), none(), none(),
+        "rapid override set"),
+    ROW(FEEDOVRD, Block, Optional, 1, None, None, 2, chan(), src("override"), none(), none(),
+        "feed override set"),
+    ROW(SPDLOVRD, Block, Optional, 1, None, None, 3, chan(), spindle(), src("override"), none(),
+        "spindle override set"),
+    ROW(STEPMUL, Block, Optional, 1, None, None, 2, axis(), src("multiplier"), none(), none(),
+        "increment multiplier set"),
+    ROW(DRYRUN, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "dry run"),
+    ROW(SKIP, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "block skip"),
+    ROW(USERIN, Block, Required, 1, None, None, 3, chan(), i32Const("group"), konst("bit", 0, 31),
+        none(), "user input bit"),
+    ROW(USEROUT, Block, Optional, 1, None, None, 3, chan(), i32Const("unused"),
+        reg("output start", areas(Area::Y, Area::R), true), none(), "user outputs to 4 bytes"),
+    ROW(SELSTOP, Block, Required, 1, None, None, 1, chan(), none(), none(), none(),
+        "optional stop"),
+    ROW(SPDLJOG, Block, Optional, 1, None, None, 2, spindle(), bitDir("forward"), none(), none(),
+        "spindle jog"),
+    ROW(SPDLBUS, Block, Optional, 1, None, None, 2, chan(), spindle(), none(), none(),
+        "bus spindle control"),
+    ROW(SPDLBUS1, Block, Optional, 1, None, None, 4, chan(), spindle(), gear(), pblock(),
+        "geared bus spindle control"),
+    ROW(SPDLORI, Block, Optional, 1, None, None, 1, axis(), none(), none(), none(),
+        "spindle orient enable"),
+    ROW(SPDLOROK, Block, Optional, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "spindle orient done"),
+    ROW(SPDLZERO, Block, Optional, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "spindle zero speed"),
+    ROW(SPDLRCH, Block, Optional, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "spindle speed reached"),
+    ROW(DESYN, Block, Required, 1, None, None, 1, axis(), none(), none(), none(),
+        "release slave axis"),
+    ROW(JOGSW, Block, Optional, 1, None, None, 2, axisAny(), bitDir("direction (1 = +)"), none(),
+        none(), "axis jog"),
+    ROW(STEPAXIS, Block, Optional, 1, None, None, 2, axisAny(), bitDir("direction (0 = +)"), none(),
+        none(), "axis step"),
+    ROW(JOGVEL, Block, Required, 1, None, None, 2, axisAny(), src("speed"), none(), none(),
+        "jog speed select"),
+    ROW(HOMRUN, Block, Required, 1, None, None, 1, axis(), none(), none(), none(), "homing start"),
+    ROW(HOMERUN1, Block, Required, 1, None, None, 2, axis(), bitDir("direction"), none(), none(),
+        "homing start with direction"),
+    ROW(HOMESW, Block, Required, 1, None, None, 1, axis(), none(), none(), none(), "home dog"),
+    ROW(HOMLED, Block, Required, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "homing done lamp"),
+    ROW(AXEN, Block, Required, 1, None, None, 1, axisAny(), none(), none(), none(), "axis enable"),
+    ROW(AXRDY, Push, None, 0, None, None, 1, axis(), none(), none(), none(),
+        "push the axis-ready bit"),
+    ROW(AXISLOCK, Block, Required, 1, None, None, 1, axis(), none(), none(), none(), "axis lock"),
+    ROW(AXISMOVE, Block, Required, 1, None, None, 2, axisAny(), src("distance"), none(), none(),
+        "PMC axis relative move"),
+    ROW(AXISMVTO, Block, Required, 1, None, None, 2, axisAny(), src("position"), none(), none(),
+        "PMC axis absolute move"),
+    ROW(AXLMF2, Block, Required, 1, None, None, 1, axisAny(), none(), none(), none(),
+        "second soft limit"),
+    ROW(AXISPLMT, Block, Required, 1, None, None, 1, axis(), none(), none(), none(),
+        "positive limit dog"),
+    ROW(AXISNLMT, Block, Required, 1, None, None, 1, axis(), none(), none(), none(),
+        "negative limit dog"),
+    ROW(SVSW, Block, Optional, 1, None, None, 1, axis(), none(), none(), none(), "servo enable"),
+    ROW(AXISMODE, Block, Optional, 1, None, None, 2, axis(), konst("mode", 0, 2), none(), none(),
+        "axis control mode"),
+    ROW(REFPT, Block, Optional, 1, Compare, None, 2, axis(), konst("reference point", 2, 5), none(),
+        none(), "reference point reached"),
+    ROW(AXISHOM2, Block, Optional, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "axis homing in progress"),
+    ROW(AXMOVING, Block, Optional, 1, Compare, None, 1, axis(), none(), none(), none(),
+        "axis moving"),
+    ROW(ALARM, Block, Optional, 1, None, None, 1, konst("alarm", 1, 884), none(), none(), none(),
+        "PLC alarm (1..256) or prompt (501..884)"),
+    ROW(RSTCHK, Block, Required, 1, Compare, None, 1, chan(), none(), none(), none(),
+        "reset requested"),
+    ROW(RSTCLR, Block, Required, 1, None, None, 1, chan(), none(), none(), none(), "reset clear"),
 };
 
 #undef ROW
 #undef ROWN
+#undef ROWX
 
 static_assert(sizeof(kTable) / sizeof(kTable[0]) == kOpCount, "one row per Op");
 

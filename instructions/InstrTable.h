@@ -75,6 +75,99 @@ enum class Op : uint8_t {
   PLS,
   PLF,
   ALT,
+  // data operations (functions-2 2.2-2.13, 2.17-2.18): family Data
+  XMOV,
+  BMOV,
+  FMOV,
+  XCH,
+  ZRST,
+  ENCO,
+  DECO,
+  COD,
+  SER,
+  ASSEM,
+  DISAS,
+  ACVT,
+  PTN,
+  NTP,
+  // NC services: chapter-4 CNC blocks (functions-1 3.1, functions-2 2.19-2.23) and the chapter-6
+  // blocks that call the host or keep state (cnc-interface 3.4): family Nc
+  MGET,
+  MACK,
+  TGET,
+  TACK,
+  RTOMPG,
+  TEMPSEN,
+  PARTCNT,
+  PARTCLR,
+  HEADSEN,
+  VARGET,
+  VARSET,
+  TOOLSET,
+  TOOLCLR,
+  NIXIE,
+  TOOLUSE,
+  TOOLLIFE,
+  TOOL,
+  SPDA,
+  SUBAXEN,
+  MPGSET,
+  ROT,
+  EVENT,
+  SAVEDATA,
+  // chapter-6 CNC blocks acting on F/G words through the CNC table (cnc-interface 2): family Cnc
+  MDST,
+  MDGT,
+  MDI,
+  MST,
+  CYCLE,
+  STOP,
+  RESET,
+  CHANSW,
+  HOLD,
+  CYCLED,
+  HOLDLED,
+  ESCBLK,
+  RPOVRD,
+  FEEDOVRD,
+  SPDLOVRD,
+  STEPMUL,
+  DRYRUN,
+  SKIP,
+  USERIN,
+  USEROUT,
+  SELSTOP,
+  SPDLJOG,
+  SPDLBUS,
+  SPDLBUS1,
+  SPDLORI,
+  SPDLOROK,
+  SPDLZERO,
+  SPDLRCH,
+  DESYN,
+  JOGSW,
+  STEPAXIS,
+  JOGVEL,
+  HOMRUN,
+  HOMERUN1,
+  HOMESW,
+  HOMLED,
+  AXEN,
+  AXRDY,
+  AXISLOCK,
+  AXISMOVE,
+  AXISMVTO,
+  AXLMF2,
+  AXISPLMT,
+  AXISNLMT,
+  SVSW,
+  AXISMODE,
+  REFPT,
+  AXISHOM2,
+  AXMOVING,
+  ALARM,
+  RSTCHK,
+  RSTCLR,
   Count_
 };
 
@@ -104,17 +197,27 @@ enum class OutputRule : uint8_t {
   Result,  ///< ST0 := the block's own result (timers, PLS/PLF/ALT)
 };
 
-/// Kind of persistent state an instruction instance owns.
-enum class StateKind : uint8_t { None, Edge, Timer, Counter, Pls, Plf, Alt };
+/// Kind of persistent state an instruction instance owns. Words: two consecutive
+/// lj_state.inst_word entries per instance (slot, slot + 1).
+enum class StateKind : uint8_t { None, Edge, Timer, Counter, Pls, Plf, Alt, Words };
+
+/// Which part of the engines implements an instruction (interpreter and lowering dispatch on
+/// it): Core = the original set, Data = data operations, Nc = NC services (host callbacks,
+/// chapter-4 CNC blocks), Cnc = chapter-6 blocks driven by the CNC F/G table.
+enum class Family : uint8_t { Core, Data, Nc, Cnc };
+
+/// Most operands an instruction takes (PTN / NTP).
+constexpr int kMaxOperands = 9;
 
 /// Operand position: which syntactic forms and areas are accepted.
 struct OperandSpec {
-  const char *role;   ///< shown in diagnostics ("destination", "preset"...)
-  AreaMask areas;     ///< registers (or bit addresses) allowed; L / S for labels, subroutines
-  bool isBit;         ///< a bit address `A12.3` (contacts, coils)
-  bool constOk;       ///< a decimal/hex constant is accepted
-  int64_t cmin, cmax; ///< constant range (inclusive)
-  bool writes;        ///< the instruction writes this operand (areas must be writable)
+  const char *role;    ///< shown in diagnostics ("destination", "preset"...)
+  AreaMask areas;      ///< registers (or bit addresses) allowed; L / S for labels, subroutines
+  bool isBit;          ///< a bit address `A12.3` (contacts, coils)
+  bool constOk;        ///< a decimal/hex constant is accepted
+  int64_t cmin, cmax;  ///< constant range (inclusive)
+  bool writes;         ///< the instruction writes this operand (areas must be writable)
+  bool wordOk = false; ///< isBit positions only: a whole register is accepted too (ZRST)
 };
 
 /// One row of the instruction table.
@@ -127,9 +230,17 @@ struct InstrInfo {
   OutputRule output;
   StateKind state;
   uint8_t operandCount;
-  OperandSpec operands[4];
+  OperandSpec operands[kMaxOperands];
   const char *summary;
 };
+
+/// Family of `op` (by its position in the Op enum).
+constexpr Family opFamily(Op op) {
+  if (op >= Op::XMOV && op <= Op::NTP) return Family::Data;
+  if (op >= Op::MGET && op <= Op::SAVEDATA) return Family::Nc;
+  if (op >= Op::MDST && op < Op::Count_) return Family::Cnc;
+  return Family::Core;
+}
 
 /// The row of `op`.
 const InstrInfo &instrInfo(Op op);

@@ -6,8 +6,10 @@
 // so every subroutine can own one preallocated pair of stacks; loops run on their scope's stacks
 // (they are emptied at LOOP and NEXT anyway).
 #include "instructions/Interpreter.h"
+#include "instructions/InterpreterInternal.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cassert>
 #include <cstddef>
@@ -16,192 +18,15 @@
 
 namespace lj {
 
+using namespace interp;
+
 // Bit operands are reduced to "one byte and a mask", which matches DIALECT.md 1 (bit k of a
 // little-endian element) only on a little-endian host; the ABI is little-endian by definition.
 static_assert(std::endian::native == std::endian::little, "lj_state is little-endian");
 
 namespace {
-
-/// An operand decoded once: a constant, an element (read rule by width) or one bit.
-struct Ref {
-  enum class Kind : uint8_t { None, Const, U8, I16, I32, Bit } kind = Kind::None;
-  uint8_t mask = 0;  ///< Bit: mask inside the byte at `off`
-  uint32_t off = 0;  ///< byte offset inside lj_state
-  int32_t value = 0; ///< Const
-};
-
-/// One statement ready to run.
-struct Code {
-  Op op = Op::LDT;
-  Ref a, b, c;         ///< operands in table order (L/S operands are not decoded)
-  int32_t target = -1; ///< JMP: its LBL; LOOP: its NEXT; CALL: index into subs
-  int32_t slot = -1;   ///< edge / timer / counter / PLS-PLF-ALT slot
-};
-
 /// How a statement range ended.
 enum class Flow { Done, Return, Watchdog };
-
-/// The ST and MS stacks of one active scope. Entries are 0/1; top is [sp - 1].
-struct Frame {
-  uint8_t *st;
-  uint8_t *ms;
-  int32_t stCap, msCap;
-  int32_t sp = 0, msp = 0;
-
-  void clear() { sp = msp = 0; }
-  void push(bool v) {
-    assert(sp < stCap && "ST deeper than the verifier said");
-    st[sp++] = v;
-  }
-  bool pop() {
-    assert(sp > 0 && "ST underflow the verifier should have rejected");
-    return st[--sp] != 0;
-  }
-  bool top() const {
-    assert(sp > 0);
-    return st[sp - 1] != 0;
-  }
-  void setTop(bool v) {
-    assert(sp > 0);
-    st[sp - 1] = v;
-  }
-  /// EN of a single-input block: ST0, or 1 (left rail) when ST is empty (DIALECT.md 3).
-  bool input() const { return sp > 0 ? st[sp - 1] != 0 : true; }
-  /// Output of a single-input block: replaces ST0, or is pushed when ST was empty.
-  void output(bool v) {
-    if (sp > 0)
-      st[sp - 1] = v;
-    else
-      push(v);
-  }
-};
-
-uint32_t areaOffset(Area a) {
-  switch (a) {
-  case Area::X:
-    return offsetof(lj_state, img.X);
-  case Area::Y:
-    return offsetof(lj_state, img.Y);
-  case Area::F:
-    return offsetof(lj_state, img.F);
-  case Area::G:
-    return offsetof(lj_state, img.G);
-  case Area::R:
-    return offsetof(lj_state, img.R);
-  case Area::W:
-    return offsetof(lj_state, img.W);
-  case Area::D:
-    return offsetof(lj_state, img.D);
-  case Area::B:
-    return offsetof(lj_state, img.B);
-  case Area::P:
-    return offsetof(lj_state, img.P);
-  default:
-    return 0;
-  }
-}
-
-Ref decode(const Operand &o) {
-  Ref r;
-  switch (o.kind) {
-  case Operand::Kind::None:
-    return r;
-  case Operand::Kind::Const:
-    r.kind = Ref::Kind::Const;
-    r.value = o.value;
-    return r;
-  case Operand::Kind::Reg: {
-    uint32_t bytes = areaInfo(o.area).bytes;
-    if (bytes == 0) return r; // L, S: handled through StmtInfo::target
-    r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
-    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
-    return r;
-  }
-  case Operand::Kind::Bit: {
-    r.kind = Ref::Kind::Bit;
-    if (o.area == Area::T || o.area == Area::C) {
-      // Tn.0 / Cn.0 read the output bit of the timer / counter (dialect-notes "Function blocks").
-      int slot = lj_tc_slot(o.index);
-      assert(slot >= 0 && o.bit == 0);
-      r.off = o.area == Area::T
-                  ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
-                                          offsetof(lj_timer, out))
-                  : static_cast<uint32_t>(offsetof(lj_state, C) + slot * sizeof(lj_counter) +
-                                          offsetof(lj_counter, out));
-      r.mask = 1;
-      return r;
-    }
-    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
-            static_cast<uint32_t>(o.bit / 8);
-    r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
-    return r;
-  }
-  }
-  return r;
-}
-
-unsigned char *bytes(lj_state *s) { return reinterpret_cast<unsigned char *>(s); }
-
-/// Read rule of DIALECT.md 1: X/Y/R zero-extend, F/G/W sign-extend, D/B/P as is.
-int32_t readValue(lj_state *s, const Ref &r) {
-  const unsigned char *p = bytes(s) + r.off;
-  switch (r.kind) {
-  case Ref::Kind::Const:
-    return r.value;
-  case Ref::Kind::U8:
-    return *p;
-  case Ref::Kind::I16: {
-    int16_t v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  case Ref::Kind::I32: {
-    int32_t v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-  }
-  case Ref::Kind::Bit:
-    return (*p & r.mask) != 0;
-  case Ref::Kind::None:
-    break;
-  }
-  assert(false && "reading an operand that is not a value");
-  return 0;
-}
-
-/// A write keeps the low 8/16/32 bits of the destination (DIALECT.md 1).
-void writeValue(lj_state *s, const Ref &r, int32_t v) {
-  unsigned char *p = bytes(s) + r.off;
-  switch (r.kind) {
-  case Ref::Kind::U8:
-    *p = static_cast<uint8_t>(static_cast<uint32_t>(v) & 0xFFu);
-    return;
-  case Ref::Kind::I16: {
-    uint16_t w = static_cast<uint16_t>(static_cast<uint32_t>(v) & 0xFFFFu);
-    std::memcpy(p, &w, sizeof w);
-    return;
-  }
-  case Ref::Kind::I32:
-    std::memcpy(p, &v, sizeof v);
-    return;
-  default:
-    assert(false && "writing an operand that is not a register");
-  }
-}
-
-bool readBit(lj_state *s, const Ref &r) { return (bytes(s)[r.off] & r.mask) != 0; }
-
-void writeBit(lj_state *s, const Ref &r, bool v) {
-  unsigned char &b = bytes(s)[r.off];
-  b = static_cast<unsigned char>(v ? (b | r.mask) : (b & ~r.mask));
-}
-
-// int32 two's-complement arithmetic without undefined behaviour (DIALECT.md 1).
-int32_t wrap(uint32_t v) { return static_cast<int32_t>(v); }
-int32_t addWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) + uint32_t(b)); }
-int32_t subWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) - uint32_t(b)); }
-int32_t mulWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) * uint32_t(b)); }
-
 /// Edge contact on one instance's memory m (DIALECT.md 3): always updates m.
 bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising) {
   bool m = s->edge[slot] != 0;
@@ -252,6 +77,8 @@ int64_t elapsedSince(const lj_state *s, int64_t start) {
   case StateKind::Timer:
   case StateKind::Counter:
     return slot >= 0 && slot < LJ_TC_SLOTS;
+  case StateKind::Words:
+    return slot >= 0 && slot + 1 < LJ_INST_WORDS;
   default:
     return slot >= 0 && slot < LJ_BLOCK_SLOTS;
   }
@@ -262,6 +89,10 @@ int64_t elapsedSince(const lj_state *s, int64_t start) {
 struct Interpreter::Impl {
   const VerifiedProgram &prog;
   std::vector<Code> code; ///< parallel to prog.stmts
+  /// All decoded operands of the non-core statements (Code::wide indexes it).
+  std::vector<std::array<Ref, kMaxOperands>> wide;
+  /// The last executed instruction that had no semantics (Op::Count_: none so far).
+  Op unimplemented = Op::Count_;
   // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
   std::vector<std::vector<uint8_t>> stStore, msStore;
 
@@ -284,6 +115,11 @@ Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
     c.c = decode(st.ops[2]);
     c.target = p.info[i].target;
     c.slot = p.info[i].slot;
+    if (opFamily(st.op) != Family::Core) {
+      c.wide = static_cast<int32_t>(wide.size());
+      std::array<Ref, kMaxOperands> &w = wide.emplace_back();
+      for (int k = 0; k < st.operandCount; ++k) w[k] = decode(st.ops[k]);
+    }
     assert(slotInRange(instrInfo(c.op).state, c.slot) && "state slot out of range");
     assert((c.op != Op::JMP && c.op != Op::LOOP) ||
            (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
@@ -341,53 +177,58 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     // The dynamic depth must equal the verifier's static one, except at a label reached by a
     // jump (the LBL empties the stacks anyway).
     assert((c.op == Op::LBL || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
+    // A forced contact (Stmt::force, docs/serve.md "Forcing") conducts its constant.
+    auto contact = [&](bool real) {
+      int8_t force = prog.stmts[pc].force;
+      return force >= 0 ? force != 0 : real;
+    };
     switch (c.op) {
     // Contacts (hnc8-core.md 4.2).
     case Op::LD:
-      f.push(readBit(s, c.a));
+      f.push(contact(readBit(s, c.a)));
       break;
     case Op::LDI:
-      f.push(!readBit(s, c.a));
+      f.push(contact(!readBit(s, c.a)));
       break;
     case Op::LDT:
       f.push(true);
       break;
-    case Op::LDP:
-      f.push(edgeSample(s, c.slot, readBit(s, c.a), true));
+    case Op::LDP: // the edge memory is updated with the real bit even when forced
+      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), true)));
       break;
     case Op::LDF:
-      f.push(edgeSample(s, c.slot, readBit(s, c.a), false));
+      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false)));
       break;
     case Op::AND:
-      f.setTop(f.top() && readBit(s, c.a));
+      f.setTop(f.top() && contact(readBit(s, c.a)));
       break;
     case Op::ANI:
-      f.setTop(f.top() && !readBit(s, c.a));
+      f.setTop(f.top() && contact(!readBit(s, c.a)));
       break;
     case Op::OR:
-      f.setTop(f.top() || readBit(s, c.a));
+      f.setTop(f.top() || contact(readBit(s, c.a)));
       break;
     case Op::ORI:
-      f.setTop(f.top() || !readBit(s, c.a));
+      f.setTop(f.top() || contact(!readBit(s, c.a)));
       break;
     // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
     case Op::ANDP: {
-      bool e = edgeSample(s, c.slot, readBit(s, c.a), true);
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
       f.setTop(f.top() && e);
       break;
     }
     case Op::ANDF: {
-      bool e = edgeSample(s, c.slot, readBit(s, c.a), false);
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
       f.setTop(f.top() && e);
       break;
     }
     case Op::ORP: {
-      bool e = edgeSample(s, c.slot, readBit(s, c.a), true);
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
       f.setTop(f.top() || e);
       break;
     }
     case Op::ORF: {
-      bool e = edgeSample(s, c.slot, readBit(s, c.a), false);
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
       f.setTop(f.top() || e);
       break;
     }
@@ -466,7 +307,15 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
       continue;
     }
     default:
-      block(s, f, c);
+      if (c.wide >= 0) {
+        BlockCall call{s, f, c, wide[c.wide].data(), prog.stmts[pc], prog.info[pc]};
+        bool done = opFamily(c.op) == Family::Data ? runData(call)
+                    : opFamily(c.op) == Family::Nc ? runNc(call)
+                                                   : runCnc(call);
+        if (!done) unimplemented = c.op;
+      } else {
+        block(s, f, c);
+      }
       break;
     }
     ++pc;
@@ -688,6 +537,8 @@ uint32_t Interpreter::runPlc2Slice(lj_state *s, uint32_t slice) {
   int32_t depth = slice < p.sliceDepth.size() ? p.sliceDepth[slice] : 0;
   return impl_->runPart(s, p.slices[slice], depth);
 }
+
+Op Interpreter::unimplemented() const { return impl_->unimplemented; }
 
 uint32_t Interpreter::sliceCount() const {
   return std::max<uint32_t>(1u, static_cast<uint32_t>(impl_->prog.slices.size()));

@@ -29,6 +29,9 @@ public:
   uint32_t runPlc2Slice(lj_state *s, uint32_t slice);
   /// Number of PLC2 slices (>= 1).
   uint32_t sliceCount() const;
+  /// The last executed instruction the interpreter has no semantics for (it did nothing), or
+  /// Op::Count_ when there was none. Checked by the catalogue completeness test.
+  Op unimplemented() const;
 
   /// Entry table bound to this interpreter, for lj_tick / lj_run_init. Valid while `this` lives.
   const lj_entries &entries() const { return entries_; }

@@ -247,6 +247,14 @@ private:
     out.loc = {line_, t.col};
     std::string what = std::string(info.mnemonic) + " expects ";
     bool isConst = r.shape == RawOperand::Shape::Const;
+    if (spec.isBit && spec.wordOk && !isConst && r.bit < 0) {
+      // Word form of a bit-or-word position (ZRST): a whole register.
+      if (!checkArea(info, spec, t, r)) return false;
+      out.kind = Operand::Kind::Reg;
+      out.area = r.area;
+      out.index = static_cast<int32_t>(r.index);
+      return true;
+    }
     if (spec.isBit) {
       if (isConst || r.bit < 0) {
         error(t, what + "a bit address (like X1.0) as " + spec.role + ", got " +

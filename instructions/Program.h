@@ -33,8 +33,12 @@ struct Operand {
 struct Stmt {
   Op op = Op::LDT;
   uint8_t operandCount = 0;
-  std::array<Operand, 4> ops{};
+  std::array<Operand, kMaxOperands> ops{};
   SourceLoc loc;
+  /// Online-monitor force of a contact (LD..ORF, hnc8-core.md 6.1 RESOLUTION (a)): -1 none,
+  /// 0/1 = the contact conducts that constant (NO/NC and edge ignored; an edge contact still
+  /// updates its memory with the real bit). Set only by `ladderjit serve` (docs/serve.md).
+  int8_t force = -1;
 };
 
 /// A line the parser dropped although its mnemonic was known (bad operands or count). The
@@ -64,7 +68,8 @@ struct StmtInfo {
   int32_t msDepth = 0;   ///< MS depth before the statement
   int32_t target = -1;   ///< JMP: index of its LBL; LOOP: index of its NEXT; NEXT: its LOOP;
                          ///< CALL: index into VerifiedProgram::subs
-  int32_t slot = -1;     ///< edge slot (LDP..ORF, CTR) or timer/counter slot (lj_tc_slot)
+  int32_t slot = -1;     ///< edge slot (LDP..ORF, CTR, EVENT, SAVEDATA), timer/counter slot
+                         ///< (lj_tc_slot), PLS/PLF/ALT number, or first inst_word (Words)
   bool hasInput = false; ///< a block reads ST0 (false: ST empty, input is 1)
   bool backward = false; ///< JMP whose label comes before it (counts a watchdog step)
 };
@@ -91,6 +96,7 @@ struct VerifiedProgram {
   /// ST depth at the start of each slice (entries left by the previous slice are dead).
   std::vector<int32_t> sliceDepth;
   int32_t edgeSlots = 0;    ///< edge slots used (<= LJ_EDGE_SLOTS)
+  int32_t wordSlots = 0;    ///< inst_word entries used (<= LJ_INST_WORDS)
   int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
   int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)
   int32_t maxMsDepth = 0;

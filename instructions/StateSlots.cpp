@@ -57,7 +57,7 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
 
 void assignSlots(Context &cx) {
   SlotUsers timers, counters, pls, plf, alt;
-  int32_t edges = 0;
+  int32_t edges = 0, words = 0;
   auto n = static_cast<int32_t>(cx.prog.stmts.size());
   for (int32_t i = 0; i < n; ++i) {
     const Stmt &s = cx.stmt(i);
@@ -78,6 +78,14 @@ void assignSlots(Context &cx) {
     case StateKind::Counter:
       timerCounter(cx, i, counters, "counter", 'C');
       break;
+    case StateKind::Words:
+      // Two per-instance words (lj_state.inst_word), in statement order.
+      cx.info(i).slot = words;
+      words += 2;
+      if (words > LJ_INST_WORDS && words <= LJ_INST_WORDS + 2)
+        cx.error(s.loc, "too many stateful CNC blocks (more than " +
+                            std::to_string(LJ_INST_WORDS / 2) + " TOOLLIFE)");
+      break;
     case StateKind::Pls:
     case StateKind::Plf:
     case StateKind::Alt: {
@@ -96,6 +104,7 @@ void assignSlots(Context &cx) {
     }
   }
   cx.prog.edgeSlots = edges;
+  cx.prog.wordSlots = words;
 }
 
 } // namespace lj::verifier

@@ -179,6 +179,9 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   cx.calls.resize(cx.units.size());
   for (size_t u = 0; u < cx.units.size(); ++u) verifier::checkUnit(cx, u);
   verifier::assignSlots(cx);
+  verifier::checkData(cx);
+  verifier::checkNc(cx);
+  verifier::checkCnc(cx);
   verifier::checkCallGraph(cx);
   if (diags.errorCount() > errorsBefore) return std::nullopt;
   verifier::planSlices(cx);

@@ -60,4 +60,13 @@ void checkCallGraph(Context &cx);
 /// PLC2 slices per dialect-notes "PLC2 slicing" (SlicePlanner.cpp).
 void planSlices(Context &cx);
 
+/// Family checks of data operations: constant ranges inside their area, FMOV/ZRST bounds
+/// (VerifyData.cpp).
+void checkData(Context &cx);
+/// Family Nc block-fit checks (VerifyNc.cpp).
+void checkNc(Context &cx);
+/// Family Cnc checks: alarm number gap, USEROUT bytes, SPDLBUS1 P block, MDST modes
+/// (VerifyCnc.cpp).
+void checkCnc(Context &cx);
+
 } // namespace lj::verifier

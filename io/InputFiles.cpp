@@ -82,7 +82,25 @@ std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &
               "' (expected ADDR=VALUE)";
       return false;
     }
+    if (items[1].substr(0, 3) == "nc.") { // a command of the simulated NC (SimNcParse.cpp)
+      std::string why;
+      std::vector<std::string_view> rest(items.begin() + 1, items.end());
+      std::optional<NcCommand> c = parseNcCommand(rest, why);
+      if (!c) {
+        error = where(file, lineNo) + why;
+        return false;
+      }
+      c->line = lineNo;
+      ev.nc.push_back(*c);
+      stim.events.push_back(std::move(ev));
+      return true;
+    }
     for (size_t i = 1; i < items.size(); ++i) {
+      if (items[i].substr(0, 3) == "nc.") {
+        error = where(file, lineNo) + "'" + std::string(items[i]) +
+                "': an NC command needs a line of its own (@TICK nc.COMMAND key=value ...)";
+        return false;
+      }
       std::string why;
       std::optional<Assignment> a = parseAssignment(items[i], why);
       if (!a) {

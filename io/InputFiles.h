@@ -3,6 +3,7 @@
 #pragma once
 
 #include "io/Address.h"
+#include "io/SimNcCommand.h"
 
 #include <cstdint>
 #include <optional>
@@ -12,11 +13,13 @@
 
 namespace lj::io {
 
-/// The assignments of one stimulus line, applied before the scan of `tick`.
+/// The assignments of one stimulus line, applied before the scan of `tick`, or (a line
+/// `@TICK nc.COMMAND key=value ...`) one command of the simulated NC (docs/simulated-nc.md).
 struct StimulusEvent {
   uint64_t tick = 0;
   int32_t line = 0; ///< source line, for messages
   std::vector<Assignment> sets;
+  std::vector<NcCommand> nc; ///< at most one; applied after all assignments of the tick
 };
 
 /// A whole stimulus file: events in file order, ticks non-decreasing.
@@ -28,7 +31,8 @@ struct Stimulus {
 /// one event per line `@TICK ADDR=VALUE [ADDR=VALUE ...]`, items separated by spaces/tabs;
 /// `#` starts a comment; blank lines are ignored; TICK is a decimal >= 0 and must not be
 /// smaller than the previous line's (equal ticks are applied in file order); a line needs at
-/// least one assignment. `file` names the source in errors (`file:line: ...`).
+/// least one assignment, or exactly one NC command `nc.NAME key=value ...` instead
+/// (docs/simulated-nc.md). `file` names the source in errors (`file:line: ...`).
 std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
                                       std::string &error);
 

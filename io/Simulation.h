@@ -5,6 +5,7 @@
 
 #include "io/Address.h"
 #include "io/InputFiles.h"
+#include "io/SimNc.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -42,14 +43,16 @@ struct SimResult {
 };
 
 /// A run in steps, for callers that report between init and the ticks. Order (README
-/// "Simulation order"): powerUp() = lj_state_reset, watchdog limit, params, --set, now_ms = 0,
-/// lj_run_init; then each step() = the stimulus events of tick t (file order), now_ms =
-/// t * period, lj_tick, the watch list read into the row. Faults never stop the run.
+/// "Simulation order"): powerUp() = lj_state_reset, watchdog limit, the NC's power-up, params,
+/// --set, now_ms = 0, lj_run_init; then each step() = the stimulus assignments of tick t (file
+/// order), the tick's NC commands, the NC's beforeTick, now_ms = t * period, lj_tick, the NC's
+/// afterTick, the watch list read into the row (docs/simulated-nc.md). Faults never stop the
+/// run. Without an NC (nullptr) the NC steps are skipped and NC commands are ignored.
 class Simulation {
 public:
-  /// `entries`, `s` and `opts` must outlive the simulation.
-  Simulation(const lj_entries &entries, lj_state &s, const SimOptions &opts)
-      : entries_(entries), s_(s), opts_(opts) {}
+  /// `entries`, `s`, `opts` and `nc` must outlive the simulation.
+  Simulation(const lj_entries &entries, lj_state &s, const SimOptions &opts, SimNc *nc = nullptr)
+      : entries_(entries), s_(s), opts_(opts), nc_(nc) {}
   /// Reset to power-up and run init; returns init's fault code.
   uint32_t powerUp();
   /// Whether all `opts.ticks` ticks have run.
@@ -61,13 +64,14 @@ private:
   const lj_entries &entries_;
   lj_state &s_;
   const SimOptions &opts_;
+  SimNc *nc_;
   uint64_t tick_ = 0;
   size_t nextEvent_ = 0;
 };
 
-/// powerUp, then every tick, calling `sink` after each one.
+/// powerUp, then every tick, calling `sink` after each one (with the simulated NC `nc`, if any).
 SimResult simulate(const lj_entries &entries, lj_state &s, const SimOptions &opts,
-                   const RowSink &sink);
+                   const RowSink &sink, SimNc *nc = nullptr);
 
 /// Name of a fault code for messages ("watchdog").
 const char *faultName(uint32_t fault);

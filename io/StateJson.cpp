@@ -65,6 +65,7 @@ nlohmann::ordered_json stateToJson(const lj_state &s) {
   j["alt_prev"] = array(s.alt_prev);
   j["alt_state"] = array(s.alt_state);
   j["edge"] = array(s.edge);
+  j["inst_word"] = array(s.inst_word);
   return j;
 }
 

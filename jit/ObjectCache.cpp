@@ -31,7 +31,7 @@ constexpr size_t kMemoryLimit = size_t{64} << 20; ///< in-memory bytes before ev
 
 // A new field in these types must be added to programDigest (else two programs differing only
 // in it would share cached code). The sizes are the reminder.
-static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 108 && sizeof(StmtInfo) == 20 &&
+static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 232 && sizeof(StmtInfo) == 20 &&
                   sizeof(Subroutine) == 16 && sizeof(StmtRange) == 8,
               "program model changed: update programDigest()");
 
@@ -123,6 +123,7 @@ std::string programDigest(const VerifiedProgram &p) {
     put(s, st.operandCount);
     put(s, st.loc.line);
     put(s, st.loc.col);
+    put(s, st.force); // a forced contact compiles to different code (docs/serve.md)
     for (const Operand &o : st.ops) {
       put(s, static_cast<uint8_t>(o.kind));
       put(s, static_cast<uint8_t>(o.area));
@@ -157,6 +158,7 @@ std::string programDigest(const VerifiedProgram &p) {
   put<uint64_t>(s, p.sliceDepth.size());
   for (int32_t d : p.sliceDepth) put(s, d);
   put(s, p.edgeSlots);
+  put(s, p.wordSlots);
   put(s, p.plc2Nvalue);
   put(s, p.maxDepth);
   put(s, p.maxMsDepth);

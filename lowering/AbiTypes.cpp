@@ -32,7 +32,9 @@ enum StateIdx : uint32_t {
   kStFaultWatchdog,
   kStFaultIndex,
   kStFaultDivzero,
-  kStPad
+  kStPad,
+  kStInstWord,
+  kStHost
 };
 
 llvm::StructType *namedStruct(llvm::LLVMContext &ctx, llvm::ArrayRef<llvm::Type *> elems,
@@ -57,7 +59,7 @@ llvm::StructType *buildState(llvm::LLVMContext &ctx) {
                      {image, arr(timer, LJ_TC_SLOTS), arr(counter, LJ_TC_SLOTS),
                       arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_BLOCK_SLOTS),
                       arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_EDGE_SLOTS), i64, i64, i64, i32, i32, i32,
-                      i32, i32, i32},
+                      i32, i32, i32, arr(i32, LJ_INST_WORDS), llvm::PointerType::getUnqual(ctx)},
                      "lj_state");
 }
 
@@ -102,6 +104,8 @@ llvm::Error checkLayout(llvm::StructType *st, const llvm::DataLayout &dl) {
       {{kStFaultWatchdog}, offsetof(lj_state, fault_watchdog), "fault_watchdog"},
       {{kStFaultIndex}, offsetof(lj_state, fault_index), "fault_index"},
       {{kStFaultDivzero}, offsetof(lj_state, fault_divzero), "fault_divzero"},
+      {{kStInstWord}, offsetof(lj_state, inst_word), "inst_word"},
+      {{kStHost}, offsetof(lj_state, host), "host"},
   };
   llvm::Type *i32 = llvm::Type::getInt32Ty(st->getContext());
   for (const Pin &p : pins) {
@@ -241,6 +245,15 @@ StateLoc StateLayout::edge(int32_t slot) const {
   return loc;
 }
 
+StateLoc StateLayout::instWord(int32_t slot) const {
+  StateLoc loc;
+  loc.offset = static_cast<uint32_t>(offsetof(lj_state, inst_word) + slot * sizeof(int32_t));
+  loc.type = llvm::Type::getInt32Ty(*ctx_);
+  loc.path = {kStInstWord, static_cast<uint32_t>(slot)};
+  if (names_) loc.name = "inst" + std::to_string(slot);
+  return loc;
+}
+
 StateLoc StateLayout::scalar(Scalar s) const {
   StateLoc loc;
   switch (s) {
@@ -255,6 +268,15 @@ StateLoc StateLayout::scalar(Scalar s) const {
     break;
   case Scalar::Steps:
     loc = {offsetof(lj_state, steps), llvm::Type::getInt64Ty(*ctx_), {kStSteps}, "steps"};
+    break;
+  case Scalar::FaultIndex:
+    loc = {offsetof(lj_state, fault_index),
+           llvm::Type::getInt32Ty(*ctx_),
+           {kStFaultIndex},
+           "fault_index"};
+    break;
+  case Scalar::Host:
+    loc = {offsetof(lj_state, host), llvm::PointerType::getUnqual(*ctx_), {kStHost}, "host"};
     break;
   case Scalar::FaultDivzero:
     loc = {offsetof(lj_state, fault_divzero),

@@ -29,8 +29,8 @@ enum class TimerField : uint8_t { Start, Elapsed, Out, Running };
 enum class CounterField : uint8_t { Value, Out, Prev };
 /// The per-block byte arrays of PLS / PLF / ALT.
 enum class BlockArray : uint8_t { PlsPrev, PlfPrev, AltPrev, AltState };
-/// The scalar bookkeeping fields at the end of lj_state.
-enum class Scalar : uint8_t { NowMs, MaxSteps, Steps, FaultDivzero };
+/// The scalar bookkeeping fields at the end of lj_state (Host: the `const lj_host *`).
+enum class Scalar : uint8_t { NowMs, MaxSteps, Steps, FaultDivzero, FaultIndex, Host };
 
 /// The lj_state type of one LLVMContext, built from the ABI header's layout and checked against
 /// it (offsetof) with the target's DataLayout.
@@ -52,6 +52,8 @@ public:
   StateLoc counter(int32_t slot, CounterField f) const;
   StateLoc block(BlockArray a, int32_t index) const;
   StateLoc edge(int32_t slot) const;
+  /// Per-instance word `slot` (lj_state.inst_word).
+  StateLoc instWord(int32_t slot) const;
   StateLoc scalar(Scalar s) const;
 
   /// Address of `loc` inside the state pointed to by `state`.

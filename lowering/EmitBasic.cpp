@@ -59,12 +59,16 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
       return fail(i, "edge slot " + std::to_string(info.slot) + " out of range");
     return info.slot;
   };
+  // A forced contact (Stmt::force, docs/serve.md "Forcing") conducts its constant.
+  auto contact = [&](llvm::Value *real) -> llvm::Value * {
+    return s.force >= 0 ? b_.getInt1(s.force != 0) : real;
+  };
   switch (s.op) {
   case Op::LD:
-    st_.push_back(readBit(s.ops[0]));
+    st_.push_back(contact(readBit(s.ops[0])));
     return llvm::Error::success();
   case Op::LDI:
-    st_.push_back(notV(readBit(s.ops[0])));
+    st_.push_back(contact(notV(readBit(s.ops[0]))));
     return llvm::Error::success();
   case Op::LDT:
     st_.push_back(b_.getTrue());
@@ -74,7 +78,7 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
     llvm::Expected<int32_t> slot = edgeSlot();
     if (!slot) return slot.takeError();
     auto [rise, fall] = edge(*slot, readBit(s.ops[0]));
-    st_.push_back(s.op == Op::LDP ? rise : fall);
+    st_.push_back(contact(s.op == Op::LDP ? rise : fall)); // memory updated even when forced
     return llvm::Error::success();
   }
   default:
@@ -84,16 +88,16 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
   llvm::Value *&st0 = st_.back();
   switch (s.op) {
   case Op::AND:
-    st0 = b_.CreateAnd(st0, readBit(s.ops[0]));
+    st0 = b_.CreateAnd(st0, contact(readBit(s.ops[0])));
     break;
   case Op::ANI:
-    st0 = b_.CreateAnd(st0, notV(readBit(s.ops[0])));
+    st0 = b_.CreateAnd(st0, contact(notV(readBit(s.ops[0]))));
     break;
   case Op::OR:
-    st0 = b_.CreateOr(st0, readBit(s.ops[0]));
+    st0 = b_.CreateOr(st0, contact(readBit(s.ops[0])));
     break;
   case Op::ORI:
-    st0 = b_.CreateOr(st0, notV(readBit(s.ops[0])));
+    st0 = b_.CreateOr(st0, contact(notV(readBit(s.ops[0]))));
     break;
   case Op::ANDP:
   case Op::ANDF:
@@ -103,7 +107,7 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
     llvm::Expected<int32_t> slot = edgeSlot();
     if (!slot) return slot.takeError();
     auto [rise, fall] = edge(*slot, readBit(s.ops[0]));
-    llvm::Value *e = (s.op == Op::ANDP || s.op == Op::ORP) ? rise : fall;
+    llvm::Value *e = contact((s.op == Op::ANDP || s.op == Op::ORP) ? rise : fall);
     st0 = (s.op == Op::ANDP || s.op == Op::ANDF) ? b_.CreateAnd(st0, e) : b_.CreateOr(st0, e);
     break;
   }

@@ -86,6 +86,16 @@ llvm::Error FunctionEmitter::emitStmt(int32_t i) {
   default:
     break;
   }
+  switch (opFamily(s.op)) {
+  case Family::Data:
+    return emitDataBlock(i);
+  case Family::Nc:
+    return emitNcBlock(i);
+  case Family::Cnc:
+    return emitCncBlock(i);
+  case Family::Core:
+    break;
+  }
   switch (row.stack) {
   case StackRule::Structural: // markers, SP, SPE: both stacks emptied
     st_.clear();

@@ -2,6 +2,7 @@
 // time (vectors of i1 SSA values); state fields go through a per-block ImageCache.
 #pragma once
 
+#include "instructions/CncTable.h"
 #include "instructions/Program.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/ImageCache.h"
@@ -80,6 +81,87 @@ private:
   llvm::Error emitCounter(int32_t i);
   llvm::Error emitTimer(int32_t i);
   llvm::Error emitPulse(int32_t i);
+
+  // EmitData.cpp: family Data (XMOV .. NTP). Helpers of that file go in this section.
+  llvm::Error emitDataBlock(int32_t i);
+  /// An XMOV/XCH operand (functions-2 0.6): a register (format 0) or B/P[value of the register]
+  /// at a computed, clamped index with its in-range flag.
+  struct DataRef {
+    Operand reg;                  ///< format 0: the register itself
+    Area area = Area::None;       ///< formats 1/2: B or P
+    llvm::Value *index = nullptr; ///< formats 1/2: in-range index (0 when out of range)
+    llvm::Value *ok = nullptr;    ///< index in range (i1)
+  };
+  DataRef dataResolve(const Operand &format, const Operand &addr);
+  llvm::Value *dataRead(const DataRef &r);
+  void dataWrite(const DataRef &r, llvm::Value *v, llvm::Value *en);
+  /// Element `index` (i32, in range) of `a` through a computed address, with the read rule;
+  /// flushes the cache first (so no later cached store can erase a store this load saw).
+  llvm::Value *dataLoadAt(Area a, llvm::Value *index);
+  /// Stores the low bits of `v` at a computed address, then flushes the cache.
+  void dataStoreAt(Area a, llvm::Value *index, llvm::Value *v);
+  /// `fault_index += en & !ok`; a block without an output then sees ST0 := ST0 & ok.
+  void dataIndexFault(llvm::Value *en, llvm::Value *ok, bool hasOutput);
+  /// An LLVM loop over idx = 0..n-1 (n - 1..0 when `backward`), entered only when `en`; carries
+  /// one i32 (`init` on entry, null for none) through `body` and returns its final value.
+  using DataBody = llvm::function_ref<llvm::Value *(llvm::Value *idx, llvm::Value *carried)>;
+  llvm::Value *dataLoop(llvm::Value *en, int32_t n, bool backward, llvm::Value *init,
+                        DataBody body);
+  /// Store 0 / `v` into elements first..last of `a` (unrolled or a loop), only when `en`.
+  void dataFill(Area a, int32_t first, int32_t last, llvm::Value *v, llvm::Value *en);
+  void emitXmovXch(const Stmt &s);
+  void emitBmov(const Stmt &s);
+  void emitZrst(const Stmt &s);
+  void emitTable(const Stmt &s);
+  void emitAssemDisas(const Stmt &s);
+  void emitAcvt(const Stmt &s);
+  void emitPtnNtp(const Stmt &s);
+
+  // EmitNc.cpp: family Nc (MGET .. SAVEDATA), host callbacks. Helpers of that file go here.
+  llvm::Error emitNcBlock(int32_t i);
+  /// What a guarded host call gives back (all valid after the call's join block).
+  struct NcCall {
+    llvm::Value *called; ///< i1: the callback ran
+    llvm::Value *ret;    ///< i32 return value (0 when not called or void)
+    llvm::Value *out[2]; ///< i32 values returned through pointers (0 when not called)
+  };
+  /// When `cond`, call the lj_host member at byte offset `member` as
+  /// `fn(ctx, args..., &out0, &out1)` if state->host and the member are non-null. Flushes the
+  /// image cache and splits the basic block; the builder continues in the join block.
+  NcCall ncHostCall(llvm::Value *cond, size_t member, bool returnsValue,
+                    llvm::ArrayRef<llvm::Value *> args, unsigned outs = 0);
+  /// Element `index` of area `a` read as i32 (read rule), through the cache.
+  llvm::Value *ncRead(Area a, int32_t index);
+  /// Write the low bits of `v` into element `index` of area `a` when `en` (null: always).
+  void ncWrite(Area a, int32_t index, llvm::Value *v, llvm::Value *en);
+  /// Store the low 16 bits of `v` into G[index] with a runtime index known to be in range
+  /// (the cache must be flushed around it).
+  void ncStoreGAt(llvm::Value *index, llvm::Value *v);
+  void emitMpgSet(int32_t i);
+  void emitRot(int32_t i);
+  llvm::AllocaInst *ncOut_[2] = {nullptr, nullptr}; ///< out-parameter slots of host calls
+
+  // EmitCnc.cpp: family Cnc (MDST .. RSTCLR), the CNC F/G table. Helpers of that file go here.
+  llvm::Error emitCncBlock(int32_t i);
+  /// Word base of one CNC statement: a constant word, or a runtime axis (`dyn` = axis*80 as
+  /// i32, axis 0 when out of range; `valid` = axis in 0..31).
+  struct CncBase {
+    int32_t word = 0;
+    llvm::Value *dyn = nullptr;
+    llvm::Value *valid = nullptr;
+  };
+  /// F or G word `base + k` as i16 (a runtime base loads through a computed address).
+  llvm::Value *cncLoad(Area a, const CncBase &base, int32_t k);
+  /// G word `base + k` := f(old); with a runtime base the store keeps `old` unless valid.
+  void cncUpdate(const CncBase &base, int32_t k,
+                 llvm::function_ref<llvm::Value *(llvm::Value *)> f);
+  /// Bit `bit` of F/G word `base + k` as i1.
+  llvm::Value *cncBit(Area a, const CncBase &base, int32_t k, int32_t bit);
+  /// One table action; `cond` receives a Status action's F bit.
+  void emitCncAction(int32_t i, const cnc::Action &a, const CncBase &base, llvm::Value *act,
+                     llvm::Value *&cond);
+  /// SPDLBUS / SPDLBUS1 command words (docs/cnc-blocks.md "Spindle command").
+  void emitCncSpindle(int32_t i, const cnc::Action &a, const CncBase &base, llvm::Value *act);
 
   llvm::Value *notV(llvm::Value *v) { return b_.CreateNot(v); }
   /// `c ? a : b` on i1 values as and/or: FastISel cannot select an i1 `select` and would hand

@@ -95,6 +95,71 @@ TEST(RandomGenerator, ABatchCoversEveryRowOfTheTable) {
     EXPECT_TRUE(seen.count(in.op)) << in.mnemonic << " never generated";
 }
 
+TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
+  // lowering/EmitData.cpp turns ranges of more than 32 elements into loops; the generator must
+  // give every looping form now and then, and such programs must still verify (VerifyData.cpp).
+  enum { BmovUp, BmovDown, BmovApart, Fmov, ZrstWord, ZrstBits, Ser, Cod, Kinds };
+  const char *names[Kinds] = {"BMOV overlapping upward",
+                              "BMOV overlapping downward",
+                              "BMOV in separate ranges",
+                              "FMOV",
+                              "ZRST word form",
+                              "ZRST bit form",
+                              "SER",
+                              "COD"};
+  int count[Kinds] = {};
+  int failures = 0;
+  for (uint64_t seed = 1; seed <= 2000; ++seed) {
+    RandomOptions o;
+    o.seed = seed;
+    o.statements = 40;
+    GenProgram p = generateRandom(o);
+    Diagnostics d;
+    auto v = frontEnd(p, d);
+    if (!v) {
+      if (++failures <= 3) ADD_FAILURE() << "seed " << seed << ":\n" << d.render();
+      continue;
+    }
+    for (const Stmt &s : v->stmts) {
+      const Operand &a = s.ops[0], &b = s.ops[1];
+      switch (s.op) {
+      case Op::BMOV: {
+        const int32_t n = s.ops[2].value;
+        if (n <= 32) break;
+        const bool same = a.area == b.area;
+        if (same && b.index > a.index && b.index - a.index < n)
+          ++count[BmovUp];
+        else if (same && b.index < a.index && a.index - b.index < n)
+          ++count[BmovDown];
+        else
+          ++count[BmovApart];
+        break;
+      }
+      case Op::FMOV:
+        count[Fmov] += b.index - a.index + 1 > 32;
+        break;
+      case Op::ZRST:
+        // Bit form: the whole elements strictly between the two bounds' elements.
+        if (a.kind == Operand::Kind::Bit)
+          count[ZrstBits] += b.index - a.index - 1 > 32;
+        else
+          count[ZrstWord] += b.index - a.index + 1 > 32;
+        break;
+      case Op::SER:
+        count[Ser] += s.ops[1].value > 32;
+        break;
+      case Op::COD:
+        count[Cod] += s.ops[1].value > 32;
+        break;
+      default:
+        break;
+      }
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  for (int k = 0; k < Kinds; ++k) EXPECT_GE(count[k], 2) << names[k] << " longer than 32";
+}
+
 TEST(RandomGenerator, SameSeedSameProgram) {
   RandomOptions o;
   o.seed = 42;

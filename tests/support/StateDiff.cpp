@@ -86,10 +86,10 @@ uint64_t elementBits(const lj_state &s, const Field &f, size_t offset) {
 } // namespace
 
 std::optional<size_t> firstDifference(const lj_state &a, const lj_state &b) {
-  if (std::memcmp(&a, &b, sizeof a) == 0) return std::nullopt;
+  if (std::memcmp(&a, &b, LJ_STATE_COMPARED_BYTES) == 0) return std::nullopt;
   const auto *pa = reinterpret_cast<const unsigned char *>(&a);
   const auto *pb = reinterpret_cast<const unsigned char *>(&b);
-  for (size_t i = 0; i < sizeof a; ++i)
+  for (size_t i = 0; i < LJ_STATE_COMPARED_BYTES; ++i)
     if (pa[i] != pb[i]) return i;
   return std::nullopt;
 }
@@ -125,7 +125,7 @@ std::string describeDifference(const lj_state &a, const lj_state &b, const char 
   size_t count = 0;
   const auto *pa = reinterpret_cast<const unsigned char *>(&a);
   const auto *pb = reinterpret_cast<const unsigned char *>(&b);
-  for (size_t i = 0; i < sizeof a; ++i) count += pa[i] != pb[i];
+  for (size_t i = 0; i < LJ_STATE_COMPARED_BYTES; ++i) count += pa[i] != pb[i];
   os << " (" << count << " differing bytes in all)";
   return os.str();
 }

@@ -127,9 +127,11 @@ public:
     if (!file_) error = "--dump: cannot write '" + path + "'";
     return static_cast<bool>(file_);
   }
-  bool write(const lj_state &s, std::string &error) {
+  bool write(const lj_state &s, const io::SimNc &nc, std::string &error) {
     if (path_.empty()) return true;
-    std::string text = io::stateToJson(s).dump() + "\n";
+    nlohmann::ordered_json j = io::stateToJson(s);
+    j["nc"] = nc.toJson(); // the simulated NC (docs/simulated-nc.md "Dump")
+    std::string text = j.dump() + "\n";
     if (path_ == "-") {
       std::fwrite(text.data(), 1, text.size(), stdout);
       return true;
@@ -207,7 +209,9 @@ int runRun(const RunArgs &a) {
 
   sim.maxBackwardSteps = a.maxBackwardSteps;
   auto state = std::make_unique<lj_state>();
-  io::Simulation run(engine->entries(), *state, sim);
+  // Every engine runs against the simulated NC (docs/simulated-nc.md).
+  auto nc = std::make_unique<io::SimNc>();
+  io::Simulation run(engine->entries(), *state, sim, nc.get());
   if (uint32_t f = run.powerUp(); f != LJ_FAULT_NONE)
     std::fprintf(stderr, "ladderjit: init: fault: %s (the init part was aborted)\n",
                  io::faultName(f));
@@ -223,7 +227,7 @@ int runRun(const RunArgs &a) {
     if (table) table->row(row);
   }
   if (table) table->flush();
-  if (!dump.write(*state, error)) return usageError(error);
+  if (!dump.write(*state, *nc, error)) return usageError(error);
   return kOk;
 }
 

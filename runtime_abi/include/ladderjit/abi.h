@@ -15,7 +15,7 @@
 extern "C" {
 #endif
 
-#define LJ_ABI_VERSION 1u
+#define LJ_ABI_VERSION 2u
 
 /* Element counts of every area (DIALECT.md section 1). */
 #define LJ_X_COUNT 513
@@ -34,6 +34,10 @@ extern "C" {
 #define LJ_BLOCK_SLOTS 512
 /* Edge-memory bits of edge contacts (LDP...ORF) and CTR instances, one byte per instance. */
 #define LJ_EDGE_SLOTS 16384
+
+/* Per-instance words of stateful CNC blocks (TOOLLIFE install counters), indices assigned by the
+ * verifier like edge slots. */
+#define LJ_INST_WORDS 1024
 
 /* Fault codes returned by scan entries and recorded in lj_state.last_fault. */
 #define LJ_FAULT_NONE 0
@@ -89,7 +93,59 @@ typedef struct lj_state {
   uint32_t fault_index;        /* indirect accesses out of range */
   uint32_t fault_divzero;      /* divisions by zero (harmless, counted) */
   uint32_t pad_;
+  /* ---- ABI v2 additions (after every v1 field, so v1 offsets are unchanged) ---- */
+  int32_t inst_word[LJ_INST_WORDS]; /* per-instance words (TOOLLIFE counters) */
+  /* The NC host the CNC blocks call (see lj_host). Set by the host after lj_state_reset; NULL
+   * (or a NULL callback) gives the documented default. Not program state: engines compare
+   * states over the first LJ_STATE_COMPARED_BYTES bytes only. */
+  const struct lj_host *host;
 } lj_state;
+
+/** Services of the NC that CNC function blocks need beyond the F/G words (DIALECT.md 5,
+ * hnc8-cnc-interface.md 3.3). Every callback receives `ctx` first and only int32 values, so
+ * compiled code calls them through plain pointers. A NULL `lj_state.host` or a NULL member means
+ * "no NC service": getters report "not available" (nothing is written), notifications do
+ * nothing, NIXIE shows the raw value. Both engines call them at the same points, in the same
+ * order, with the same arguments. */
+typedef struct lj_host {
+  void *ctx;
+  /* VARGET: the variable (type 0..9, offset) scaled by 10^exp (floats, truncated toward zero)
+   * into *value; returns 1, or 0 when it does not exist (nothing is written). */
+  int32_t (*var_get)(void *ctx, int32_t type, int32_t offset, int32_t exp, int32_t *value);
+  /* VARSET: store `value` (floats: value / 10^exp); returns 1, or 0 when it does not exist. */
+  int32_t (*var_set)(void *ctx, int32_t type, int32_t offset, int32_t exp, int32_t value);
+  /* RTOMPG: handwheel `mpg` receives the pulse register's raw value. */
+  void (*mpg_input)(void *ctx, int32_t mpg, int32_t value);
+  /* MPGSET: pulse delta of handwheel `mpg` since the last call. */
+  int32_t (*mpg_delta)(void *ctx, int32_t mpg);
+  /* TEMPSEN: sensor `sensor` (0..19) read `raw` from its X group; board `type` (0..4) with the
+   * four P parameters p0..p3 starting at the block's P operand. */
+  void (*temp_input)(void *ctx, int32_t sensor, int32_t raw, int32_t type, int32_t p0, int32_t p1,
+                     int32_t p2, int32_t p3);
+  /* EVENT: event `n` raised (rising edge of the block's input). */
+  void (*event)(void *ctx, int32_t n);
+  /* SAVEDATA: save the retentive data now (rising edge of the block's input). */
+  void (*save_data)(void *ctx);
+  /* TOOL: find the pocket for commanded tool `cmd_tool` (spindle holds `spindle_tool`);
+   * returns 1 and sets *pocket, or 0 and sets *error. */
+  int32_t (*tool_select)(void *ctx, int32_t spindle_tool, int32_t cmd_tool, int32_t *pocket,
+                         int32_t *error);
+  /* TOOLUSE: channel `ch` shows tool `tool` in use. */
+  void (*tool_in_use)(void *ctx, int32_t ch, int32_t tool);
+  /* TOOLSET / TOOLCLR: tool-vector direction of channel `ch` on (1) or off (0). */
+  void (*tool_vector)(void *ctx, int32_t ch, int32_t on);
+  /* SUBAXEN: slave-axis homing of `axis` allowed (1) or not (0). */
+  void (*slave_home)(void *ctx, int32_t axis, int32_t on);
+  /* SPDA: DA output value for spindle `sp` of channel `ch` at commanded speed `rpm`, gear
+   * `gear`, parameter block P[pbase..pbase+4]. */
+  int32_t (*spindle_da)(void *ctx, int32_t ch, int32_t sp, int32_t rpm, int32_t gear,
+                        int32_t pbase);
+  /* NIXIE: panel-display encoding of `value` for `width` 0 (one byte) or 1 (two bytes). */
+  int32_t (*nixie_encode)(void *ctx, int32_t value, int32_t width);
+} lj_host;
+
+/* Bytes of lj_state that are program state (everything before `host`). */
+#define LJ_STATE_COMPARED_BYTES offsetof(lj_state, host)
 
 /** Scan entries. Each returns LJ_FAULT_NONE or a fault code (the part stopped there). `ctx` is
  * the engine's own context (the interpreter's instance); compiled code ignores it. */
@@ -151,7 +207,13 @@ LJ_STATIC_ASSERT(offsetof(lj_state, pls_prev) == 15712 + 256 * 24 + 256 * 8, "st
 LJ_STATIC_ASSERT(offsetof(lj_state, edge) == 15712 + 256 * 24 + 256 * 8 + 4 * 512, "state edge");
 LJ_STATIC_ASSERT(offsetof(lj_state, now_ms) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384,
                  "state now_ms");
-LJ_STATIC_ASSERT(sizeof(lj_state) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48,
+LJ_STATIC_ASSERT(offsetof(lj_state, inst_word) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48,
+                 "state inst_word");
+LJ_STATIC_ASSERT(offsetof(lj_state, host) ==
+                     15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 + 4 * LJ_INST_WORDS,
+                 "state host");
+LJ_STATIC_ASSERT(sizeof(lj_state) ==
+                     15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 + 4 * LJ_INST_WORDS + 8,
                  "state size");
 
 #endif /* LADDERJIT_ABI_H */

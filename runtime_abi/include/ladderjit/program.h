@@ -16,7 +16,7 @@ extern "C" {
 
 /* Version of this interface AND of the lj_state layout it was built against (LJ_ABI_VERSION).
  * Any incompatible change to program.h or to abi.h's layout bumps it. */
-#define LJPROG_ABI_VERSION 1u
+#define LJPROG_ABI_VERSION 2u
 
 /* The symbol version node every export carries (GNU symbol versioning). */
 #define LJPROG_SYMBOL_VERSION "LJPROG_1"

@@ -1,0 +1,74 @@
+// Verifier checks of family Cnc (hnc8-cnc-interface.md 2, docs/cnc-blocks.md) that an operand
+// spec cannot express: ALARM's number gap, USEROUT's four bytes, SPDLBUS1's P block, constant
+// MDST modes, and REFPT 5 (no status bit). Diagnostics point at the operand (DIALECT.md 6).
+#include "instructions/VerifierInternal.h"
+
+#include <string>
+
+namespace lj::verifier {
+
+namespace {
+
+std::string addr(Area a, int64_t index) {
+  return std::string(1, areaInfo(a).letter) + std::to_string(index);
+}
+
+std::string lastOf(Area a) { return addr(a, areaInfo(a).count - 1); }
+
+void checkStmt(Context &cx, const Stmt &s) {
+  const std::string mn = instrInfo(s.op).mnemonic;
+  switch (s.op) {
+  case Op::ALARM: {
+    // Alarms 1..256 (G3010-3025) and prompts 501..884 (G3056-3079); nothing in between.
+    const Operand &n = s.ops[0];
+    if (n.value > 256 && n.value < 501)
+      cx.error(n.loc, "ALARM number " + std::to_string(n.value) +
+                          " is neither an alarm (1..256) nor a prompt (501..884)");
+    break;
+  }
+  case Op::USEROUT: {
+    // 32 user outputs go to four consecutive bytes from the start operand.
+    const Operand &o = s.ops[2];
+    if (!validIndex(o.area, int64_t{o.index} + 3))
+      cx.error(o.loc, mn + " output bytes " + addr(o.area, o.index) + ".." +
+                          addr(o.area, int64_t{o.index} + 3) + " run past the end of " +
+                          areaInfo(o.area).letter + " (" + addr(o.area, 0) + ".." + lastOf(o.area) +
+                          ")");
+    break;
+  }
+  case Op::SPDLBUS1: {
+    // Gear g uses P[base + 5(g-1) .. + 4]; at least gear 1's block must exist.
+    const Operand &p = s.ops[3];
+    if (!validIndex(Area::P, int64_t{p.index} + 4))
+      cx.error(p.loc, mn + " parameter block " + addr(Area::P, p.index) + ".." +
+                          addr(Area::P, int64_t{p.index} + 4) + " runs past the end of P (P0.." +
+                          lastOf(Area::P) + ")");
+    break;
+  }
+  case Op::MDST: {
+    const Operand &m = s.ops[1];
+    if (m.kind == Operand::Kind::Const &&
+        (m.value <= 0 || m.value > 64 || (m.value & (m.value - 1)) != 0))
+      cx.error(m.loc, "MDST mode " + std::to_string(m.value) +
+                          " is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single block, manual, "
+                          "increment, home, MPG, PMC)");
+    break;
+  }
+  case Op::REFPT:
+    if (s.ops[1].value == 5)
+      cx.warning(s.ops[1].loc,
+                 "REFPT 5: the 5th reference point has no status bit; the output is always 0");
+    break;
+  default:
+    break;
+  }
+}
+
+} // namespace
+
+void checkCnc(Context &cx) {
+  for (const Stmt &s : cx.prog.stmts)
+    if (opFamily(s.op) == Family::Cnc) checkStmt(cx, s);
+}
+
+} // namespace lj::verifier

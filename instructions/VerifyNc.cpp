@@ -1,0 +1,53 @@
+// Verifier checks of family Nc that the operand table cannot express: register blocks that must
+// fit in their area (TEMPSEN X word and P block, HEADSEN D range, SPDA P block, NIXIE's second
+// display byte). Errors point at the operand (DIALECT.md 6, docs/dialect-notes.md "NC services").
+#include "instructions/VerifierInternal.h"
+
+#include <string>
+
+namespace lj::verifier {
+
+namespace {
+
+/// `op` (a register) starts `count` consecutive elements; error unless the last one exists.
+void mustFit(Context &cx, const Stmt &s, int k, int32_t count, const char *what) {
+  const Operand &op = s.ops[k];
+  if (op.kind != Operand::Kind::Reg || count <= 0) return;
+  const AreaInfo &a = areaInfo(op.area);
+  int64_t last = int64_t{op.index} + count - 1;
+  if (last < a.count) return;
+  std::string l(1, a.letter);
+  cx.error(op.loc, std::string(instrInfo(s.op).mnemonic) + " " + what + " " + l +
+                       std::to_string(op.index) + ".." + l + std::to_string(last) +
+                       " runs past the end of area " + l + " (" + l + "0.." + l +
+                       std::to_string(a.count - 1) + ")");
+}
+
+} // namespace
+
+void checkNc(Context &cx) {
+  for (const Stmt &s : cx.prog.stmts) {
+    switch (s.op) {
+    case Op::TEMPSEN:
+      mustFit(cx, s, 1, 2, "AD word"); // low byte X[n], high byte X[n+1]
+      mustFit(cx, s, 3, 4, "parameter block");
+      break;
+    case Op::HEADSEN:
+      if (s.ops[0].kind == Operand::Kind::Const) mustFit(cx, s, 2, s.ops[0].value, "storage range");
+      break;
+    case Op::SPDA:
+      mustFit(cx, s, 4, 5, "parameter block");
+      break;
+    case Op::NIXIE:
+      // Width 1 into a byte area writes two bytes; W/D/B elements hold both.
+      if (s.ops[1].kind == Operand::Kind::Const && s.ops[1].value == 1 &&
+          s.ops[2].kind == Operand::Kind::Reg && areaInfo(s.ops[2].area).bytes == 1)
+        mustFit(cx, s, 2, 2, "two-byte display");
+      break;
+    default:
+      break;
+    }
+  }
+}
+
+} // namespace lj::verifier

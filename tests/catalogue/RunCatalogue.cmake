@@ -1,0 +1,35 @@
+# The catalogue example (examples/catalogue.stl) on interp, jit and aot with its stimulus: `check`
+# accepts it and the three full state dumps (`run --dump`) are byte-identical (issue 4).
+foreach(v LADDERJIT SRC OUT)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "RunCatalogue.cmake needs -D${v}=...")
+  endif()
+endforeach()
+set(stl ${SRC}/examples/catalogue.stl)
+set(run --ticks 12 --stimulus ${SRC}/examples/catalogue.stim)
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${LADDERJIT} check ${stl} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "ladderjit check rejects ${stl} (exit ${rc})")
+endif()
+execute_process(COMMAND ${LADDERJIT} compile ${stl} -o ${OUT}/catalogue.so RESULT_VARIABLE rc
+                ERROR_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "ladderjit compile failed (exit ${rc})")
+endif()
+foreach(engine interp jit aot:${OUT}/catalogue.so)
+  string(REGEX REPLACE ":.*" "" name ${engine})
+  execute_process(COMMAND ${LADDERJIT} run ${stl} --engine ${engine} ${run}
+                          --dump ${OUT}/${name}.json
+                  RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "ladderjit run --engine ${engine} failed (exit ${rc})")
+  endif()
+endforeach()
+foreach(name jit aot)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/interp.json ${OUT}/${name}.json
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "state dump of ${name} differs from interp: ${OUT}/${name}.json")
+  endif()
+endforeach()
