@@ -14,10 +14,10 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <set>
 #include <sstream>
 #include <string>
-#include <ostream>
 #include <vector>
 
 namespace lj {

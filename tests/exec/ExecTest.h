@@ -57,6 +57,15 @@ protected:
     return Machine::load(text, GetParam(), opts);
   }
 
+  /// Load without init, attach the NC host (null: no host, the lj_host defaults), then init.
+  std::unique_ptr<Machine> loadWithHost(std::string_view text, const lj_host *host) {
+    std::unique_ptr<Machine> m = loadNoInit(text);
+    if (!m) return m;
+    m->state().host = host;
+    EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
+    return m;
+  }
+
   /// For every combination of `names` (2^n): write them, run one tick, call check(in).
   template <typename Check>
   void forAllInputs(Machine &m, std::vector<std::string> names, Check check) {

@@ -9,12 +9,9 @@ namespace {
 
 class NcBlockExec : public ExecTest {
 protected:
+  /// Load without init, attach `host` (null: no host), then init.
   std::unique_ptr<Machine> loadWith(std::string_view text, const TestHost *host) {
-    std::unique_ptr<Machine> m = loadNoInit(text);
-    if (!m) return m;
-    m->state().host = host ? host->host() : nullptr;
-    EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
-    return m;
+    return loadWithHost(text, host ? host->host() : nullptr);
   }
   static std::vector<HostCall> calls(std::initializer_list<HostCall> l) { return l; }
 };
