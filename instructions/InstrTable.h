@@ -248,6 +248,10 @@ const InstrInfo &instrInfo(Op op);
 /// All rows, in Op order.
 std::span<const InstrInfo> instrTable();
 
+/// Whether `op` is a contact (LD LDI AND ANI OR ORI and the edge contacts): the instructions an
+/// online-monitor force applies to (hnc8-core.md 6.1 RESOLUTION (a), Stmt::force).
+constexpr bool isContact(Op op) { return (op >= Op::LD && op <= Op::ORF) && op != Op::LDT; }
+
 /// Op named by `mnemonic` (case-insensitive, aliases WRT/END1/END2 included).
 bool lookupMnemonic(std::string_view mnemonic, Op &out);
 

@@ -52,6 +52,8 @@ SimNc::SimNc(const SimNcConfig &cfg) : cfg_(cfg), m_(std::make_unique<Model>()) 
   cfg_.axes = std::clamp(cfg_.axes, 1, 32);
   cfg_.tools = std::clamp(cfg_.tools, 0, 10000);
   cfg_.pockets = std::clamp(cfg_.pockets, 0, 63);
+  events_.setLimit(cfg_.logLimit);
+  calls_.setLimit(cfg_.logLimit);
   bindHost();
 }
 
@@ -85,7 +87,11 @@ void SimNc::putG(lj_state &s, int word, int16_t v) const {
   if (!m_->leftG.count(word)) s.img.G[word] = v;
 }
 
-void SimNc::log(const std::string &what) { events_.push_back({tick_ < 0 ? 0 : tick_, what}); }
+void SimNc::log(const std::string &what) {
+  NcEvent &e = events_.next(); // a ring slot keeps its capacity (SimNcConfig::logLimit)
+  e.tick = tick_ < 0 ? 0 : tick_;
+  e.what = what;
+}
 
 void SimNc::beforeTick(lj_state &s, uint64_t tick) {
   tick_ = static_cast<int64_t>(tick);

@@ -9,6 +9,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -38,6 +39,9 @@ struct SimNcConfig {
   int32_t spindleJog = 100;  ///< spindle speed of the feed-spindle keys GA[1].6/7
   int32_t pmcStep = 1000;    ///< position units per tick of a PMC move
   int32_t spindleRamp = 500; ///< spindle speed change per tick (units of GC[10+2sp])
+  /// Host calls and events kept: 0 = all of them (`run`, whose dump shows them); N = the last N
+  /// of each, a ring overwritten in place (a long-running `serve`, docs/simulated-nc.md).
+  size_t logLimit = 0;
   SimNcConfig();
 };
 
@@ -57,6 +61,53 @@ struct NcCall {
   std::vector<int64_t> out; ///< *value of var_get; *pocket, *error of tool_select
   int64_t result = 0;
   bool operator==(const NcCall &) const = default;
+};
+
+/// An append-only log, or with a limit the last `limit` entries: a ring whose slots are
+/// overwritten in place, so entries that fit their slot's capacity cost no allocation.
+template <typename T> class NcLog {
+public:
+  /// 0 = unlimited. Clears the log.
+  void setLimit(size_t limit) {
+    limit_ = limit;
+    clear();
+    items_.reserve(limit);
+  }
+  /// The slot of the next entry (oldest one overwritten when full); the caller fills it.
+  T &next() {
+    if (limit_ == 0 || items_.size() < limit_) return items_.emplace_back();
+    T &slot = items_[head_];
+    head_ = head_ + 1 == limit_ ? 0 : head_ + 1;
+    ++dropped_;
+    return slot;
+  }
+  void clear() {
+    items_.clear();
+    head_ = 0;
+    dropped_ = 0;
+  }
+  /// The entries kept, oldest first.
+  std::vector<T> ordered() const {
+    std::vector<T> out(items_.begin() + static_cast<std::ptrdiff_t>(head_), items_.end());
+    out.insert(out.end(), items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(head_));
+    return out;
+  }
+  /// f(entry) for the entries kept, oldest first.
+  template <typename F> void forEach(F &&f) const {
+    for (size_t i = head_; i < items_.size(); ++i) f(items_[i]);
+    for (size_t i = 0; i < head_; ++i) f(items_[i]);
+  }
+  size_t size() const { return items_.size(); }
+  /// Entries overwritten since the last clear.
+  uint64_t dropped() const { return dropped_; }
+  bool operator==(const NcLog &o) const {
+    return dropped_ == o.dropped_ && ordered() == o.ordered();
+  }
+
+private:
+  std::vector<T> items_;
+  size_t limit_ = 0, head_ = 0;
+  uint64_t dropped_ = 0;
 };
 
 /// A CNC variable's stored value: int32/int64 types keep `i`, float types keep `f`.
@@ -100,8 +151,12 @@ public:
   bool varExists(int type, int offset) const;
   /// Preset a variable directly (same rules as `nc.var`); false if it does not exist.
   bool setVar(int type, int offset, const NcVar &v);
-  const std::vector<NcEvent> &events() const { return events_; }
-  const std::vector<NcCall> &calls() const { return calls_; }
+  /// The events and host calls kept (all, or the last SimNcConfig::logLimit), oldest first.
+  std::vector<NcEvent> events() const { return events_.ordered(); }
+  std::vector<NcCall> calls() const { return calls_.ordered(); }
+  /// How many older events / calls the limit dropped (0 without a limit).
+  uint64_t eventsDropped() const { return events_.dropped(); }
+  uint64_t callsDropped() const { return calls_.dropped(); }
   /// Tool held by magazine pocket p (0 = empty or no such pocket).
   int32_t pocketTool(int p) const;
   /// Tool shown in use by channel ch (TOOLUSE), tool-vector flag (TOOLSET/TOOLCLR).
@@ -142,8 +197,8 @@ private:
   lj_host host_{};
   int64_t tick_ = -1;         // tick being run; -1 during power-up and init
   lj_state *state_ = nullptr; // the state being run (SPDA reads its P block)
-  std::vector<NcEvent> events_;
-  std::vector<NcCall> calls_;
+  NcLog<NcEvent> events_;
+  NcLog<NcCall> calls_;
   std::map<std::pair<int, int>, NcVar> vars_;
   std::unique_ptr<Model> m_;
 

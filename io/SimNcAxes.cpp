@@ -61,8 +61,12 @@ bool channelZSearch(const SimNc::Model &m, const SimNcConfig &cfg, int c) {
 }
 
 void axesAfterTick(SimNc::Model &m, const SimNcConfig &cfg, const lj_state &s, int64_t t,
-                   std::vector<NcEvent> &log) {
-  auto note = [&](int a, const std::string &what) { log.push_back({t, axName(a) + " " + what}); };
+                   NcLog<NcEvent> &log) {
+  auto note = [&](int a, const std::string &what) {
+    NcEvent &e = log.next();
+    e.tick = t;
+    e.what = axName(a) + " " + what;
+  };
   for (int a = 0; a < cfg.axes; ++a) {
     NcAxis &x = m.ax[a];
     const int16_t *g = &s.img.G[ncw::axis(a, 0)];

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 namespace lj::io {
@@ -11,9 +12,16 @@ namespace lj::io {
 /// The C trampolines: ctx is the SimNc. Every one appends to the call log.
 struct SimNcHost {
   static SimNc &nc(void *ctx) { return *static_cast<SimNc *>(ctx); }
-  static void record(SimNc &n, const char *name, std::vector<int64_t> args,
-                     std::vector<int64_t> out, int64_t result) {
-    n.calls_.push_back({n.tick_, name, std::move(args), std::move(out), result});
+  // Filled in place: in a ring (SimNcConfig::logLimit) a reused slot keeps its capacity, and
+  // every call name fits the small-string buffer, so a warm log records without allocating.
+  static void record(SimNc &n, const char *name, std::initializer_list<int64_t> args,
+                     std::initializer_list<int64_t> out, int64_t result) {
+    NcCall &c = n.calls_.next();
+    c.tick = n.tick_;
+    c.name.assign(name);
+    c.args.assign(args);
+    c.out.assign(out);
+    c.result = result;
   }
 
   static int32_t varGet(void *ctx, int32_t type, int32_t offset, int32_t exp, int32_t *value) {
@@ -21,8 +29,10 @@ struct SimNcHost {
     int32_t v = 0;
     int32_t ok = n.scaledGet(type, offset, exp, v);
     if (ok) *value = v;
-    record(n, "var_get", {type, offset, exp}, ok ? std::vector<int64_t>{v} : std::vector<int64_t>{},
-           ok);
+    if (ok)
+      record(n, "var_get", {type, offset, exp}, {v}, ok);
+    else
+      record(n, "var_get", {type, offset, exp}, {}, ok);
     return ok;
   }
   static int32_t varSet(void *ctx, int32_t type, int32_t offset, int32_t exp, int32_t value) {

@@ -93,10 +93,12 @@ nlohmann::ordered_json SimNc::toJson() const {
   }
   j["variables"] = std::move(vars);
   Json events = Json::array();
-  for (const NcEvent &e : events_) events.push_back({{"tick", e.tick}, {"what", e.what}});
+  events_.forEach([&](const NcEvent &e) {
+    events.push_back({{"tick", e.tick}, {"what", e.what}});
+  });
   j["events"] = std::move(events);
   Json calls = Json::array();
-  for (const NcCall &c : calls_) {
+  calls_.forEach([&](const NcCall &c) {
     Json e;
     e["tick"] = c.tick;
     e["name"] = c.name;
@@ -104,8 +106,11 @@ nlohmann::ordered_json SimNc::toJson() const {
     if (!c.out.empty()) e["out"] = c.out;
     e["result"] = c.result;
     calls.push_back(std::move(e));
-  }
+  });
   j["calls"] = std::move(calls);
+  // Only a limited log drops entries; the unlimited dump of `run` keeps its fields.
+  if (events_.dropped() || calls_.dropped())
+    j["log_dropped"] = {{"events", events_.dropped()}, {"calls", calls_.dropped()}};
   return j;
 }
 

@@ -114,7 +114,7 @@ void writeWords(int16_t *area, int word, int count, int64_t v);
 
 // Axis and spindle model (SimNcAxes.cpp): consume G after a tick, publish F before a tick.
 void axesAfterTick(SimNc::Model &m, const SimNcConfig &cfg, const lj_state &s, int64_t tick,
-                   std::vector<NcEvent> &log);
+                   NcLog<NcEvent> &log);
 void axesPublish(SimNc::Model &m, const SimNcConfig &cfg, lj_state &s);
 /// Whether an axis of channel c is in homing phase 2 (FC[0].15: mode switch refused).
 bool channelZSearch(const SimNc::Model &m, const SimNcConfig &cfg, int c);

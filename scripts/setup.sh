@@ -10,6 +10,8 @@ set -euo pipefail
 #   CMake package references the gmock libraries, so both are needed).
 # plc.dit content hash: OpenSSL libcrypto (libssl-dev), SHA-256 through the EVP API.
 # Fuzzing builds (-DLADDERJIT_FUZZERS=ON): clang-19 and its libFuzzer runtime.
+# serve --modbus: libmodbus (libmodbus-dev); the Modbus tests drive it with real clients we did
+#   not write: Debian's mbpoll (CTest modbus.serve_mbpoll) and python3-pymodbus (manual checks).
 # zlib/zstd headers: LLVMConfig looks for them and its exported static targets name them; we
 # link only the shared libLLVM (configuring without them works), but Debian's LLVM packaging has
 # failed on a missing zstd target before (llvm19-orc-notes.md 1), so they are installed too.
@@ -18,6 +20,7 @@ PACKAGES=(
   llvm-19-dev llvm-19-tools clang-19 libclang-rt-19-dev
   libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev libssl-dev
   zlib1g-dev libzstd-dev
+  libmodbus-dev mbpoll python3-pymodbus
 )
 
 missing=()

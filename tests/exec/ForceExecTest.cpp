@@ -114,26 +114,8 @@ OUT Y1.3
   ASSERT_TRUE(prog);
   const int8_t pattern[] = {1, -1, 0, 1, 0, -1, 1, 0, -1, 1, 1, 0, 0, 1, -1};
   size_t k = 0;
-  for (Stmt &st : prog->stmts) {
-    switch (st.op) {
-    case Op::LD:
-    case Op::LDI:
-    case Op::AND:
-    case Op::ANI:
-    case Op::OR:
-    case Op::ORI:
-    case Op::LDP:
-    case Op::LDF:
-    case Op::ANDP:
-    case Op::ANDF:
-    case Op::ORP:
-    case Op::ORF:
-      st.force = pattern[k++ % std::size(pattern)];
-      break;
-    default:
-      break;
-    }
-  }
+  for (Stmt &st : prog->stmts)
+    if (isContact(st.op)) st.force = pattern[k++ % std::size(pattern)];
   Scenario sc;
   sc.ticks = 64;
   sc.hostInputs = [](uint32_t tick, lj_state &s) {

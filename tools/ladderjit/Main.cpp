@@ -38,10 +38,6 @@ CLI::Option *lastWins(CLI::Option *o) {
 
 const char *const kProgramHelp = "STL file or plc.dit container";
 
-int notAvailable(const char *what) {
-  return usageError(std::string(what) + " is not available yet in this release");
-}
-
 int mainImpl(int argc, char **argv) {
   CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "
                "JIT",
@@ -125,9 +121,58 @@ int mainImpl(int argc, char **argv) {
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
                    ->check(kUnsigned));
 
-  // Announced by CLI.md, not in this release: accept any arguments and say so.
-  CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (not available yet)");
-  cServe->allow_extras();
+  ServeArgs serve;
+  CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (docs/serve.md)");
+  cServe->add_option("PROGRAM", serve.program, kProgramHelp)->required();
+  lastWins(
+      cServe->add_option("--engine", serve.engine, "jit | interp | aot:PATH.so (default jit)"));
+  CLI::Option *servePeriod =
+      lastWins(cServe->add_option("--period-ms", serve.periodMs, "PLC1 period in ms (default 1)")
+                   ->check(kUnsigned));
+  CLI::Option *serveNvalue =
+      lastWins(cServe
+                   ->add_option("--plc2-nvalue", serve.plc2Nvalue,
+                                "PLC2 statements per tick (default: the plc.dit's, else 200)")
+                   ->check(kUnsigned));
+  lastWins(cServe
+               ->add_option("--max-backward-steps", serve.maxBackwardSteps,
+                            "watchdog limit per tick (default 1000000)")
+               ->check(kUnsigned));
+  lastWins(cServe->add_option("--modbus", serve.modbus, "Modbus TCP server on [HOST:]PORT"));
+  lastWins(cServe->add_option("--retain", serve.retain, "retentive store file"));
+  cServe->add_flag("--retain-force", serve.retainForce,
+                   "load nothing from a retain file of another layout; start with zeros, keep "
+                   "the old files as FILE.rejected (docs/retain.md)");
+  lastWins(cServe
+               ->add_option("--retain-period-ms", serve.retainPeriodMs,
+                            "minimum gap between periodic retain saves (default 100)")
+               ->check(CLI::Range(1, 60000)));
+  cServe->add_flag("--modbus-write-inputs", serve.modbusWriteInputs,
+                   "allow Modbus writes to X and F (simulation only)");
+  lastWins(cServe->add_option("--params", serve.params, "P values, 'P12=345' per line"));
+  repeatable(cServe, "--set", serve.sets, "ADDR=VALUE at power-up; repeatable");
+  lastWins(cServe
+               ->add_option("--duration", serve.duration,
+                            "seconds to run (default: until "
+                            "SIGINT/SIGTERM)")
+               ->check(kUnsigned));
+  lastWins(cServe->add_option("--stats", serve.stats, "write timing statistics as JSON at exit"));
+  lastWins(cServe->add_option("--control", serve.control,
+                              "control socket (default /tmp/ladderjit-<pid>.sock)"));
+  lastWins(cServe->add_option("--shm", serve.shm, "shared-memory process image NAME"));
+  lastWins(cServe->add_option("--io", serve.io, "simnc | shm: who writes F (default simnc)"));
+  lastWins(cServe->add_option("--rt-priority", serve.rtPriority, "SCHED_FIFO priority 1..99")
+               ->check(CLI::Range(1, 99)));
+  lastWins(cServe->add_option("--cpu", serve.cpu, "pin the scan thread to this CPU")
+               ->check(CLI::Range(0, 1023)));
+
+  MonitorArgs mon;
+  CLI::App *cMonitor = app.add_subcommand("monitor", "talk to a running serve: read, write, "
+                                                     "force, lock, unlock, locks, load, stats, "
+                                                     "stop");
+  lastWins(cMonitor->add_option("--control", mon.control,
+                                "control socket (default: the only /tmp/ladderjit-*.sock)"));
+  cMonitor->add_option("COMMAND", mon.args, "command and its arguments")->required();
 
   try {
     app.parse(argc, argv);
@@ -152,7 +197,12 @@ int mainImpl(int argc, char **argv) {
   if (cEmit->parsed()) return runEmitLlvm(emit);
   if (cFuzz->parsed()) return runFuzz(fz);
   if (cCompile->parsed()) return runCompile(comp);
-  if (cServe->parsed()) return notAvailable("serve");
+  if (cServe->parsed()) {
+    serve.periodMsGiven = servePeriod->count() > 0;
+    serve.plc2NvalueGiven = serveNvalue->count() > 0;
+    return runServe(serve);
+  }
+  if (cMonitor->parsed()) return runMonitor(mon);
   return usageError("no subcommand");
 }
 

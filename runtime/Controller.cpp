@@ -1,0 +1,262 @@
+// Control requests of `ladderjit serve`: each is one JSON object with "cmd"; each answer has
+// "ok" and either the result or "error" (docs/serve.md "Control").
+#include "runtime/Controller.h"
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <exception>
+#include <memory>
+
+namespace lj::rt {
+
+namespace {
+
+using nlohmann::json;
+
+json fail(const std::string &msg) { return {{"ok", false}, {"error", msg}}; }
+
+timespec mtimeOf(const std::string &path) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0) return {};
+  return st.st_mtim;
+}
+
+bool sameTime(const timespec &a, const timespec &b) {
+  return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
+// The string items of `req[key]`, or an error naming the key.
+bool strings(const json &req, const char *key, std::vector<std::string> &out, std::string &err) {
+  auto it = req.find(key);
+  if (it == req.end() || !it->is_array() || it->empty()) {
+    err = std::string("'") + key + "' must be a non-empty array of strings";
+    return false;
+  }
+  for (const json &j : *it) {
+    if (!j.is_string()) {
+      err = std::string("'") + key + "' must be a non-empty array of strings";
+      return false;
+    }
+    out.push_back(j.get<std::string>());
+  }
+  return true;
+}
+
+std::string formatAssignment(const io::Assignment &a) {
+  return a.addr.text + "=" + std::to_string(a.value);
+}
+
+// A write or lock item: parsed and checked for writability (io/Address.h).
+std::optional<io::Assignment> writable(const std::string &item, std::string &err) {
+  std::optional<io::Assignment> a = io::parseAssignment(item, err);
+  if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;
+  return a;
+}
+
+} // namespace
+
+Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,
+                       Log log, std::string so)
+    : ex_(ex), exec_(exec), loader_(loader), log_(std::move(log)), program_(std::move(program)),
+      so_(std::move(so)) {
+  mtime_ = mtimeOf(program_);
+  if (!so_.empty()) soMtime_ = mtimeOf(so_);
+}
+
+bool Controller::change(const std::string &path, const std::map<int32_t, int8_t> &forces,
+                        std::string &error, const std::string &so) {
+  std::lock_guard<std::mutex> g(changeMu_);
+  auto t0 = std::chrono::steady_clock::now();
+  timespec mt = mtimeOf(path);
+  timespec soMt = so.empty() ? timespec{} : mtimeOf(so);
+  std::shared_ptr<ProgramVersion> next = loader_.load(path, forces, error, nullptr, so);
+  const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
+  if (!next) {
+    if (log_)
+      log_("online change of " + what + " refused, the old program keeps running: " + error);
+    return false;
+  }
+  double compileMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (!exec_.swap(std::move(next), std::chrono::milliseconds(5000), error)) {
+    if (log_) log_("online change of " + what + " failed: " + error);
+    return false;
+  }
+  program_ = path;
+  so_ = so;
+  mtime_ = mt;
+  soMtime_ = soMt;
+  if (log_) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.1f", compileMs);
+    log_("online change: " + what + (so.empty() ? " compiled" : " loaded") + " in " + buf +
+         " ms and swapped in");
+  }
+  return true;
+}
+
+void Controller::pollProgramFile() {
+  std::string path, so;
+  {
+    std::lock_guard<std::mutex> g(changeMu_);
+    timespec now = mtimeOf(program_);
+    timespec soNow = so_.empty() ? timespec{} : mtimeOf(so_);
+    bool changed = now.tv_sec != 0 && !sameTime(now, mtime_);
+    // Serving AOT, a rebuilt .so is a change too: edit PROGRAM (refused while the old .so no
+    // longer matches it), then `ladderjit compile` swaps the new version in.
+    bool soChanged = !so_.empty() && soNow.tv_sec != 0 && !sameTime(soNow, soMtime_);
+    if (!changed && !soChanged) return;
+    if (changed) mtime_ = now; // a broken file is reported once, not every second
+    if (soChanged) soMtime_ = soNow;
+    path = program_;
+    so = so_;
+  }
+  if (log_)
+    log_("'" + (so.empty() ? path : path + "' / '" + so) + "' changed on disk: online change");
+  std::string error;
+  change(path, {}, error, so);
+}
+
+json Controller::handle(const json &req) {
+  try {
+    auto it = req.find("cmd");
+    if (it == req.end() || !it->is_string()) return fail("request without a \"cmd\" string");
+    const std::string cmd = it->get<std::string>();
+    if (cmd == "read") return doRead(req);
+    if (cmd == "write") return doWrite(req);
+    if (cmd == "force") return doForce(req);
+    if (cmd == "lock" || cmd == "unlock" || cmd == "locks") return doLock(req);
+    if (cmd == "load") return doLoad(req);
+    if (cmd == "stats") {
+      json j = exec_.stats().toJson();
+      std::shared_ptr<ProgramVersion> cur = exec_.current();
+      if (cur) {
+        j["program"] = {{"path", cur->path}, {"version", cur->id}, {"hash", cur->hash}};
+        if (!cur->so.empty()) j["program"]["so"] = cur->so;
+      }
+      return {{"ok", true}, {"stats", j}};
+    }
+    if (cmd == "stop") {
+      stop_.store(true);
+      return {{"ok", true}};
+    }
+    return fail("unknown command '" + cmd + "'");
+  } catch (const std::exception &e) { // a JSON type error in a malformed request
+    return fail(std::string("bad request: ") + e.what());
+  }
+}
+
+json Controller::doRead(const json &req) {
+  std::vector<std::string> items;
+  std::string err;
+  if (!strings(req, "addrs", items, err)) return fail(err);
+  std::vector<io::CliAddress> addrs;
+  for (const std::string &t : items) {
+    std::optional<io::CliAddress> a = io::parseAddress(t, err);
+    if (!a) return fail(err);
+    addrs.push_back(*a);
+  }
+  auto s = std::make_unique<lj_state>();
+  uint64_t tick = 0;
+  if (!ex_.snapshot(*s, &tick)) return fail("no state published yet");
+  json values = json::array();
+  for (const io::CliAddress &a : addrs) values.push_back(io::readAddress(*s, a));
+  return {{"ok", true}, {"tick", tick}, {"values", values}};
+}
+
+json Controller::doWrite(const json &req) {
+  std::vector<std::string> items;
+  std::string err;
+  if (!strings(req, "writes", items, err)) return fail(err);
+  std::vector<io::Assignment> writes;
+  for (const std::string &t : items) {
+    std::optional<io::Assignment> a = writable(t, err);
+    if (!a) return fail(err);
+    writes.push_back(*a);
+  }
+  uint64_t seq = ex_.post(std::move(writes));
+  if (!ex_.waitApplied(seq, std::chrono::milliseconds(5000)))
+    return fail("the write was not applied within 5 s (is the scan thread running?)");
+  return {{"ok", true}};
+}
+
+json Controller::doForce(const json &req) {
+  if (!req.contains("line") || !req["line"].is_number_integer() || !req.contains("mode") ||
+      !req["mode"].is_string())
+    return fail("force needs \"line\" (integer) and \"mode\" (on|off|restore)");
+  int64_t line = req["line"].get<int64_t>();
+  std::string mode = req["mode"].get<std::string>();
+  if (line < 1 || line > INT32_MAX)
+    return fail("force: line " + std::to_string(line) + " is out of range");
+  if (mode != "on" && mode != "off" && mode != "restore")
+    return fail("force: mode must be on, off or restore, got '" + mode + "'");
+  if (loader_.aot())
+    return fail("force: this server runs an AOT .so, and forcing needs recompilation; serve "
+                "the program with --engine jit or interp to force contacts");
+  std::shared_ptr<ProgramVersion> cur = exec_.current();
+  std::map<int32_t, int8_t> forces = cur->forces;
+  int32_t l = static_cast<int32_t>(line);
+  if (mode == "restore") {
+    if (!forces.erase(l)) return fail("force: line " + std::to_string(l) + " is not forced");
+  } else {
+    forces[l] = mode == "on" ? 1 : 0; // 允许 = on (conducts), 禁止 = off (hnc8-core.md 6.1)
+  }
+  std::string err;
+  if (!change(cur->path, forces, err)) return fail(err);
+  json list = json::array();
+  for (const auto &[ln, v] : forces) list.push_back({{"line", ln}, {"value", v}});
+  return {{"ok", true}, {"forces", list}};
+}
+
+json Controller::doLock(const json &req) {
+  std::string cmd = req["cmd"].get<std::string>();
+  std::string err;
+  if (cmd == "lock") {
+    if (!req.contains("item") || !req["item"].is_string())
+      return fail("lock needs \"item\" ADDR=VALUE");
+    std::optional<io::Assignment> a = writable(req["item"].get<std::string>(), err);
+    if (!a) return fail(err);
+    ex_.lock(*a);
+  } else if (cmd == "unlock") {
+    if (!req.contains("addr") || !req["addr"].is_string()) return fail("unlock needs \"addr\"");
+    std::optional<io::CliAddress> a = io::parseAddress(req["addr"].get<std::string>(), err);
+    if (!a) return fail(err);
+    if (!ex_.unlock(*a)) return fail("'" + a->text + "' is not locked");
+  }
+  json list = json::array();
+  for (const io::Assignment &a : ex_.locks()) list.push_back(formatAssignment(a));
+  return {{"ok", true}, {"locks", list}};
+}
+
+json Controller::doLoad(const json &req) {
+  auto str = [&](const char *key) {
+    auto it = req.find(key);
+    return it != req.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  if ((req.contains("program") && !req["program"].is_string()) ||
+      (req.contains("so") && !req["so"].is_string()))
+    return fail("load: \"program\" and \"so\" must be strings");
+  std::string program = str("program"), so = str("so");
+  if (loader_.aot()) {
+    // An AOT server swaps in .so files; without PROGRAM the .so must match the served one.
+    if (so.empty())
+      return fail("load: this server runs AOT .so files; give the .so built from the program "
+                  "(monitor load PROGRAM PATH.so, or load PATH.so for the served PROGRAM)");
+    if (program.empty()) {
+      std::lock_guard<std::mutex> g(changeMu_);
+      program = program_;
+    }
+  } else {
+    if (!so.empty())
+      return fail("load: this server runs the " + loader_.engine() +
+                  " engine and compiles PROGRAM itself; a .so is only served with --engine "
+                  "aot:PATH.so");
+    if (program.empty()) return fail("load needs \"program\"");
+  }
+  std::string err;
+  if (!change(program, {}, err, so)) return fail(err);
+  return {{"ok", true}, {"version", exec_.current()->id}};
+}
+
+} // namespace lj::rt

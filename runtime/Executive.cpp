@@ -1,0 +1,247 @@
+// The scan thread: absolute-deadline sleeping, the per-tick order of docs/serve.md, the
+// catch-up policy for late wake-ups, statistics and the program handoff of online change.
+#include "runtime/Executive.h"
+
+#include <pthread.h>
+#include <sched.h>
+#include <sys/prctl.h>
+#include <time.h>
+
+#include <cerrno>
+#include <cstring>
+#include <future>
+
+namespace lj::rt {
+
+namespace {
+
+int64_t monoNs() {
+  timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return int64_t{ts.tv_sec} * 1000000000 + ts.tv_nsec;
+}
+
+void sleepUntil(int64_t ns) {
+  timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+  }
+}
+
+} // namespace
+
+void clearRenumberedState(lj_state &s) {
+  std::memset(s.edge, 0, sizeof s.edge);
+  std::memset(s.pls_prev, 0, sizeof s.pls_prev);
+  std::memset(s.plf_prev, 0, sizeof s.plf_prev);
+  std::memset(s.alt_prev, 0, sizeof s.alt_prev);
+  std::memset(s.alt_state, 0, sizeof s.alt_state);
+  std::memset(s.inst_word, 0, sizeof s.inst_word);
+  s.plc2_next_slice = 0; // the new program has its own slices
+}
+
+Executive::Executive(Exchange &ex, ExecutiveOptions opts, Log log)
+    : ex_(ex), opts_(std::move(opts)), log_(std::move(log)), state_(std::make_unique<lj_state>()),
+      shared_(std::make_unique<TickStats>()) {
+  if (opts_.periodNs == 0) opts_.periodNs = 1000000;
+  lj_state_reset(state_.get());
+}
+
+Executive::~Executive() {
+  requestStop();
+  join();
+}
+
+void Executive::join() {
+  if (thread_.joinable()) thread_.join();
+}
+
+std::shared_ptr<ProgramVersion> Executive::current() const {
+  std::lock_guard<std::mutex> g(ownerMu_);
+  return currentOwner_;
+}
+
+bool Executive::start(std::shared_ptr<ProgramVersion> initial, std::string &error) {
+  if (thread_.joinable()) {
+    error = "the executive was already started";
+    return false;
+  }
+  if (!initial || !initial->engine) {
+    error = "no program to run";
+    return false;
+  }
+  {
+    std::lock_guard<std::mutex> g(ownerMu_);
+    currentOwner_ = initial;
+  }
+  cur_ = initial.get();
+  std::promise<std::vector<std::string>> started;
+  std::future<std::vector<std::string>> startedF = started.get_future();
+  running_.store(true, std::memory_order_release);
+  scanStats_.periodNs = opts_.periodNs;
+  thread_ = std::thread([this, &started] {
+    std::vector<std::string> notes;
+    // The default 50 us timer slack of normal threads would be wake-up jitter of our own making.
+    prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
+    // Priority and pinning are best effort: say why not, then run anyway (issue 6 item 1).
+    if (opts_.rtPriority >= 0) {
+      sched_param sp{};
+      sp.sched_priority = opts_.rtPriority;
+      if (int rc = pthread_setschedparam(pthread_self(), SCHED_FIFO, &sp); rc != 0)
+        notes.push_back("--rt-priority " + std::to_string(opts_.rtPriority) +
+                        ": SCHED_FIFO not permitted (" + std::strerror(rc) +
+                        "); running with the normal scheduler");
+      else
+        notes.push_back("scan thread runs SCHED_FIFO priority " + std::to_string(opts_.rtPriority));
+    }
+    if (opts_.cpu >= 0) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      CPU_SET(opts_.cpu, &set);
+      if (int rc = pthread_setaffinity_np(pthread_self(), sizeof set, &set); rc != 0)
+        notes.push_back("--cpu " + std::to_string(opts_.cpu) + ": pinning not permitted (" +
+                        std::strerror(rc) + "); running unpinned");
+      else
+        notes.push_back("scan thread pinned to CPU " + std::to_string(opts_.cpu));
+    }
+    lj_state &s = *state_;
+    lj_state_reset(&s);
+    s.max_backward_steps = opts_.maxBackwardSteps;
+    for (const io::Assignment &a : opts_.powerUp) io::writeAddress(s, a.addr, a.value);
+    for (StateHook &h : startHooks_) h(s);
+    ex_.applyPending(s);
+    s.now_ms = 0;
+    if (uint32_t f = lj_run_init(&s, &cur_->engine->entries()); f != LJ_FAULT_NONE)
+      notes.push_back("init: fault " + std::to_string(f) + " (the init part was aborted)");
+    ex_.applyLocks(s);
+    ex_.publish(s, 0);
+    started.set_value(std::move(notes));
+    loop();
+    for (StateHook &h : stopHooks_) h(s);
+    {
+      std::lock_guard<std::mutex> g(statsMu_);
+      *shared_ = scanStats_;
+    }
+    running_.store(false, std::memory_order_release);
+  });
+  for (const std::string &n : startedF.get())
+    if (log_) log_(n);
+  return true;
+}
+
+void Executive::loop() {
+  const int64_t period = static_cast<int64_t>(opts_.periodNs);
+  int64_t deadline = monoNs() + period;
+  uint64_t tick = 0, executed = 0;
+  bool swappedLastTick = false; // the previous tick took an online change
+  while (!stop_.load(std::memory_order_acquire)) {
+    sleepUntil(deadline);
+    int64_t woke = monoNs();
+    int64_t late = woke - deadline;
+    scanStats_.jitter.add(late); // against the deadline it slept for, before any catch-up
+    if (late >= period) {
+      // Catch-up policy (docs/serve.md): never run a burst of ticks. The deadlines that passed
+      // entirely are missed and counted; this tick runs for the latest one that has passed, so
+      // tick numbers (and now_ms) keep following real time.
+      int64_t m = late / period;
+      scanStats_.missedDeadlines += static_cast<uint64_t>(m);
+      if (swappedLastTick) scanStats_.missedAfterSwap += static_cast<uint64_t>(m);
+      tick += static_cast<uint64_t>(m);
+      deadline += m * period;
+    }
+    uint64_t swapsBefore = scanStats_.swaps;
+    tickOnce(tick);
+    int64_t end = monoNs();
+    scanStats_.scan.add(end - woke);
+    if (scanStats_.swaps != swapsBefore && uint64_t(end - woke) > scanStats_.swapTickMaxNs)
+      scanStats_.swapTickMaxNs = static_cast<uint64_t>(end - woke);
+    deadline += period;
+    swappedLastTick = scanStats_.swaps != swapsBefore;
+    if (end > deadline) {
+      scanStats_.overruns++;
+      if (swappedLastTick) scanStats_.swapOverruns++;
+    }
+    ++tick;
+    ++scanStats_.ticks;
+    if (statsWanted_.load(std::memory_order_acquire)) {
+      std::unique_lock<std::mutex> g(statsMu_, std::try_to_lock);
+      if (g.owns_lock()) {
+        *shared_ = scanStats_; // fixed-size copy, no allocation
+        statsWanted_.store(false, std::memory_order_relaxed);
+        statsCopies_.fetch_add(1, std::memory_order_release);
+      }
+    }
+    if (opts_.maxTicks && ++executed >= opts_.maxTicks) break;
+  }
+}
+
+void Executive::takeSwap() {
+  ProgramVersion *next = pending_.exchange(nullptr, std::memory_order_acq_rel);
+  if (!next) return;
+  lj_state &s = *state_;
+  cur_ = next;
+  clearRenumberedState(s);
+  // hnc8-core.md 6.2 RESOLUTION: the new program's init part runs at the swap.
+  if (lj_run_init(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
+  scanStats_.swaps++;
+  swapsTaken_.fetch_add(1, std::memory_order_release);
+}
+
+void Executive::tickOnce(uint64_t tick) {
+  lj_state &s = *state_;
+  ex_.applyPending(s);
+  for (IoBinding *io : io_) io->beforeTick(s, tick);
+  s.now_ms = tick * opts_.periodNs / 1000000;
+  takeSwap(); // init of a new version sees this tick's inputs and now_ms
+  if (lj_tick(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
+  for (IoBinding *io : io_) io->afterTick(s, tick);
+  ex_.applyLocks(s);
+  ex_.publish(s, tick);
+  for (AfterTickHook &h : after_) h(s, tick);
+}
+
+bool Executive::swap(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
+                     std::string &error) {
+  std::lock_guard<std::mutex> one(swapMu_);
+  if (!running()) {
+    error = "the scan thread is not running";
+    return false;
+  }
+  uint64_t before = swapsTaken_.load(std::memory_order_acquire);
+  pending_.store(next.get(), std::memory_order_release);
+  auto until = std::chrono::steady_clock::now() + timeout;
+  while (swapsTaken_.load(std::memory_order_acquire) == before) {
+    if (std::chrono::steady_clock::now() >= until || !running()) {
+      // Take the offer back unless the scan thread grabbed it in the meantime.
+      ProgramVersion *expected = next.get();
+      if (pending_.compare_exchange_strong(expected, nullptr)) {
+        error = "the scan thread did not take the new program in time";
+        return false;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  std::shared_ptr<ProgramVersion> old;
+  {
+    std::lock_guard<std::mutex> g(ownerMu_);
+    old = std::move(currentOwner_);
+    currentOwner_ = std::move(next);
+  }
+  old.reset(); // the old engine (and its JITDylib) goes away here, off the scan thread
+  if (log_) log_("online change: now running version " + std::to_string(current()->id));
+  return true;
+}
+
+TickStats Executive::stats() const {
+  if (running()) {
+    uint64_t before = statsCopies_.load(std::memory_order_acquire);
+    statsWanted_.store(true, std::memory_order_release);
+    for (int i = 0; i < 500 && running(); ++i) {
+      if (statsCopies_.load(std::memory_order_acquire) != before) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  }
+  std::lock_guard<std::mutex> g(statsMu_);
+  return *shared_;
+}
+
+} // namespace lj::rt

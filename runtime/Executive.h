@@ -1,0 +1,145 @@
+// The cyclic executive of `ladderjit serve`: one dedicated scan thread sleeping to absolute
+// deadlines (clock_nanosleep, CLOCK_MONOTONIC), running init at start, then per tick: pending
+// writes and locks, I/O in, lj_tick, I/O out, locks, publish, after-tick hooks. Online change
+// swaps the program at a tick boundary (docs/serve.md).
+#pragma once
+
+#include "instructions/Engine.h"
+#include "instructions/Program.h"
+#include "io/Address.h"
+#include "ladderjit/abi.h"
+#include "runtime/Exchange.h"
+#include "runtime/Stats.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace lj::rt {
+
+/// One loaded program version: the verified program, its engine and the contact forces it was
+/// compiled with. Immutable once built; the engine refers to `prog` (declared first, so it is
+/// destroyed last).
+struct ProgramVersion {
+  std::string path; ///< PROGRAM file it came from
+  std::string hash; ///< io::sha256Hash of the file's bytes (`sha256:...`)
+  std::string so;   ///< the AOT .so the engine came from; empty for jit / interp
+  std::unique_ptr<VerifiedProgram> prog;
+  std::unique_ptr<Engine> engine;
+  std::map<int32_t, int8_t> forces; ///< source line -> forced conducting value (0/1)
+  uint64_t id = 0;                  ///< 1, 2, ... in load order
+};
+
+/// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory
+/// host). Must be cheap and never block.
+class IoBinding {
+public:
+  virtual ~IoBinding() = default;
+  /// Before the scan: inputs (X, F) into `s`; may set s.host.
+  virtual void beforeTick(lj_state &s, uint64_t tick) = 0;
+  /// After the scan: consume outputs (G, Y) of `s`.
+  virtual void afterTick(lj_state &s, uint64_t tick) = 0;
+};
+
+struct ExecutiveOptions {
+  uint64_t periodNs = 1000000;         ///< PLC1 period
+  uint64_t maxBackwardSteps = 1000000; ///< watchdog limit per tick (DIALECT.md 4)
+  int rtPriority = -1;                 ///< SCHED_FIFO priority, -1 = leave the policy alone
+  int cpu = -1;                        ///< pin the scan thread to this CPU, -1 = no pinning
+  uint64_t maxTicks = 0;               ///< stop after this many ticks, 0 = until requestStop
+  std::vector<io::Assignment> powerUp; ///< written after the reset, before the start hooks
+};
+
+class Executive {
+public:
+  /// Called on the scan thread after publish; keep it cheap (no syscalls, no allocation).
+  using AfterTickHook = std::function<void(const lj_state &, uint64_t tick)>;
+  /// Called on the scan thread with the state: start hooks after the power-up writes and
+  /// before init (restore retained data), stop hooks after the last tick (final save).
+  using StateHook = std::function<void(lj_state &)>;
+  /// Messages (priority refused, swap applied...); called from the thread that notices.
+  using Log = std::function<void(const std::string &)>;
+
+  Executive(Exchange &ex, ExecutiveOptions opts, Log log = nullptr);
+  /// Stops the scan thread (stop hooks run) and joins it.
+  ~Executive();
+  Executive(const Executive &) = delete;
+  Executive &operator=(const Executive &) = delete;
+
+  // Configuration: only before start().
+  void addAfterTickHook(AfterTickHook h) { after_.push_back(std::move(h)); }
+  void addStartHook(StateHook h) { startHooks_.push_back(std::move(h)); }
+  void addStopHook(StateHook h) { stopHooks_.push_back(std::move(h)); }
+  /// Bindings run in the order added (beforeTick in order, afterTick in order).
+  void addIo(IoBinding *io) { io_.push_back(io); }
+
+  /// Reset the state, apply power-up writes and start hooks, run `initial`'s init part and
+  /// start ticking. Returns once init has run; false with `error` if the thread cannot start.
+  bool start(std::shared_ptr<ProgramVersion> initial, std::string &error);
+  /// Replace the program at the next tick boundary (edge memory, PLS/PLF/ALT and inst_word
+  /// cleared, everything else kept, then the new init part). Returns when the scan thread has
+  /// taken it; the old version is destroyed on the calling thread. False (with `error`) when
+  /// the executive is not running or `timeout` passed first.
+  bool swap(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
+            std::string &error);
+  /// Ask the scan thread to stop after the current tick (async-signal-unsafe: not from a
+  /// signal handler).
+  void requestStop() { stop_.store(true, std::memory_order_release); }
+  /// Wait for the scan thread to end (after requestStop or maxTicks).
+  void join();
+  bool running() const { return running_.load(std::memory_order_acquire); }
+
+  /// The running program version.
+  std::shared_ptr<ProgramVersion> current() const;
+  /// A copy of the statistics (taken by the scan thread at a tick boundary; after the thread
+  /// ended, the final ones).
+  TickStats stats() const;
+  /// The state; only valid to touch when the scan thread is not running (tests, after join).
+  const lj_state &finalState() const { return *state_; }
+
+private:
+  void loop();
+  void tickOnce(uint64_t tick);
+  void takeSwap();
+
+  Exchange &ex_;
+  ExecutiveOptions opts_;
+  Log log_;
+  std::vector<AfterTickHook> after_;
+  std::vector<StateHook> startHooks_, stopHooks_;
+  std::vector<IoBinding *> io_;
+
+  std::unique_ptr<lj_state> state_;
+  std::thread thread_;
+  std::atomic<bool> stop_{false}, running_{false};
+
+  // Program handoff: swap() parks the next version in pending_; the scan thread takes it and
+  // counts swapsTaken_; the owners (shared_ptrs) are only touched off the scan thread.
+  ProgramVersion *cur_ = nullptr; // scan thread
+  std::atomic<ProgramVersion *> pending_{nullptr};
+  std::atomic<uint64_t> swapsTaken_{0};
+  mutable std::mutex ownerMu_;
+  std::shared_ptr<ProgramVersion> currentOwner_;
+  std::mutex swapMu_; // one swap at a time
+
+  // Statistics: owned by the scan thread, copied into shared_ on request.
+  TickStats scanStats_;
+  mutable std::atomic<bool> statsWanted_{false};
+  mutable std::atomic<uint64_t> statsCopies_{0};
+  mutable std::mutex statsMu_;
+  std::unique_ptr<TickStats> shared_;
+};
+
+/// Clear what the verifier numbers per program (edge memory, PLS/PLF/ALT arrays, inst_word)
+/// and restart PLC2 at its first slice: the state kept across an online change
+/// (docs/dialect-notes.md "State details").
+void clearRenumberedState(lj_state &s);
+
+} // namespace lj::rt

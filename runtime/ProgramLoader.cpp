@@ -1,0 +1,114 @@
+// Program versions for serve: front end, forces, engine build (one ORC session for every JIT
+// version, so each online change is a new JITDylib, STYLE.md 10; or an AOT .so, docs/aot.md).
+#include "runtime/ProgramLoader.h"
+
+#include "instructions/FrontEnd.h"
+#include "io/AotLoader.h"
+#include "io/InputFiles.h"
+#include "jit/Jit.h"
+
+namespace lj::rt {
+
+bool applyForces(VerifiedProgram &prog, const std::map<int32_t, int8_t> &forces,
+                 std::string &error) {
+  for (Stmt &st : prog.stmts) st.force = -1;
+  for (const auto &[line, value] : forces) {
+    bool found = false;
+    for (Stmt &st : prog.stmts) {
+      if (st.loc.line != line) continue;
+      found = true;
+      if (!isContact(st.op)) {
+        error = prog.file + ":" + std::to_string(line) + ": '" +
+                std::string(instrInfo(st.op).mnemonic) +
+                "' is not a contact (only LD LDI AND ANI OR ORI LDP LDF ANDP ANDF ORP ORF can be "
+                "forced)";
+        return false;
+      }
+      st.force = value;
+    }
+    if (!found) {
+      error = prog.file + ":" + std::to_string(line) + ": no statement on this line";
+      return false;
+    }
+  }
+  return true;
+}
+
+ProgramLoader::ProgramLoader(std::string engine, int32_t plc2Nvalue)
+    : engine_(std::move(engine)), plc2Nvalue_(plc2Nvalue) {}
+
+ProgramLoader::~ProgramLoader() = default;
+
+std::shared_ptr<ProgramVersion>
+ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &forces,
+                    std::string &error, std::optional<io::DitFile> *ditOut, const std::string &so) {
+  if (aot() && !forces.empty()) {
+    error = "forcing needs recompilation, which an AOT .so cannot do";
+    return nullptr;
+  }
+  if (aot() && so.empty()) {
+    error = "the AOT engine needs a .so built from '" + path + "'";
+    return nullptr;
+  }
+  std::string text;
+  if (!io::readFile(path, text, error)) return nullptr;
+  auto v = std::make_shared<ProgramVersion>();
+  v->path = path;
+  v->hash = io::sha256Hash(text);
+  std::optional<io::DitFile> dit;
+  bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
+  if (io::looksLikeDit(text) || named) {
+    dit = io::parseDit(text, path, error);
+    if (!dit) return nullptr;
+  }
+  // The AOT program hash covers the STL file's own text (io/AotLoader.h), not the parser's.
+  const std::string stl = std::move(text);
+  text = dit ? io::programForParser(*dit) : stl;
+  Diagnostics diags(path);
+  VerifyOptions vo;
+  vo.plc2Nvalue = plc2Nvalue_ >= 0 ? plc2Nvalue_ : dit ? dit->plc2Nvalue : 200;
+  std::optional<VerifiedProgram> prog =
+      compileFrontEnd(text, path, vo, diags, dit ? &dit->symbols : nullptr);
+  if (!prog || diags.hasErrors()) {
+    error = diags.render();
+    if (error.empty()) error = path + ": error: program rejected without a diagnostic\n";
+    while (!error.empty() && error.back() == '\n') error.pop_back();
+    return nullptr;
+  }
+  v->prog = std::make_unique<VerifiedProgram>(std::move(*prog));
+  if (!applyForces(*v->prog, forces, error)) return nullptr;
+  v->forces = forces;
+  if (engine_ == "interp") {
+    v->engine = makeInterpreterEngine(*v->prog);
+  } else if (aot()) {
+    // loadAot checks integrity, ELF, ABI, state size and that `so` was built from this program
+    // with this nvalue; a mismatch leaves the running version alone (the caller reports it).
+    v->engine = io::loadAot(so, io::programHash(stl, dit ? &*dit : nullptr, vo.plc2Nvalue), error);
+    if (!v->engine) {
+      error = "aot: " + error;
+      return nullptr;
+    }
+    v->so = so;
+  } else {
+    std::lock_guard<std::mutex> g(mu_);
+    if (!session_) {
+      session_ = jit::Session::create(jit::Tier::Optimizing, error);
+      if (!session_) return nullptr;
+    }
+    // No object cache: each version is compiled once, and a forced copy differs anyway.
+    jit::JitOptions jo;
+    v->engine = session_->compile(*v->prog, jo, error);
+    if (!v->engine) {
+      error = "jit: " + error;
+      return nullptr;
+    }
+  }
+  {
+    std::lock_guard<std::mutex> g(mu_);
+    v->id = nextId_++;
+  }
+  if (ditOut) *ditOut = std::move(dit);
+  return v;
+}
+
+} // namespace lj::rt

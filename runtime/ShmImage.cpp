@@ -1,0 +1,154 @@
+// POSIX shm mapping of the process image and the two seqlock protocols around it.
+#include "runtime/ShmImage.h"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <thread>
+
+namespace lj::rt {
+
+namespace {
+
+std::string shmName(const std::string &name) {
+  return name.empty() || name[0] == '/' ? name : "/" + name;
+}
+
+std::atomic_ref<uint64_t> seq(uint64_t &v) { return std::atomic_ref<uint64_t>(v); }
+
+} // namespace
+
+ShmMapping::~ShmMapping() {
+  if (base_) ::munmap(base_, kShmSize);
+}
+
+bool ShmMapping::create(const std::string &name, bool hostOwnsF, uint64_t periodNs,
+                        std::string &error) {
+  name_ = shmName(name);
+  if (name_.size() < 2 || name_.find('/', 1) != std::string::npos) {
+    error = "--shm: '" + name + "' is not a valid shared-memory name (one word, no '/')";
+    return false;
+  }
+  int fd = ::shm_open(name_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+  if (fd < 0 || ::ftruncate(fd, 0) != 0 || ::ftruncate(fd, kShmSize) != 0) {
+    error = "--shm: cannot create '" + name_ + "': " + std::strerror(errno);
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  base_ = ::mmap(nullptr, kShmSize, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  ::close(fd);
+  if (base_ == MAP_FAILED) {
+    base_ = nullptr;
+    error = "--shm: cannot map '" + name_ + "': " + std::strerror(errno);
+    return false;
+  }
+  ShmHeader *h = header();
+  std::memcpy(h->magic, kShmMagic, sizeof h->magic);
+  h->abiVersion = LJ_ABI_VERSION;
+  h->headerSize = sizeof(ShmHeader);
+  h->imageSize = sizeof(lj_image);
+  h->flags = hostOwnsF ? kShmHostOwnsF : 0;
+  h->periodNs = periodNs;
+  return true;
+}
+
+bool ShmMapping::open(const std::string &name, std::string &error) {
+  name_ = shmName(name);
+  int fd = ::shm_open(name_.c_str(), O_RDWR | O_CLOEXEC, 0);
+  struct stat st;
+  if (fd < 0 || ::fstat(fd, &st) != 0) {
+    error = "shm '" + name_ + "': " + std::strerror(errno);
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  if (static_cast<size_t>(st.st_size) < kShmSize) {
+    ::close(fd);
+    error = "shm '" + name_ + "' is too small for a ladderjit image";
+    return false;
+  }
+  base_ = ::mmap(nullptr, kShmSize, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  ::close(fd);
+  if (base_ == MAP_FAILED) {
+    base_ = nullptr;
+    error = "shm '" + name_ + "': cannot map: " + std::strerror(errno);
+    return false;
+  }
+  const ShmHeader *h = header();
+  if (std::memcmp(h->magic, kShmMagic, sizeof h->magic) != 0 || h->abiVersion != LJ_ABI_VERSION ||
+      h->headerSize != sizeof(ShmHeader) || h->imageSize != sizeof(lj_image)) {
+    error = "shm '" + name_ + "' is not a ladderjit image of ABI version " +
+            std::to_string(LJ_ABI_VERSION);
+    return false;
+  }
+  return true;
+}
+
+void ShmMapping::unlinkName() {
+  if (!name_.empty()) ::shm_unlink(name_.c_str());
+}
+
+void shmWriteInputs(ShmMapping &m, const uint8_t *x, const int16_t *f) {
+  auto s = seq(m.header()->inSeq);
+  s.fetch_add(1, std::memory_order_acq_rel); // odd: inputs in flux
+  std::atomic_thread_fence(std::memory_order_release);
+  std::memcpy(m.image()->X, x, sizeof m.image()->X);
+  if (f) std::memcpy(m.image()->F, f, sizeof m.image()->F);
+  s.fetch_add(1, std::memory_order_release); // even: consistent
+}
+
+uint64_t shmReadOutputs(const ShmMapping &m, lj_image &out) {
+  auto s = seq(m.header()->outSeq);
+  for (;;) {
+    uint64_t a = s.load(std::memory_order_acquire);
+    if ((a & 1) == 0) {
+      std::memcpy(&out, m.image(), sizeof out);
+      uint64_t tick = m.header()->outTick;
+      std::atomic_thread_fence(std::memory_order_acquire);
+      if (s.load(std::memory_order_relaxed) == a) return tick;
+    }
+    std::this_thread::yield();
+  }
+}
+
+void ShmImage::beforeTick(lj_state &s, uint64_t) {
+  auto q = seq(m_.header()->inSeq);
+  uint64_t a = q.load(std::memory_order_acquire);
+  if ((a & 1) == 0) {
+    // Copy into the state, then check: a torn copy is replaced by the last consistent one.
+    std::memcpy(s.img.X, m_.image()->X, sizeof s.img.X);
+    if (hostOwnsF_) std::memcpy(s.img.F, m_.image()->F, sizeof s.img.F);
+    std::atomic_thread_fence(std::memory_order_acquire);
+    if (q.load(std::memory_order_relaxed) == a) {
+      std::memcpy(x_, s.img.X, sizeof x_);
+      if (hostOwnsF_) std::memcpy(f_, s.img.F, sizeof f_);
+      return;
+    }
+  }
+  std::memcpy(s.img.X, x_, sizeof x_);
+  if (hostOwnsF_) std::memcpy(s.img.F, f_, sizeof f_);
+}
+
+void ShmImage::publish(const lj_state &s, uint64_t tick) {
+  ShmHeader *h = m_.header();
+  lj_image *img = m_.image();
+  auto q = seq(h->outSeq);
+  q.fetch_add(1, std::memory_order_acq_rel);
+  std::atomic_thread_fence(std::memory_order_release);
+  std::memcpy(img->D, s.img.D, sizeof img->D);
+  std::memcpy(img->B, s.img.B, sizeof img->B);
+  std::memcpy(img->P, s.img.P, sizeof img->P);
+  if (!hostOwnsF_) std::memcpy(img->F, s.img.F, sizeof img->F);
+  std::memcpy(img->G, s.img.G, sizeof img->G);
+  std::memcpy(img->W, s.img.W, sizeof img->W);
+  std::memcpy(img->Y, s.img.Y, sizeof img->Y);
+  std::memcpy(img->R, s.img.R, sizeof img->R);
+  h->outTick = tick;
+  q.fetch_add(1, std::memory_order_release);
+}
+
+} // namespace lj::rt

@@ -1,0 +1,93 @@
+// Histogram percentiles and the JSON / text forms of the executive's statistics.
+#include "runtime/Stats.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace lj::rt {
+
+void Histogram::add(int64_t ns) {
+  if (ns < 0) ns = 0;
+  uint64_t us = static_cast<uint64_t>(ns) / 1000;
+  b_[std::min<uint64_t>(us, kBuckets)]++;
+  if (n_ == 0 || ns < min_) min_ = ns;
+  if (n_ == 0 || ns > max_) max_ = ns;
+  sum_ += ns;
+  ++n_;
+}
+
+int64_t Histogram::percentileNs(double q) const {
+  if (n_ == 0) return 0;
+  // The smallest bucket whose cumulative count reaches ceil(q * n).
+  uint64_t need = static_cast<uint64_t>(q * static_cast<double>(n_));
+  if (static_cast<double>(need) < q * static_cast<double>(n_)) ++need;
+  need = std::clamp<uint64_t>(need, 1, n_);
+  uint64_t cum = 0;
+  for (uint32_t i = 0; i <= kBuckets; ++i) {
+    cum += b_[i];
+    if (cum >= need) {
+      if (i == kBuckets) return max_;
+      return std::min<int64_t>(static_cast<int64_t>(i + 1) * 1000, max_);
+    }
+  }
+  return max_;
+}
+
+void Histogram::clear() { *this = Histogram(); }
+
+static double us(int64_t ns) { return static_cast<double>(ns) / 1000.0; }
+
+nlohmann::json Histogram::toJson() const {
+  return {{"count", n_},
+          {"min_us", us(minNs())},
+          {"mean_us", meanNs() / 1000.0},
+          {"p99_us", us(percentileNs(0.99))},
+          {"p99_9_us", us(percentileNs(0.999))},
+          {"max_us", us(maxNs())}};
+}
+
+nlohmann::json TickStats::toJson() const {
+  return {{"period_us", static_cast<double>(periodNs) / 1000.0},
+          {"ticks", ticks},
+          {"overruns", overruns},
+          {"missed_deadlines", missedDeadlines},
+          {"fault_ticks", faultTicks},
+          {"swaps", swaps},
+          {"swap_tick_max_us", static_cast<double>(swapTickMaxNs) / 1000.0},
+          {"swap_overruns", swapOverruns},
+          {"missed_after_swap", missedAfterSwap},
+          {"scan", scan.toJson()},
+          {"jitter", jitter.toJson()}};
+}
+
+std::string TickStats::summary() const {
+  char buf[1024];
+  auto line = [](const char *name, const Histogram &h) {
+    char l[256];
+    std::snprintf(l, sizeof l,
+                  "  %-7s min %.1f us  mean %.1f us  p99 %.1f us  p99.9 %.1f us  max %.1f us\n",
+                  name, us(h.minNs()), h.meanNs() / 1000.0, us(h.percentileNs(0.99)),
+                  us(h.percentileNs(0.999)), us(h.maxNs()));
+    return std::string(l);
+  };
+  std::snprintf(
+      buf, sizeof buf,
+      "ticks %llu at %.3f ms: overruns %llu, missed deadlines %llu, fault ticks %llu, "
+      "online changes %llu\n",
+      static_cast<unsigned long long>(ticks), static_cast<double>(periodNs) / 1e6,
+      static_cast<unsigned long long>(overruns), static_cast<unsigned long long>(missedDeadlines),
+      static_cast<unsigned long long>(faultTicks), static_cast<unsigned long long>(swaps));
+  std::string out = buf;
+  if (swaps) {
+    std::snprintf(buf, sizeof buf,
+                  "  swap ticks: longest %.1f us, overruns %llu, deadlines missed right after "
+                  "%llu\n",
+                  static_cast<double>(swapTickMaxNs) / 1000.0,
+                  static_cast<unsigned long long>(swapOverruns),
+                  static_cast<unsigned long long>(missedAfterSwap));
+    out += buf;
+  }
+  return out + line("scan", scan) + line("jitter", jitter);
+}
+
+} // namespace lj::rt

@@ -1,0 +1,246 @@
+// The cyclic executive (docs/serve.md): now_ms per tick, init at start, online change keeping
+// state and running the new init, a failed compile keeping the old program, statistics. No
+// timing assertions: only what the executive must do whatever the machine load.
+#include "runtime/Executive.h"
+#include "runtime/Controller.h"
+#include "runtime/ProgramLoader.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+namespace lj::rt {
+namespace {
+
+// A temporary STL file.
+class TempProgram {
+public:
+  explicit TempProgram(const std::string &text) {
+    path_ = (std::filesystem::temp_directory_path() /
+             ("ljrt-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++) + ".stl"))
+                .string();
+    write(text);
+  }
+  ~TempProgram() { std::remove(path_.c_str()); }
+  void write(const std::string &text) { std::ofstream(path_, std::ios::trunc) << text; }
+  const std::string &path() const { return path_; }
+
+private:
+  static inline int counter_ = 0;
+  std::string path_;
+};
+
+// DIALECT.md 4: init once, PLC1 every tick; D1 counts PLC1 executions.
+const char *kCounting = R"(
+LDT
+MOV 7 D10
+IEND
+LDT
+ADD D1 1 D1
+LD X1.0
+OUT Y1.0
+1END
+2END
+)";
+
+io::Assignment assign(const std::string &text) {
+  std::string err;
+  std::optional<io::Assignment> a = io::parseAssignment(text, err);
+  EXPECT_TRUE(a) << err;
+  return a.value_or(io::Assignment{});
+}
+
+// Post a no-op write and wait until a tick has applied and published it: a tick boundary
+// passed, without any assumption on how long that takes.
+void waitTicks(Exchange &ex, int n) {
+  for (int i = 0; i < n; ++i) ASSERT_TRUE(ex.waitApplied(ex.post({}), std::chrono::seconds(30)));
+}
+
+TEST(Executive, TicksCarryNowMsAndInitRunsFirst) {
+  TempProgram p(kCounting);
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  ExecutiveOptions o;
+  o.periodNs = 2000000; // 2 ms: now_ms = tick * 2 (CLI.md `--period-ms`)
+  o.maxTicks = 30;
+  Executive exec(ex, o);
+  std::mutex mu;
+  std::vector<std::pair<uint64_t, uint64_t>> seen; // (tick, now_ms)
+  std::vector<int32_t> d1;
+  exec.addAfterTickHook([&](const lj_state &s, uint64_t tick) {
+    std::lock_guard<std::mutex> g(mu);
+    seen.emplace_back(tick, s.now_ms);
+    d1.push_back(s.img.D[1]);
+  });
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  exec.join();
+  ASSERT_EQ(seen.size(), 30u);
+  for (size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].second, seen[i].first * 2) << "tick " << seen[i].first;
+    if (i) {
+      EXPECT_GT(seen[i].first, seen[i - 1].first);
+    }
+    EXPECT_EQ(d1[i], static_cast<int32_t>(i + 1)); // one PLC1 run per executed tick
+  }
+  EXPECT_EQ(exec.finalState().img.D[10], 7); // the init part ran
+  TickStats st = exec.stats();
+  EXPECT_EQ(st.ticks, 30u);
+  EXPECT_EQ(st.scan.count(), 30u);
+  EXPECT_EQ(st.jitter.count(), 30u);
+  // Every deadline is either ticked or counted as missed: the last tick number tells how many.
+  EXPECT_EQ(st.ticks + st.missedDeadlines, seen.back().first + 1);
+}
+
+TEST(Executive, OnlineChangeKeepsStateAndRunsTheNewInit) {
+  TempProgram p(kCounting);
+  // Version 2: another init value, PLC1 counts in D2, and an edge contact of its own.
+  TempProgram p2(R"(
+LDT
+MOV 9 D10
+IEND
+LDT
+ADD D2 1 D2
+LDP X1.0
+OUT Y1.1
+1END
+2END
+)");
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  // State that must survive: a B register, a counter value written by the host, D1.
+  ex.post({assign("B5=1234"), assign("X1.0=1")});
+  waitTicks(ex, 3);
+  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  ASSERT_TRUE(ctl.change(p2.path(), {}, err)) << err;
+  waitTicks(ex, 2);
+  auto s = std::make_unique<lj_state>();
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(exec.current()->id, 2u);
+  EXPECT_EQ(s->img.D[10], 9);   // hnc8-core.md 6.2 RESOLUTION: the new init ran
+  EXPECT_EQ(s->img.B[5], 1234); // the image is kept
+  EXPECT_GE(s->img.D[1], 3);    // D1 kept the count of version 1 (no longer incremented)
+  EXPECT_GE(s->img.D[2], 1);    // version 2 runs
+  // X1.0 has been 1 since before the swap; the edge memory was cleared at the swap
+  // (docs/dialect-notes.md "State details"), so LDP saw one rising edge in its first tick and
+  // none after: Y1.1 is 0 now, and the memory holds 1.
+  EXPECT_EQ(s->img.Y[1] & 2, 0);
+  exec.requestStop();
+  exec.join();
+  EXPECT_EQ(exec.stats().swaps, 1u);
+}
+
+TEST(Executive, FailedCompileKeepsTheOldProgram) {
+  TempProgram p(kCounting);
+  TempProgram bad("LD X1.0\nOUT\n"); // OUT without its operand: a verifier error
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  std::vector<std::string> logs;
+  std::mutex mu;
+  Controller ctl(ex, exec, loader, p.path(), [&](const std::string &l) {
+    std::lock_guard<std::mutex> g(mu);
+    logs.push_back(l);
+  });
+  EXPECT_FALSE(ctl.change(bad.path(), {}, err));
+  EXPECT_NE(err.find(bad.path()), std::string::npos) << err; // located diagnostic
+  EXPECT_EQ(exec.current()->id, 1u);
+  waitTicks(ex, 2);
+  auto s = std::make_unique<lj_state>();
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_GE(s->img.D[1], 2); // still ticking version 1
+  // The same reason went to the log.
+  std::lock_guard<std::mutex> g(mu);
+  ASSERT_FALSE(logs.empty());
+  EXPECT_NE(logs.back().find("old program keeps running"), std::string::npos);
+}
+
+TEST(Executive, ForcingRecompilesAndRejectsNonContacts) {
+  TempProgram p(kCounting); // line 7 = LD X1.0, line 8 = OUT Y1.0
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"line", 7}, {"mode", "on"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  waitTicks(ex, 2);
+  auto s = std::make_unique<lj_state>();
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.Y[1] & 1, 1); // 允许: X1.0 is 0 but the contact conducts
+  r = ctl.handle({{"cmd", "force"}, {"line", 8}, {"mode", "on"}});
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["error"].get<std::string>().find("not a contact"), std::string::npos);
+  r = ctl.handle({{"cmd", "force"}, {"line", 7}, {"mode", "restore"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  waitTicks(ex, 2);
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.Y[1] & 1, 0); // 恢复: the real X1.0 = 0 again
+}
+
+TEST(Exchange, LocksWinOverPostedWritesAndProgramWrites) {
+  // hnc8-core.md 6.1 RESOLUTION (b): the locked value is what the image holds.
+  Exchange ex;
+  auto s = std::make_unique<lj_state>();
+  lj_state_reset(s.get());
+  ex.lock(assign("D3=42"));
+  uint64_t seq = ex.post({assign("D3=5"), assign("D4=6")});
+  ex.applyPending(*s);
+  EXPECT_EQ(s->img.D[3], 42);
+  EXPECT_EQ(s->img.D[4], 6);
+  s->img.D[3] = -1; // the program writes it during the scan
+  ex.applyLocks(*s);
+  EXPECT_EQ(s->img.D[3], 42);
+  EXPECT_FALSE(ex.waitApplied(seq, std::chrono::milliseconds(0))); // not published yet
+  ex.publish(*s, 0);
+  EXPECT_TRUE(ex.waitApplied(seq, std::chrono::milliseconds(0)));
+  std::string err;
+  ASSERT_EQ(ex.locks().size(), 1u);
+  EXPECT_TRUE(ex.unlock(io::parseAddress("D3", err).value()));
+  EXPECT_FALSE(ex.unlock(io::parseAddress("D3", err).value()));
+  auto snap = std::make_unique<lj_state>();
+  uint64_t tick = 99;
+  ASSERT_TRUE(ex.snapshot(*snap, &tick));
+  EXPECT_EQ(tick, 0u);
+  EXPECT_EQ(snap->img.D[3], 42);
+}
+
+TEST(Stats, HistogramPercentiles) {
+  Histogram h;
+  for (int us = 1; us <= 1000; ++us) h.add(int64_t{us} * 1000);
+  EXPECT_EQ(h.count(), 1000u);
+  EXPECT_EQ(h.minNs(), 1000);
+  EXPECT_EQ(h.maxNs(), 1000000);
+  EXPECT_DOUBLE_EQ(h.meanNs(), 500.5 * 1000);
+  // The 990th of 1000 sorted values is 990 us; buckets are 1 us wide.
+  EXPECT_GE(h.percentileNs(0.99), 990000);
+  EXPECT_LE(h.percentileNs(0.99), 991000);
+  EXPECT_GE(h.percentileNs(0.999), 999000);
+  EXPECT_LE(h.percentileNs(0.999), 1000000);
+  h.add(int64_t{50} * 1000000); // beyond the buckets: reported through max
+  EXPECT_EQ(h.percentileNs(1.0), 50000000);
+}
+
+} // namespace
+} // namespace lj::rt

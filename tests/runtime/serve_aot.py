@@ -1,0 +1,175 @@
+#!/usr/bin/env python3
+"""End-to-end test of `ladderjit serve PROGRAM --engine aot:PATH.so` (docs/serve.md "AOT"): the
+.so must be built from PROGRAM (io/AotLoader), forcing is refused (it needs recompilation),
+online change by `monitor load PROGRAM PATH.so` / `load PATH.so` and by a rebuilt .so on disk
+(hnc8-core.md 6.2 RESOLUTION: init runs again, state kept), and a bad .so leaves the old
+program running. The .so files are built here with `ladderjit compile`.
+
+Values are polled until they show up (bounded by a generous deadline)."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+LJ = sys.argv[1]
+FAILURES = []
+
+PROGRAM = """\
+LDT
+MOV 7 D10
+IEND
+LD X1.0
+OUT Y1.0
+LDT
+MOV 1 D20
+1END
+LDT
+ADD D30 1 D30
+2END
+"""
+LINE_LD_X10 = 4  # LD X1.0
+
+
+def version(d10):
+    return PROGRAM.replace("MOV 7 D10", f"MOV {d10} D10")
+
+
+def check(cond, what):
+    if not cond:
+        FAILURES.append(what)
+        print("FAIL:", what, flush=True)
+
+
+def run(*args):
+    r = subprocess.run([LJ, *args], capture_output=True, text=True, timeout=300)
+    return r.returncode, r.stdout, r.stderr
+
+
+def monitor(sock, *args):
+    return run("monitor", "--control", sock, *args)
+
+
+def read(sock, addr):
+    rc, out, _ = monitor(sock, "read", addr)
+    return int(out.strip().split("=")[1]) if rc == 0 else None
+
+
+def wait_value(sock, addr, want, seconds=30):
+    end = time.time() + seconds
+    v = None
+    while time.time() < end:
+        v = read(sock, addr)
+        if v == want:
+            return True
+        time.sleep(0.02)
+    print(f"  {addr} = {v}, wanted {want}", flush=True)
+    return False
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def compile_so(stl, so):
+    rc, _, err = run("compile", stl, "-o", so)
+    check(rc == 0, f"ladderjit compile {stl}: {err}")
+
+
+def main():
+    tmp = tempfile.mkdtemp(prefix="ljserveaot-")
+    p = os.path.join(tmp, "p.stl")
+    v2 = os.path.join(tmp, "v2.stl")
+    write(p, version(7))
+    write(v2, version(9))
+    p_so, v2_so = os.path.join(tmp, "p.so"), os.path.join(tmp, "v2.so")
+    compile_so(p, p_so)
+    compile_so(v2, v2_so)
+    damaged = os.path.join(tmp, "damaged.so")
+    with open(v2_so, "rb") as f:
+        data = bytearray(f.read())
+    data[len(data) // 2] ^= 0xFF  # one flipped byte: the integrity trailer no longer matches
+    with open(damaged, "wb") as f:
+        f.write(data)
+    sock = os.path.join(tmp, "c.sock")
+
+    # Start-up problems are usage errors (exit 2) before anything runs.
+    rc, _, err = run("serve", p, "--engine", "aot:" + v2_so, "--duration", "1")
+    check(rc == 2 and "another program" in err, "a .so of another program is refused: " + err)
+    rc, _, err = run("serve", p, "--engine", "aot:", "--duration", "1")
+    check(rc == 2 and "needs a path" in err, "--engine aot: without a path: " + err)
+    rc, _, err = run("serve", p, "--engine", "aot:" + os.path.join(tmp, "none.so"))
+    check(rc == 2 and "none.so" in err, "a missing .so is named: " + err)
+
+    srv = subprocess.Popen([LJ, "serve", p, "--engine", "aot:" + p_so, "--control", sock,
+                            "--duration", "240"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                           text=True)
+    head = srv.stdout.readline()
+    check("engine aot:" in head, "serve announces the AOT engine: " + head)
+
+    check(wait_value(sock, "D10", 7), "init ran at start (D10 = 7)")
+    rc, _, _ = monitor(sock, "write", "X1.0=1", "B5=1234")
+    check(rc == 0, "write accepted")
+    check(wait_value(sock, "Y1.0", 1), "the .so's PLC1 runs: Y1.0 follows X1.0")
+
+    rc, _, err = monitor(sock, "force", str(LINE_LD_X10), "off")
+    check(rc == 2 and "AOT" in err and "recompilation" in err, "force is refused: " + err)
+    check(wait_value(sock, "Y1.0", 1), "nothing was forced")
+
+    rc, _, err = monitor(sock, "load", v2)
+    check(rc == 2 and ".so" in err, "load without a .so is refused: " + err)
+    rc, _, err = monitor(sock, "load", v2, p_so)
+    check(rc == 2 and "another program" in err, "a .so of another program is refused: " + err)
+    rc, _, err = monitor(sock, "load", v2, damaged)
+    check(rc == 2 and "damaged" in err, "a damaged .so is refused: " + err)
+    check(read(sock, "D10") == 7, "the old program keeps running (D10 = 7)")
+
+    rc, out, err = monitor(sock, "load", v2, v2_so)
+    check(rc == 0 and "running version 2" in out, "load PROGRAM PATH.so: " + out + err)
+    check(wait_value(sock, "D10", 9), "the new init part ran (D10 = 9)")
+    check(read(sock, "B5") == 1234, "B5 kept across the online change")
+    check(wait_value(sock, "Y1.0", 1), "inputs kept: Y1.0 = X1.0 = 1")
+
+    # `load PATH.so` pairs the .so with the served PROGRAM (now v2.stl): p.so does not fit it.
+    rc, _, err = monitor(sock, "load", p_so)
+    check(rc == 2 and "another program" in err, "load PATH.so checks the served PROGRAM: " + err)
+
+    # A file change: editing v2.stl alone makes v2.so stale (refused, logged, old one runs);
+    # rebuilding v2.so then swaps the new version in.
+    time.sleep(1.1)  # a different mtime even on coarse-timestamp file systems
+    write(v2, version(11))
+    time.sleep(2.5)  # the server polls once a second
+    check(read(sock, "D10") == 9, "a PROGRAM edit without a rebuilt .so changes nothing")
+    compile_so(v2, v2_so)
+    check(wait_value(sock, "D10", 11, seconds=60), "a rebuilt .so on disk is swapped in")
+
+    write(v2, version(13))  # mtime differs from the last look (>1 s after the edit above)
+    v13_so = os.path.join(tmp, "v13.so")
+    compile_so(v2, v13_so)
+    rc, out, err = monitor(sock, "load", v13_so)
+    check(rc == 0, "load PATH.so for the served PROGRAM: " + out + err)
+    check(wait_value(sock, "D10", 13), "its init part ran (D10 = 13)")
+
+    rc, _, _ = monitor(sock, "stop")
+    check(rc == 0, "stop accepted")
+    try:
+        out, err = srv.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        srv.kill()
+        out, err = srv.communicate()
+        check(False, "serve did not stop")
+    check(srv.returncode == 0, f"serve exits 0 (got {srv.returncode}): {err}")
+    check("refused" in err and "damaged" in err, "refusals are logged: " + err[-400:])
+
+    shutil.rmtree(tmp, ignore_errors=True)
+    if FAILURES:
+        print(f"{len(FAILURES)} failure(s)")
+        return 1
+    print("serve --engine aot end-to-end: all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

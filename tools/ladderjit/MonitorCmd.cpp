@@ -1,0 +1,164 @@
+// `ladderjit monitor`: the client of a running `ladderjit serve` (docs/serve.md "Control"):
+// read/write addresses, force contacts, the lock list, online change, stats, stop. Every
+// problem (bad arguments, no server, a refused request) exits 2 with a message.
+#include "tools/ladderjit/Commands.h"
+
+#include "io/Address.h"
+#include "runtime/ControlSocket.h"
+
+#include <glob.h>
+
+#include <charconv>
+#include <climits>
+#include <cstdio>
+#include <filesystem>
+
+namespace lj::cli {
+
+namespace {
+
+using nlohmann::json;
+
+// --control, or the only /tmp/ladderjit-*.sock there is.
+bool findControl(const std::string &given, std::string &path, std::string &error) {
+  if (!given.empty()) {
+    path = given;
+    return true;
+  }
+  glob_t g{};
+  int rc = ::glob("/tmp/ladderjit-*.sock", 0, nullptr, &g);
+  size_t n = rc == 0 ? g.gl_pathc : 0;
+  if (n == 1) path = g.gl_pathv[0];
+  globfree(&g);
+  if (n == 1) return true;
+  error = n == 0 ? "no running server found (no /tmp/ladderjit-*.sock); give --control PATH"
+                 : "several servers are running; give --control PATH";
+  return false;
+}
+
+// Check the addresses / assignments locally, so a typo never reaches the server.
+bool checkItems(const std::vector<std::string> &items, bool assignments, std::string &error) {
+  for (const std::string &it : items) {
+    if (assignments) {
+      std::optional<io::Assignment> as = io::parseAssignment(it, error);
+      if (!as || !io::checkWritable(as->addr, as->value, error)) return false;
+    } else if (!io::parseAddress(it, error)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The request for `args` (command first); false with `error` on a usage problem.
+bool buildRequest(const std::vector<std::string> &args, json &req, std::string &error) {
+  const std::string &cmd = args[0];
+  std::vector<std::string> rest(args.begin() + 1, args.end());
+  auto want = [&](size_t n, const char *usage) {
+    if (rest.size() == n) return true;
+    error = std::string("usage: ladderjit monitor ") + usage;
+    return false;
+  };
+  if (cmd == "read" || cmd == "write") {
+    if (rest.empty()) {
+      error = cmd == "read" ? "usage: ladderjit monitor read ADDR..."
+                            : "usage: ladderjit monitor write ADDR=VALUE...";
+      return false;
+    }
+    if (!checkItems(rest, cmd == "write", error)) return false;
+    req = {{"cmd", cmd}, {cmd == "read" ? "addrs" : "writes", rest}};
+    return true;
+  }
+  if (cmd == "force") {
+    if (!want(2, "force LINE on|off|restore")) return false;
+    int64_t line = 0;
+    auto [end, ec] = std::from_chars(rest[0].data(), rest[0].data() + rest[0].size(), line);
+    if (ec != std::errc() || end != rest[0].data() + rest[0].size() || line < 1 ||
+        line > INT32_MAX) {
+      error = "force: LINE must be a source line number >= 1, got '" + rest[0] + "'";
+      return false;
+    }
+    if (rest[1] != "on" && rest[1] != "off" && rest[1] != "restore") {
+      error = "force: expected on, off or restore, got '" + rest[1] + "'";
+      return false;
+    }
+    req = {{"cmd", "force"}, {"line", line}, {"mode", rest[1]}};
+    return true;
+  }
+  if (cmd == "lock") {
+    if (!want(1, "lock ADDR=VALUE") || !checkItems(rest, true, error)) return false;
+    req = {{"cmd", "lock"}, {"item", rest[0]}};
+    return true;
+  }
+  if (cmd == "unlock") {
+    if (!want(1, "unlock ADDR") || !checkItems(rest, false, error)) return false;
+    req = {{"cmd", "unlock"}, {"addr", rest[0]}};
+    return true;
+  }
+  if (cmd == "load") {
+    // load PROGRAM (jit / interp servers), load PROGRAM PATH.so or load PATH.so (AOT servers;
+    // the latter for the served PROGRAM). Paths go absolute: the server's cwd differs.
+    if (rest.empty() || rest.size() > 2) {
+      error = "usage: ladderjit monitor load PROGRAM [PATH.so] | load PATH.so";
+      return false;
+    }
+    auto isSo = [](const std::string &p) {
+      return p.size() > 3 && p.compare(p.size() - 3, 3, ".so") == 0;
+    };
+    if (rest.size() == 2 && !isSo(rest[1])) {
+      error = "load: the second argument must be a .so built by `ladderjit compile`, got '" +
+              rest[1] + "'";
+      return false;
+    }
+    req = {{"cmd", "load"}};
+    for (size_t i = 0; i < rest.size(); ++i) {
+      std::error_code ec;
+      std::filesystem::path p = std::filesystem::absolute(rest[i], ec);
+      if (ec || !std::filesystem::exists(p)) {
+        error = "load: cannot read '" + rest[i] + "'";
+        return false;
+      }
+      req[isSo(rest[i]) && (i == 1 || rest.size() == 1) ? "so" : "program"] = p.string();
+    }
+    return true;
+  }
+  if (cmd == "locks" || cmd == "stats" || cmd == "stop") {
+    if (!want(0, cmd.c_str())) return false;
+    req = {{"cmd", cmd}};
+    return true;
+  }
+  error = "monitor: unknown command '" + cmd +
+          "' (read, write, force, lock, unlock, locks, load, stats, stop)";
+  return false;
+}
+
+} // namespace
+
+int runMonitor(const MonitorArgs &a) {
+  if (a.args.empty()) return usageError("monitor: missing command");
+  json req, resp;
+  std::string error, path;
+  if (!buildRequest(a.args, req, error)) return usageError(error);
+  if (!findControl(a.control, path, error)) return usageError(error);
+  if (!rt::controlRequest(path, req, resp, error)) return usageError(error);
+  if (!resp.value("ok", false)) return usageError(resp.value("error", std::string("refused")));
+  const std::string &cmd = a.args[0];
+  if (cmd == "read") {
+    const json &vals = resp["values"];
+    for (size_t i = 0; i < vals.size() && i + 1 < a.args.size(); ++i)
+      std::printf("%s=%lld\n", a.args[i + 1].c_str(), vals[i].get<long long>());
+  } else if (cmd == "force") {
+    if (resp["forces"].empty()) std::printf("no forced contacts\n");
+    for (const json &f : resp["forces"])
+      std::printf("line %d forced %s\n", f["line"].get<int>(),
+                  f["value"].get<int>() ? "on" : "off");
+  } else if (cmd == "lock" || cmd == "unlock" || cmd == "locks") {
+    for (const json &l : resp["locks"]) std::printf("%s\n", l.get<std::string>().c_str());
+  } else if (cmd == "load") {
+    std::printf("running version %llu\n", resp["version"].get<unsigned long long>());
+  } else if (cmd == "stats") {
+    std::printf("%s\n", resp["stats"].dump(2).c_str());
+  }
+  return kOk;
+}
+
+} // namespace lj::cli

@@ -1,0 +1,330 @@
+// `ladderjit serve`: the real-time runtime (docs/serve.md). Validates every input first (usage
+// errors exit 2 before anything runs), loads the program, binds the I/O (simulated NC and/or
+// shared memory), starts the cyclic executive and the control socket, then waits for SIGINT /
+// SIGTERM, `monitor stop` or --duration, watching the PROGRAM file for online change.
+#include "tools/ladderjit/Commands.h"
+
+#include "io/InputFiles.h"
+#include "io/ModbusServer.h"
+#include "io/RetainStore.h"
+#include "io/SimNc.h"
+#include "runtime/ControlSocket.h"
+#include "runtime/Controller.h"
+#include "runtime/Exchange.h"
+#include "runtime/Executive.h"
+#include "runtime/ProgramLoader.h"
+#include "runtime/ShmImage.h"
+
+#include <signal.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+
+namespace lj::cli {
+
+namespace {
+
+// Log lines go to stderr, one at a time (several threads log).
+void logLine(const std::string &msg) {
+  static std::mutex mu;
+  std::lock_guard<std::mutex> g(mu);
+  std::fprintf(stderr, "ladderjit serve: %s\n", msg.c_str());
+  std::fflush(stderr);
+}
+
+// The simulated NC's log in serve: the last kNcLogLimit host calls and events (a ring filled in
+// place, so the scan thread stops allocating once it is warm), not the whole run's history.
+constexpr size_t kNcLogLimit = 256;
+io::SimNcConfig servedNcConfig() {
+  io::SimNcConfig c;
+  c.logLimit = kNcLogLimit;
+  return c;
+}
+
+// The simulated NC as the executive's default I/O binding (hnc8-cnc-interface.md).
+class SimNcBinding : public rt::IoBinding {
+public:
+  io::SimNc nc{servedNcConfig()};
+  void beforeTick(lj_state &s, uint64_t tick) override { nc.beforeTick(s, tick); }
+  void afterTick(lj_state &s, uint64_t tick) override { nc.afterTick(s, tick); }
+};
+
+bool splitHostPort(const std::string &text, std::string &host, int &port, std::string &error) {
+  size_t colon = text.rfind(':');
+  std::string p = colon == std::string::npos ? text : text.substr(colon + 1);
+  host = colon == std::string::npos || colon == 0 ? "127.0.0.1" : text.substr(0, colon);
+  char *end = nullptr;
+  long v = p.empty() ? -1 : std::strtol(p.c_str(), &end, 10);
+  if (p.empty() || *end != '\0' || v < 0 || v > 65535) {
+    error = "--modbus: expected [HOST:]PORT with PORT 0..65535, got '" + text + "'";
+    return false;
+  }
+  port = static_cast<int>(v);
+  return true;
+}
+
+// HOOK(retain): SAVEDATA (lj_host.save_data) asks the retentive store for a save. Runs after
+// the simulated NC's binding, wrapping the table it installed (whose own save_data still runs).
+io::RetainStore *gSaveStore = nullptr;
+const lj_host *gSaveBase = nullptr;
+void retainSaveData(void *ctx) {
+  if (gSaveBase && gSaveBase->save_data) gSaveBase->save_data(ctx);
+  if (gSaveStore) gSaveStore->requestSave();
+}
+class RetainSaveBinding : public rt::IoBinding {
+public:
+  io::RetainStore *store = nullptr;
+  void beforeTick(lj_state &s, uint64_t) override {
+    if (s.host != &table_) {
+      gSaveBase = s.host;
+      gSaveStore = store;
+      table_ = s.host ? *s.host : lj_host{};
+      table_.save_data = &retainSaveData;
+      s.host = &table_;
+    }
+  }
+  void afterTick(lj_state &, uint64_t) override {}
+
+private:
+  lj_host table_{};
+};
+
+// HOOK(modbus): the Modbus server's view of the exchange. A write is acknowledged once the tick
+// that applied it is published (a following read sees it) and, for B, durably saved.
+io::ModbusBackend modbusBackend(rt::Exchange &ex, io::RetainStore *retain) {
+  io::ModbusBackend b;
+  b.snapshot = [&ex](lj_state &s) { return ex.snapshot(s); };
+  b.post = [&ex](std::vector<io::Assignment> w) { return ex.post(std::move(w)); };
+  // waitApplied returns once the tick that applied the writes is published (runtime/Exchange.h).
+  b.waitVisible = [&ex](uint64_t seq, std::chrono::milliseconds timeout) {
+    return ex.waitApplied(seq, timeout);
+  };
+  if (retain)
+    b.commitRetained = [retain](std::chrono::milliseconds t) { return retain->commit(t); };
+  return b;
+}
+
+bool writeStats(const std::string &path, const nlohmann::json &j, std::string &error) {
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  if (!(f << j.dump(2) << "\n") || !f.flush()) {
+    error = "--stats: cannot write '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+int runServe(const ServeArgs &a) {
+  // ---- validate every input before anything runs ----
+  if (a.periodMs == 0 || a.periodMs > 1000)
+    return usageError("--period-ms: expected 1..1000, got " + std::to_string(a.periodMs));
+  // The engine syntax of `run` (CLI.md): jit, interp or aot:PATH.so.
+  const bool aot = a.engine.rfind("aot:", 0) == 0;
+  if (a.engine != "jit" && a.engine != "interp" && !aot)
+    return usageError("--engine: expected jit, interp or aot:PATH.so, got '" + a.engine + "'");
+  if (aot && a.engine.size() == 4) return usageError("--engine aot: needs a path (aot:PATH.so)");
+  const std::string so = aot ? a.engine.substr(4) : std::string();
+  if (a.io != "simnc" && a.io != "shm")
+    return usageError("--io: expected simnc or shm, got '" + a.io + "'");
+  if (a.io == "shm" && a.shm.empty()) return usageError("--io shm needs --shm NAME");
+  if (a.rtPriority > 99) return usageError("--rt-priority: expected 1..99");
+  std::string error;
+  std::string modbusHost;
+  int modbusPort = -1;
+  if (!a.modbus.empty() && !splitHostPort(a.modbus, modbusHost, modbusPort, error))
+    return usageError(error);
+  std::vector<io::Assignment> powerUp;
+  if (!a.params.empty()) {
+    std::string text;
+    if (!io::readFile(a.params, text, error)) return usageError(error);
+    std::optional<std::vector<io::Assignment>> ps = io::parseParams(text, a.params, error);
+    if (!ps) return usageError(error);
+    powerUp = std::move(*ps);
+  }
+  for (const std::string &item : a.sets) {
+    std::optional<io::Assignment> as = io::parseAssignment(item, error);
+    if (!as || !io::checkWritable(as->addr, as->value, error)) return usageError("--set: " + error);
+    powerUp.push_back(*as);
+  }
+  if (!a.stats.empty()) { // unwritable --stats is a usage error up front, not after an hour
+    std::ofstream probe(a.stats, std::ios::app);
+    if (!probe) return usageError("--stats: cannot write '" + a.stats + "'");
+  }
+  const std::string control =
+      a.control.empty() ? "/tmp/ladderjit-" + std::to_string(::getpid()) + ".sock" : a.control;
+
+  // ---- the program ----
+  rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1);
+  std::optional<io::DitFile> dit;
+  std::shared_ptr<rt::ProgramVersion> first = loader.load(a.program, {}, error, &dit, so);
+  if (!first) {
+    // Diagnostics of PROGRAM exit 1; an unreadable file or a .so that does not fit exits 2.
+    if (error.find(": error:") != std::string::npos) {
+      std::fprintf(stderr, "%s\n", error.c_str());
+      return kProgramErrors;
+    }
+    return usageError(aot ? "--engine " + error : error);
+  }
+  uint64_t periodMs = a.periodMs;
+  if (dit) {
+    // A container's parameters are defaults (docs/plc-dit.md "run"): --params/--set win.
+    powerUp.insert(powerUp.begin(), dit->params.begin(), dit->params.end());
+    if (!a.periodMsGiven) periodMs = dit->periodMs;
+  }
+
+  // Signals are taken synchronously by the main thread (sigtimedwait): block them before any
+  // thread starts so every thread inherits the mask.
+  sigset_t sigs;
+  sigemptyset(&sigs);
+  sigaddset(&sigs, SIGINT);
+  sigaddset(&sigs, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &sigs, nullptr);
+
+  rt::Exchange exchange;
+  rt::ExecutiveOptions eo;
+  eo.periodNs = periodMs * 1000000;
+  eo.maxBackwardSteps = a.maxBackwardSteps;
+  eo.rtPriority = a.rtPriority;
+  eo.cpu = a.cpu;
+  eo.powerUp = powerUp;
+  rt::Executive exec(exchange, eo, logLine);
+
+  // ---- I/O binding: the simulated NC (default) and/or the shared-memory image ----
+  std::unique_ptr<SimNcBinding> simnc;
+  if (a.io == "simnc") {
+    simnc = std::make_unique<SimNcBinding>();
+    exec.addStartHook([nc = &simnc->nc](lj_state &s) { nc->powerUp(s); });
+    exec.addIo(simnc.get());
+  }
+  rt::ShmMapping shmMap;
+  std::unique_ptr<rt::ShmImage> shm;
+  if (!a.shm.empty()) {
+    if (!shmMap.create(a.shm, a.io == "shm", eo.periodNs, error)) return usageError(error);
+    shm = std::make_unique<rt::ShmImage>(shmMap, a.io == "shm");
+    exec.addIo(shm.get());
+    exec.addAfterTickHook([s = shm.get()](const lj_state &st, uint64_t t) { s->publish(st, t); });
+  }
+
+  // HOOK(retain): create the retentive store for a.retain (when not empty), restore it in a
+  // start hook (exec.addStartHook, runs before init), capture in an after-tick hook and save
+  // in a stop hook (exec.addStopHook).
+  std::unique_ptr<io::RetainStore> retain;
+  auto restored = std::make_unique<lj_state>();
+  RetainSaveBinding saveBinding;
+  if (!a.retain.empty()) {
+    io::RetainConfig rc;
+    rc.path = a.retain;
+    rc.period = std::chrono::milliseconds(a.retainPeriodMs);
+    rc.force = a.retainForce;
+    rc.programHash = first->hash;
+    rc.log = logLine;
+    retain = std::make_unique<io::RetainStore>(rc);
+    // Read the file here, on the main thread, so a file of another layout stops serve before
+    // anything runs; the start hook only copies the result (docs/retain.md "Restore").
+    lj_state_reset(restored.get());
+    io::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
+    if (rep.status == io::RestoreStatus::LayoutMismatch)
+      return usageError("--retain: " + a.retain + " belongs to another layout (see above)");
+    exec.addStartHook([r = restored.get()](lj_state &s) { io::copyRetained(*r, s); });
+    exec.addAfterTickHook(
+        [st = retain.get()](const lj_state &s, uint64_t tick) { st->afterTick(s, tick); });
+    exec.addStopHook(
+        [st = retain.get(), &exchange](lj_state &s) { st->stop(s, exchange.lastTick()); });
+    // SAVEDATA reaches the store through the lj_host table (after the simulated NC set it).
+    saveBinding.store = retain.get();
+    exec.addIo(&saveBinding);
+    retain->start();
+  }
+
+  rt::Controller controller(exchange, exec, loader, a.program, logLine, so);
+  rt::ControlSocket socket([&controller](const nlohmann::json &r) { return controller.handle(r); });
+  if (!socket.start(control, error)) return usageError(error);
+
+  if (!exec.start(first, error)) return usageError(error);
+  first.reset();
+  std::printf("ladderjit serve: running '%s' (engine %s, period %llu ms, %zu PLC2 slices)\n"
+              "ladderjit serve: control socket %s\n",
+              a.program.c_str(), a.engine.c_str(), static_cast<unsigned long long>(periodMs),
+              exec.current()->prog->slices.size(), control.c_str());
+  if (!a.shm.empty())
+    std::printf("ladderjit serve: shared-memory image /%s (io %s)\n",
+                a.shm[0] == '/' ? a.shm.c_str() + 1 : a.shm.c_str(), a.io.c_str());
+  std::fflush(stdout);
+
+  // HOOK(modbus): start the Modbus TCP server on modbusHost:modbusPort (when modbusPort >= 0)
+  // over exchange.snapshot / exchange.post / exchange.waitApplied.
+  std::unique_ptr<io::ModbusServer> modbus;
+  if (modbusPort >= 0) {
+    io::ModbusConfig mc;
+    mc.host = modbusHost;
+    mc.port = modbusPort;
+    mc.writeInputs = a.modbusWriteInputs;
+    mc.log = logLine;
+    modbus = std::make_unique<io::ModbusServer>(mc, modbusBackend(exchange, retain.get()));
+    if (!modbus->start(error)) {
+      exec.requestStop();
+      exec.join();
+      return usageError(error);
+    }
+    std::printf("ladderjit serve: modbus TCP on %s:%d%s\n", modbusHost.c_str(), modbus->port(),
+                a.modbusWriteInputs ? " (X and F writable)" : "");
+    std::fflush(stdout);
+  }
+
+  // ---- wait: signal, `monitor stop`, --duration or the scan thread ending ----
+  auto startT = std::chrono::steady_clock::now();
+  const char *why = "stopped";
+  while (true) {
+    timespec oneSecond{1, 0};
+    int sig = sigtimedwait(&sigs, nullptr, &oneSecond);
+    if (sig == SIGINT || sig == SIGTERM) {
+      why = sig == SIGINT ? "SIGINT" : "SIGTERM";
+      break;
+    }
+    if (controller.stopRequested()) {
+      why = "monitor stop";
+      break;
+    }
+    if (!exec.running()) break;
+    double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - startT).count();
+    if (a.duration > 0 && elapsed >= static_cast<double>(a.duration)) {
+      why = "--duration";
+      break;
+    }
+    controller.pollProgramFile();
+  }
+
+  // ---- clean shutdown ----
+  // HOOK(modbus): stop the Modbus TCP server (before the executive, so no write is lost).
+  if (modbus) modbus->stop();
+  socket.stop();
+  exec.requestStop();
+  exec.join(); // stop hooks (final retain save) run on the scan thread before this returns
+  // HOOK(retain): stop the store's writer after its final save.
+  if (retain) {
+    io::RetainStats rs = retain->stats();
+    logLine("retain: " + std::to_string(rs.saves) + " saves (last #" +
+            std::to_string(rs.lastSaveSeq) + "), " + std::to_string(rs.failures) + " failed");
+  }
+  if (!a.shm.empty()) shmMap.unlinkName();
+
+  rt::TickStats st = exec.stats();
+  std::printf("ladderjit serve: %s; %s", why, st.summary().c_str());
+  std::fflush(stdout);
+  if (!a.stats.empty()) {
+    nlohmann::json j = st.toJson();
+    j["program"] = exec.current()->path;
+    j["engine"] = a.engine;
+    j["stop_reason"] = why;
+    if (!writeStats(a.stats, j, error)) return usageError(error);
+  }
+  return kOk;
+}
+
+} // namespace lj::cli
