@@ -5,7 +5,7 @@
 set -eu
 B=$1
 W=$2
-LJ=$B/tools/ladderjit/ladderjit
+LJ=$B/tools/ladderjit
 mkdir -p "$W"
 cd "$W"
 "$B/tests/runtime/serve_bench_program" 10000 p10k.stl
