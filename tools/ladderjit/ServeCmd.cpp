@@ -19,6 +19,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -280,8 +281,18 @@ int runServe(const ServeArgs &a) {
   auto startT = std::chrono::steady_clock::now();
   const char *why = "stopped";
   while (true) {
-    timespec oneSecond{1, 0};
-    int sig = sigtimedwait(&sigs, nullptr, &oneSecond);
+    // Wake at least once a second (stop requests, the file poll), and exactly at --duration.
+    double wait = 1.0;
+    if (a.duration > 0) {
+      double left =
+          static_cast<double>(a.duration) -
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - startT).count();
+      wait = std::clamp(left, 0.001, 1.0);
+    }
+    timespec timeout{
+        static_cast<time_t>(wait),
+        static_cast<long>((wait - static_cast<double>(static_cast<time_t>(wait))) * 1e9)};
+    int sig = sigtimedwait(&sigs, nullptr, &timeout);
     if (sig == SIGINT || sig == SIGTERM) {
       why = sig == SIGINT ? "SIGINT" : "SIGTERM";
       break;
