@@ -14,59 +14,11 @@ import sys
 import tempfile
 import time
 
-LJ = sys.argv[1]
-FAILURES = []
+from serve_client import FAILURES, LINE_LD_X10, LJ, PROGRAM, check, monitor, read, wait_value
 
-# Line numbers matter: `force` addresses source lines.
-PROGRAM = """\
-LDT
-MOV 7 D10
-IEND
-LD X1.0
-OUT Y1.0
-LDT
-MOV 1 D20
-1END
-LDT
-ADD D30 1 D30
-2END
-"""
-LINE_LD_X10 = 4  # LD X1.0
 LINE_OUT = 5  # OUT Y1.0: not a contact
 V2 = PROGRAM.replace("MOV 7 D10", "MOV 9 D10")
 V3 = PROGRAM.replace("MOV 7 D10", "MOV 11 D10")
-
-
-def check(cond, what):
-    if not cond:
-        FAILURES.append(what)
-        print("FAIL:", what, flush=True)
-
-
-def monitor(sock, *args):
-    r = subprocess.run([LJ, "monitor", "--control", sock, *args], capture_output=True,
-                       text=True, timeout=120)
-    return r.returncode, r.stdout, r.stderr
-
-
-def read(sock, addr):
-    rc, out, err = monitor(sock, "read", addr)
-    if rc != 0:
-        return None
-    k, v = out.strip().split("=")
-    return int(v)
-
-
-def wait_value(sock, addr, want, seconds=30):
-    end = time.time() + seconds
-    v = None
-    while time.time() < end:
-        v = read(sock, addr)
-        if v == want:
-            return True
-        time.sleep(0.02)
-    print(f"  {addr} = {v}, wanted {want}", flush=True)
-    return False
 
 
 def main():
