@@ -129,14 +129,7 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
 }
 
 std::string RandomGen::regAddress(AreaMask mask, bool writes) {
-  static constexpr Area kRegs[] = {Area::X, Area::Y, Area::F, Area::G, Area::R,
-                                   Area::W, Area::D, Area::B, Area::P};
-  Area cand[9];
-  int n = 0;
-  for (Area a : kRegs)
-    if (hasArea(mask, a)) cand[n++] = a;
-  assert(n > 0);
-  Area a = cand[rng_.below(static_cast<uint64_t>(n))];
+  Area a = pickArea(mask);
   int32_t idx = pickIndex(rng_, a);
   if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
   return std::string(1, areaInfo(a).letter) + std::to_string(idx);
