@@ -2,9 +2,8 @@
 // version, so each online change is a new JITDylib, STYLE.md 10; or an AOT .so, docs/aot.md).
 #include "runtime/ProgramLoader.h"
 
-#include "instructions/FrontEnd.h"
 #include "io/AotLoader.h"
-#include "io/InputFiles.h"
+#include "io/ProgramFile.h"
 #include "jit/Jit.h"
 
 namespace lj::rt {
@@ -50,28 +49,17 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
     error = "the AOT engine needs a .so built from '" + path + "'";
     return nullptr;
   }
-  std::string text;
-  if (!io::readFile(path, text, error)) return nullptr;
+  io::ProgramSource src;
+  if (!io::readProgramFile(path, src, error)) return nullptr;
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
-  v->hash = io::sha256Hash(text);
-  std::optional<io::DitFile> dit;
-  bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
-  if (io::looksLikeDit(text) || named) {
-    dit = io::parseDit(text, path, error);
-    if (!dit) return nullptr;
-  }
-  // The AOT program hash covers the STL file's own text (io/AotLoader.h), not the parser's.
-  const std::string stl = std::move(text);
-  text = dit ? io::programForParser(*dit) : stl;
-  Diagnostics diags(path);
-  VerifyOptions vo;
-  vo.plc2Nvalue = plc2Nvalue_ >= 0 ? plc2Nvalue_ : dit ? dit->plc2Nvalue : 200;
-  std::optional<VerifiedProgram> prog =
-      compileFrontEnd(text, path, vo, diags, dit ? &dit->symbols : nullptr);
-  if (!prog || diags.hasErrors()) {
-    error = diags.render();
-    if (error.empty()) error = path + ": error: program rejected without a diagnostic\n";
+  v->hash = src.fileHash;
+  const bool nvalueGiven = plc2Nvalue_ >= 0;
+  const int32_t nvalue = io::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
+  std::string diagnostics;
+  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diagnostics);
+  if (!prog) {
+    error = diagnostics;
     while (!error.empty() && error.back() == '\n') error.pop_back();
     return nullptr;
   }
@@ -83,7 +71,7 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
   } else if (aot()) {
     // loadAot checks integrity, ELF, ABI, state size and that `so` was built from this program
     // with this nvalue; a mismatch leaves the running version alone (the caller reports it).
-    v->engine = io::loadAot(so, io::programHash(stl, dit ? &*dit : nullptr, vo.plc2Nvalue), error);
+    v->engine = io::loadAot(so, io::programHashOf(src, nvalue), error);
     if (!v->engine) {
       error = "aot: " + error;
       return nullptr;
@@ -107,7 +95,7 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
     std::lock_guard<std::mutex> g(mu_);
     v->id = nextId_++;
   }
-  if (ditOut) *ditOut = std::move(dit);
+  if (ditOut) *ditOut = std::move(src.dit);
   return v;
 }
 

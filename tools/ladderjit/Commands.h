@@ -4,7 +4,7 @@
 
 #include "instructions/Engine.h"
 #include "instructions/Program.h"
-#include "io/PlcDit.h"
+#include "io/ProgramFile.h"
 
 #include <cstdint>
 #include <memory>
@@ -20,19 +20,14 @@ enum Exit : int { kOk = 0, kProgramErrors = 1, kUsage = 2 };
 /// Print `ladderjit: error: <msg>` to stderr and return kUsage.
 int usageError(const std::string &msg);
 
-/// PROGRAM as read: an STL file, or a plc.dit container (recognized by its magic line).
-struct ProgramSource {
-  std::string path;
-  std::string text;               ///< what the STL parser reads (container: padded program)
-  std::optional<io::DitFile> dit; ///< the container, when PROGRAM is one
-};
+/// PROGRAM as read: an STL file, or a plc.dit container (io/ProgramFile.h).
+using io::effectiveNvalue;
+using io::programHashOf;
+using io::ProgramSource;
 
 /// Read PROGRAM into `src`. An unreadable file or a bad container is an input error: prints
 /// it, sets `exitCode` to 2 and returns false (docs/plc-dit.md "Exit codes").
 bool readProgram(const std::string &path, ProgramSource &src, int &exitCode);
-
-/// The PLC2 nvalue to plan with: the option when given, else the container's, else 200.
-int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven);
 
 /// Verify a read PROGRAM (with its symbols, for a container); diagnostics go to stderr. On
 /// failure sets `exitCode` to 1 and returns nothing.
@@ -94,9 +89,6 @@ struct CompileArgs {
 /// `ladderjit compile`: build PROGRAM into a shared object with the C ABI (docs/aot.md).
 int runCompile(const CompileArgs &a);
 
-/// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (io::programHash).
-std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue);
-
 /// `--engine aot:PATH`: load the .so and check it was built from `src` with `plc2Nvalue`. Null
 /// with `error` set on any problem (docs/aot.md "Loading").
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
@@ -111,7 +103,7 @@ int runFuzz(const FuzzArgs &a);
 
 struct ServeArgs {
   std::string program;
-  std::string engine = "jit"; ///< jit | interp
+  std::string engine = "jit"; ///< jit | interp | aot:PATH.so
   uint64_t periodMs = 1;
   bool periodMsGiven = false; ///< --period-ms was on the command line (beats a plc.dit)
   int32_t plc2Nvalue = 200;

@@ -10,10 +10,6 @@
 
 namespace lj::cli {
 
-std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {
-  return io::programHash(src.text, src.dit ? &*src.dit : nullptr, plc2Nvalue);
-}
-
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
                                       int32_t plc2Nvalue, std::string &error) {
   return io::loadAot(soPath, programHashOf(src, plc2Nvalue), error);

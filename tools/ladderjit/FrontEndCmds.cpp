@@ -4,7 +4,6 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "instructions/FrontEnd.h"
-#include "io/InputFiles.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Jit.h"
@@ -40,50 +39,21 @@ bool haveFuzz() {
 }
 
 bool readProgram(const std::string &path, ProgramSource &src, int &exitCode) {
-  src.path = path;
-  std::string text, error;
-  if (!io::readFile(path, text, error)) {
+  std::string error;
+  if (!io::readProgramFile(path, src, error)) {
     exitCode = usageError(error);
     return false;
   }
-  // The magic line decides; a `.dit` name without it is a damaged container, not STL.
-  bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
-  if (!io::looksLikeDit(text) && !named) {
-    src.text = std::move(text);
-    exitCode = kOk;
-    return true;
-  }
-  src.dit = io::parseDit(text, path, error);
-  if (!src.dit) {
-    exitCode = usageError(error);
-    return false;
-  }
-  src.text = io::programForParser(*src.dit);
   exitCode = kOk;
   return true;
 }
 
-int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven) {
-  if (optionGiven || !src.dit) return option;
-  return src.dit->plc2Nvalue;
-}
-
 std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                            int &exitCode) {
-  Diagnostics diags(src.path);
-  VerifyOptions opts;
-  opts.plc2Nvalue = plc2Nvalue;
-  const SymbolTable *symbols = src.dit ? &src.dit->symbols : nullptr;
-  std::optional<VerifiedProgram> prog = compileFrontEnd(src.text, src.path, opts, diags, symbols);
-  std::string rendered = diags.render();
-  if (!rendered.empty()) std::fputs(rendered.c_str(), stderr);
-  if (!prog || diags.hasErrors()) {
-    if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
-      std::fprintf(stderr, "%s: error: program rejected without a diagnostic\n", src.path.c_str());
-    exitCode = kProgramErrors;
-    return std::nullopt;
-  }
-  exitCode = kOk;
+  std::string diagnostics;
+  std::optional<VerifiedProgram> prog = io::verifyProgram(src, plc2Nvalue, diagnostics);
+  if (!diagnostics.empty()) std::fputs(diagnostics.c_str(), stderr);
+  exitCode = prog ? kOk : kProgramErrors;
   return prog;
 }
 
