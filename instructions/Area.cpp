@@ -3,6 +3,8 @@
 
 #include "ladderjit/abi.h"
 
+#include <cstddef>
+
 namespace lj {
 
 namespace {
@@ -36,6 +38,31 @@ bool validIndex(Area a, int64_t n) {
 int bitWidth(Area a) {
   if (a == Area::T || a == Area::C) return 1;
   return areaInfo(a).bytes * 8;
+}
+
+uint32_t stateOffset(Area a) {
+  switch (a) {
+  case Area::X:
+    return offsetof(lj_state, img.X);
+  case Area::Y:
+    return offsetof(lj_state, img.Y);
+  case Area::F:
+    return offsetof(lj_state, img.F);
+  case Area::G:
+    return offsetof(lj_state, img.G);
+  case Area::R:
+    return offsetof(lj_state, img.R);
+  case Area::W:
+    return offsetof(lj_state, img.W);
+  case Area::D:
+    return offsetof(lj_state, img.D);
+  case Area::B:
+    return offsetof(lj_state, img.B);
+  case Area::P:
+    return offsetof(lj_state, img.P);
+  default:
+    return 0;
+  }
 }
 
 } // namespace lj

@@ -34,6 +34,10 @@ std::optional<Area> areaFromLetter(char c);
 /// Whether element `n` exists in area `a` (T/C have the gap 128..299; L 0..9999; S 0..511).
 bool validIndex(Area a, int64_t n);
 
+/// Byte offset of element 0 of a numeric area (X Y F G R W D B P) inside lj_state (abi.h); 0
+/// for the other areas. Element n is at stateOffset(a) + n * areaInfo(a).bytes.
+uint32_t stateOffset(Area a);
+
 /// Number of bits of one element (8, 16, 32), or 1 for T/C whose only bit is .0.
 int bitWidth(Area a);
 

@@ -64,31 +64,6 @@ struct Frame {
   }
 };
 
-inline uint32_t areaOffset(Area a) {
-  switch (a) {
-  case Area::X:
-    return offsetof(lj_state, img.X);
-  case Area::Y:
-    return offsetof(lj_state, img.Y);
-  case Area::F:
-    return offsetof(lj_state, img.F);
-  case Area::G:
-    return offsetof(lj_state, img.G);
-  case Area::R:
-    return offsetof(lj_state, img.R);
-  case Area::W:
-    return offsetof(lj_state, img.W);
-  case Area::D:
-    return offsetof(lj_state, img.D);
-  case Area::B:
-    return offsetof(lj_state, img.B);
-  case Area::P:
-    return offsetof(lj_state, img.P);
-  default:
-    return 0;
-  }
-}
-
 inline Ref decode(const Operand &o) {
   Ref r;
   switch (o.kind) {
@@ -102,7 +77,7 @@ inline Ref decode(const Operand &o) {
     uint32_t bytes = areaInfo(o.area).bytes;
     if (bytes == 0) return r; // L, S: handled through StmtInfo::target
     r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
-    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
+    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
     return r;
   }
   case Operand::Kind::Bit: {
@@ -119,7 +94,7 @@ inline Ref decode(const Operand &o) {
       r.mask = 1;
       return r;
     }
-    r.off = areaOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
+    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
             static_cast<uint32_t>(o.bit / 8);
     r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
     return r;

@@ -37,29 +37,10 @@ struct Cell {
 };
 
 Cell cellOf(const lj_state &s, Area a, int32_t n) {
-  const lj_image &im = s.img;
-  switch (a) {
-  case Area::X:
-    return {&im.X[n], 1, false};
-  case Area::Y:
-    return {&im.Y[n], 1, false};
-  case Area::F:
-    return {&im.F[n], 2, true};
-  case Area::G:
-    return {&im.G[n], 2, true};
-  case Area::R:
-    return {&im.R[n], 1, false};
-  case Area::W:
-    return {&im.W[n], 2, true};
-  case Area::D:
-    return {&im.D[n], 4, true};
-  case Area::B:
-    return {&im.B[n], 4, true};
-  case Area::P:
-    return {&im.P[n], 4, true};
-  default:
-    return {nullptr, 0, false};
-  }
+  const AreaInfo &info = areaInfo(a);
+  if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
+  const auto *base = reinterpret_cast<const unsigned char *>(&s) + stateOffset(a);
+  return {base + static_cast<size_t>(n) * info.bytes, info.bytes, info.isSigned};
 }
 
 // The element's bits as an unsigned pattern (zero-extended to 32 bits).
