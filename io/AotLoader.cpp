@@ -1,8 +1,9 @@
-// The AOT loader: read the file once, verify the integrity trailer and the ELF headers, then
-// dlopen a private copy of exactly those bytes. A damaged file never reaches the dynamic
-// loader, which may crash on bad ELF.
+// The AOT loader: read the file once, verify its signed trailer (a trusted signer, identity, ABI)
+// and the ELF headers on those bytes, then dlopen exactly those bytes from a sealed memfd. No
+// byte of an unsigned or modified file is ever mapped executable (docs/aot.md "Trust").
 #include "io/AotLoader.h"
 
+#include "io/AotSigned.h"
 #include "ladderjit/program.h"
 
 #include <atomic>
@@ -12,26 +13,37 @@
 #include <dlfcn.h>
 #include <elf.h>
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
+
+#ifndef MFD_EXEC
+#define MFD_EXEC 0x0010U /* Linux 6.3: executable memfd even under vm.memfd_noexec=1 */
+#endif
 
 namespace lj::io {
 
 namespace {
 
 /// Refuse files above this size before reading them (a 10,000-statement program is ~1 MiB).
-constexpr uint64_t kMaxSize = uint64_t{1} << 30;
+constexpr uint64_t kMaxSize = uint64_t{256} << 20;
 
+/// The loaded object and the memfd it was mapped from. The descriptor stays open while the
+/// object is loaded so its /proc/self/fd name cannot be reused for another load meanwhile.
 class AotEngine final : public Engine {
 public:
-  AotEngine(void *handle, const lj_entries &e) : handle_(handle), entries_(e) {}
-  ~AotEngine() override { dlclose(handle_); }
+  AotEngine(void *handle, int fd, const lj_entries &e) : handle_(handle), fd_(fd), entries_(e) {}
+  ~AotEngine() override {
+    dlclose(handle_);
+    if (fd_ >= 0) close(fd_);
+  }
   const lj_entries &entries() const override { return entries_; }
   const char *name() const override { return "aot"; }
 
 private:
   void *handle_;
+  int fd_;
   lj_entries entries_;
 };
 
@@ -93,44 +105,57 @@ std::string checkElf(std::string_view img) {
   return {};
 }
 
-/// The trailer `ladderjit compile` appends (program.h): SHA-256 over everything before it.
-std::string checkTrailer(std::string_view file) {
-  constexpr size_t kMagicLen = sizeof(LJPROG_TRAILER_MAGIC) - 1;
-  if (file.size() < LJPROG_TRAILER_SIZE) return "too short to be a ladderjit program (truncated?)";
-  std::string_view tr = file.substr(file.size() - LJPROG_TRAILER_SIZE);
-  if (tr.substr(0, kMagicLen) != LJPROG_TRAILER_MAGIC || tr.back() != '\n')
-    return "no ladderjit integrity trailer at the end (truncated, or not built by "
-           "`ladderjit compile`)";
-  std::string want = "sha256:" + std::string(tr.substr(kMagicLen, 64));
-  std::string got = sha256Hash(file.substr(0, file.size() - LJPROG_TRAILER_SIZE));
-  if (got != want) return "damaged: its content does not match its integrity checksum";
-  return {};
-}
-
-/// dlopen the checked bytes from a private copy under a name never used before in this
-/// process, then unlink it. Loading `path` itself could load other bytes than were checked (the
-/// file may be replaced meanwhile), and glibc returns an already loaded object whose name
-/// matches, so a reused name (a rebuilt .so at the same path, a reused /proc/self/fd/N) would
-/// hand back the previous program. Null when the copy cannot be made or loaded.
-void *openVerifiedCopy(const std::string &bytes) {
-  static std::atomic<uint64_t> serial{0};
-  const char *base = std::getenv("TMPDIR");
-  std::string name = std::string(base && *base ? base : "/tmp") + "/ladderjit-aot-" +
-                     std::to_string(getpid()) + "-" + std::to_string(serial++) + "-XXXXXX";
-  std::vector<char> buf(name.begin(), name.end());
-  buf.push_back('\0');
-  Fd copy;
-  copy.fd = mkostemp(buf.data(), O_CLOEXEC);
-  if (copy.fd < 0) return nullptr;
+bool writeAll(int fd, std::string_view bytes) {
   size_t done = 0;
   while (done < bytes.size()) {
-    ssize_t n = write(copy.fd, bytes.data() + done, bytes.size() - done);
+    ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
+    if (n <= 0) return false;
     done += static_cast<size_t>(n);
   }
-  void *handle = done == bytes.size() ? dlopen(buf.data(), RTLD_NOW | RTLD_LOCAL) : nullptr;
-  unlink(buf.data());
+  return true;
+}
+
+/// dlopen the verified bytes from a sealed memfd (nobody can change them after the check, and
+/// the file at `path` is never opened by the dynamic loader). glibc hands back an already loaded
+/// object whose name matches, so a /proc/self/fd/N name still in use by a loaded object is
+/// skipped by moving the descriptor. `fd` receives the descriptor to keep open while loaded.
+void *openSealed(std::string_view bytes, int &fd, std::string &why) {
+  fd = memfd_create("ladderjit-aot", MFD_CLOEXEC | MFD_ALLOW_SEALING | MFD_EXEC);
+  if (fd < 0 && errno == EINVAL)
+    fd = memfd_create("ladderjit-aot", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+  if (fd < 0) {
+    why = std::string("memfd_create failed: ") + std::strerror(errno);
+    return nullptr;
+  }
+  if (!writeAll(fd, bytes) ||
+      fcntl(fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL) != 0) {
+    why = std::string("cannot prepare the verified copy: ") + std::strerror(errno);
+    close(fd);
+    fd = -1;
+    return nullptr;
+  }
+  std::string name;
+  for (int tries = 0;; ++tries) {
+    name = "/proc/self/fd/" + std::to_string(fd);
+    void *old = dlopen(name.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_LOCAL);
+    if (!old) break;
+    dlclose(old);
+    int moved = tries < 64 ? fcntl(fd, F_DUPFD_CLOEXEC, fd + 1) : -1;
+    close(fd);
+    fd = moved;
+    if (fd < 0) {
+      why = "no free descriptor name for the verified copy";
+      return nullptr;
+    }
+  }
+  void *handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!handle) {
+    const char *e = dlerror();
+    why = std::string("dlopen failed: ") + (e ? e : "unknown error");
+    close(fd);
+    fd = -1;
+  }
   return handle;
 }
 
@@ -155,62 +180,84 @@ std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nv
   return sha256Hash(canon);
 }
 
-std::unique_ptr<Engine> loadAot(const std::string &path, const std::string &expectedHash,
-                                std::string &error) {
+std::string sourceHash(std::string_view stl, const DitFile *dit) {
+  if (dit) return dit->hash;
+  std::string canon = "ladderjit-source 1\n[program]\n";
+  for (size_t i = 0; i < stl.size(); ++i) {
+    if (stl[i] == '\r' && i + 1 < stl.size() && stl[i + 1] == '\n') continue;
+    canon += stl[i];
+  }
+  if (!stl.empty() && canon.back() != '\n') canon += '\n';
+  return sha256Hash(canon);
+}
+
+AotExpect aotExpectOf(const ProgramSource &src, int32_t plc2Nvalue) {
+  const DitFile *dit = src.dit ? &*src.dit : nullptr;
+  return {programHash(src.text, dit, plc2Nvalue), sourceHash(src.text, dit), plc2Nvalue};
+}
+
+std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,
+                                const TrustedKeys &trust, std::string &error) {
   auto fail = [&](const std::string &why) -> std::unique_ptr<Engine> {
     error = "'" + path + "': " + why;
     return nullptr;
   };
+  // O_NONBLOCK: opening a FIFO must not wait for a writer (it is refused as not regular).
   Fd f;
-  f.fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  f.fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (f.fd < 0) return fail(std::string("cannot open: ") + std::strerror(errno));
   struct stat st {};
   if (fstat(f.fd, &st) != 0 || !S_ISREG(st.st_mode)) return fail("not a regular file");
-  if (static_cast<uint64_t>(st.st_size) > kMaxSize) return fail("too large for a program");
+  if (static_cast<uint64_t>(st.st_size) > kMaxSize)
+    return fail("too large for a program (" + std::to_string(st.st_size) + " bytes, at most " +
+                std::to_string(kMaxSize) + ")");
   std::string bytes;
   if (!readAll(f.fd, static_cast<uint64_t>(st.st_size), bytes)) return fail("cannot read");
-  if (std::string why = checkTrailer(bytes); !why.empty()) return fail(why);
-  std::string_view image(bytes.data(), bytes.size() - LJPROG_TRAILER_SIZE);
+  AotMeta meta;
+  if (std::string why = verifySigned(bytes, trust, meta); !why.empty()) return fail(why);
+  // From here on the trailer is the signer's word: identity and ABI come from it.
+  if (meta.abi != LJPROG_ABI_VERSION)
+    return fail("program ABI version " + std::to_string(meta.abi) + ", this ladderjit loads " +
+                std::to_string(LJPROG_ABI_VERSION) + " (rebuild it with `ladderjit compile`)");
+  if (meta.stateSize != sizeof(lj_state))
+    return fail("built for a state of " + std::to_string(meta.stateSize) +
+                " bytes, this ladderjit has " + std::to_string(sizeof(lj_state)));
+  if (meta.program != expect.program) {
+    if (!expect.source.empty() && meta.source == expect.source && expect.plc2Nvalue >= 0 &&
+        meta.plc2Nvalue != expect.plc2Nvalue)
+      return fail("built from this program with plc2 nvalue " + std::to_string(meta.plc2Nvalue) +
+                  ", but plc2 nvalue " + std::to_string(expect.plc2Nvalue) +
+                  " was asked for; rebuild it with `ladderjit compile --plc2-nvalue " +
+                  std::to_string(expect.plc2Nvalue) + "` or give --plc2-nvalue " +
+                  std::to_string(meta.plc2Nvalue));
+    return fail("built from another program (its hash " + meta.program + ", the program's " +
+                expect.program + "); rebuild it with `ladderjit compile`");
+  }
+  if (meta.slices == 0) return fail("inconsistent entry table");
+  std::string_view image(bytes.data(), meta.imageSize);
   if (std::string why = checkElf(image); !why.empty()) return fail(why);
 
-  void *handle = openVerifiedCopy(bytes);
-  if (!handle) handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL); // e.g. a noexec TMPDIR
-  if (!handle) {
-    const char *why = dlerror();
-    return fail(std::string("dlopen failed: ") + (why ? why : "unknown error"));
-  }
+  int fd = -1;
+  std::string why;
+  void *handle = openSealed(bytes, fd, why);
+  if (!handle) return fail(why);
   std::string missing;
-  auto abiVersion = symbol<ljprog_u32_fn>(handle, "ljprog_abi_version", missing);
-  auto hash = symbol<ljprog_hash_fn>(handle, "ljprog_hash", missing);
-  auto slices = symbol<ljprog_u32_fn>(handle, "ljprog_slice_count", missing);
-  auto stateSize = symbol<ljprog_size_fn>(handle, "ljprog_state_size", missing);
   auto entriesFn = symbol<ljprog_entries_fn>(handle, "ljprog_entries", missing);
-  for (const char *name : {"ljprog_state_reset", "ljprog_init", "ljprog_tick"})
+  for (const char *name : {"ljprog_abi_version", "ljprog_hash", "ljprog_slice_count",
+                           "ljprog_state_size", "ljprog_state_reset", "ljprog_init", "ljprog_tick"})
     symbol<void *>(handle, name, missing);
-  auto closeAndFail = [&](const std::string &why) {
+  auto closeAndFail = [&](const std::string &reason) {
     dlclose(handle);
-    return fail(why);
+    close(fd);
+    return fail(reason);
   };
   if (!missing.empty())
     return closeAndFail("not a ladderjit program: symbol '" + missing + "' missing");
-  if (uint32_t v = abiVersion(); v != LJPROG_ABI_VERSION)
-    return closeAndFail("program ABI version " + std::to_string(v) + ", this ladderjit loads " +
-                        std::to_string(LJPROG_ABI_VERSION) +
-                        " (rebuild it with `ladderjit compile`)");
-  if (size_t n = stateSize(); n != sizeof(lj_state))
-    return closeAndFail("built for a state of " + std::to_string(n) +
-                        " bytes, this ladderjit has " + std::to_string(sizeof(lj_state)));
-  const char *h = hash();
-  std::string have = h ? std::string(h, strnlen(h, LJPROG_HASH_LEN + 1)) : std::string();
-  if (have != expectedHash)
-    return closeAndFail("built from another program (its hash " + have + ", the program's " +
-                        expectedHash + "); rebuild it with `ladderjit compile`");
   lj_entries e{};
   entriesFn(&e);
-  if (!e.init || !e.plc1 || !e.plc2_slice || e.plc2_slice_count == 0 ||
-      e.plc2_slice_count != slices())
+  if (!e.init || !e.plc1 || !e.plc2_slice || e.plc2_slice_count != meta.slices)
     return closeAndFail("inconsistent entry table");
-  return std::make_unique<AotEngine>(handle, e);
+  return std::make_unique<AotEngine>(handle, fd, e);
 }
 
 } // namespace lj::io

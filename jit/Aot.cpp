@@ -47,6 +47,10 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
     error = "bad program hash '" + opts.programHash + "' (expected sha256: and 64 hex digits)";
     return false;
   }
+  if (!opts.signingKey) {
+    error = "no signing key";
+    return false;
+  }
   auto tm = aotTargetMachine(opts.genericCpu);
   if (!tm) {
     error = "cannot create the target machine: " + llvm::toString(tm.takeError());
@@ -76,8 +80,7 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
     return false;
   }
   uint32_t slices = prog.slices.empty() ? 1u : static_cast<uint32_t>(prog.slices.size());
-  return detail::linkSharedObject((*obj)->getBuffer(), opts.programHash, slices, opts.output,
-                                  error);
+  return detail::linkSharedObject((*obj)->getBuffer(), opts, slices, error);
 }
 
 } // namespace lj::jit

@@ -8,11 +8,19 @@
 #include <cstdint>
 #include <string>
 
+namespace lj::io {
+class SigningKey;
+}
+
 namespace lj::jit {
 
 struct AotOptions {
   std::string output;      ///< path of the .so to write (replaced atomically)
   std::string programHash; ///< what ljprog_hash() returns: "sha256:" + 64 lowercase hex digits
+  std::string sourceHash;  ///< the program without the nvalue (io::sourceHash); empty = programHash
+  int32_t plc2Nvalue = 0;  ///< recorded in the signed trailer (the slicing is in `prog`)
+  /// Signs the trailer (docs/aot.md "Trust"); required. Not owned.
+  const io::SigningKey *signingKey = nullptr;
   /// false: the host CPU and its features (fastest, may not run elsewhere); true: the portable
   /// baseline of the architecture (x86-64 without extensions).
   bool genericCpu = false;

@@ -2,15 +2,18 @@
 // system compiler (jit/AotLink.cpp).
 #pragma once
 
+#include "jit/Aot.h"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace lj::jit::detail {
 
-/// Link the program object `obj` with the ABI shim and tick.c into `output` (atomically), and
-/// append the integrity trailer (program.h LJPROG_TRAILER_*). False + `error` on failure.
-bool linkSharedObject(std::string_view obj, const std::string &hash, uint32_t slices,
-                      const std::string &output, std::string &error);
+/// Link the program object `obj` with the ABI shim and tick.c into `opts.output` (atomically),
+/// and append the trailer signed with `opts.signingKey` (program.h, io/AotSigned.h). False +
+/// `error` on failure.
+bool linkSharedObject(std::string_view obj, const AotOptions &opts, uint32_t slices,
+                      std::string &error);
 
 } // namespace lj::jit::detail

@@ -1,13 +1,11 @@
 // The linker half of `ladderjit compile`: write the program object, the ABI shim, tick.c and the
 // public headers into a private temp directory, run the system C compiler on them (posix_spawnp,
-// no shell), append the integrity trailer and rename the result into place.
+// no shell), append the signed trailer and rename the result into place.
 #include "jit/AotInternal.h"
 
+#include "io/AotSigned.h"
 #include "jit/AotSources.inc" // generated: kAbiH, kProgramH, kTickC, kShimC
 #include "ladderjit/program.h"
-
-#include <llvm/ADT/ArrayRef.h>
-#include <llvm/Support/SHA256.h>
 
 #include <cerrno>
 #include <cstdlib>
@@ -98,22 +96,11 @@ bool spawnAndWait(const std::vector<std::string> &args, std::string &error) {
   return false;
 }
 
-std::string hexSha256(std::string_view bytes) {
-  auto digest = llvm::SHA256::hash(
-      llvm::ArrayRef<uint8_t>(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size()));
-  static const char *kHex = "0123456789abcdef";
-  std::string out;
-  for (uint8_t b : digest) {
-    out += kHex[b >> 4];
-    out += kHex[b & 15];
-  }
-  return out;
-}
-
 } // namespace
 
-bool linkSharedObject(std::string_view obj, const std::string &hash, uint32_t slices,
-                      const std::string &output, std::string &error) {
+bool linkSharedObject(std::string_view obj, const AotOptions &opts, uint32_t slices,
+                      std::string &error) {
+  const std::string &hash = opts.programHash, &output = opts.output;
   TempDir dir;
   if (!dir.create(error)) return false;
   const fs::path d = dir.path();
@@ -161,8 +148,14 @@ bool linkSharedObject(std::string_view obj, const std::string &hash, uint32_t sl
     error = "cannot read the linked object '" + linked.string() + "'";
     return false;
   }
-  image += LJPROG_TRAILER_MAGIC + hexSha256(image) + "\n";
-  static_assert(sizeof(LJPROG_TRAILER_MAGIC) - 1 + 64 + 1 == LJPROG_TRAILER_SIZE);
+  io::AotMeta meta;
+  meta.abi = LJPROG_ABI_VERSION;
+  meta.program = hash;
+  meta.source = opts.sourceHash.empty() ? hash : opts.sourceHash;
+  meta.plc2Nvalue = opts.plc2Nvalue;
+  meta.slices = slices;
+  meta.stateSize = sizeof(lj_state);
+  if (!io::signImage(image, meta, *opts.signingKey, error)) return false;
 
   // Atomic replace: a host never sees a half-written .so at `output`.
   std::string tmp = output + ".tmp" + std::to_string(getpid());

@@ -69,9 +69,9 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
   if (engine_ == "interp") {
     v->engine = makeInterpreterEngine(*v->prog);
   } else if (aot()) {
-    // loadAot checks integrity, ELF, ABI, state size and that `so` was built from this program
+    // loadAot checks the signer, ABI, state size, ELF and that `so` was built from this program
     // with this nvalue; a mismatch leaves the running version alone (the caller reports it).
-    v->engine = io::loadAot(so, io::programHashOf(src, nvalue), error);
+    v->engine = io::loadAot(so, io::aotExpectOf(src, nvalue), aotTrust_, error);
     if (!v->engine) {
       error = "aot: " + error;
       return nullptr;

@@ -4,6 +4,7 @@
 // the scan thread.
 #pragma once
 
+#include "io/AotTrust.h"
 #include "io/PlcDit.h"
 #include "runtime/Executive.h"
 
@@ -43,8 +44,11 @@ public:
   const std::string &engine() const { return engine_; }
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }
+  /// The keys whose .so files engine "aot" accepts (docs/aot.md "Trust"); none = refuse all.
+  void setAotTrust(io::TrustedKeys keys) { aotTrust_ = std::move(keys); }
 
 private:
+  io::TrustedKeys aotTrust_;
   std::string engine_;
   int32_t plc2Nvalue_;
   std::mutex mu_;

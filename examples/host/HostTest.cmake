@@ -3,6 +3,7 @@
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 set(ENV{LADDERJIT_CACHE} off)
+set(ENV{LADDERJIT_KEY_DIR} ${WORK}/keys) # compile's default signing key pair, not ~/.config
 
 function(run_checked out)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)

@@ -1,11 +1,13 @@
 // The .so of `ladderjit compile`: its exported symbols, its ABI, and the loader's refusal of
 // damaged, truncated, foreign and mismatched files (issue 5: "a clear error, never a crash").
+// Signer trust and attacks on it: tests/security/AotTrustTest.cpp.
 #include "tests/aot/AotTestUtil.h"
 
 #include "instructions/Engine.h"
 #include "io/AotLoader.h"
-#include "io/PlcDit.h"
+#include "io/AotSigned.h"
 #include "ladderjit/program.h"
+#include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
 #include "tests/support/StateDiff.h"
 
@@ -27,9 +29,26 @@ VerifiedProgram program() {
   return p ? *p : VerifiedProgram{};
 }
 
-/// `bytes` with a valid integrity trailer (program.h LJPROG_TRAILER_*).
-std::string withTrailer(const std::string &bytes) {
-  return bytes + LJPROG_TRAILER_MAGIC + io::sha256Hash(bytes).substr(7) + "\n";
+/// `image` with a trailer signed by the trusted test key claiming to be `prog` (so only the
+/// ELF or the exports can be wrong); `abi` = the ABI version it states.
+std::string signedAs(std::string image, const VerifiedProgram &prog,
+                     uint32_t abi = LJPROG_ABI_VERSION) {
+  io::AotMeta m;
+  m.abi = abi;
+  m.program = m.source = testHash(prog);
+  m.plc2Nvalue = prog.plc2Nvalue;
+  m.slices = static_cast<uint32_t>(prog.slices.size());
+  m.stateSize = sizeof(lj_state);
+  std::string error;
+  EXPECT_TRUE(io::signImage(image, m, testSigningKey(), error)) << error;
+  return image;
+}
+
+/// The ELF image of a built .so (the bytes before its trailer).
+std::string imageOf(const std::string &so) {
+  io::AotMeta m;
+  EXPECT_EQ(io::verifySigned(so, testTrust(), m), "");
+  return so.substr(0, m.imageSize);
 }
 
 class AotLoad : public ::testing::Test {
@@ -39,30 +58,31 @@ protected:
     so_ = dir_.path("prog.so");
     ASSERT_TRUE(buildSo(prog_, so_));
     bytes_ = readBytes(so_);
-    ASSERT_GT(bytes_.size(), size_t{LJPROG_TRAILER_SIZE});
+    ASSERT_GT(bytes_.size(), size_t{LJPROG_TRAILER_MIN});
+    image_ = imageOf(bytes_);
   }
   /// Load `bytes` as a .so; expect a refusal whose message contains `want`.
   void expectRefused(const std::string &bytes, const std::string &want, const std::string &what) {
     std::string path = dir_.path("bad.so");
     writeBytes(path, bytes);
     std::string error;
-    std::unique_ptr<Engine> e = io::loadAot(path, testHash(prog_), error);
+    std::unique_ptr<Engine> e = io::loadAot(path, {testHash(prog_)}, testTrust(), error);
     EXPECT_EQ(e, nullptr) << what;
     EXPECT_NE(error.find(want), std::string::npos) << what << ": " << error;
     EXPECT_NE(error.find(path), std::string::npos) << "the message names the file: " << error;
   }
-  /// A shared object built by the system compiler from C `source`, with a valid trailer.
-  std::string foreignSo(const std::string &source) {
+  /// A shared object built by the system compiler from C `source`, signed by the trusted key.
+  std::string foreignSo(const std::string &source, uint32_t abi = LJPROG_ABI_VERSION) {
     writeBytes(dir_.path("f.c"), source);
     int rc = 0;
     runCommand("cc -shared -fPIC -o " + dir_.path("f.so") + " " + dir_.path("f.c"), rc);
     EXPECT_EQ(rc, 0);
-    return withTrailer(readBytes(dir_.path("f.so")));
+    return signedAs(readBytes(dir_.path("f.so")), prog_, abi);
   }
 
   TempDir dir_;
   VerifiedProgram prog_;
-  std::string so_, bytes_;
+  std::string so_, bytes_, image_;
 };
 
 TEST_F(AotLoad, ExportsExactlyTheDocumentedSymbols) {
@@ -127,22 +147,35 @@ TEST_F(AotLoad, HostFunctionsTickLikeTheInterpreter) {
 
 TEST_F(AotLoad, LoadsWithItsOwnHashOnly) {
   std::string error;
-  EXPECT_NE(io::loadAot(so_, testHash(prog_), error), nullptr) << error;
+  EXPECT_NE(io::loadAot(so_, {testHash(prog_)}, testTrust(), error), nullptr) << error;
   std::string other = "sha256:" + std::string(64, '0');
-  EXPECT_EQ(io::loadAot(so_, other, error), nullptr);
+  EXPECT_EQ(io::loadAot(so_, {other}, testTrust(), error), nullptr);
   EXPECT_NE(error.find("built from another program"), std::string::npos) << error;
+}
+
+TEST_F(AotLoad, AnotherNvalueOfTheSameProgramIsNamed) {
+  // Issue 11 finding 9: the same source with another plc2 nvalue is not "another program"; the
+  // message states the .so's nvalue (2, program()) and the one asked for.
+  std::string error;
+  io::AotExpect want{"sha256:" + std::string(64, '1'), testHash(prog_), 200};
+  EXPECT_EQ(io::loadAot(so_, want, testTrust(), error), nullptr);
+  EXPECT_NE(error.find("built from this program with plc2 nvalue 2, but plc2 nvalue 200 was "
+                       "asked for"),
+            std::string::npos)
+      << error;
+  EXPECT_EQ(error.find("another program"), std::string::npos) << error;
 }
 
 TEST_F(AotLoad, RebuiltAtTheSamePathWhileTheOldOneIsLoaded) {
   // Hot reload: v2 written over v1's path while v1 still runs. Each load gets its own program
   // (2 PLC2 slices at nvalue 2, 1 at the default 200), not the object already loaded.
   std::string error;
-  std::unique_ptr<Engine> first = io::loadAot(so_, testHash(prog_), error);
+  std::unique_ptr<Engine> first = io::loadAot(so_, {testHash(prog_)}, testTrust(), error);
   ASSERT_NE(first, nullptr) << error;
   std::optional<VerifiedProgram> v2 = compileOrFail(kProgram);
   ASSERT_TRUE(v2);
   ASSERT_TRUE(buildSo(*v2, so_));
-  std::unique_ptr<Engine> second = io::loadAot(so_, testHash(*v2), error);
+  std::unique_ptr<Engine> second = io::loadAot(so_, {testHash(*v2)}, testTrust(), error);
   ASSERT_NE(second, nullptr) << error;
   EXPECT_EQ(first->entries().plc2_slice_count, 2u);
   EXPECT_EQ(second->entries().plc2_slice_count, 1u);
@@ -150,24 +183,27 @@ TEST_F(AotLoad, RebuiltAtTheSamePathWhileTheOldOneIsLoaded) {
 
 TEST_F(AotLoad, TruncatedFilesAreRefused) {
   for (size_t n : {size_t{0}, size_t{10}, size_t{64}, size_t{200}, size_t{4096}, bytes_.size() / 2,
-                   bytes_.size() - LJPROG_TRAILER_SIZE - 1, bytes_.size() - LJPROG_TRAILER_SIZE,
-                   bytes_.size() - 1})
+                   image_.size() - 1, image_.size(), image_.size() + 1,
+                   bytes_.size() - LJPROG_TRAILER_MIN, bytes_.size() - 1})
     expectRefused(bytes_.substr(0, n), "'", "truncated to " + std::to_string(n));
 }
 
 TEST_F(AotLoad, FlippedBytesAreRefused) {
-  // Every flip, in the ELF headers, code, tables or the trailer, is caught before dlopen.
+  // Every flip, in the ELF headers, code, tables or the trailer, is caught before dlopen; one in
+  // the image breaks the signature.
   const size_t step = bytes_.size() / 97 + 1;
   for (size_t pos = 0; pos < bytes_.size(); pos += step) {
     std::string bad = bytes_;
     bad[pos] = static_cast<char>(bad[pos] ^ 0x5a);
-    bool inTrailer = pos >= bytes_.size() - LJPROG_TRAILER_SIZE;
-    expectRefused(bad, inTrailer ? "'" : "damaged", "byte " + std::to_string(pos) + " flipped");
+    bool inImage = pos < image_.size();
+    expectRefused(bad, inImage ? "bad signature" : "'", "byte " + std::to_string(pos) + " flipped");
   }
 }
 
 TEST_F(AotLoad, DamagedElfWithValidTrailerIsRefusedBeforeDlopen) {
-  std::string image = bytes_.substr(0, bytes_.size() - LJPROG_TRAILER_SIZE);
+  // Signed by the trusted key (a signer's bug, not an attack): still no bad ELF reaches dlopen.
+  const std::string &image = image_;
+  auto withTrailer = [&](const std::string &img) { return signedAs(img, prog_); };
   expectRefused(withTrailer(image.substr(0, image.size() / 2)), "truncated?", "half an image");
   std::string arm = image;
   arm[18] = static_cast<char>(0xb7); // e_machine = EM_AARCH64 (183)
@@ -181,7 +217,7 @@ TEST_F(AotLoad, DamagedElfWithValidTrailerIsRefusedBeforeDlopen) {
 
 TEST_F(AotLoad, ForeignSharedObjectsAreRefused) {
   expectRefused(foreignSo("unsigned ljprog_abi_version(void) { return 1; }\n"),
-                "symbol 'ljprog_hash' missing", "only one symbol");
+                "symbol 'ljprog_entries' missing", "only one symbol");
   std::string all = "#include <stddef.h>\n"
                     "unsigned ljprog_abi_version(void) { return 99; }\n"
                     "const char *ljprog_hash(void) { return \"x\"; }\n"
@@ -191,9 +227,10 @@ TEST_F(AotLoad, ForeignSharedObjectsAreRefused) {
                     "unsigned ljprog_init(void *s) { (void)s; return 0; }\n"
                     "unsigned ljprog_tick(void *s) { (void)s; return 0; }\n"
                     "void ljprog_entries(void *e) { (void)e; }\n";
-  expectRefused(foreignSo(all), "program ABI version 99", "ABI version 99");
-  expectRefused(bytes_.substr(0, bytes_.size() - LJPROG_TRAILER_SIZE), "no ladderjit integrity",
-                "trailer stripped");
+  // The ABI version comes from the signed trailer; the .so's function (99) is never called.
+  expectRefused(foreignSo(all, 2), "program ABI version 2, this ladderjit loads 3",
+                "trailer states ABI version 2");
+  expectRefused(image_, "no ladderjit signature", "trailer stripped");
 }
 
 } // namespace

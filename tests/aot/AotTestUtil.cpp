@@ -3,6 +3,7 @@
 
 #include "jit/Aot.h"
 #include "jit/ObjectCache.h"
+#include "tests/support/EngineRegistry.h"
 
 #include <gtest/gtest.h>
 
@@ -37,10 +38,17 @@ bool buildSo(const VerifiedProgram &prog, const std::string &soPath) {
   jit::AotOptions o;
   o.output = soPath;
   o.programHash = testHash(prog);
+  o.plc2Nvalue = prog.plc2Nvalue;
+  o.signingKey = &testSigningKey();
   std::string error;
   bool ok = jit::compileSharedObject(prog, o, error);
   EXPECT_TRUE(ok) << error;
   return ok;
+}
+
+std::string cli() {
+  static TempDir keys; // this test process's default key pair, never the real ~/.config
+  return "LADDERJIT_CACHE=off LADDERJIT_KEY_DIR=" + keys.path("keys") + " " + LADDERJIT_BINARY;
 }
 
 std::string runCommand(const std::string &cmd, int &exitCode) {

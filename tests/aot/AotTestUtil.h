@@ -24,8 +24,13 @@ private:
 /// The hash the tests give a .so built from `prog` (the registry's AOT engine uses the same).
 std::string testHash(const VerifiedProgram &prog);
 
-/// Build `prog` into `soPath` with `ladderjit compile`'s code path; records a failure if it fails.
+/// Build `prog` into `soPath` with `ladderjit compile`'s code path, signed by the test key
+/// (tests/support/EngineRegistry.h); records a failure if it fails.
 bool buildSo(const VerifiedProgram &prog, const std::string &soPath);
+
+/// `ladderjit` with the object cache off and LADDERJIT_KEY_DIR in a temp directory of this
+/// process (its default key pair is made by the first `compile`).
+std::string cli();
 
 /// Run a command through the shell and return its stdout; `exitCode` gets its exit status.
 std::string runCommand(const std::string &cmd, int &exitCode);

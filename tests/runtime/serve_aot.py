@@ -32,6 +32,8 @@ def compile_so(stl, so):
 
 def main():
     tmp = tempfile.mkdtemp(prefix="ljserveaot-")
+    # compile's default signing key pair, trusted by serve (docs/aot.md "Trust"): never ~/.config
+    os.environ["LADDERJIT_KEY_DIR"] = os.path.join(tmp, "keys")
     p = os.path.join(tmp, "p.stl")
     v2 = os.path.join(tmp, "v2.stl")
     write(p, version(7))
@@ -42,7 +44,7 @@ def main():
     damaged = os.path.join(tmp, "damaged.so")
     with open(v2_so, "rb") as f:
         data = bytearray(f.read())
-    data[len(data) // 2] ^= 0xFF  # one flipped byte: the integrity trailer no longer matches
+    data[len(data) // 2] ^= 0xFF  # one flipped byte: the signature no longer matches
     with open(damaged, "wb") as f:
         f.write(data)
     sock = os.path.join(tmp, "c.sock")

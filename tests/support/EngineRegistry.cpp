@@ -2,6 +2,7 @@
 #include "tests/support/EngineRegistry.h"
 
 #include "io/AotLoader.h"
+#include "io/AotTrust.h"
 #include "jit/Aot.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"
@@ -24,13 +25,33 @@ std::unique_ptr<Engine> makeAotEngine(const VerifiedProgram &p, std::string &err
   o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-test-" +
              std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
   o.programHash = "sha256:" + jit::programDigest(p);
+  o.signingKey = &testSigningKey();
   if (!jit::compileSharedObject(p, o, error)) return nullptr;
-  std::unique_ptr<Engine> e = io::loadAot(o.output, o.programHash, error);
+  std::unique_ptr<Engine> e = io::loadAot(o.output, {o.programHash}, testTrust(), error);
   std::remove(o.output.c_str());
   return e;
 }
 
 } // namespace
+
+const io::SigningKey &testSigningKey() {
+  static const io::SigningKey key = [] {
+    io::SigningKey k;
+    std::string error;
+    if (!k.generate(error)) std::abort(); // OpenSSL without Ed25519: nothing can be signed
+    return k;
+  }();
+  return key;
+}
+
+const io::TrustedKeys &testTrust() {
+  static const io::TrustedKeys trust = [] {
+    io::TrustedKeys t;
+    t.addRaw(testSigningKey().publicRaw());
+    return t;
+  }();
+  return trust;
+}
 
 const std::vector<EngineFactory> &registeredEngines() {
   static const std::vector<EngineFactory> kEngines = {

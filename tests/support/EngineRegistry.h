@@ -10,6 +10,11 @@
 #include <string>
 #include <vector>
 
+namespace lj::io {
+class SigningKey;
+class TrustedKeys;
+} // namespace lj::io
+
 namespace lj::test {
 
 /// Builds one engine for a verified program (which outlives the engine). Returns null and sets
@@ -26,6 +31,11 @@ struct EngineFactory {
 /// Every registered engine, the reference interpreter first. To add an engine, add ONE line to
 /// the list in EngineRegistry.cpp (and link its library in tests/support/CMakeLists.txt).
 const std::vector<EngineFactory> &registeredEngines();
+
+/// The key pair of the "aot" engine: an in-memory Ed25519 key made once per test process, and
+/// the trust set holding only its public key (docs/aot.md "Trust").
+const io::SigningKey &testSigningKey();
+const io::TrustedKeys &testTrust();
 
 /// GoogleTest prints parameters with this.
 inline std::ostream &operator<<(std::ostream &os, const EngineFactory &f) { return os << f.name; }

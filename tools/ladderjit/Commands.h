@@ -57,6 +57,7 @@ struct RunArgs {
   std::string format = "csv";          ///< csv | jsonl
   std::string dump;                    ///< file ("-" = stdout), empty = none
   std::string params;                  ///< file, empty = none
+  std::vector<std::string> trustKeys;  ///< --trust-key public keys, empty = the default key
 };
 int runRun(const RunArgs &a);
 
@@ -85,14 +86,23 @@ struct CompileArgs {
   std::string cpu = "host"; ///< host | generic
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line (beats a plc.dit)
+  std::string signKey;          ///< --sign-key private key, empty = the default key pair
 };
 /// `ladderjit compile`: build PROGRAM into a shared object with the C ABI (docs/aot.md).
 int runCompile(const CompileArgs &a);
 
-/// `--engine aot:PATH`: load the .so and check it was built from `src` with `plc2Nvalue`. Null
-/// with `error` set on any problem (docs/aot.md "Loading").
+/// `--engine aot:PATH`: load the .so if a key of `trustKeys` (--trust-key; none = the default
+/// public key) signed it and it was built from `src` with `plc2Nvalue`. Null with `error` set on
+/// any problem (docs/aot.md "Loading", "Trust").
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
-                                      int32_t plc2Nvalue, std::string &error);
+                                      int32_t plc2Nvalue, const std::vector<std::string> &trustKeys,
+                                      std::string &error);
+
+struct KeygenArgs {
+  std::string output; ///< DIR/NAME: writes NAME.key (private, 0600) and NAME.pub
+};
+/// `ladderjit keygen`: a new Ed25519 key pair for signing AOT .so files (docs/aot.md "Trust").
+int runKeygen(const KeygenArgs &a);
 
 struct FuzzArgs {
   uint64_t seed = 1;
@@ -109,20 +119,21 @@ struct ServeArgs {
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;
   uint64_t maxBackwardSteps = 1000000;
-  std::string modbus;             ///< [HOST:]PORT, empty = no Modbus server
-  std::string retain;             ///< retentive store file, empty = none
-  bool retainForce = false;       ///< --retain-force: a file of another layout -> zeros
-  uint32_t retainPeriodMs = 100;  ///< minimum gap between periodic retain saves
-  bool modbusWriteInputs = false; ///< Modbus may write X and F (simulation only)
-  std::string params;             ///< P values file
-  std::vector<std::string> sets;  ///< ADDR=VALUE at power-up
-  uint64_t duration = 0;          ///< seconds, 0 = until SIGINT/SIGTERM or `monitor stop`
-  std::string stats;              ///< JSON statistics file at exit
-  std::string control;            ///< control socket path, empty = /tmp/ladderjit-<pid>.sock
-  std::string shm;                ///< shared-memory image name, empty = none
-  std::string io = "simnc";       ///< simnc | shm: who writes F
-  int rtPriority = -1;            ///< SCHED_FIFO priority, -1 = none
-  int cpu = -1;                   ///< CPU to pin the scan thread to, -1 = none
+  std::string modbus;                 ///< [HOST:]PORT, empty = no Modbus server
+  std::string retain;                 ///< retentive store file, empty = none
+  bool retainForce = false;           ///< --retain-force: a file of another layout -> zeros
+  uint32_t retainPeriodMs = 100;      ///< minimum gap between periodic retain saves
+  bool modbusWriteInputs = false;     ///< Modbus may write X and F (simulation only)
+  std::string params;                 ///< P values file
+  std::vector<std::string> sets;      ///< ADDR=VALUE at power-up
+  uint64_t duration = 0;              ///< seconds, 0 = until SIGINT/SIGTERM or `monitor stop`
+  std::string stats;                  ///< JSON statistics file at exit
+  std::string control;                ///< control socket path, empty = /tmp/ladderjit-<pid>.sock
+  std::string shm;                    ///< shared-memory image name, empty = none
+  std::string io = "simnc";           ///< simnc | shm: who writes F
+  int rtPriority = -1;                ///< SCHED_FIFO priority, -1 = none
+  int cpu = -1;                       ///< CPU to pin the scan thread to, -1 = none
+  std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
 };
 /// `ladderjit serve`: the real-time runtime (docs/serve.md).
 int runServe(const ServeArgs &a);

@@ -76,6 +76,9 @@ int mainImpl(int argc, char **argv) {
   lastWins(
       cRun->add_option("--dump", run.dump, "write the final state as JSON to FILE ('-' = stdout)"));
   lastWins(cRun->add_option("--params", run.params, "P values, 'P12=345' per line"));
+  repeatable(cRun, "--trust-key", run.trustKeys,
+             "public key whose aot .so files are accepted; repeatable (default: the default "
+             "key pair's, docs/aot.md)");
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
@@ -120,6 +123,15 @@ int mainImpl(int argc, char **argv) {
                    ->add_option("--plc2-nvalue", comp.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
                    ->check(kUnsigned));
+  lastWins(cCompile->add_option("--sign-key", comp.signKey,
+                                "private key to sign with (default: the default key pair, created "
+                                "on first use; docs/aot.md)"));
+
+  KeygenArgs keygen;
+  CLI::App *cKeygen = app.add_subcommand("keygen", "new key pair to sign AOT shared objects");
+  lastWins(cKeygen->add_option("-o,--output", keygen.output,
+                               "DIR/NAME: writes NAME.key (private) and NAME.pub"))
+      ->required();
 
   ServeArgs serve;
   CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (docs/serve.md)");
@@ -165,6 +177,9 @@ int mainImpl(int argc, char **argv) {
                ->check(CLI::Range(1, 99)));
   lastWins(cServe->add_option("--cpu", serve.cpu, "pin the scan thread to this CPU")
                ->check(CLI::Range(0, 1023)));
+  repeatable(cServe, "--trust-key", serve.trustKeys,
+             "public key whose aot .so files are accepted; repeatable (default: the default "
+             "key pair's, docs/aot.md)");
 
   MonitorArgs mon;
   CLI::App *cMonitor = app.add_subcommand("monitor", "talk to a running serve: read, write, "
@@ -197,6 +212,7 @@ int mainImpl(int argc, char **argv) {
   if (cEmit->parsed()) return runEmitLlvm(emit);
   if (cFuzz->parsed()) return runFuzz(fz);
   if (cCompile->parsed()) return runCompile(comp);
+  if (cKeygen->parsed()) return runKeygen(keygen);
   if (cServe->parsed()) {
     serve.periodMsGiven = servePeriod->count() > 0;
     serve.plc2NvalueGiven = serveNvalue->count() > 0;

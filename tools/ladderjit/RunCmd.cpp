@@ -191,7 +191,7 @@ int runRun(const RunArgs &a) {
                       "use --engine interp");
 #endif
   } else {
-    engine = loadAotEngine(a.engine.substr(4), src, nvalue, error);
+    engine = loadAotEngine(a.engine.substr(4), src, nvalue, a.trustKeys, error);
     if (!engine) return usageError("--engine aot: " + error);
   }
 

@@ -161,6 +161,11 @@ int runServe(const ServeArgs &a) {
 
   // ---- the program ----
   rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1);
+  if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)
+    io::TrustedKeys trust;
+    if (!io::loadTrustedKeys(a.trustKeys, trust, error)) return usageError("--trust-key: " + error);
+    loader.setAotTrust(std::move(trust));
+  }
   std::optional<io::DitFile> dit;
   std::shared_ptr<rt::ProgramVersion> first = loader.load(a.program, {}, error, &dit, so);
   if (!first) {

@@ -1,7 +1,7 @@
-/* ladderjit AOT program ABI v1: the C functions a shared object built by `ladderjit compile`
- * exports (docs/aot.md). A host dlopens the .so, checks ljprog_abi_version() and ljprog_hash(),
- * allocates an lj_state (abi.h) and drives it with ljprog_init / ljprog_tick, or with the raw
- * entry table from ljprog_entries and its own scheduler.
+/* ladderjit AOT program ABI v3: the C functions a shared object built by `ladderjit compile`
+ * exports (docs/aot.md). A host verifies the signed trailer (below) first, dlopens the verified
+ * bytes, allocates an lj_state (abi.h) and drives it with ljprog_init / ljprog_tick, or with the
+ * raw entry table from ljprog_entries and its own scheduler.
  *
  * These are the only dynamic symbols of the .so, all at symbol version LJPROG_1. Everything
  * else (the compiled scan code, the tick driver) is internal. Plain C, no LLVM needed. */
@@ -15,8 +15,9 @@ extern "C" {
 #endif
 
 /* Version of this interface AND of the lj_state layout it was built against (LJ_ABI_VERSION).
- * Any incompatible change to program.h or to abi.h's layout bumps it. */
-#define LJPROG_ABI_VERSION 2u
+ * Any incompatible change to program.h, to abi.h's layout or to the trailer bumps it (3: the
+ * signed trailer replaced the unkeyed checksum). */
+#define LJPROG_ABI_VERSION 3u
 
 /* The symbol version node every export carries (GNU symbol versioning). */
 #define LJPROG_SYMBOL_VERSION "LJPROG_1"
@@ -24,12 +25,21 @@ extern "C" {
 /* Length of the string ljprog_hash() returns: "sha256:" + 64 lowercase hex digits. */
 #define LJPROG_HASH_LEN 71
 
-/* Integrity trailer `ladderjit compile` appends after the ELF image (the dynamic loader ignores
- * it): LJPROG_TRAILER_MAGIC, 64 lowercase hex digits of SHA-256 over every byte before the
- * trailer, then "\n". ladderjit's loader refuses a .so whose trailer is missing or wrong before
- * it calls dlopen, so a damaged file is an error, never a crash in the dynamic loader. */
-#define LJPROG_TRAILER_MAGIC "LJPROG1-SHA256:"
-#define LJPROG_TRAILER_SIZE 80 /* 15 + 64 + 1 */
+/* Signed trailer `ladderjit compile` appends after the ELF image (the dynamic loader ignores
+ * it; docs/aot.md "Trust"). The file is IMAGE | META | FOOTER | SIGNATURE:
+ *   META       text lines, LJPROG_META_MAGIC then `key = value` lines (abi, program, source,
+ *              plc2_nvalue, slices, state_size, image_size, key), at most LJPROG_META_MAX bytes;
+ *   FOOTER     LJPROG_FOOTER_MAGIC, 8 lowercase hex digits = the length of META, "\n";
+ *   SIGNATURE  Ed25519 (64 bytes) over every byte before it (IMAGE | META | FOOTER), by the key
+ *              META names.
+ * A loader verifies the signature with a key it trusts BEFORE any byte is mapped, and takes the
+ * program hash, ABI version and nvalue from META, never from the .so's functions. */
+#define LJPROG_META_MAGIC "ladderjit-aot-meta 3\n"
+#define LJPROG_META_MAX 4096
+#define LJPROG_FOOTER_MAGIC "LJPROG3-ED25519 "
+#define LJPROG_FOOTER_SIZE 25 /* 16 + 8 + 1 */
+#define LJPROG_SIG_SIZE 64
+#define LJPROG_TRAILER_MIN (LJPROG_FOOTER_SIZE + LJPROG_SIG_SIZE)
 
 #if defined(__GNUC__)
 #define LJPROG_EXPORT __attribute__((visibility("default")))
