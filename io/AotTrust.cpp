@@ -73,7 +73,7 @@ bool readKeyFile(const std::string &path, bool secret, std::string &out, std::st
     }
   }
   close(fd);
-  return ok && error.empty();
+  return ok;
 }
 
 /// The directory holding the default keys must belong to this user and be closed to others.
