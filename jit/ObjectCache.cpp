@@ -7,8 +7,10 @@
 #include <llvm/Config/llvm-config.h>
 #include <llvm/Support/SHA256.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -77,11 +79,40 @@ const std::string &buildIdentity() {
   return id;
 }
 
-bool readFile(const std::string &path, std::string &out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return !in.bad();
+/// Cached objects are code this process will run: only a directory and entries of this user
+/// that nobody else can write are used (else another user could plant an entry).
+bool privateToUser(const struct stat &st) {
+  return st.st_uid == geteuid() && (st.st_mode & 022) == 0;
+}
+
+bool privateDir(const std::string &dir) {
+  struct stat st {};
+  return stat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && privateToUser(st);
+}
+
+enum class Entry { Missing, Refused, Read };
+
+/// Read an entry: a regular file (no symlink) of this user, not writable by others, in a
+/// private directory.
+Entry readEntry(const std::string &dir, const std::string &path, std::string &out) {
+  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+  if (fd < 0) return errno == ENOENT ? Entry::Missing : Entry::Refused;
+  struct stat st {};
+  bool ok = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && privateToUser(st) &&
+            st.st_size <= (off_t{1} << 30) && privateDir(dir);
+  if (ok) {
+    out.resize(static_cast<size_t>(st.st_size));
+    size_t got = 0;
+    while (got < out.size()) {
+      ssize_t n = read(fd, out.data() + got, out.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<size_t>(n);
+    }
+    ok = got == out.size();
+  }
+  close(fd);
+  return ok ? Entry::Read : Entry::Refused;
 }
 
 /// Parse a disk entry; false unless it is complete, intact and for `key`.
@@ -211,8 +242,9 @@ bool ObjectCache::lookup(const std::string &key, std::vector<std::string> &objec
     }
   }
   std::string file;
-  bool found = !dir_.empty() && readFile(pathFor(key), file);
-  bool ok = found && decode(file, key, objects);
+  Entry entry = dir_.empty() ? Entry::Missing : readEntry(dir_, pathFor(key), file);
+  bool found = entry != Entry::Missing;
+  bool ok = entry == Entry::Read && decode(file, key, objects);
   std::lock_guard<std::mutex> lock(mu_);
   if (found && !ok) ++stats_.rejected;
   if (!ok) {
@@ -248,12 +280,15 @@ void ObjectCache::store(const std::string &key, const std::vector<std::string_vi
     // Objects are code this process will run: a directory we create is private to the user.
     if (fs::create_directories(dir_, ec))
       fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::replace, ec);
+    written = privateDir(dir_); // never feed a directory others can write
     std::string tmp = dir_ + "/." + key + "." + std::to_string(getpid()) + "." +
                       std::to_string(std::random_device{}()) + ".tmp";
-    {
+    if (written) {
       std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
       written =
           out && out.write(file.data(), static_cast<std::streamsize>(file.size())) && out.flush();
+      fs::permissions(tmp, fs::perms::owner_read | fs::perms::owner_write,
+                      fs::perm_options::replace, ec); // whatever the umask
     }
     if (!written || std::rename(tmp.c_str(), pathFor(key).c_str()) != 0) {
       written = false;

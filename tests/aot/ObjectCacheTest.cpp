@@ -153,6 +153,37 @@ TEST_F(ObjectCacheTest, DamagedEntryIsIgnoredAndRewritten) {
   EXPECT_EQ(again->stats().hits, 0u);
 }
 
+TEST_F(ObjectCacheTest, EntriesOthersCouldHavePlantedAreNotRun) {
+  // Issue 11 (planted code): cached objects are code. An intact entry is refused when another
+  // user could have written it: the entry writable by others, the directory writable by others,
+  // or the entry a symlink. Refused entries are counted and nothing is written there.
+  compile(prog_, std::make_shared<jit::ObjectCache>(dir_.dir()));
+  const std::string file = onlyFile();
+  namespace fs = std::filesystem;
+  auto hitsWith = [&](const std::string &dir) {
+    auto c = std::make_shared<jit::ObjectCache>(dir);
+    EXPECT_TRUE(compile(prog_, c));
+    return c->stats();
+  };
+  EXPECT_EQ(hitsWith(dir_.dir()).diskHits, 1u) << "the genuine private entry is used";
+  fs::permissions(file, fs::perms::others_write, fs::perm_options::add);
+  jit::ObjectCache::Stats st = hitsWith(dir_.dir());
+  EXPECT_EQ(st.hits, 0u);
+  EXPECT_EQ(st.rejected, 1u);
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  fs::permissions(dir_.dir(), fs::perms::all, fs::perm_options::replace); // 0777
+  st = hitsWith(dir_.dir());
+  EXPECT_EQ(st.hits, 0u);
+  EXPECT_EQ(st.rejected, 1u);
+  EXPECT_EQ(st.writeErrors, 1u) << "no entry is written into a directory others can write";
+  fs::permissions(dir_.dir(), fs::perms::owner_all, fs::perm_options::replace);
+  TempDir other;
+  fs::create_symlink(file, other.path(fs::path(file).filename().string()));
+  st = hitsWith(other.dir());
+  EXPECT_EQ(st.hits, 0u);
+  EXPECT_EQ(st.rejected, 1u);
+}
+
 TEST(ObjectCacheEnv, OffDisablesAndDirOverrides) {
   ::setenv("LADDERJIT_CACHE", "off", 1);
   EXPECT_EQ(jit::ObjectCache::fromEnvironment(), nullptr);
