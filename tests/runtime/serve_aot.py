@@ -48,10 +48,20 @@ def main():
     with open(damaged, "wb") as f:
         f.write(data)
     sock = os.path.join(tmp, "c.sock")
+    # A .so of the right program signed by a key serve does not trust (docs/aot.md "Trust").
+    other = os.path.join(tmp, "other")
+    rc, _, err = run("keygen", "-o", other)
+    check(rc == 0, "keygen: " + err)
+    untrusted_so = os.path.join(tmp, "untrusted.so")
+    rc, _, err = run("compile", v2, "-o", untrusted_so, "--sign-key", other + ".key")
+    check(rc == 0, "compile --sign-key: " + err)
 
     # Start-up problems are usage errors (exit 2) before anything runs.
     rc, _, err = run("serve", p, "--engine", "aot:" + v2_so, "--duration", "1")
     check(rc == 2 and "another program" in err, "a .so of another program is refused: " + err)
+    rc, _, err = run("serve", p, "--engine", "aot:" + p_so, "--trust-key", other + ".pub",
+                     "--duration", "1")
+    check(rc == 2 and "not a trusted key" in err, "a .so of an untrusted signer is refused: " + err)
     rc, _, err = run("serve", p, "--engine", "aot:", "--duration", "1")
     check(rc == 2 and "needs a path" in err, "--engine aot: without a path: " + err)
     rc, _, err = run("serve", p, "--engine", "aot:" + os.path.join(tmp, "none.so"))
@@ -77,7 +87,9 @@ def main():
     rc, _, err = monitor(sock, "load", v2, p_so)
     check(rc == 2 and "another program" in err, "a .so of another program is refused: " + err)
     rc, _, err = monitor(sock, "load", v2, damaged)
-    check(rc == 2 and "damaged" in err, "a damaged .so is refused: " + err)
+    check(rc == 2 and "bad signature" in err, "a damaged .so is refused: " + err)
+    rc, _, err = monitor(sock, "load", v2, untrusted_so)
+    check(rc == 2 and "not a trusted key" in err, "monitor load of an untrusted .so: " + err)
     check(read(sock, "D10") == 7, "the old program keeps running (D10 = 7)")
 
     rc, out, err = monitor(sock, "load", v2, v2_so)
