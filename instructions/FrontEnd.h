@@ -5,6 +5,7 @@
 #include "instructions/Program.h"
 #include "instructions/Symbols.h"
 
+#include <climits>
 #include <optional>
 #include <string_view>
 
@@ -24,8 +25,10 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
 /// parseStl with symbols (docs/plc-dit.md "Symbols"): an operand token shaped like a name
 /// (SymbolTable::isNameShaped) is replaced by its symbol's address, then checked like that
 /// address; an unknown name is the error "unknown symbol 'NAME'". `symbols` may be null.
+/// Parsing stops with an error at statement `maxStatements` + 1, after 100 errors, and when the
+/// first 3 non-empty lines start with no mnemonic (not a program).
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags,
-                       const SymbolTable *symbols);
+                       const SymbolTable *symbols, int32_t maxStatements = INT32_MAX);
 
 /// Check every rule of DIALECT.md 6 and compute stack depths, scopes, jump/call targets, state
 /// slots and PLC2 slices. Returns nothing when an error was reported.

@@ -3,8 +3,12 @@
 // bad lines become located diagnostics and are dropped, parsing always continues.
 #include "instructions/FrontEnd.h"
 
+#include <algorithm>
+#include <climits>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lj {
 
@@ -346,14 +350,22 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
 std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
                                                const VerifyOptions &opts, Diagnostics &diags,
                                                const SymbolTable *symbols) {
-  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols);
+  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols, opts.maxStatements);
+  // A program cut short at the statement limit is not verified (its end would look missing).
+  if (parsed.stmts.size() > static_cast<size_t>(std::max(opts.maxStatements, 0)))
+    return std::nullopt;
   std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
   if (diags.hasErrors()) return std::nullopt;
   return prog;
 }
 
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags,
-                       const SymbolTable *symbols) {
+                       const SymbolTable *symbols, int32_t maxStatements) {
+  // Bounds (issue 11 item 4): parsing stops at the statement limit, after kMaxErrors errors,
+  // and after kNotStlLines lines that start with no mnemonic before any that does, so a file
+  // that is not a program costs little and its lines are not echoed back one by one.
+  constexpr int kMaxErrors = 100;
+  constexpr int kNotStlLines = 3;
   ParsedProgram prog;
   prog.file = std::move(file);
   // A UTF-8 byte-order mark from a Windows editor is not part of the first statement.
@@ -361,6 +373,9 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
   std::vector<Token> toks;
   int32_t line = 0;
   size_t pos = 0;
+  std::vector<std::pair<int32_t, Token>> leading; // lines before the first mnemonic
+  bool sawMnemonic = false;
+  const size_t limit = static_cast<size_t>(std::max(maxStatements, 0));
   while (pos < text.size()) {
     size_t nl = text.find('\n', pos);
     if (nl == std::string_view::npos) nl = text.size();
@@ -368,14 +383,43 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     tokenize(text.substr(pos, nl - pos), toks);
     pos = nl + 1;
     if (toks.empty()) continue;
+    Op known;
+    bool mnemonic = lookupMnemonic(toks[0].text, known);
+    if (!sawMnemonic && !mnemonic) {
+      // Held back until a line starts with a mnemonic: a file that is no program at all gets
+      // one error, and none of its lines is echoed.
+      leading.push_back({line, toks[0]});
+      if (static_cast<int>(leading.size()) < kNotStlLines) continue;
+      diags.error({leading[0].first, 1},
+                  "not an STL program: none of its first " + std::to_string(kNotStlLines) +
+                      " lines starts with an instruction; the rest is not read");
+      leading.clear();
+      break;
+    }
+    if (!sawMnemonic) {
+      sawMnemonic = true;
+      for (const auto &[l, t] : leading)
+        diags.error({l, t.col}, "unknown mnemonic " + quote(t.text));
+      leading.clear();
+    }
     Stmt stmt;
     LineParser lp(diags, line, symbols);
-    Op known;
     if (lp.parse(toks, stmt))
       prog.stmts.push_back(stmt);
-    else if (lookupMnemonic(toks[0].text, known))
+    else if (mnemonic)
       prog.dropped.push_back({static_cast<int32_t>(prog.stmts.size()), known});
+    if (prog.stmts.size() > limit) {
+      diags.error(prog.stmts.back().loc, "program has more than " + std::to_string(limit) +
+                                             " statements, the limit; the rest is not read");
+      break;
+    }
+    if (diags.errorCount() >= kMaxErrors) {
+      diags.error({line, 1},
+                  "too many errors (" + std::to_string(kMaxErrors) + "); the rest is not checked");
+      break;
+    }
   }
+  for (const auto &[l, t] : leading) diags.error({l, t.col}, "unknown mnemonic " + quote(t.text));
   return prog;
 }
 

@@ -1,11 +1,13 @@
 // Stimulus and parameter file parsers: line-oriented, located errors, no exceptions.
 #include "io/InputFiles.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace lj::io {
 
@@ -143,24 +145,53 @@ std::optional<std::vector<Assignment>> parseParams(std::string_view text, const 
   return params;
 }
 
-bool readFile(const std::string &path, std::string &out, std::string &error) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    error = "cannot read '" + path + "': is a directory";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+bool readFile(const std::string &path, std::string &out, std::string &error, size_t maxBytes) {
+  // O_NONBLOCK: opening a FIFO never waits for a writer (it is refused right below).
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
     error = "cannot read '" + path + "': " + std::strerror(errno);
     return false;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) {
-    error = "cannot read '" + path + "': read error";
+  struct stat st;
+  if (::fstat(fd, &st) != 0) {
+    error = "cannot read '" + path + "': " + std::strerror(errno);
+    ::close(fd);
     return false;
   }
-  out = ss.str();
+  if (!S_ISREG(st.st_mode)) {
+    error = "cannot read '" + path +
+            "': " + (S_ISDIR(st.st_mode) ? std::string("is a directory") : "not a regular file");
+    ::close(fd);
+    return false;
+  }
+  if (static_cast<uint64_t>(st.st_size) > maxBytes) {
+    error = "cannot read '" + path + "': " + std::to_string(st.st_size) +
+            " bytes, more than the limit of " + std::to_string(maxBytes);
+    ::close(fd);
+    return false;
+  }
+  // Read at most maxBytes + 1 whatever st_size says (files in /proc report 0 and grow).
+  std::string text;
+  char chunk[65536];
+  while (text.size() <= maxBytes) {
+    size_t want = std::min(sizeof chunk, maxBytes + 1 - text.size());
+    ssize_t n = ::read(fd, chunk, want);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      error = "cannot read '" + path + "': " + std::strerror(errno);
+      ::close(fd);
+      return false;
+    }
+    if (n == 0) break;
+    text.append(chunk, static_cast<size_t>(n));
+  }
+  ::close(fd);
+  if (text.size() > maxBytes) {
+    error =
+        "cannot read '" + path + "': more than the limit of " + std::to_string(maxBytes) + " bytes";
+    return false;
+  }
+  out = std::move(text);
   return true;
 }
 

@@ -41,8 +41,15 @@ std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &
 std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
                                                    std::string &error);
 
+/// Size limit of every file a user hands to ladderjit (PROGRAM, plc.dit, stimulus, params,
+/// symbols): a 10,000-statement program is about 1 MiB.
+inline constexpr size_t kMaxInputFileBytes = size_t{16} << 20;
+
 /// Read a whole file into `out`; false (with `error` naming the file and the reason) if it
-/// cannot be read.
-bool readFile(const std::string &path, std::string &out, std::string &error);
+/// cannot be read. The one bounded reader of every input: regular files only (a FIFO or device
+/// is refused without blocking), at most `maxBytes` (never more is read, whatever the file
+/// claims), read errors reported (/proc/self/mem is an error, not an empty file).
+bool readFile(const std::string &path, std::string &out, std::string &error,
+              size_t maxBytes = kMaxInputFileBytes);
 
 } // namespace lj::io

@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <openssl/evp.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -133,6 +135,52 @@ RetainStore::~RetainStore() {
   }
   writerCv_.notify_all();
   if (writer_.joinable()) writer_.join();
+  if (lockFd_ >= 0) ::close(lockFd_);
+}
+
+bool RetainStore::prepare(std::string &error) {
+  const std::string dir = dirOf(cfg_.path);
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+    error = "the directory '" + dir + "' of " + cfg_.path + " does not exist";
+    return false;
+  }
+  for (const std::string &p : {cfg_.path, cfg_.path + ".prev"}) {
+    if (::lstat(p.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+      error = p + " is not a regular file (" +
+              (S_ISLNK(st.st_mode)    ? "a symbolic link"
+               : S_ISFIFO(st.st_mode) ? "a FIFO"
+               : S_ISDIR(st.st_mode)  ? "a directory"
+                                      : "a device or socket") +
+              "); the retain file must be one";
+      return false;
+    }
+  }
+  const std::string lock = cfg_.path + ".lock";
+  int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0600);
+  if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    error =
+        fd < 0 ? errnoText("cannot create the lock file", lock) : lock + " is not a regular file";
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    error = cfg_.path + " is in use by another process (" + lock +
+            " is locked): two servers must not share a retain file";
+    ::close(fd);
+    return false;
+  }
+  lockFd_ = fd;
+  // Temp files of a save that a crash interrupted (FILE.tmp.XXXXXX, ours: we hold the lock).
+  const std::string base = cfg_.path.substr(cfg_.path.rfind('/') + 1) + ".tmp.";
+  std::error_code ec;
+  for (const auto &e : std::filesystem::directory_iterator(dir, ec)) {
+    std::string name = e.path().filename().string();
+    if (name.size() == base.size() + 6 && name.compare(0, base.size(), base) == 0 &&
+        e.is_regular_file(ec) && !e.is_symlink(ec))
+      ::unlink(e.path().c_str());
+  }
+  return true;
 }
 
 void RetainStore::logLine(const std::string &line) const {
@@ -145,11 +193,18 @@ void RetainStore::logLine(const std::string &line) const {
 RetainStore::ReadResult RetainStore::readFile(const std::string &path, RetainImage &out,
                                               uint64_t &saveSeq, std::string &savedHash,
                                               std::string &error) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: a FIFO in the file's place never blocks the start (it is refused below).
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) {
     bool missing = errno == ENOENT;
     error = errnoText("cannot open", path);
     return missing ? ReadResult::Missing : ReadResult::Corrupt;
+  }
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    error = path + ": not a regular file";
+    ::close(fd);
+    return ReadResult::Corrupt;
   }
   // Read at most one byte more than a valid file so trailing garbage is detected.
   const size_t want = sizeof(FileHeader) + kPayloadBytes + kDigestBytes;
@@ -411,9 +466,12 @@ bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
   auto digest = sha256(buf.data(), static_cast<size_t>(p - buf.data()));
   std::memcpy(p, digest.data(), kDigestBytes);
 
-  const std::string tmp = cfg_.path + ".tmp";
+  // A new file with a random name (O_CREAT | O_EXCL, mode 0600): a symlink or file planted
+  // under any predictable name is never followed or written.
+  std::string tmpl = cfg_.path + ".tmp.XXXXXX";
   const std::string prev = cfg_.path + ".prev";
-  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  int fd = ::mkostemp(tmpl.data(), O_CLOEXEC);
+  const std::string tmp = tmpl;
   if (fd < 0) {
     error = errnoText("cannot create", tmp);
     return false;
@@ -432,11 +490,13 @@ bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
     ::unlink(link.c_str());
     if (::link(cfg_.path.c_str(), link.c_str()) != 0 || ::rename(link.c_str(), prev.c_str()) != 0) {
       error = errnoText("cannot keep the previous copy as", prev);
+      ::unlink(tmp.c_str());
       return false;
     }
   }
   if (::rename(tmp.c_str(), cfg_.path.c_str()) != 0) {
     error = errnoText("cannot rename into", cfg_.path);
+    ::unlink(tmp.c_str());
     return false;
   }
   // The renames are durable only once the directory is synced; acknowledge after that.

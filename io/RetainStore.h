@@ -77,6 +77,12 @@ public:
   RetainStore(const RetainStore &) = delete;
   RetainStore &operator=(const RetainStore &) = delete;
 
+  /// Before restore() in a server: check the location and hold the store for this process.
+  /// False (with `error`) when the directory is missing, FILE or FILE.prev exists and is not a
+  /// regular file (a FIFO, a symlink, a device), or another process holds FILE.lock (an
+  /// exclusive flock kept until the store is destroyed). Removes temp files a crash left.
+  bool prepare(std::string &error);
+
   /// Load the retained fields into `s` (call after lj_state_reset, before init). Timers are
   /// rebased to `nowMs` so a retained timer keeps the age it had at the save (docs/retain.md).
   /// Falls back to FILE.prev, then to zeros, logging why.
@@ -140,6 +146,7 @@ private:
   uint64_t saveSeq_ = 0;   // save number of the newest file on disk
   bool mainIsGood_ = true; // false: do not rotate the current FILE into FILE.prev
   std::thread writer_;
+  int lockFd_ = -1; // FILE.lock, flocked by prepare()
 };
 
 } // namespace lj::io

@@ -2,9 +2,16 @@
 // "ok" and either the result or "error" (docs/serve.md "Control").
 #include "runtime/Controller.h"
 
-#include <sys/stat.h>
+#include "io/InputFiles.h"
+#include "io/PlcDit.h"
 
+#include <sys/stat.h>
+#include <time.h>
+
+#include <cerrno>
 #include <chrono>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <memory>
 
@@ -24,6 +31,83 @@ timespec mtimeOf(const std::string &path) {
 
 bool sameTime(const timespec &a, const timespec &b) {
   return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
+// `text` with every byte outside printable ASCII as \xNN: safe in a JSON string whatever the
+// path bytes were.
+std::string printable(const std::string &text) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : text) {
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  return out;
+}
+
+// What a settle interval compares: size, mtime, inode and content.
+struct FileMark {
+  bool ok = false;
+  off_t size = 0;
+  ino_t ino = 0;
+  timespec mtime{};
+  std::chrono::milliseconds age{0}; // since the last modification
+  std::string hash;
+  bool same(const FileMark &o) const {
+    return size == o.size && ino == o.ino && sameTime(mtime, o.mtime) && hash == o.hash;
+  }
+};
+
+FileMark markOf(const std::string &path) {
+  FileMark m;
+  struct stat st;
+  std::string text, err;
+  if (::stat(path.c_str(), &st) != 0 || !io::readFile(path, text, err)) return m;
+  m.ok = true;
+  m.size = st.st_size;
+  m.ino = st.st_ino;
+  m.mtime = st.st_mtim;
+  timespec now;
+  clock_gettime(CLOCK_REALTIME, &now);
+  int64_t ms = (int64_t{now.tv_sec} - st.st_mtim.tv_sec) * 1000 +
+               (int64_t{now.tv_nsec} - st.st_mtim.tv_nsec) / 1000000;
+  m.age = std::chrono::milliseconds(ms < 0 ? 0 : ms);
+  m.hash = io::sha256Hash(text);
+  return m;
+}
+
+bool resolvedPath(const std::string &path, std::string &out) {
+  char *r = ::realpath(path.c_str(), nullptr);
+  if (!r) return false;
+  out = r;
+  std::free(r);
+  return true;
+}
+
+std::string joinDirs(const std::vector<std::string> &dirs) {
+  std::string out;
+  for (const std::string &d : dirs) out += (out.empty() ? "" : ", ") + d;
+  return out;
+}
+
+// What `next` lacks that `cur` has: empty, or the reason an online change would lose a part.
+std::string lostParts(const VerifiedProgram &cur, const VerifiedProgram &next) {
+  if (next.stmts.empty()) return "the new program is empty";
+  std::string lost;
+  auto add = [&](const std::string &part) { lost += (lost.empty() ? "" : ", ") + part; };
+  if (!cur.init.empty() && next.init.empty()) add("the init part");
+  if (!cur.plc1.empty() && next.plc1.empty()) add("PLC1");
+  if (!cur.plc2.empty() && next.plc2.empty()) add("PLC2");
+  for (const Subroutine &sub : cur.subs)
+    if (sub.number >= 0 && sub.number < static_cast<int32_t>(next.subByNumber.size()) &&
+        next.subByNumber[static_cast<size_t>(sub.number)] < 0)
+      add("subroutine S" + std::to_string(sub.number));
+  return lost.empty() ? lost : "the new program lacks " + lost + " of the running one";
 }
 
 // The string items of `req[key]`, or an error naming the key.
@@ -57,25 +141,112 @@ std::optional<io::Assignment> writable(const std::string &item, std::string &err
 } // namespace
 
 Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,
-                       Log log, std::string so)
+                       Log log, std::string so, ControllerOptions opts)
     : ex_(ex), exec_(exec), loader_(loader), log_(std::move(log)), program_(std::move(program)),
-      so_(std::move(so)) {
+      so_(std::move(so)), opts_(std::move(opts)) {
   mtime_ = mtimeOf(program_);
   if (!so_.empty()) soMtime_ = mtimeOf(so_);
 }
 
+void Controller::shutdown() {
+  {
+    std::lock_guard<std::mutex> g(sleepMu_);
+    shutdown_.store(true);
+  }
+  sleepCv_.notify_all();
+}
+
+ChangeStats Controller::changeStats() const {
+  std::lock_guard<std::mutex> g(statsMu_);
+  return changeStats_;
+}
+
+bool Controller::refuse(const std::string &what, const std::string &why, std::string &error) {
+  error = why;
+  {
+    std::lock_guard<std::mutex> g(statsMu_);
+    ++changeStats_.refused;
+    changeStats_.lastRefusal = printable(what + ": " + why);
+  }
+  if (log_) log_("online change of " + what + " refused, the old program keeps running: " + why);
+  return false;
+}
+
+bool Controller::sleepUnlessStopping(std::chrono::milliseconds d) {
+  std::unique_lock<std::mutex> g(sleepMu_);
+  return !sleepCv_.wait_for(g, d, [&] { return shutdown_.load(); });
+}
+
+bool Controller::allowed(const std::string &path, std::string &why) const {
+  std::string real;
+  if (!resolvedPath(path, real)) {
+    why = "cannot read '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  for (const std::string &dir : opts_.loadDirs)
+    if (real.size() > dir.size() && real.compare(0, dir.size(), dir) == 0 &&
+        (dir.back() == '/' || real[dir.size()] == '/'))
+      return true;
+  why = "'" + path + "' is outside the directories this server loads from (" +
+        (opts_.loadDirs.empty() ? std::string("none") : joinDirs(opts_.loadDirs)) +
+        "; see serve --load-dir)";
+  return false;
+}
+
+bool Controller::settle(const std::string &path, std::string &why) {
+  // A file is taken once it has not changed for a settle interval: an editor or a copy that
+  // is still writing changes size, mtime or content in the meantime.
+  FileMark a = markOf(path);
+  if (!a.ok) return true; // the loader reports the read error
+  auto giveUp = std::chrono::steady_clock::now() + opts_.settleGiveUp;
+  if (a.age >= opts_.settle) return true;
+  for (;;) {
+    if (!sleepUnlessStopping(opts_.settle)) {
+      why = "the server is stopping";
+      return false;
+    }
+    FileMark b = markOf(path);
+    if (b.ok && a.same(b)) return true;
+    if (std::chrono::steady_clock::now() >= giveUp) {
+      why = "'" + path + "' kept changing for " +
+            std::to_string(opts_.settleGiveUp.count() / 1000) + " s (still being written?)";
+      return false;
+    }
+    a = b;
+  }
+}
+
 bool Controller::change(const std::string &path, const std::map<int32_t, int8_t> &forces,
-                        std::string &error, const std::string &so) {
+                        std::string &error, const std::string &so, bool allowShrink) {
+  struct Busy {
+    std::atomic<int> &n;
+    explicit Busy(std::atomic<int> &c) : n(c) { ++n; }
+    ~Busy() { --n; }
+  } busy(busy_);
   std::lock_guard<std::mutex> g(changeMu_);
+  const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
+  if (shutdown_.load()) return refuse(what, "the server is stopping", error);
+  std::string why;
+  if (!settle(path, why) || (!so.empty() && !settle(so, why))) return refuse(what, why, error);
+  FileMark before = markOf(path);
   auto t0 = std::chrono::steady_clock::now();
   timespec mt = mtimeOf(path);
   timespec soMt = so.empty() ? timespec{} : mtimeOf(so);
   std::shared_ptr<ProgramVersion> next = loader_.load(path, forces, error, nullptr, so);
-  const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
-  if (!next) {
-    if (log_)
-      log_("online change of " + what + " refused, the old program keeps running: " + error);
-    return false;
+  if (!next) return refuse(what, error, error);
+  // Stop wins over a compile in progress: a version finished after a stop request is dropped.
+  if (shutdown_.load())
+    return refuse(what, "the server is stopping; the new version is discarded", error);
+  if (before.ok && next->hash != before.hash)
+    return refuse(what, "'" + path + "' changed while it was read; try again once it is written",
+                  error);
+  std::shared_ptr<ProgramVersion> cur = exec_.current();
+  if (!allowShrink && cur && cur->prog) {
+    std::string lost = lostParts(*cur->prog, *next->prog);
+    if (!lost.empty())
+      return refuse(
+          what, lost + " (monitor load --allow-shrink takes it anyway; a file watch never does)",
+          error);
   }
   double compileMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -130,6 +301,9 @@ json Controller::handle(const json &req) {
     if (cmd == "load") return doLoad(req);
     if (cmd == "stats") {
       json j = exec_.stats().toJson();
+      ChangeStats cs = changeStats();
+      j["online_change_refusals"] = cs.refused;
+      j["last_refusal"] = cs.lastRefusal;
       std::shared_ptr<ProgramVersion> cur = exec_.current();
       if (cur) {
         j["program"] = {{"path", cur->path}, {"version", cur->id}, {"hash", cur->hash}};
@@ -254,8 +428,19 @@ json Controller::doLoad(const json &req) {
                   "aot:PATH.so");
     if (program.empty()) return fail("load needs \"program\"");
   }
+  if (req.contains("allow_shrink") && !req["allow_shrink"].is_boolean())
+    return fail("load: \"allow_shrink\" must be true or false");
+  const bool allowShrink = req.value("allow_shrink", false);
   std::string err;
-  if (!change(program, {}, err, so)) return fail(err);
+  // `load` reads only below the operator's --load-dir directories (realpath, so a symlink
+  // cannot lead out of them).
+  const std::string what = so.empty() ? "'" + program + "'" : "'" + program + "' (" + so + ")";
+  for (const std::string *p : {&program, &so})
+    if (!p->empty() && !allowed(*p, err)) {
+      refuse(what, err, err);
+      return fail(err);
+    }
+  if (!change(program, {}, err, so, allowShrink)) return fail(err);
   return {{"ok", true}, {"version", exec_.current()->id}};
 }
 

@@ -10,13 +10,33 @@
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <ctime>
 #include <functional>
 #include <map>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace lj::rt {
+
+/// The guards of online change (docs/serve.md "Online change", issue 11 items 2 and 4).
+struct ControllerOptions {
+  /// Directories `load` may read from (resolved with realpath, symlinks included); a path
+  /// outside all of them is refused. Empty = `load` of any new file is refused.
+  std::vector<std::string> loadDirs;
+  /// A file is taken only once its size, mtime and content have not changed for this long.
+  std::chrono::milliseconds settle{500};
+  /// How long to wait for a file that keeps changing before the change is refused.
+  std::chrono::milliseconds settleGiveUp{10000};
+};
+
+/// Refusal counters for `monitor stats` / --stats.
+struct ChangeStats {
+  uint64_t refused = 0;    ///< online changes refused (each logged with its reason)
+  std::string lastRefusal; ///< the reason of the last one
+};
 
 class Controller {
 public:
@@ -24,15 +44,18 @@ public:
   /// `program` is the path the running version came from, `so` its AOT .so (empty for jit /
   /// interp); both are watched by pollProgramFile.
   Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program, Log log,
-             std::string so = {});
+             std::string so = {}, ControllerOptions opts = {});
 
   /// Answer one control request (docs/serve.md lists them). Never throws.
   nlohmann::json handle(const nlohmann::json &req);
 
   /// Compile `path` with `forces` (an AOT server: load `so`, checked against `path`) and swap
   /// it in. On failure the old program keeps running and `error` says why (also logged).
+  /// Refused (logged, counted) when the file is not stable within the settle interval, or
+  /// when the new program is empty or lacks a part (init, PLC1, PLC2, a subroutine) the
+  /// running one has, unless `allowShrink`; and once shutdown() was called.
   bool change(const std::string &path, const std::map<int32_t, int8_t> &forces, std::string &error,
-              const std::string &so = {});
+              const std::string &so = {}, bool allowShrink = false);
 
   /// Once a second from the main thread: if the PROGRAM file's (or, serving AOT, the .so's)
   /// mtime changed since the last look, reload it (forces are dropped: their line numbers refer
@@ -42,12 +65,23 @@ public:
   /// Whether a client asked the server to stop.
   bool stopRequested() const { return stop_.load(); }
 
+  /// Stop wins over a change in progress: nothing is swapped in after this call, a settle wait
+  /// ends at once, and a compile that finishes later is discarded.
+  void shutdown();
+  /// Whether an online change (or force) is being read, compiled or waited for.
+  bool busy() const { return busy_.load() > 0; }
+  ChangeStats changeStats() const;
+
 private:
   nlohmann::json doRead(const nlohmann::json &req);
   nlohmann::json doWrite(const nlohmann::json &req);
   nlohmann::json doForce(const nlohmann::json &req);
   nlohmann::json doLock(const nlohmann::json &req);
   nlohmann::json doLoad(const nlohmann::json &req);
+  bool refuse(const std::string &what, const std::string &why, std::string &error);
+  bool allowed(const std::string &path, std::string &why) const;
+  bool settle(const std::string &path, std::string &why);
+  bool sleepUnlessStopping(std::chrono::milliseconds d);
 
   Exchange &ex_;
   Executive &exec_;
@@ -59,6 +93,13 @@ private:
   timespec mtime_{};    // of program_ when last loaded / looked at
   timespec soMtime_{};  // of so_ likewise
   std::atomic<bool> stop_{false};
+  ControllerOptions opts_;
+  std::atomic<bool> shutdown_{false};
+  std::atomic<int> busy_{0};
+  mutable std::mutex statsMu_;
+  ChangeStats changeStats_; // guarded by statsMu_
+  std::mutex sleepMu_;
+  std::condition_variable sleepCv_; // woken by shutdown()
 };
 
 } // namespace lj::rt

@@ -175,6 +175,8 @@ void Executive::loop() {
 }
 
 void Executive::takeSwap() {
+  // A stop request wins over a pending online change: it is left for swap() to take back.
+  if (stop_.load(std::memory_order_acquire)) return;
   ProgramVersion *next = pending_.exchange(nullptr, std::memory_order_acq_rel);
   if (!next) return;
   lj_state &s = *state_;

@@ -34,8 +34,27 @@ bool ShmMapping::create(const std::string &name, bool hostOwnsF, uint64_t period
     error = "--shm: '" + name + "' is not a valid shared-memory name (one word, no '/')";
     return false;
   }
-  int fd = ::shm_open(name_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
-  if (fd < 0 || ::ftruncate(fd, 0) != 0 || ::ftruncate(fd, kShmSize) != 0) {
+  // Always a new object (O_EXCL): an existing one may have been planted by someone who keeps
+  // it mapped to inject inputs. Another user's is refused; our own (a server that crashed)
+  // is unlinked, so whoever still maps it no longer reaches this server.
+  int fd = ::shm_open(name_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0 && errno == EEXIST) {
+    int old = ::shm_open(name_.c_str(), O_RDONLY | O_CLOEXEC, 0);
+    struct stat st;
+    if (old >= 0 && ::fstat(old, &st) == 0 && st.st_uid != ::geteuid()) {
+      ::close(old);
+      error = "--shm: '" + name_ + "' already exists and belongs to uid " +
+              std::to_string(st.st_uid) + ", not to this server (uid " +
+              std::to_string(::geteuid()) + "); refusing to use an object someone else " +
+              "controls: remove /dev/shm" + name_ + " or choose another name";
+      return false;
+    }
+    if (old >= 0) ::close(old);
+    ::shm_unlink(name_.c_str());
+    fd = ::shm_open(name_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  }
+  if (fd >= 0) ::fchmod(fd, 0600); // whatever the umask
+  if (fd < 0 || ::ftruncate(fd, kShmSize) != 0) {
     error = "--shm: cannot create '" + name_ + "': " + std::strerror(errno);
     if (fd >= 0) ::close(fd);
     return false;

@@ -40,7 +40,8 @@ public:
   ~ShmMapping();
   ShmMapping(const ShmMapping &) = delete;
   ShmMapping &operator=(const ShmMapping &) = delete;
-  /// Server: create (or truncate and reinitialise) `name` ("/name" or "name").
+  /// Server: create `name` ("/name" or "name") as a new object (O_EXCL, mode 0600). An existing
+  /// one of another user is refused; one of ours (left by a crash) is unlinked and replaced.
   bool create(const std::string &name, bool hostOwnsF, uint64_t periodNs, std::string &error);
   /// Client: map an existing image and check magic, ABI version and sizes.
   bool open(const std::string &name, std::string &error);

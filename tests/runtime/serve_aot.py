@@ -68,7 +68,7 @@ def main():
     check(rc == 2 and "none.so" in err, "a missing .so is named: " + err)
 
     srv = subprocess.Popen([LJ, "serve", p, "--engine", "aot:" + p_so, "--control", sock,
-                            "--duration", "240"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            "--duration", "240", "--watch-file"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                            text=True)
     head = srv.stdout.readline()
     check("engine aot:" in head, "serve announces the AOT engine: " + head)

@@ -36,7 +36,7 @@ def main():
     stats = os.path.join(tmp, "stats.json")
 
     srv = subprocess.Popen([LJ, "serve", prog, "--control", sock, "--duration", "240", "--stats",
-                            stats], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stats, "--watch-file"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     line = srv.stdout.readline() + srv.stdout.readline()
     check("control socket " + sock in line, "serve announces its control socket: " + line)
 

@@ -134,6 +134,8 @@ struct ServeArgs {
   int rtPriority = -1;                ///< SCHED_FIFO priority, -1 = none
   int cpu = -1;                       ///< CPU to pin the scan thread to, -1 = none
   std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
+  std::vector<std::string> loadDirs;  ///< where `monitor load` may read; empty = PROGRAM's dir
+  bool watchFile = false;             ///< reload PROGRAM (and the .so) when it changes on disk
 };
 /// `ladderjit serve`: the real-time runtime (docs/serve.md).
 int runServe(const ServeArgs &a);
@@ -141,6 +143,7 @@ int runServe(const ServeArgs &a);
 struct MonitorArgs {
   std::string control;           ///< socket path, empty = the only /tmp/ladderjit-*.sock
   std::vector<std::string> args; ///< command and its arguments
+  bool allowShrink = false;      ///< load: accept an empty program or one that lacks a part
 };
 /// `ladderjit monitor`: client of a running serve (docs/serve.md "Control").
 int runMonitor(const MonitorArgs &a);

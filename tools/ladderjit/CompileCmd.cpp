@@ -12,6 +12,15 @@
 #include "jit/Aot.h"
 #endif
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
 namespace lj::cli {
 
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
@@ -21,6 +30,28 @@ std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSo
   if (!io::loadTrustedKeys(trustKeys, trust, error)) return nullptr;
   return io::loadAot(soPath, io::aotExpectOf(src, plc2Nvalue), trust, error);
 }
+
+namespace {
+
+// `-o OUT` may name a new file or a regular file it replaces; never a device, FIFO, directory
+// or symlink (`compile -o /dev/full` as root once replaced the device node).
+bool outputReplaceable(const std::string &out, std::string &error) {
+  struct stat st;
+  if (::lstat(out.c_str(), &st) != 0) {
+    if (errno == ENOENT) return true;
+    error = "cannot write '" + out + "': " + std::strerror(errno);
+    return false;
+  }
+  if (S_ISREG(st.st_mode)) return true;
+  error = "-o: '" + out + "' exists and is not a regular file (" +
+          (S_ISLNK(st.st_mode)   ? "a symbolic link"
+           : S_ISDIR(st.st_mode) ? "a directory"
+                                 : "a device, FIFO or socket") +
+          "); refusing to replace it";
+  return false;
+}
+
+} // namespace
 
 int runCompile(const CompileArgs &a) {
 #ifdef LADDERJIT_HAVE_JIT
@@ -47,15 +78,32 @@ int runCompile(const CompileArgs &a) {
   } else if (!key.loadFile(a.signKey, error)) {
     return usageError("--sign-key: " + error);
   }
+  if (!outputReplaceable(a.output, error)) return usageError("compile: " + error);
+  // Built into a new file of a random name beside OUT (mkostemp: O_CREAT | O_EXCL), then
+  // renamed over OUT: nothing planted under a predictable name is written or followed.
+  std::string tmp = a.output + ".XXXXXX";
+  int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
+  if (fd < 0)
+    return usageError("compile: cannot write '" + a.output + "': " + std::strerror(errno));
+  ::close(fd);
   io::AotExpect id = io::aotExpectOf(src, nvalue);
   jit::AotOptions o;
-  o.output = a.output;
+  o.output = tmp;
   o.programHash = id.program;
   o.sourceHash = id.source;
   o.plc2Nvalue = nvalue;
   o.signingKey = &key;
   o.genericCpu = a.cpu == "generic";
-  if (!jit::compileSharedObject(*prog, o, error)) return usageError("compile: " + error);
+  bool ok = jit::compileSharedObject(*prog, o, error);
+  if (ok && !outputReplaceable(a.output, error)) ok = false;
+  if (ok && std::rename(tmp.c_str(), a.output.c_str()) != 0) {
+    error = "cannot write '" + a.output + "': " + std::strerror(errno);
+    ok = false;
+  }
+  if (!ok) {
+    ::unlink(tmp.c_str());
+    return usageError("compile: " + error);
+  }
   return kOk;
 #else
   (void)a;

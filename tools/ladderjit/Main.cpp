@@ -4,10 +4,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
 
 namespace {
 
@@ -180,6 +183,10 @@ int mainImpl(int argc, char **argv) {
   repeatable(cServe, "--trust-key", serve.trustKeys,
              "public key whose aot .so files are accepted; repeatable (default: the default "
              "key pair's, docs/aot.md)");
+  repeatable(cServe, "--load-dir", serve.loadDirs,
+             "directory `monitor load` may read from; repeatable (default: PROGRAM's)");
+  cServe->add_flag("--watch-file", serve.watchFile,
+                   "online change when PROGRAM (or the .so) changes on disk");
 
   MonitorArgs mon;
   CLI::App *cMonitor = app.add_subcommand("monitor", "talk to a running serve: read, write, "
@@ -187,6 +194,8 @@ int mainImpl(int argc, char **argv) {
                                                      "stop");
   lastWins(cMonitor->add_option("--control", mon.control,
                                 "control socket (default: the only /tmp/ladderjit-*.sock)"));
+  cMonitor->add_flag("--allow-shrink", mon.allowShrink,
+                     "load: accept an empty program or one without a part the running one has");
   cMonitor->add_option("COMMAND", mon.args, "command and its arguments")->required();
 
   try {
@@ -224,10 +233,22 @@ int mainImpl(int argc, char **argv) {
 
 } // namespace
 
+// Output that did not reach stdout (a full disk, /dev/full, a closed pipe) is a failure, not
+// exit 0: flush it and look at the stream's error flag (cout shares stdout's buffer).
+int checkStdout(int code) {
+  std::cout.flush();
+  errno = 0;
+  bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
+  if (!failed) return code;
+  std::fprintf(stderr, "ladderjit: error: cannot write to standard output%s%s\n", errno ? ": " : "",
+               errno ? std::strerror(errno) : "");
+  return code == kOk ? kUsage : code;
+}
+
 int main(int argc, char **argv) {
   // Last line of defence: an exception (bad_alloc, a JSON error) must not end in a core dump.
   try {
-    return mainImpl(argc, argv);
+    return checkStdout(mainImpl(argc, argv));
   } catch (const std::exception &e) {
     std::fprintf(stderr, "ladderjit: error: %s\n", e.what());
   } catch (...) {

@@ -50,7 +50,8 @@ bool checkItems(const std::vector<std::string> &items, bool assignments, std::st
 }
 
 // The request for `args` (command first); false with `error` on a usage problem.
-bool buildRequest(const std::vector<std::string> &args, json &req, std::string &error) {
+bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &req,
+                  std::string &error) {
   const std::string &cmd = args[0];
   std::vector<std::string> rest(args.begin() + 1, args.end());
   auto want = [&](size_t n, const char *usage) {
@@ -119,6 +120,7 @@ bool buildRequest(const std::vector<std::string> &args, json &req, std::string &
       }
       req[isSo(rest[i]) && (i == 1 || rest.size() == 1) ? "so" : "program"] = p.string();
     }
+    if (allowShrink) req["allow_shrink"] = true;
     return true;
   }
   if (cmd == "locks" || cmd == "stats" || cmd == "stop") {
@@ -137,7 +139,7 @@ int runMonitor(const MonitorArgs &a) {
   if (a.args.empty()) return usageError("monitor: missing command");
   json req, resp;
   std::string error, path;
-  if (!buildRequest(a.args, req, error)) return usageError(error);
+  if (!buildRequest(a.args, a.allowShrink, req, error)) return usageError(error);
   if (!findControl(a.control, path, error)) return usageError(error);
   if (!rt::controlRequest(path, req, resp, error)) return usageError(error);
   if (!resp.value("ok", false)) return usageError(resp.value("error", std::string("refused")));

@@ -21,6 +21,8 @@ namespace lj::cli {
 
 namespace {
 
+constexpr size_t kRunNcLogLimit = 10000;
+
 // Every user input of `run`, parsed and checked.
 bool parseInputs(const RunArgs &a, io::SimOptions &sim, std::string &error) {
   sim.ticks = a.ticks;
@@ -209,8 +211,12 @@ int runRun(const RunArgs &a) {
 
   sim.maxBackwardSteps = a.maxBackwardSteps;
   auto state = std::make_unique<lj_state>();
-  // Every engine runs against the simulated NC (docs/simulated-nc.md).
-  auto nc = std::make_unique<io::SimNc>();
+  // Every engine runs against the simulated NC (docs/simulated-nc.md). Its log keeps the last
+  // kRunNcLogLimit host calls and events (the --dump says how many were dropped): a run of
+  // millions of ticks of a SAVEDATA / EVENT-heavy program must not keep them all.
+  io::SimNcConfig ncConfig;
+  ncConfig.logLimit = kRunNcLogLimit;
+  auto nc = std::make_unique<io::SimNc>(ncConfig);
   io::Simulation run(engine->entries(), *state, sim, nc.get());
   if (uint32_t f = run.powerUp(); f != LJ_FAULT_NONE)
     std::fprintf(stderr, "ladderjit: init: fault: %s (the init part was aborted)\n",

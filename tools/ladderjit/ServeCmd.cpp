@@ -1,7 +1,7 @@
 // `ladderjit serve`: the real-time runtime (docs/serve.md). Validates every input first (usage
 // errors exit 2 before anything runs), loads the program, binds the I/O (simulated NC and/or
 // shared memory), starts the cyclic executive and the control socket, then waits for SIGINT /
-// SIGTERM, `monitor stop` or --duration, watching the PROGRAM file for online change.
+// SIGTERM, `monitor stop` or --duration (with --watch-file, watching PROGRAM for online change).
 #include "tools/ladderjit/Commands.h"
 
 #include "io/InputFiles.h"
@@ -16,14 +16,19 @@
 #include "runtime/ShmImage.h"
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <future>
 #include <mutex>
+#include <thread>
 
 namespace lj::cli {
 
@@ -109,6 +114,59 @@ io::ModbusBackend modbusBackend(rt::Exchange &ex, io::RetainStore *retain) {
   return b;
 }
 
+// The directory of `path`, resolved (realpath): the default --load-dir.
+std::string realDirOf(const std::string &path) {
+  char *r = ::realpath(path.c_str(), nullptr);
+  if (!r) return {};
+  std::string full = r;
+  std::free(r);
+  size_t slash = full.rfind('/');
+  return slash == 0 ? "/" : full.substr(0, slash);
+}
+
+// --load-dir DIR, resolved; empty with `error` when it is not a directory.
+std::string realDir(const std::string &dir, std::string &error) {
+  char *r = ::realpath(dir.c_str(), nullptr);
+  struct stat st;
+  if (!r || ::stat(r, &st) != 0 || !S_ISDIR(st.st_mode)) {
+    error = "--load-dir: '" + dir + "' is not a directory";
+    std::free(r);
+    return {};
+  }
+  std::string out = r;
+  std::free(r);
+  return out;
+}
+
+// The file watch of --watch-file: polls once a second on its own thread, so a compile it
+// starts never delays the main thread's signal handling.
+class FileWatch {
+public:
+  explicit FileWatch(rt::Controller &c) : thread_([this, &c] { loop(c); }) {}
+  void stop() {
+    {
+      std::lock_guard<std::mutex> g(mu_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+  }
+  std::thread &thread() { return thread_; }
+
+private:
+  void loop(rt::Controller &c) {
+    std::unique_lock<std::mutex> g(mu_);
+    while (!cv_.wait_for(g, std::chrono::seconds(1), [&] { return stop_; })) {
+      g.unlock();
+      c.pollProgramFile();
+      g.lock();
+    }
+  }
+  std::mutex mu_;
+  std::condition_variable cv_;
+  bool stop_ = false;
+  std::thread thread_;
+};
+
 bool writeStats(const std::string &path, const nlohmann::json &j, std::string &error) {
   std::ofstream f(path, std::ios::binary | std::ios::trunc);
   if (!(f << j.dump(2) << "\n") || !f.flush()) {
@@ -155,6 +213,19 @@ int runServe(const ServeArgs &a) {
   if (!a.stats.empty()) { // unwritable --stats is a usage error up front, not after an hour
     std::ofstream probe(a.stats, std::ios::app);
     if (!probe) return usageError("--stats: cannot write '" + a.stats + "'");
+  }
+  // `monitor load` reads only below these (docs/serve.md "Online change"): --load-dir, else the
+  // directory of PROGRAM (and of the served .so).
+  rt::ControllerOptions copts;
+  for (const std::string &d : a.loadDirs) {
+    std::string r = realDir(d, error);
+    if (r.empty()) return usageError(error);
+    copts.loadDirs.push_back(r);
+  }
+  if (a.loadDirs.empty()) {
+    for (const std::string *p : {&a.program, &so})
+      if (!p->empty())
+        if (std::string d = realDirOf(*p); !d.empty()) copts.loadDirs.push_back(d);
   }
   const std::string control =
       a.control.empty() ? "/tmp/ladderjit-" + std::to_string(::getpid()) + ".sock" : a.control;
@@ -230,6 +301,9 @@ int runServe(const ServeArgs &a) {
     rc.programHash = first->hash;
     rc.log = logLine;
     retain = std::make_unique<io::RetainStore>(rc);
+    // Checked at start, once: a missing directory, a FIFO or symlink in the file's place, a
+    // second server on the same file (docs/retain.md "Location").
+    if (!retain->prepare(error)) return usageError("--retain: " + error);
     // Read the file here, on the main thread, so a file of another layout stops serve before
     // anything runs; the start hook only copies the result (docs/retain.md "Restore").
     lj_state_reset(restored.get());
@@ -247,7 +321,7 @@ int runServe(const ServeArgs &a) {
     retain->start();
   }
 
-  rt::Controller controller(exchange, exec, loader, a.program, logLine, so);
+  rt::Controller controller(exchange, exec, loader, a.program, logLine, so, copts);
   rt::ControlSocket socket([&controller](const nlohmann::json &r) { return controller.handle(r); });
   if (!socket.start(control, error)) return usageError(error);
 
@@ -283,10 +357,12 @@ int runServe(const ServeArgs &a) {
   }
 
   // ---- wait: signal, `monitor stop`, --duration or the scan thread ending ----
+  std::unique_ptr<FileWatch> watch;
+  if (a.watchFile) watch = std::make_unique<FileWatch>(controller);
   auto startT = std::chrono::steady_clock::now();
   const char *why = "stopped";
   while (true) {
-    // Wake at least once a second (stop requests, the file poll), and exactly at --duration.
+    // Wake at least once a second (stop requests), and exactly at --duration.
     double wait = 1.0;
     if (a.duration > 0) {
       double left =
@@ -313,15 +389,45 @@ int runServe(const ServeArgs &a) {
       why = "--duration";
       break;
     }
-    controller.pollProgramFile();
   }
 
   // ---- clean shutdown ----
+  // A stop wins over an online change in progress (issue 11 item 5): nothing is swapped in
+  // from here on, and a compile LLVM cannot interrupt is not waited for.
+  controller.shutdown();
+  if (watch) watch->stop();
   // HOOK(modbus): stop the Modbus TCP server (before the executive, so no write is lost).
   if (modbus) modbus->stop();
-  socket.stop();
   exec.requestStop();
   exec.join(); // stop hooks (final retain save) run on the scan thread before this returns
+  // Control clients end within a moment unless one is compiling; then the process exit ends
+  // that compile (`fastExit`) instead of waiting for it.
+  bool fastExit = false;
+  {
+    auto done = std::make_shared<std::promise<void>>();
+    std::future<void> stopped = done->get_future();
+    std::thread t([&socket, done] {
+      socket.stop();
+      done->set_value();
+    });
+    if (stopped.wait_for(std::chrono::milliseconds(300)) == std::future_status::ready) {
+      t.join();
+    } else {
+      t.detach();
+      fastExit = true;
+      ::unlink(control.c_str());
+      logLine("stopping without waiting for a control request in progress");
+    }
+  }
+  if (watch) {
+    if (controller.busy()) {
+      watch->thread().detach();
+      fastExit = true;
+      logLine("stopping without waiting for the file watch's online change");
+    } else {
+      watch->thread().join();
+    }
+  }
   // HOOK(retain): stop the store's writer after its final save.
   if (retain) {
     io::RetainStats rs = retain->stats();
@@ -331,16 +437,27 @@ int runServe(const ServeArgs &a) {
   if (!a.shm.empty()) shmMap.unlinkName();
 
   rt::TickStats st = exec.stats();
+  rt::ChangeStats cs = controller.changeStats();
   std::printf("ladderjit serve: %s; %s", why, st.summary().c_str());
+  if (cs.refused)
+    std::printf("online changes refused: %llu\n", static_cast<unsigned long long>(cs.refused));
   std::fflush(stdout);
+  int code = kOk;
   if (!a.stats.empty()) {
     nlohmann::json j = st.toJson();
     j["program"] = exec.current()->path;
     j["engine"] = a.engine;
     j["stop_reason"] = why;
-    if (!writeStats(a.stats, j, error)) return usageError(error);
+    j["online_change_refusals"] = cs.refused;
+    j["last_refusal"] = cs.lastRefusal;
+    if (!writeStats(a.stats, j, error)) code = usageError(error);
   }
-  return kOk;
+  if (fastExit) { // threads still compile: end them with the process, run no destructors
+    std::fflush(stdout);
+    std::fflush(stderr);
+    std::_Exit(code);
+  }
+  return code;
 }
 
 } // namespace lj::cli
