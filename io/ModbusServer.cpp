@@ -358,6 +358,11 @@ void ModbusServer::clientLoop(Client *c) {
     c->state = Client::Receiving;
     int len = readFrame(c->fd, req.data(), first + cfg_.requestTimeout.count());
     if (len < 0) {
+      if (len == -2) { // read what the peer already sent, so closing sends FIN, not RST
+        uint8_t junk[MODBUS_TCP_MAX_ADU_LENGTH];
+        for (int k = 0; k < 4 && ::recv(c->fd, junk, sizeof junk, MSG_DONTWAIT) > 0; ++k) {
+        }
+      }
       if (len != -1) {
         std::lock_guard lk(mu_);
         ++stats_.dropped;

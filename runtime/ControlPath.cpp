@@ -152,7 +152,7 @@ bool checkControlSocket(const std::string &path, std::string &error) {
   const uid_t me = ::geteuid();
   struct stat st;
   if (::lstat(path.c_str(), &st) != 0) {
-    error = "cannot use the control socket '" + path + "': " + std::strerror(errno) +
+    error = "cannot connect to the server at '" + path + "': " + std::strerror(errno) +
             " (is `ladderjit serve` running? see --control)";
     return false;
   }
