@@ -1,5 +1,6 @@
 // Modbus TCP server: the register map (docs/modbus-map.md), request validation with Modbus
-// exceptions, libmodbus framing and replies, one thread per client.
+// exceptions, framing under idle and whole-request deadlines, libmodbus replies, one thread per
+// client.
 #include "io/ModbusServer.h"
 
 #include <algorithm>
@@ -169,10 +170,22 @@ uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool
 } // namespace mbmap
 
 struct ModbusServer::Client {
-  int fd = -1;
+  enum State : int { Idle, Receiving, Handling };
+  int fd = -1; // closed (and set to -1) under mu_, so shutdown() never hits a reused number
   std::thread thread;
   std::atomic<bool> done{false};
+  std::atomic<int> state{Idle};
+  std::atomic<int64_t> sinceMs{0}; ///< steady ms of the last state change
+  bool evicted = false;            ///< guarded by mu_
 };
+
+namespace {
+int64_t steadyMs() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+} // namespace
 
 ModbusServer::ModbusServer(ModbusConfig cfg, ModbusBackend backend)
     : cfg_(std::move(cfg)), be_(std::move(backend)) {}
@@ -230,12 +243,12 @@ void ModbusServer::stop() {
   std::list<Client> clients;
   {
     std::lock_guard lk(mu_);
+    for (Client &c : clients_)
+      if (c.fd >= 0) ::shutdown(c.fd, SHUT_RDWR); // wakes a client blocked in a read
     clients.splice(clients.end(), clients_);
   }
-  for (Client &c : clients) {
-    ::shutdown(c.fd, SHUT_RDWR); // wakes a client blocked in a read
+  for (Client &c : clients)
     if (c.thread.joinable()) c.thread.join();
-  }
 }
 
 void ModbusServer::acceptLoop() {
@@ -256,80 +269,130 @@ void ModbusServer::acceptLoop() {
     int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) continue;
     ++stats_.connections;
-    if (static_cast<int>(clients_.size()) >= cfg_.maxClients) {
+    // At the cap, make room: close the client idle longest, else the one longest stuck in an
+    // incomplete frame; one whose request is being served is never closed. So idle or
+    // dripping connections cannot lock a new client out (docs/modbus-map.md "Connections").
+    int active = 0;
+    Client *victim = nullptr;
+    for (Client &c : clients_) {
+      if (c.evicted) continue;
+      ++active;
+      int s = c.state.load();
+      if (s == Client::Handling) continue;
+      int vs = victim ? victim->state.load() : -1;
+      if (!victim || (s == Client::Idle && vs != Client::Idle) ||
+          (s == vs && c.sinceMs.load() < victim->sinceMs.load()))
+        victim = &c;
+    }
+    if (active >= cfg_.maxClients && victim) {
+      victim->evicted = true;
+      ::shutdown(victim->fd, SHUT_RDWR);
+      --active;
+      ++stats_.evicted;
+      logLine("modbus: " + std::to_string(cfg_.maxClients) +
+              " clients connected; closed the one idle longest to admit a new one");
+    }
+    if (active >= cfg_.maxClients) {
       ++stats_.dropped;
       ::close(fd);
       logLine("modbus: connection refused: " + std::to_string(cfg_.maxClients) +
-              " clients already connected");
+              " clients busy with requests");
       continue;
     }
+    timeval tv{static_cast<time_t>(cfg_.requestTimeout.count() / 1000),
+               static_cast<suseconds_t>(cfg_.requestTimeout.count() % 1000 * 1000)};
+    ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv); // a client that never reads
     Client &c = clients_.emplace_back();
     c.fd = fd;
+    c.sinceMs = steadyMs();
     c.thread = std::thread([this, &c] { clientLoop(&c); });
   }
 }
 
+int ModbusServer::readFrame(int fd, uint8_t *buf, int64_t deadlineMs) {
+  int have = 0, want = 7; // the MBAP header first (Modbus Messaging on TCP/IP V1.0b, 3.1.3)
+  while (have < want) {
+    int64_t left = deadlineMs - steadyMs();
+    if (left <= 0) return -3;
+    if (stop_) return -1;
+    pollfd p{fd, POLLIN, 0};
+    int r = ::poll(&p, 1, static_cast<int>(std::min<int64_t>(left, 100)));
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) return -1;
+    if (r == 0) continue;
+    ssize_t n = ::recv(fd, buf + have, static_cast<size_t>(want - have), 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return -1;
+    have += static_cast<int>(n);
+    if (have == 7 && want == 7) {
+      // Protocol 0; length = unit id + PDU, 2..254 (the largest ADU is 260 bytes).
+      int declared = be16(buf + 4);
+      if (be16(buf + 2) != 0 || declared < 2 || declared > MODBUS_TCP_MAX_ADU_LENGTH - 6) return -2;
+      want = 6 + declared;
+    }
+  }
+  return have;
+}
+
 void ModbusServer::clientLoop(Client *c) {
-  // The context only frames and replies on our socket; its own address is never used.
+  // The context only replies on our socket; its own address is never used. Frames are read
+  // by readFrame, under the whole-request deadline.
   modbus_t *ctx = modbus_new_tcp("127.0.0.1", 502);
   modbus_set_socket(ctx, c->fd);
-  modbus_set_byte_timeout(ctx, 0, 500000); // a frame cut short closes the connection
   std::vector<uint8_t> req(MODBUS_TCP_MAX_ADU_LENGTH);
+  int64_t idleSince = steadyMs();
   while (!stop_) {
+    int64_t left = idleSince + cfg_.idleTimeout.count() - steadyMs();
+    if (left <= 0) {
+      std::lock_guard lk(mu_);
+      ++stats_.idleClosed;
+      break;
+    }
     pollfd p{c->fd, POLLIN, 0};
-    int r = ::poll(&p, 1, 100);
+    int r = ::poll(&p, 1, static_cast<int>(std::min<int64_t>(left, 100)));
     if (r == 0) continue;
     if (r < 0 && errno == EINTR) continue;
     if (r < 0 || (p.revents & (POLLERR | POLLNVAL))) break;
-    int len = modbus_receive(ctx, req.data());
-    if (len == 0) continue; // an indication for another unit: ignored (libmodbus)
+    int64_t first = steadyMs();
+    c->sinceMs = first;
+    c->state = Client::Receiving;
+    int len = readFrame(c->fd, req.data(), first + cfg_.requestTimeout.count());
     if (len < 0) {
-      if (errno != ECONNRESET && errno != 0) {
+      if (len == -2) { // read what the peer already sent, so closing sends FIN, not RST
+        uint8_t junk[MODBUS_TCP_MAX_ADU_LENGTH];
+        for (int k = 0; k < 4 && ::recv(c->fd, junk, sizeof junk, MSG_DONTWAIT) > 0; ++k) {
+        }
+      }
+      if (len != -1) {
         std::lock_guard lk(mu_);
         ++stats_.dropped;
+        if (len == -3) ++stats_.timedOut;
       }
-      break; // peer closed, frame cut short, or unparseable
+      break; // peer closed, a malformed header, or a frame not whole in time
     }
+    c->state = Client::Handling;
     if (!handle(ctx, req.data(), len)) {
       std::lock_guard lk(mu_);
       ++stats_.dropped;
       break;
     }
+    idleSince = steadyMs();
+    c->sinceMs = idleSince;
+    c->state = Client::Idle;
   }
   modbus_free(ctx); // does not close the socket (set with modbus_set_socket)
+  std::lock_guard lk(mu_);
   ::close(c->fd);
+  c->fd = -1;
   c->done = true;
 }
-
-namespace {
-
-/// Read and discard `n` bytes of a frame libmodbus stopped reading early (unknown function).
-bool drain(int fd, int n) {
-  uint8_t buf[256];
-  while (n > 0) {
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, 500) <= 0) return false;
-    ssize_t r = ::recv(fd, buf, std::min<int>(n, sizeof buf), 0);
-    if (r <= 0) return false;
-    n -= static_cast<int>(r);
-  }
-  return true;
-}
-
-} // namespace
 
 bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   auto *ctx = static_cast<modbus_t *>(vctx);
   const int hl = modbus_get_header_length(ctx); // 7: the MBAP header
-  // MBAP (Modbus Messaging on TCP/IP V1.0b, 3.1.3): protocol 0, length = unit id + PDU. A
-  // frame that breaks it cannot be answered reliably: close the connection.
-  if (len < hl + 1 || be16(req + 2) != 0) return false;
-  int declared = be16(req + 4);
-  if (declared != len - 6) {
-    if (declared < len - 6 || declared > 254 ||
-        !drain(modbus_get_socket(ctx), declared - (len - 6)))
-      return false;
-  }
+  // readFrame checked the MBAP header (protocol 0, a length that fits) and read the whole
+  // frame; at least the unit id and a function code are here.
+  if (len < hl + 1) return false;
   const uint8_t fc = req[hl];
   const uint8_t *d = req + hl + 1;
   const int dlen = len - hl - 1;
@@ -337,16 +400,10 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   auto fail = [&](uint8_t code) {
     {
       std::lock_guard lk(mu_);
-      ++stats_.requests;
-      ++stats_.exceptions;
+      ++stats_.exceptions; // the request itself was counted below
     }
     return modbus_reply_exception(ctx, req, code) >= 0;
   };
-  if (declared != len - 6) {
-    // libmodbus stopped reading after the function code: unknown to it, or a bad length.
-    bool known = fc <= 6 || fc == 15 || fc == 16;
-    return fail(known ? kMbIllegalDataValue : kMbIllegalFunction);
-  }
   {
     std::lock_guard lk(mu_);
     ++stats_.requests;
@@ -356,7 +413,7 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   case 2:
   case 3:
   case 4: {
-    if (dlen < 4) return fail(kMbIllegalDataValue);
+    if (dlen != 4) return fail(kMbIllegalDataValue); // address, count
     uint16_t addr = be16(d), count = be16(d + 2);
     bool bits = fc <= 2;
     if (count < 1 || count > (bits ? MODBUS_MAX_READ_BITS : MODBUS_MAX_READ_REGISTERS))
@@ -390,7 +447,7 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   case 6:
   case 15:
   case 16: {
-    if (dlen < 4) return fail(kMbIllegalDataValue);
+    if (dlen < 4 || (fc <= 6 && dlen != 4)) return fail(kMbIllegalDataValue);
     uint16_t addr = be16(d);
     std::vector<Assignment> writes;
     bool retained = false;

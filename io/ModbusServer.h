@@ -61,12 +61,15 @@ struct ModbusBackend {
 
 /// Server settings (`serve --modbus HOST:PORT`).
 struct ModbusConfig {
-  std::string host = "127.0.0.1";               ///< bind address (loopback by default)
-  int port = 502;                               ///< 0 = any free port (see ModbusServer::port())
-  bool writeInputs = false;                     ///< X and F writable (simulation only)
-  int maxClients = 16;                          ///< connections beyond this are closed at once
-  std::chrono::milliseconds writeTimeout{2000}; ///< apply + durable save, then exception 04
-  std::function<void(const std::string &)> log; ///< default: stderr
+  std::string host = "127.0.0.1"; ///< bind address (loopback by default)
+  int port = 502;                 ///< 0 = any free port (see ModbusServer::port())
+  bool writeInputs = false;       ///< X and F writable (simulation only)
+  int maxClients = 16;            ///< at the cap, the longest-idle client is closed for a new one
+  std::chrono::milliseconds writeTimeout{2000};   ///< apply + durable save, then exception 04
+  std::chrono::milliseconds idleTimeout{30000};   ///< no request for this long: closed
+  std::chrono::milliseconds requestTimeout{2000}; ///< a frame must be whole this long after
+                                                  ///< its first byte, else the connection closes
+  std::function<void(const std::string &)> log;   ///< default: stderr
 };
 
 /// Counters for the log and the tests.
@@ -74,11 +77,16 @@ struct ModbusStats {
   uint64_t requests = 0;
   uint64_t exceptions = 0;
   uint64_t connections = 0;
-  uint64_t dropped = 0; ///< connections closed for a malformed frame or over the cap
+  uint64_t dropped = 0;    ///< connections closed for a malformed frame or over the cap
+  uint64_t idleClosed = 0; ///< connections closed after idleTimeout without a request
+  uint64_t timedOut = 0;   ///< connections closed for a frame not whole within requestTimeout
+  uint64_t evicted = 0;    ///< idle (or stuck) connections closed to admit a new client
 };
 
 /// The server: an accept thread and one thread per client (each with its own libmodbus
-/// context), so a client waiting for a durable write does not hold up the others.
+/// context), so a client waiting for a durable write does not hold up the others. Frames are
+/// read here (MBAP header, then its length) against a whole-request deadline, so a client
+/// dripping bytes cannot keep a slot; libmodbus only builds the replies.
 class ModbusServer {
 public:
   ModbusServer(ModbusConfig cfg, ModbusBackend backend);
@@ -98,6 +106,9 @@ private:
   struct Client;
   void acceptLoop();
   void clientLoop(Client *c);
+  /// Read one ADU into `buf` by `deadlineMs` (steady ms): its length, -1 when the peer closed,
+  /// -2 for a malformed MBAP header, -3 past the deadline.
+  int readFrame(int fd, uint8_t *buf, int64_t deadlineMs);
   /// Handle one request ADU; false when the connection must be closed.
   bool handle(void *ctx, const uint8_t *req, int len);
   void logLine(const std::string &line) const;

@@ -1,6 +1,7 @@
 // JSON dump of an lj_state; the field list mirrors runtime_abi/include/ladderjit/abi.h.
 #include "io/StateJson.h"
 
+#include <cstdint>
 #include <iterator>
 
 namespace lj::io {
@@ -17,6 +18,33 @@ template <typename T, size_t N> nlohmann::ordered_json array(const T (&a)[N]) {
 int32_t tcNumber(int k) { return k < 128 ? k : k - 128 + 300; }
 
 } // namespace
+
+std::string dumpJson(const nlohmann::json &j, int indent) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string dumpJson(const nlohmann::ordered_json &j, int indent) {
+  return j.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+bool isUtf8(std::string_view s) {
+  size_t i = 0;
+  while (i < s.size()) {
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    int n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : -1;
+    if (n < 0 || s.size() - i <= static_cast<size_t>(n)) return false; // truncated
+    uint32_t cp = n == 0 ? c : c & (0x3F >> n);
+    for (int k = 1; k <= n; ++k) {
+      unsigned char d = static_cast<unsigned char>(s[i + static_cast<size_t>(k)]);
+      if ((d >> 6) != 0x2) return false;
+      cp = cp << 6 | (d & 0x3F);
+    }
+    static constexpr uint32_t kMin[] = {0, 0x80, 0x800, 0x10000};
+    if (cp < kMin[n] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return false;
+    i += static_cast<size_t>(n) + 1;
+  }
+  return true;
+}
 
 nlohmann::ordered_json stateToJson(const lj_state &s) {
   nlohmann::ordered_json j;

@@ -6,7 +6,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+#include <string_view>
+
 namespace lj::io {
+
+/// The one way the project writes JSON text that may hold user bytes (paths, diagnostics
+/// quoting a file, plc.dit fields): a string that is not valid UTF-8 is written with U+FFFD
+/// in place of the bad bytes instead of throwing nlohmann::json's type_error 316.
+std::string dumpJson(const nlohmann::json &j, int indent = -1);
+std::string dumpJson(const nlohmann::ordered_json &j, int indent = -1);
+
+/// Whether `s` is well-formed UTF-8 (RFC 3629: no overlongs, surrogates or code points above
+/// U+10FFFF).
+bool isUtf8(std::string_view s);
 
 /// The state as a JSON object:
 /// `{"abi_version", "now_ms", "plc2_next_slice", "max_backward_steps", "steps", "last_fault",

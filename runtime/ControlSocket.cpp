@@ -1,6 +1,8 @@
 // Unix-socket JSON-lines server and client for the serve control interface.
 #include "runtime/ControlSocket.h"
 
+#include "io/StateJson.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/socket.h>
@@ -8,6 +10,7 @@
 #include <sys/un.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -40,7 +43,46 @@ bool writeAll(int fd, const std::string &s) {
   return true;
 }
 
+int64_t steadyMs() {
+  return std::chrono::duration_cast<std::chrono::milliseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+nlohmann::json failure(const std::string &msg) { return {{"ok", false}, {"error", msg}}; }
+
+bool peerUid(int fd, uid_t &uid) {
+  ucred cr{};
+  socklen_t len = sizeof cr;
+  if (::getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &cr, &len) != 0) return false;
+  uid = cr.uid;
+  return true;
+}
+
 } // namespace
+
+bool ControlSocket::allowedPeer(uid_t uid) { return uid == 0 || uid == ::geteuid(); }
+
+std::string ControlSocket::answer(const Handler &h, std::string_view line) {
+  nlohmann::json resp;
+  try {
+    nlohmann::json req = nlohmann::json::parse(line, nullptr, false);
+    if (req.is_discarded() || !req.is_object())
+      resp = failure("request is not a JSON object");
+    else
+      resp = h(req);
+  } catch (const std::exception &e) {
+    resp = failure(std::string("internal error: ") + e.what());
+  } catch (...) {
+    resp = failure("internal error");
+  }
+  try {
+    return io::dumpJson(resp) + "\n"; // user bytes that are not UTF-8 become U+FFFD
+  } catch (...) {                     // bad_alloc: still an answer, never an abort
+    return R"({"ok":false,"error":"internal error"})"
+           "\n";
+  }
+}
 
 ControlSocket::~ControlSocket() { stop(); }
 
@@ -51,6 +93,11 @@ bool ControlSocket::start(const std::string &path, std::string &error) {
   if (::lstat(path.c_str(), &st) == 0) {
     if (!S_ISSOCK(st.st_mode)) {
       error = "control socket path '" + path + "' exists and is not a socket";
+      return false;
+    }
+    if (st.st_uid != ::geteuid()) {
+      error = "control socket path '" + path + "' exists and belongs to uid " +
+              std::to_string(st.st_uid) + ", not to us";
       return false;
     }
     int probe = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
@@ -64,9 +111,25 @@ bool ControlSocket::start(const std::string &path, std::string &error) {
     ::unlink(path.c_str()); // stale: left by a server that was killed
   }
   listenFd_ = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-  if (listenFd_ < 0 || ::bind(listenFd_, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0 ||
-      ::listen(listenFd_, 16) != 0 || ::pipe2(wakePipe_, O_CLOEXEC) != 0) {
+  bool bound = false;
+  if (listenFd_ >= 0) {
+    // The socket file is created 0600 whatever the caller's umask (connecting needs write
+    // permission on it); chmod again in case the file system ignored the umask.
+    mode_t old = ::umask(0177);
+    bound = ::bind(listenFd_, reinterpret_cast<sockaddr *>(&addr), sizeof addr) == 0;
+    int saved = errno;
+    ::umask(old);
+    errno = saved;
+    if (bound && ::chmod(path.c_str(), 0600) != 0) {
+      saved = errno;
+      ::unlink(path.c_str());
+      errno = saved;
+      bound = false;
+    }
+  }
+  if (!bound || ::listen(listenFd_, 16) != 0 || ::pipe2(wakePipe_, O_CLOEXEC) != 0) {
     error = "control socket '" + path + "': " + std::strerror(errno);
+    if (bound) ::unlink(path.c_str());
     if (listenFd_ >= 0) ::close(listenFd_);
     listenFd_ = -1;
     return false;
@@ -82,13 +145,14 @@ void ControlSocket::stop() {
   char c = 1;
   [[maybe_unused]] ssize_t w = ::write(wakePipe_[1], &c, 1);
   if (acceptThread_.joinable()) acceptThread_.join();
-  std::vector<Client> threads;
+  std::list<Client> clients;
   {
     std::lock_guard<std::mutex> g(mu_);
-    for (int fd : clientFds_) ::shutdown(fd, SHUT_RDWR); // wakes their recv
-    threads.swap(clientThreads_);
+    for (Client &cl : clients_)
+      if (cl.fd >= 0) ::shutdown(cl.fd, SHUT_RDWR); // wakes their poll
+    clients.splice(clients.end(), clients_);
   }
-  for (Client &c : threads) c.thread.join();
+  for (Client &cl : clients) cl.thread.join();
   ::close(listenFd_);
   ::close(wakePipe_[0]);
   ::close(wakePipe_[1]);
@@ -106,45 +170,114 @@ void ControlSocket::acceptLoop() {
     if (fds[1].revents) return;
     int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) continue;
-    if (clients_.load() >= kMaxClients) {
-      writeAll(fd, R"({"ok":false,"error":"too many control clients"})"
-                   "\n");
+    uid_t uid = 0;
+    if (!peerUid(fd, uid) || !allowedPeer(uid)) {
+      // The 0600 mode already keeps other users out; this holds even if it was loosened.
+      std::string msg = "permission denied: uid " + std::to_string(uid) +
+                        " may not use this control socket (only " +
+                        (::geteuid() == 0 ? std::string("root")
+                                          : "uid " + std::to_string(::geteuid()) + " and root") +
+                        ")";
+      writeAll(fd, io::dumpJson(failure(msg)) + "\n");
       ::close(fd);
+      logLine("control: connection refused: " + msg);
       continue;
     }
-    clients_.fetch_add(1);
-    std::lock_guard<std::mutex> g(mu_);
-    std::erase_if(clientThreads_, [](Client &c) {
-      if (!c.done->load()) return false;
-      c.thread.join();
-      return true;
-    });
-    clientFds_.push_back(fd);
-    auto done = std::make_shared<std::atomic<bool>>(false);
-    clientThreads_.push_back({std::thread([this, fd, done] { serveClient(fd, *done); }), done});
+    admit(fd);
   }
 }
 
-void ControlSocket::serveClient(int fd, std::atomic<bool> &done) {
+// Slots: kMaxClients connections, plus one reserved for when every one of them is busy with
+// a request (a `load` compiling), so `monitor stop` always gets in. When all slots are taken,
+// the connection that has been idle longest (else the one longest stuck in an incomplete
+// request) is closed to make room: an idle connection never locks the operator out.
+void ControlSocket::admit(int fd) {
+  timeval tv{static_cast<time_t>(opt_.requestTimeout.count() / 1000),
+             static_cast<suseconds_t>(opt_.requestTimeout.count() % 1000 * 1000)};
+  ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv); // a client that never reads
+  std::lock_guard<std::mutex> g(mu_);
+  for (auto it = clients_.begin(); it != clients_.end();) {
+    if (it->done.load()) {
+      it->thread.join();
+      it = clients_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  int active = 0;
+  Client *victim = nullptr;
+  for (Client &c : clients_) {
+    if (c.evicted) continue;
+    ++active;
+    int s = c.state.load();
+    if (s == Handling) continue;
+    if (!victim || (s == Idle && victim->state.load() != Idle) ||
+        (s == victim->state.load() && c.sinceMs.load() < victim->sinceMs.load()))
+      victim = &c;
+  }
+  if (active >= kMaxClients && victim) {
+    victim->evicted = true;
+    ::shutdown(victim->fd, SHUT_RDWR);
+    --active;
+    logLine("control: all " + std::to_string(kMaxClients) +
+            " slots taken; closed the connection idle longest to admit a new one");
+  }
+  if (active >= kMaxClients + 1) { // every slot, the reserved one too, is running a request
+    writeAll(fd, R"({"ok":false,"error":"too many control clients"})"
+                 "\n");
+    ::close(fd);
+    return;
+  }
+  Client &c = clients_.emplace_back();
+  c.fd = fd;
+  c.sinceMs = steadyMs();
+  c.thread = std::thread([this, p = &c] { serveClient(p); });
+}
+
+void ControlSocket::serveClient(Client *c) {
+  const int fd = c->fd;
   std::string buf;
   char chunk[4096];
-  bool open = true;
-  while (open && !stopping_.load()) {
+  int64_t since = steadyMs(); // idle since, or the first byte of the request in `buf`
+  while (!stopping_.load()) {
+    const bool partial = !buf.empty();
+    int64_t left = since + (partial ? opt_.requestTimeout : opt_.idleTimeout).count() - steadyMs();
+    if (left <= 0) {
+      if (partial) {
+        std::string msg = "request not complete within " +
+                          std::to_string(opt_.requestTimeout.count()) + " ms of its first byte";
+        writeAll(fd, io::dumpJson(failure(msg)) + "\n");
+        logLine("control: connection closed: " + msg);
+      }
+      break; // idle: closed quietly (a client reconnects per request)
+    }
+    pollfd p{fd, POLLIN, 0};
+    int r = ::poll(&p, 1, static_cast<int>(std::min<int64_t>(left, 1000)));
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) break;
+    if (r == 0) continue;
     ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
+    if (buf.empty()) {
+      since = steadyMs();
+      c->sinceMs = since;
+      c->state = Receiving;
+    }
     buf.append(chunk, static_cast<size_t>(n));
+    bool open = true;
     size_t nl;
-    while ((nl = buf.find('\n')) != std::string::npos) {
+    while (open && (nl = buf.find('\n')) != std::string::npos) {
+      c->state = Handling;
       std::string line = buf.substr(0, nl);
       buf.erase(0, nl + 1);
-      nlohmann::json resp;
-      nlohmann::json req = nlohmann::json::parse(line, nullptr, false);
-      if (req.is_discarded() || !req.is_object())
-        resp = {{"ok", false}, {"error", "request is not a JSON object"}};
-      else
-        resp = handler_(req);
-      if (!writeAll(fd, resp.dump() + "\n")) open = false;
+      if (!writeAll(fd, answer(handler_, line))) open = false;
+    }
+    if (!open) break;
+    if (c->state.load() == Handling) { // answered: the rest (if any) is a new request
+      since = steadyMs();
+      c->sinceMs = since;
+      c->state = buf.empty() ? Idle : Receiving;
     }
     if (buf.size() > kMaxLine) {
       writeAll(fd, R"({"ok":false,"error":"request line too long"})"
@@ -152,13 +285,10 @@ void ControlSocket::serveClient(int fd, std::atomic<bool> &done) {
       break;
     }
   }
-  {
-    std::lock_guard<std::mutex> g(mu_);
-    std::erase(clientFds_, fd);
-  }
+  std::lock_guard<std::mutex> g(mu_); // stop() and admit() shutdown() only fds still open
   ::close(fd);
-  clients_.fetch_sub(1);
-  done.store(true);
+  c->fd = -1;
+  c->done.store(true);
 }
 
 bool controlRequest(const std::string &path, const nlohmann::json &request,
@@ -172,7 +302,16 @@ bool controlRequest(const std::string &path, const nlohmann::json &request,
     if (fd >= 0) ::close(fd);
     return false;
   }
-  if (!writeAll(fd, request.dump() + "\n")) {
+  // The server must run as us or root: a socket planted by another user is never trusted
+  // with a write (or believed in a read).
+  uid_t server = 0;
+  if (!peerUid(fd, server) || !ControlSocket::allowedPeer(server)) {
+    error = "refusing the server at '" + path + "': it runs as uid " + std::to_string(server) +
+            ", not as uid " + std::to_string(::geteuid()) + " or root";
+    ::close(fd);
+    return false;
+  }
+  if (!writeAll(fd, io::dumpJson(request) + "\n")) {
     error = "cannot send to '" + path + "': " + std::strerror(errno);
     ::close(fd);
     return false;

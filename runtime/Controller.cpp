@@ -318,6 +318,8 @@ json Controller::handle(const json &req) {
     return fail("unknown command '" + cmd + "'");
   } catch (const std::exception &e) { // a JSON type error in a malformed request
     return fail(std::string("bad request: ") + e.what());
+  } catch (...) {
+    return fail("bad request");
   }
 }
 
@@ -369,6 +371,7 @@ json Controller::doForce(const json &req) {
     return fail("force: this server runs an AOT .so, and forcing needs recompilation; serve "
                 "the program with --engine jit or interp to force contacts");
   std::shared_ptr<ProgramVersion> cur = exec_.current();
+  if (!cur) return fail("force: no program is running yet");
   std::map<int32_t, int8_t> forces = cur->forces;
   int32_t l = static_cast<int32_t>(line);
   if (mode == "restore") {

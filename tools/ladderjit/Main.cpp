@@ -173,7 +173,16 @@ int mainImpl(int argc, char **argv) {
                ->check(kUnsigned));
   lastWins(cServe->add_option("--stats", serve.stats, "write timing statistics as JSON at exit"));
   lastWins(cServe->add_option("--control", serve.control,
-                              "control socket (default /tmp/ladderjit-<pid>.sock)"));
+                              "control socket (default <runtime dir>/serve-<pid>.sock)"));
+  lastWins(cServe
+               ->add_option("--client-idle-s", serve.clientIdleS,
+                            "close control / Modbus connections idle this long (default 30)")
+               ->check(CLI::Range(1, 86400)));
+  lastWins(cServe
+               ->add_option("--request-timeout-ms", serve.requestTimeoutMs,
+                            "a control / Modbus request must arrive whole within this (default "
+                            "2000)")
+               ->check(CLI::Range(100, 600000)));
   lastWins(cServe->add_option("--shm", serve.shm, "shared-memory process image NAME"));
   lastWins(cServe->add_option("--io", serve.io, "simnc | shm: who writes F (default simnc)"));
   lastWins(cServe->add_option("--rt-priority", serve.rtPriority, "SCHED_FIFO priority 1..99")
@@ -193,7 +202,7 @@ int mainImpl(int argc, char **argv) {
                                                      "force, lock, unlock, locks, load, stats, "
                                                      "stop");
   lastWins(cMonitor->add_option("--control", mon.control,
-                                "control socket (default: the only /tmp/ladderjit-*.sock)"));
+                                "control socket (default: the only server in the runtime dir)"));
   cMonitor->add_flag("--allow-shrink", mon.allowShrink,
                      "load: accept an empty program or one without a part the running one has");
   cMonitor->add_option("COMMAND", mon.args, "command and its arguments")->required();

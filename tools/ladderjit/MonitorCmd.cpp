@@ -4,9 +4,9 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "io/Address.h"
+#include "io/StateJson.h"
+#include "runtime/ControlPath.h"
 #include "runtime/ControlSocket.h"
-
-#include <glob.h>
 
 #include <charconv>
 #include <climits>
@@ -19,21 +19,12 @@ namespace {
 
 using nlohmann::json;
 
-// --control, or the only /tmp/ladderjit-*.sock there is.
+// --control (a socket owned by us or root), or the only live server in our private runtime
+// directory (runtime/ControlPath.h); never a socket found by globbing /tmp.
 bool findControl(const std::string &given, std::string &path, std::string &error) {
-  if (!given.empty()) {
-    path = given;
-    return true;
-  }
-  glob_t g{};
-  int rc = ::glob("/tmp/ladderjit-*.sock", 0, nullptr, &g);
-  size_t n = rc == 0 ? g.gl_pathc : 0;
-  if (n == 1) path = g.gl_pathv[0];
-  globfree(&g);
-  if (n == 1) return true;
-  error = n == 0 ? "no running server found (no /tmp/ladderjit-*.sock); give --control PATH"
-                 : "several servers are running; give --control PATH";
-  return false;
+  if (given.empty()) return rt::findControlSocket(path, error);
+  path = given;
+  return rt::checkControlSocket(path, error);
 }
 
 // Check the addresses / assignments locally, so a typo never reaches the server.
@@ -118,6 +109,11 @@ bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &
         error = "load: cannot read '" + rest[i] + "'";
         return false;
       }
+      if (!io::isUtf8(p.string())) { // the control protocol is JSON: UTF-8 text only
+        error = "load: the path '" + rest[i] +
+                "' is not valid UTF-8; rename the file (the control protocol carries UTF-8)";
+        return false;
+      }
       req[isSo(rest[i]) && (i == 1 || rest.size() == 1) ? "so" : "program"] = p.string();
     }
     if (allowShrink) req["allow_shrink"] = true;
@@ -135,7 +131,17 @@ bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &
 
 } // namespace
 
+static int monitorOnce(const MonitorArgs &a);
+
 int runMonitor(const MonitorArgs &a) {
+  try {
+    return monitorOnce(a);
+  } catch (const std::exception &e) { // an answer of an unexpected shape
+    return usageError(std::string("monitor: unexpected answer from the server: ") + e.what());
+  }
+}
+
+static int monitorOnce(const MonitorArgs &a) {
   if (a.args.empty()) return usageError("monitor: missing command");
   json req, resp;
   std::string error, path;
@@ -158,7 +164,7 @@ int runMonitor(const MonitorArgs &a) {
   } else if (cmd == "load") {
     std::printf("running version %llu\n", resp["version"].get<unsigned long long>());
   } else if (cmd == "stats") {
-    std::printf("%s\n", resp["stats"].dump(2).c_str());
+    std::printf("%s\n", io::dumpJson(resp["stats"], 2).c_str());
   }
   return kOk;
 }

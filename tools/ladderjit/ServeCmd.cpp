@@ -8,6 +8,8 @@
 #include "io/ModbusServer.h"
 #include "io/RetainStore.h"
 #include "io/SimNc.h"
+#include "io/StateJson.h"
+#include "runtime/ControlPath.h"
 #include "runtime/ControlSocket.h"
 #include "runtime/Controller.h"
 #include "runtime/Exchange.h"
@@ -169,7 +171,7 @@ private:
 
 bool writeStats(const std::string &path, const nlohmann::json &j, std::string &error) {
   std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!(f << j.dump(2) << "\n") || !f.flush()) {
+  if (!(f << io::dumpJson(j, 2) << "\n") || !f.flush()) { // a non-UTF-8 path is not fatal
     error = "--stats: cannot write '" + path + "'";
     return false;
   }
@@ -227,8 +229,10 @@ int runServe(const ServeArgs &a) {
       if (!p->empty())
         if (std::string d = realDirOf(*p); !d.empty()) copts.loadDirs.push_back(d);
   }
-  const std::string control =
-      a.control.empty() ? "/tmp/ladderjit-" + std::to_string(::getpid()) + ".sock" : a.control;
+  // The default socket lives in a private runtime directory (runtime/ControlPath.h), never
+  // at a predictable /tmp path another user could plant.
+  std::string control = a.control;
+  if (control.empty() && !rt::defaultControlPath(control, error)) return usageError(error);
 
   // ---- the program ----
   rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1);
@@ -322,7 +326,12 @@ int runServe(const ServeArgs &a) {
   }
 
   rt::Controller controller(exchange, exec, loader, a.program, logLine, so, copts);
-  rt::ControlSocket socket([&controller](const nlohmann::json &r) { return controller.handle(r); });
+  rt::ControlOptions co;
+  co.idleTimeout = std::chrono::seconds(a.clientIdleS);
+  co.requestTimeout = std::chrono::milliseconds(a.requestTimeoutMs);
+  co.log = logLine;
+  rt::ControlSocket socket([&controller](const nlohmann::json &r) { return controller.handle(r); },
+                           co);
   if (!socket.start(control, error)) return usageError(error);
 
   if (!exec.start(first, error)) return usageError(error);
@@ -344,6 +353,8 @@ int runServe(const ServeArgs &a) {
     mc.host = modbusHost;
     mc.port = modbusPort;
     mc.writeInputs = a.modbusWriteInputs;
+    mc.idleTimeout = std::chrono::seconds(a.clientIdleS);
+    mc.requestTimeout = std::chrono::milliseconds(a.requestTimeoutMs);
     mc.log = logLine;
     modbus = std::make_unique<io::ModbusServer>(mc, modbusBackend(exchange, retain.get()));
     if (!modbus->start(error)) {
