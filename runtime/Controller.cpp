@@ -435,7 +435,7 @@ json Controller::doLoad(const json &req) {
   // `load` reads only below the operator's --load-dir directories (realpath, so a symlink
   // cannot lead out of them); the served PROGRAM an AOT `load PATH.so` pairs with is not new.
   const std::string what = so.empty() ? "'" + program + "'" : "'" + program + "' (" + so + ")";
-  const std::string asked = str("program");
+  std::string asked = str("program");
   for (const std::string *p : {&asked, &so})
     if (!p->empty() && !allowed(*p, err)) {
       refuse(what, err, err);
