@@ -8,6 +8,26 @@
 
 namespace lj::io {
 
+namespace {
+
+// At most this many diagnostic lines reach a user (the verifier can report one per statement).
+constexpr size_t kMaxDiagnosticLines = 200;
+
+std::string capLines(std::string text, size_t max, const std::string &file) {
+  size_t pos = 0, lines = 0;
+  while (lines < max && (pos = text.find('\n', pos)) != std::string::npos) {
+    ++pos;
+    ++lines;
+  }
+  if (lines < max || pos >= text.size()) return text;
+  size_t rest = 0;
+  for (size_t i = pos; i < text.size(); ++i) rest += text[i] == '\n';
+  text.resize(pos);
+  return text + file + ": note: " + std::to_string(rest) + " more diagnostic lines not shown\n";
+}
+
+} // namespace
+
 bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error) {
   src.path = path;
   std::string text;
@@ -36,7 +56,7 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
   opts.plc2Nvalue = plc2Nvalue;
   const SymbolTable *symbols = src.dit ? &src.dit->symbols : nullptr;
   std::optional<VerifiedProgram> prog = compileFrontEnd(src.text, src.path, opts, diags, symbols);
-  diagnostics = diags.render();
+  diagnostics = capLines(diags.render(), kMaxDiagnosticLines, src.path);
   if (prog && !diags.hasErrors()) return prog;
   if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
     diagnostics += src.path + ": error: program rejected without a diagnostic\n";

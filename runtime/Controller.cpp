@@ -436,9 +436,10 @@ json Controller::doLoad(const json &req) {
   const bool allowShrink = req.value("allow_shrink", false);
   std::string err;
   // `load` reads only below the operator's --load-dir directories (realpath, so a symlink
-  // cannot lead out of them).
+  // cannot lead out of them); the served PROGRAM an AOT `load PATH.so` pairs with is not new.
   const std::string what = so.empty() ? "'" + program + "'" : "'" + program + "' (" + so + ")";
-  for (const std::string *p : {&program, &so})
+  std::string asked = str("program");
+  for (const std::string *p : {&asked, &so})
     if (!p->empty() && !allowed(*p, err)) {
       refuse(what, err, err);
       return fail(err);
