@@ -89,7 +89,7 @@ int connectTo(const std::string &path) {
 
 std::string answerOn(int fd, const std::string &line) {
   EXPECT_EQ(::send(fd, line.data(), line.size(), MSG_NOSIGNAL), (ssize_t)line.size());
-  timeval tv{5, 0};
+  timeval tv{30, 0};
   ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
   std::string got;
   char c;
@@ -125,12 +125,12 @@ TEST(ControlSlots, ReservedSlotWhenAllAreBusyAndEvictionWhenIdle) {
     fds.push_back(connectTo(path));
     ASSERT_EQ(::send(fds.back(), "{\"cmd\":\"slow\"}\n", 16, MSG_NOSIGNAL), 16);
   }
-  for (int k = 0; k < 500 && busy.load() < ControlSocket::kMaxClients; ++k) ::usleep(10000);
+  for (int k = 0; k < 3000 && busy.load() < ControlSocket::kMaxClients; ++k) ::usleep(10000);
   ASSERT_EQ(busy.load(), ControlSocket::kMaxClients);
   int reserved = connectTo(path); // all 16 busy: the reserved slot takes it
   EXPECT_EQ(answerOn(reserved, "{\"cmd\":\"stop\"}\n"), R"({"ok":true})");
   ASSERT_EQ(::send(reserved, "{\"cmd\":\"slow\"}\n", 16, MSG_NOSIGNAL), 16);
-  for (int k = 0; k < 500 && busy.load() < ControlSocket::kMaxClients + 1; ++k) ::usleep(10000);
+  for (int k = 0; k < 3000 && busy.load() < ControlSocket::kMaxClients + 1; ++k) ::usleep(10000);
   ASSERT_EQ(busy.load(), ControlSocket::kMaxClients + 1);
   int beyond = connectTo(path); // 17 busy, none idle: refused at once
   EXPECT_EQ(answerOn(beyond, ""), R"({"ok":false,"error":"too many control clients"})");
