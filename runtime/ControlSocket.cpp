@@ -271,14 +271,15 @@ void ControlSocket::serveClient(Client *c) {
       c->state = Handling;
       std::string line = buf.substr(0, nl);
       buf.erase(0, nl + 1);
-      if (!writeAll(fd, answer(handler_, line))) open = false;
-    }
-    if (!open) break;
-    if (c->state.load() == Handling) { // answered: the rest (if any) is a new request
+      std::string out = answer(handler_, line);
+      // Answered: the rest (if any) is a new request. Set before sending, so a client that
+      // has its answer never sees this connection still counted as busy.
       since = steadyMs();
       c->sinceMs = since;
       c->state = buf.empty() ? Idle : Receiving;
+      if (!writeAll(fd, out)) open = false;
     }
+    if (!open) break;
     if (buf.size() > kMaxLine) {
       writeAll(fd, R"({"ok":false,"error":"request line too long"})"
                    "\n");

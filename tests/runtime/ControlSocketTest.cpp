@@ -6,8 +6,18 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -66,6 +76,79 @@ TEST(ControlPeers, OwnUidAndRootOnly) {
   EXPECT_TRUE(ControlSocket::allowedPeer(0));
   EXPECT_TRUE(ControlSocket::allowedPeer(::geteuid()));
   EXPECT_FALSE(ControlSocket::allowedPeer(::geteuid() + 1 == 0 ? 2 : ::geteuid() + 1));
+}
+
+int connectTo(const std::string &path) {
+  sockaddr_un a{};
+  a.sun_family = AF_UNIX;
+  std::memcpy(a.sun_path, path.data(), path.size());
+  int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr *>(&a), sizeof a), 0);
+  return fd;
+}
+
+std::string answerOn(int fd, const std::string &line) {
+  EXPECT_EQ(::send(fd, line.data(), line.size(), MSG_NOSIGNAL), (ssize_t)line.size());
+  timeval tv{30, 0};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+  std::string got;
+  char c;
+  while (::recv(fd, &c, 1, 0) == 1 && c != '\n') got += c;
+  return got;
+}
+
+// 16 connections busy in a request (a `load` compiling), then the reserved slot lets one more
+// in (`monitor stop`); only a connection beyond that is refused. Idle ones are evicted.
+TEST(ControlSlots, ReservedSlotWhenAllAreBusyAndEvictionWhenIdle) {
+  char dir[] = "/tmp/lj-ctl-slot-XXXXXX";
+  ASSERT_NE(::mkdtemp(dir), nullptr);
+  const std::string path = std::string(dir) + "/c.sock";
+  std::mutex mu;
+  std::condition_variable cv;
+  bool release = false;
+  std::atomic<int> busy{0};
+  ControlSocket sock([&](const json &r) -> json {
+    if (r.value("cmd", "") == "slow") {
+      ++busy;
+      std::unique_lock lk(mu);
+      cv.wait(lk, [&] { return release; });
+    }
+    return {{"ok", true}};
+  });
+  std::string err;
+  ASSERT_TRUE(sock.start(path, err)) << err;
+  struct stat st;
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0600u);
+  std::vector<int> fds;
+  for (int i = 0; i < ControlSocket::kMaxClients; ++i) {
+    fds.push_back(connectTo(path));
+    ASSERT_EQ(::send(fds.back(), "{\"cmd\":\"slow\"}\n", 16, MSG_NOSIGNAL), 16);
+  }
+  for (int k = 0; k < 3000 && busy.load() < ControlSocket::kMaxClients; ++k) ::usleep(10000);
+  ASSERT_EQ(busy.load(), ControlSocket::kMaxClients);
+  int reserved = connectTo(path); // all 16 busy: the reserved slot takes it
+  EXPECT_EQ(answerOn(reserved, "{\"cmd\":\"stop\"}\n"), R"({"ok":true})");
+  ASSERT_EQ(::send(reserved, "{\"cmd\":\"slow\"}\n", 16, MSG_NOSIGNAL), 16);
+  for (int k = 0; k < 3000 && busy.load() < ControlSocket::kMaxClients + 1; ++k) ::usleep(10000);
+  ASSERT_EQ(busy.load(), ControlSocket::kMaxClients + 1);
+  int beyond = connectTo(path); // 17 busy, none idle: refused at once
+  EXPECT_EQ(answerOn(beyond, ""), R"({"ok":false,"error":"too many control clients"})");
+  ::close(beyond);
+  {
+    std::lock_guard lk(mu);
+    release = true;
+  }
+  cv.notify_all();
+  fds.push_back(reserved);
+  for (int fd : fds) EXPECT_EQ(answerOn(fd, ""), R"({"ok":true})");
+  // Now 17 idle connections: a new one evicts the one idle longest and is served.
+  int fresh = connectTo(path);
+  EXPECT_EQ(answerOn(fresh, "{\"cmd\":\"stop\"}\n"), R"({"ok":true})");
+  ::close(fresh);
+  for (int fd : fds) ::close(fd);
+  sock.stop();
+  ::rmdir(dir);
 }
 
 } // namespace
