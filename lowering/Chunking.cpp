@@ -1,6 +1,8 @@
 // Where a long body may be cut into separate LLVM functions (compile time stays linear in the
-// program size). A cut needs no live ST entry, an empty MS, and no loop or jump across it; the
-// entries still on ST there are dead and the next function starts them as 0.
+// program size). No loop (one that stays inline) and no JMP..LBL span may cross a cut. A clean
+// cut has no live ST entry and an empty MS: the entries still on ST there are dead and the next
+// function starts them as 0. Where a body has no clean cut for long (one long rung, a deep MS),
+// a carried cut hands the live entries to the next function through the body's carry buffer.
 #include "lowering/FunctionEmitter.h"
 
 #include <algorithm>
@@ -48,20 +50,72 @@ void liveTransfer(const Stmt &s, int32_t d, std::set<int32_t> &live) {
   }
 }
 
+// Lowest ST (ms = false) or MS position statement i may read, replace or pop (its depth when
+// it touches none). Structural statements are handled by the caller.
+int32_t touchedLow(const VerifiedProgram &p, int32_t i, bool ms) {
+  const StmtInfo &info = p.info[i];
+  const InstrInfo &row = instrInfo(p.stmts[i].op);
+  int32_t d = ms ? info.msDepth : info.depth, n = 0;
+  switch (row.stack) {
+  case StackRule::Push:
+    break;
+  case StackRule::MpsPush:
+    n = ms ? 0 : 1;
+    break;
+  case StackRule::MsRead:
+  case StackRule::MsPop:
+    n = 1;
+    break;
+  case StackRule::BlockPop:
+    n = ms ? 0 : 2;
+    break;
+  case StackRule::Block:
+    n = ms ? 0 : std::max<int32_t>(row.inputs, 1);
+    break;
+  default: // Combine, Coil
+    n = ms ? 0 : 1;
+    break;
+  }
+  return std::max(d - n, 0);
+}
+
+// The positions a chunk exchanges through the carry buffer (ChunkPlan).
+void carryRanges(const VerifiedProgram &p, ChunkPlan &c) {
+  int32_t st = p.info[c.r.begin].depth, ms = p.info[c.r.begin].msDepth;
+  bool reset = false; // a structural statement emptied both stacks
+  for (int32_t i = c.r.begin; i < c.r.end; ++i) {
+    if (instrInfo(p.stmts[i].op).stack == StackRule::Structural) {
+      reset = true;
+      break;
+    }
+    st = std::min(st, touchedLow(p, i, false));
+    ms = std::min(ms, touchedLow(p, i, true));
+  }
+  if (c.carriedIn) {
+    c.stLoad = st;
+    c.msLoad = ms;
+  }
+  if (c.carriedOut) {
+    c.stStore = reset ? 0 : st;
+    c.msStore = reset ? 0 : ms;
+  }
+}
+
 } // namespace
 
-std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target) {
+std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target) {
   const int32_t n = r.end - r.begin;
-  if (target <= 0 || n <= target) return {r};
-  // ok[j] says whether a cut before statement r.begin + j is allowed.
-  std::vector<char> ok(static_cast<size_t>(n), 1);
-  ok[0] = 0;
+  if (target <= 0 || n <= target) return {ChunkPlan{r}};
+  // clean[j] / carry[j]: whether a clean / carried cut before statement r.begin + j is allowed.
+  std::vector<char> clean(static_cast<size_t>(n), 1), carry(static_cast<size_t>(n), 1);
+  clean[0] = carry[0] = 0;
   std::vector<int32_t> spans(static_cast<size_t>(n) + 1, 0); // difference array of JMP spans
   int32_t nest = 0;
   for (int32_t i = r.begin; i < r.end; ++i) {
     const Stmt &s = p.stmts[i];
     const StmtInfo &info = p.info[i];
-    if (nest > 0 || info.msDepth != 0) ok[i - r.begin] = 0;
+    if (nest > 0) clean[i - r.begin] = carry[i - r.begin] = 0;
+    if (info.msDepth != 0) clean[i - r.begin] = 0;
     if (s.op == Op::LOOP) ++nest;
     if (s.op == Op::NEXT) --nest;
     if (s.op == Op::JMP && info.target >= r.begin && info.target < r.end) {
@@ -74,22 +128,36 @@ std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t
   int32_t open = 0;
   for (int32_t j = 0; j < n; ++j) {
     open += spans[j];
-    if (open > 0) ok[j] = 0;
+    if (open > 0) clean[j] = carry[j] = 0;
   }
   std::set<int32_t> live;
   for (int32_t i = r.end - 1; i >= r.begin; --i) {
     liveTransfer(p.stmts[i], p.info[i].depth, live);
-    if (!live.empty()) ok[i - r.begin] = 0;
+    if (!live.empty()) clean[i - r.begin] = 0;
   }
-  std::vector<StmtRange> out;
+  // Greedy: a clean cut once `target` statements are in the chunk; a carried one only after
+  // twice that without a clean cut (ordinary rung-structured code never needs one).
+  std::vector<ChunkPlan> out;
   int32_t start = r.begin;
+  bool carriedIn = false;
   for (int32_t i = r.begin + 1; i < r.end; ++i) {
-    if (ok[i - r.begin] && i - start >= target) {
-      out.push_back({start, i});
+    const int32_t len = i - start;
+    const bool cleanCut = clean[i - r.begin] && len >= target;
+    const bool carriedCut = !cleanCut && carry[i - r.begin] && len >= 2 * target;
+    if (cleanCut || carriedCut) {
+      out.push_back(ChunkPlan{{start, i}, carriedIn, carriedCut});
       start = i;
+      carriedIn = carriedCut;
     }
   }
-  out.push_back({start, r.end});
+  out.push_back(ChunkPlan{{start, r.end}, carriedIn, false});
+  for (ChunkPlan &c : out) carryRanges(p, c);
+  return out;
+}
+
+std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target) {
+  std::vector<StmtRange> out;
+  for (const ChunkPlan &c : planChunkFunctions(p, r, target)) out.push_back(c.r);
   return out;
 }
 
