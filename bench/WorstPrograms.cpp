@@ -42,10 +42,12 @@ void repeat(std::vector<std::string> &out, int32_t n, const std::string &line) {
 /// Flow shapes, named after the row they stress.
 bool flowShape(Op op, int32_t n, std::vector<std::string> &l) {
   switch (op) {
-  case Op::JMP: // nested forward spans: no statement is outside all of them
-    l.push_back("LDT");
-    for (int32_t k = 1; k <= n / 2; ++k) l.push_back("JMP L" + std::to_string(k));
-    for (int32_t k = n / 2; k >= 1; --k) l.push_back("LBL L" + std::to_string(k));
+  case Op::JMP: // nested forward spans, each on its own input: no cut is outside all of them
+    for (int32_t k = 1; k <= n / 3; ++k) {
+      l.push_back("LD X" + std::to_string(k / 8 % 64) + "." + std::to_string(k % 8));
+      l.push_back("JMP L" + std::to_string(k));
+    }
+    for (int32_t k = n / 3; k >= 1; --k) l.push_back("LBL L" + std::to_string(k));
     return true;
   case Op::LBL: // a forward jump to every label
     for (int32_t k = 1; k <= n / 3; ++k) {
@@ -100,6 +102,7 @@ GenProgram generateWorst(const std::string &name, int32_t n) {
   if (flowShape(op, n, l)) return p;
   const InstrInfo &in = instrInfo(op);
   const std::string row = rowLine(in);
+  if (op == Op::TOOLLIFE) n = std::min(n, 500); // the verifier allows 512 TOOLLIFE instances
   switch (in.stack) {
   case StackRule::Push: // a deep stack: every entry is live until the ORB chain folds it
     repeat(l, n / 2, row);

@@ -45,8 +45,9 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
   st_.assign(static_cast<size_t>(deadDepth), b_.getFalse()); // dead entries read as 0
   ms_.clear();
   chunk_ = chunk && carry ? chunk : nullptr;
-  if (chunk_) {
-    carry_ = *carry;
+  range_ = r;
+  if (carry) carry_ = *carry;
+  if (chunk_ && carry_.buf) {
     ms_.assign(static_cast<size_t>(prog_.info[r.begin].msDepth), b_.getFalse());
     // Live entries of a carried cut: only the positions this chunk touches.
     auto load = [&](std::vector<llvm::Value *> &stack, int32_t from, int32_t base) {
@@ -80,7 +81,7 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
 
 llvm::Error FunctionEmitter::finish() {
   cache_.flush();
-  if (chunk_) { // hand the live entries of the cut after this chunk to the next one
+  if (chunk_ && carry_.buf) { // hand the live entries of the cut after this chunk to the next one
     auto store = [&](const std::vector<llvm::Value *> &stack, int32_t from, int32_t base) {
       for (int32_t k = std::max(from, 0); from >= 0 && k < static_cast<int32_t>(stack.size());
            ++k) {
@@ -166,7 +167,16 @@ llvm::Error FunctionEmitter::emitJmp(int32_t i) {
   if (info.target < 0 || prog_.stmts[info.target].op != Op::LBL)
     return fail(i, "jump target is not a LBL");
   llvm::Value *en = enable(); // ST is left as it is
-  llvm::BasicBlock *target = labelBlock(info.target);
+  llvm::BasicBlock *target = nullptr;
+  if (info.target >= range_.begin && info.target < range_.end) {
+    target = labelBlock(info.target);
+  } else { // the label starts another chunk of this body: its dispatcher goes on there
+    if (!carry_.labelChunk || !carry_.labelChunk->count(info.target))
+      return fail(i, "jump target outside the lowered body");
+    target = newBlock("jump.chunk");
+    llvm::IRBuilder<> jb(target);
+    jb.CreateRet(jb.getInt32(kStatusJump + carry_.labelChunk->at(info.target)));
+  }
   llvm::BasicBlock *cont = newBlock("nojump");
   cache_.flush();
   if (info.backward) {
@@ -216,7 +226,8 @@ void FunctionEmitter::emitLoop(int32_t i) {
 
 bool FunctionEmitter::outlines(int32_t loopIndex) const {
   const int32_t limit = mc_.opts.chunkStatements;
-  return limit > 0 && prog_.info[loopIndex].target - loopIndex - 1 > limit;
+  const std::vector<int64_t> &w = mc_.weightBefore;
+  return limit > 0 && w[prog_.info[loopIndex].target] - w[loopIndex + 1] > limit;
 }
 
 void FunctionEmitter::emitOutlinedLoop(int32_t i) {

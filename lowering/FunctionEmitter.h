@@ -32,6 +32,8 @@ struct ModuleContext {
     StmtRange body;
   };
   std::vector<Outlined> pendingLoops;
+  /// weightBefore[i]: bodyWeight of statements [0, i) (prefix sums: O(1) loop sizes).
+  std::vector<int64_t> weightBefore;
 };
 
 /// One chunk function of a long body. A carried cut hands live ST/MS entries to the next chunk
@@ -42,6 +44,9 @@ struct ModuleContext {
 struct ChunkPlan {
   StmtRange r;
   bool carriedIn = false, carriedOut = false;
+  /// The body has cuts inside JMP spans: a JMP to a label of another chunk (which then starts
+  /// with that label) returns kStatusJump + the chunk's index to the body's dispatcher.
+  bool jumps = false;
   int32_t stLoad = -1, msLoad = -1, stStore = -1, msStore = -1;
 };
 
@@ -49,14 +54,19 @@ struct ChunkPlan {
 /// `carried`: `i32 (ptr s, ptr carry)` for a chunk of a body with carried cuts.
 llvm::Function *makeBodyFunction(ModuleContext &mc, const std::string &name, bool carried);
 
-/// Where a chunk finds the carry buffer.
+/// Where a chunk finds the carry buffer, and (bodies with ChunkPlan::jumps) which chunk starts
+/// at each jumped-to label.
 struct CarryBuffer {
   llvm::Value *buf = nullptr;
   int32_t msBase = 0;
+  const std::unordered_map<int32_t, uint32_t> *labelChunk = nullptr;
 };
 
 /// Status a body chunk of a subroutine returns when a RETN fired (never seen by the host).
 inline constexpr uint32_t kStatusReturn = 0x80000000u;
+/// Status kStatusJump + k: a chunk's JMP goes on at chunk k of the same body (never seen by the
+/// host either; chunk indices stay far below 2^30).
+inline constexpr uint32_t kStatusJump = 0x40000000u;
 
 /// Emits statements into `fn`, whose state pointer is `state`. Usage: emitRange, then finish.
 class FunctionEmitter {
@@ -227,6 +237,7 @@ private:
   llvm::BasicBlock *abort_ = nullptr; ///< `ret LJ_FAULT_WATCHDOG`, created on first use
   const ChunkPlan *chunk_ = nullptr;  ///< set for a chunk with carried entries
   CarryBuffer carry_;
+  StmtRange range_{};
 };
 
 /// Split [r.begin, r.end) into consecutive ranges of about `target` statements. Cuts are placed
@@ -235,6 +246,9 @@ private:
 /// Where no such cut comes for 2 * `target` statements, a carried cut (ChunkPlan) is placed at
 /// the next statement outside loops and JMP spans, so a function's length stays bounded.
 std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target);
+/// Estimated size of the lowering of [r.begin, r.end), in the units of `target` (ordinary
+/// statements weigh 1, rows whose lowering is long more).
+int64_t bodyWeight(const VerifiedProgram &p, StmtRange r);
 /// The ranges of planChunkFunctions.
 std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target);
 

@@ -10,6 +10,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace lj::lower {
 
@@ -95,26 +96,49 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
     carry.msBase = stMax;
     b.CreateMemSet(carry.buf, b.getInt8(0), size, llvm::MaybeAlign(1));
   }
+  // Chunk k runs in block chunk<k>; a non-zero status goes to `stop`, or with jumps between
+  // chunks first to `dispatch`, which goes on at the chunk a kStatusJump names.
+  const bool jumps = chunks.front().jumps;
+  std::unordered_map<int32_t, uint32_t> labelChunk;
+  std::vector<llvm::BasicBlock *> callAt;
+  for (size_t k = 0; k < chunks.size(); ++k) {
+    callAt.push_back(llvm::BasicBlock::Create(ctx, "chunk" + std::to_string(k), fn));
+    if (jumps && mc.prog.stmts[chunks[k].r.begin].op == Op::LBL)
+      labelChunk[chunks[k].r.begin] = static_cast<uint32_t>(k);
+  }
+  b.CreateBr(callAt[0]);
+  llvm::BasicBlock *done = llvm::BasicBlock::Create(ctx, "done", fn);
+  llvm::IRBuilder<>(done).CreateRet(b.getInt32(LJ_FAULT_NONE));
   llvm::BasicBlock *stop = llvm::BasicBlock::Create(ctx, "stop", fn);
   llvm::PHINode *stopStatus = llvm::PHINode::Create(b.getInt32Ty(), chunks.size(), "status", stop);
+  llvm::BasicBlock *dispatch = stop;
+  llvm::PHINode *jumpStatus = nullptr;
+  if (jumps) {
+    dispatch = llvm::BasicBlock::Create(ctx, "dispatch", fn);
+    llvm::IRBuilder<> db(dispatch);
+    jumpStatus = db.CreatePHI(b.getInt32Ty(), chunks.size(), "status");
+    llvm::SwitchInst *sw = db.CreateSwitch(jumpStatus, stop, labelChunk.size());
+    for (auto &[lbl, k] : labelChunk) sw->addCase(db.getInt32(kStatusJump + k), callAt[k]);
+    stopStatus->addIncoming(jumpStatus, dispatch);
+  }
   for (size_t k = 0; k < chunks.size(); ++k) {
     const ChunkPlan &c = chunks[k];
+    b.SetInsertPoint(callAt[k]);
     llvm::Function *cfn =
         makeBodyFunction(mc, fn->getName().str() + ".c" + std::to_string(k), carried);
     cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
     FunctionEmitter fe(mc, cfn, cfn->getArg(0), isSub ? kStatusReturn : retnStatus);
     int32_t dead = k == 0 ? deadDepth : mc.prog.info[c.r.begin].depth;
-    const CarryBuffer mine{carried ? cfn->getArg(1) : nullptr, carry.msBase};
-    if (llvm::Error e = fe.emitRange(c.r, dead, &c, carried ? &mine : nullptr)) return e;
+    const CarryBuffer mine{carried ? cfn->getArg(1) : nullptr, carry.msBase,
+                           jumps ? &labelChunk : nullptr};
+    if (llvm::Error e = fe.emitRange(c.r, dead, &c, &mine)) return e;
     if (llvm::Error e = fe.finish()) return e;
     llvm::Value *st = carried ? b.CreateCall(cfn, {stateArg(fn), carry.buf}, "st")
                               : b.CreateCall(cfn, {stateArg(fn)}, "st");
-    llvm::BasicBlock *next = llvm::BasicBlock::Create(ctx, "next", fn);
-    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), stop, next);
-    stopStatus->addIncoming(st, b.GetInsertBlock());
-    b.SetInsertPoint(next);
+    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), dispatch,
+                   k + 1 < chunks.size() ? callAt[k + 1] : done);
+    (jumps ? jumpStatus : stopStatus)->addIncoming(st, callAt[k]);
   }
-  b.CreateRet(b.getInt32(LJ_FAULT_NONE));
   b.SetInsertPoint(stop);
   llvm::Value *status = stopStatus;
   if (isSub && retnStatus != kStatusReturn) // a RETN ends the subroutine normally
@@ -189,7 +213,9 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
   if (!layout) return layout.takeError();
   if (prog.info.size() != prog.stmts.size())
     return llvm::createStringError("verified program without statement facts");
-  ModuleContext mc{prog, *mod, *layout, opts, {}, {}};
+  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {0}};
+  for (int32_t i = 0; i < static_cast<int32_t>(prog.stmts.size()); ++i)
+    mc.weightBefore.push_back(mc.weightBefore.back() + bodyWeight(prog, {i, i + 1}));
   const uint32_t parts = std::max<uint32_t>(opts.partitions, 1);
   const bool shared = parts > 1;
   const std::vector<uint32_t> owner = planPartitions(prog, parts);
