@@ -1,7 +1,10 @@
 // JIT compile latency per program size and tier, with the lower / optimize / codegen phase
 // times (targets: optimizing < 1 s, fast < 150 ms for 10k statements), and compiles served by
-// the object cache (in memory, and from disk as in a new `ladderjit run` process).
+// the object cache (in memory, and from disk as in a new `ladderjit run` process), and the
+// worst-case program of every instruction (bench/WorstPrograms.h) at two sizes, whose ratio
+// shows the compile time is linear for every mix (BM_CompileWorst/<row>/<statements>).
 #include "bench/BenchPrograms.h"
+#include "bench/WorstPrograms.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"
 
@@ -95,7 +98,46 @@ BENCHMARK_CAPTURE(BM_CompileCached, disk, CacheTier::Disk)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
+/// The optimizing-tier compile of the worst case `name` of `n` statements (as `ladderjit run`).
+void BM_CompileWorst(benchmark::State &state, const std::string &name) {
+  const int n = static_cast<int>(state.range(0));
+  Diagnostics d("worst.stl");
+  std::optional<VerifiedProgram> p =
+      compileFrontEnd(gen::generateWorst(name, n).text(), "worst.stl", {}, d);
+  if (!p) {
+    state.SkipWithError(("worst case does not verify: " + d.render()).c_str());
+    return;
+  }
+  jit::JitOptions o;
+  Stopwatch sw(CLOCK_PROCESS_CPUTIME_ID);
+  for (auto _ : state) {
+    std::string err;
+    std::unique_ptr<Engine> e = jit::compile(*p, o, err);
+    if (!e) {
+      state.SkipWithError(("JIT compile failed: " + err).c_str());
+      break;
+    }
+    benchmark::DoNotOptimize(e.get());
+  }
+  setStatementCounters(state, static_cast<int64_t>(p->stmts.size()), sw.ns());
+}
+
 } // namespace
 } // namespace lj::bench
 
-BENCHMARK_MAIN();
+int main(int argc, char **argv) {
+  for (const std::string &name : lj::gen::worstCaseNames())
+    benchmark::RegisterBenchmark(("BM_CompileWorst/" + name).c_str(), lj::bench::BM_CompileWorst,
+                                 name)
+        ->Arg(1000)
+        ->Arg(4000)
+        ->Iterations(1)
+        ->MeasureProcessCPUTime()
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

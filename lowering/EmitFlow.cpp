@@ -40,9 +40,26 @@ llvm::BasicBlock *FunctionEmitter::labelBlock(int32_t lblIndex) {
   return it->second;
 }
 
-llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth) {
+llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const ChunkPlan *chunk,
+                                       const CarryBuffer *carry) {
   st_.assign(static_cast<size_t>(deadDepth), b_.getFalse()); // dead entries read as 0
   ms_.clear();
+  chunk_ = chunk && carry ? chunk : nullptr;
+  range_ = r;
+  if (carry) carry_ = *carry;
+  if (chunk_ && carry_.buf) {
+    ms_.assign(static_cast<size_t>(prog_.info[r.begin].msDepth), b_.getFalse());
+    // Live entries of a carried cut: only the positions this chunk touches.
+    auto load = [&](std::vector<llvm::Value *> &stack, int32_t from, int32_t base) {
+      for (int32_t k = std::max(from, 0); from >= 0 && k < static_cast<int32_t>(stack.size());
+           ++k) {
+        llvm::Value *p = b_.CreateConstInBoundsGEP1_32(b_.getInt8Ty(), carry_.buf, base + k);
+        stack[k] = b_.CreateTrunc(b_.CreateLoad(b_.getInt8Ty(), p), b_.getInt1Ty());
+      }
+    };
+    load(st_, chunk_->stLoad, 0);
+    load(ms_, chunk_->msLoad, carry_.msBase);
+  }
   for (int32_t i = r.begin; i < r.end; ++i) {
     const StmtInfo &info = prog_.info[i];
     if (static_cast<int32_t>(st_.size()) != info.depth ||
@@ -50,6 +67,12 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth) {
       return fail(i, "stack depth " + std::to_string(st_.size()) + "/" +
                          std::to_string(ms_.size()) + " differs from the verifier's " +
                          std::to_string(info.depth) + "/" + std::to_string(info.msDepth));
+    if (prog_.stmts[i].op == Op::LOOP && outlines(i)) {
+      if (info.target < i || info.target >= r.end) return fail(i, "LOOP without NEXT in this body");
+      emitOutlinedLoop(i);
+      i = info.target; // the body and its NEXT are lowered in the loop's own function
+      continue;
+    }
     if (llvm::Error e = emitStmt(i)) return e;
   }
   if (!loops_.empty()) return fail(loops_.back().loopIndex, "LOOP without NEXT in this body");
@@ -58,6 +81,17 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth) {
 
 llvm::Error FunctionEmitter::finish() {
   cache_.flush();
+  if (chunk_ && carry_.buf) { // hand the live entries of the cut after this chunk to the next one
+    auto store = [&](const std::vector<llvm::Value *> &stack, int32_t from, int32_t base) {
+      for (int32_t k = std::max(from, 0); from >= 0 && k < static_cast<int32_t>(stack.size());
+           ++k) {
+        llvm::Value *p = b_.CreateConstInBoundsGEP1_32(b_.getInt8Ty(), carry_.buf, base + k);
+        b_.CreateStore(b_.CreateZExt(stack[k], b_.getInt8Ty()), p);
+      }
+    };
+    store(st_, chunk_->stStore, 0);
+    store(ms_, chunk_->msStore, carry_.msBase);
+  }
   b_.CreateRet(b_.getInt32(LJ_FAULT_NONE));
   for (auto &[index, bb] : labels_)
     if (!bb->getTerminator()) return fail(index, "jump target outside the lowered body");
@@ -133,7 +167,16 @@ llvm::Error FunctionEmitter::emitJmp(int32_t i) {
   if (info.target < 0 || prog_.stmts[info.target].op != Op::LBL)
     return fail(i, "jump target is not a LBL");
   llvm::Value *en = enable(); // ST is left as it is
-  llvm::BasicBlock *target = labelBlock(info.target);
+  llvm::BasicBlock *target = nullptr;
+  if (info.target >= range_.begin && info.target < range_.end) {
+    target = labelBlock(info.target);
+  } else { // the label starts another chunk of this body: its dispatcher goes on there
+    if (!carry_.labelChunk || !carry_.labelChunk->count(info.target))
+      return fail(i, "jump target outside the lowered body");
+    target = newBlock("jump.chunk");
+    llvm::IRBuilder<> jb(target);
+    jb.CreateRet(jb.getInt32(kStatusJump + carry_.labelChunk->at(info.target)));
+  }
   llvm::BasicBlock *cont = newBlock("nojump");
   cache_.flush();
   if (info.backward) {
@@ -177,6 +220,52 @@ void FunctionEmitter::emitLoop(int32_t i) {
   watchdogStep(body);
   b_.SetInsertPoint(body);
   loops_.push_back({i, header, remaining, exit});
+  st_.clear();
+  ms_.clear();
+}
+
+bool FunctionEmitter::outlines(int32_t loopIndex) const {
+  const int32_t limit = mc_.opts.chunkStatements;
+  const std::vector<int64_t> &w = mc_.weightBefore;
+  return limit > 0 && w[prog_.info[loopIndex].target] - w[loopIndex + 1] > limit;
+}
+
+void FunctionEmitter::emitOutlinedLoop(int32_t i) {
+  // The same loop as emitLoop (count read once, one watchdog step before each iteration), with
+  // the body a call. The body function returns 0, a fault (watchdog) that ends the tick, or
+  // kStatusReturn for a RETN taken inside it, which returns from this function as a RETN here.
+  const int32_t next = prog_.info[i].target;
+  llvm::Function *bodyFn =
+      makeBodyFunction(mc_, fn_->getName().str() + ".loop" + std::to_string(i), false);
+  bodyFn->addFnAttr(llvm::Attribute::NoInline); // the point is a separate, small function
+  mc_.pendingLoops.push_back({bodyFn, {i + 1, next}});
+
+  llvm::Value *count = readInt(prog_.stmts[i].ops[0]);
+  cache_.flush();
+  llvm::BasicBlock *pre = b_.GetInsertBlock();
+  llvm::BasicBlock *header = newBlock("loop");
+  llvm::BasicBlock *check = newBlock("loop.step");
+  llvm::BasicBlock *body = newBlock("loop.body");
+  llvm::BasicBlock *stop = newBlock("loop.stop");
+  llvm::BasicBlock *exit = newBlock("loop.end");
+  b_.CreateBr(header);
+  b_.SetInsertPoint(header);
+  llvm::PHINode *remaining = b_.CreatePHI(b_.getInt32Ty(), 2, "remaining");
+  remaining->addIncoming(count, pre);
+  llvm::Value *more =
+      b_.Insert(new llvm::ICmpInst(llvm::ICmpInst::ICMP_SGT, remaining, b_.getInt32(0)));
+  b_.CreateCondBr(more, check, exit);
+  b_.SetInsertPoint(check);
+  watchdogStep(body);
+  b_.SetInsertPoint(body);
+  llvm::Value *status = b_.CreateCall(bodyFn, {state_}, "status");
+  remaining->addIncoming(b_.Insert(llvm::BinaryOperator::CreateSub(remaining, b_.getInt32(1))),
+                         body);
+  b_.CreateCondBr(b_.CreateICmpNE(status, b_.getInt32(LJ_FAULT_NONE)), stop, header);
+  b_.SetInsertPoint(stop);
+  llvm::Value *isRetn = b_.CreateICmpEQ(status, b_.getInt32(kStatusReturn));
+  b_.CreateRet(b_.CreateSelect(isRetn, b_.getInt32(retnStatus_), status));
+  b_.SetInsertPoint(exit);
   st_.clear();
   ms_.clear();
 }

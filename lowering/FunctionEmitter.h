@@ -25,10 +25,48 @@ struct ModuleContext {
   StateLayout layout;
   LowerOptions opts;
   std::vector<llvm::Function *> subFns; ///< parallel to prog.subs
+  /// Loop bodies outlined into their own functions, waiting to be lowered (LowerProgram.cpp
+  /// lowers them after the body that calls them: no recursion, however deep the nesting).
+  struct Outlined {
+    llvm::Function *fn;
+    StmtRange body;
+  };
+  std::vector<Outlined> pendingLoops;
+  /// weightBefore[i]: bodyWeight of statements [0, i) (prefix sums: O(1) loop sizes).
+  std::vector<int64_t> weightBefore;
+};
+
+/// One chunk function of a long body. A carried cut hands live ST/MS entries to the next chunk
+/// through the body's carry buffer (ST position k at byte k, MS position k at byte msBase + k):
+/// the chunk loads positions [stLoad, depth) / [msLoad, msDepth) on entry and stores
+/// [stStore, depth) / [msStore, msDepth) at its end (-1: none). The ranges are the positions the
+/// chunk touches, so their size is bounded by its statement count, not by the stack depth.
+struct ChunkPlan {
+  StmtRange r;
+  bool carriedIn = false, carriedOut = false;
+  /// The body has cuts inside JMP spans: a JMP to a label of another chunk (which then starts
+  /// with that label) returns kStatusJump + the chunk's index to the body's dispatcher.
+  bool jumps = false;
+  int32_t stLoad = -1, msLoad = -1, stStore = -1, msStore = -1;
+};
+
+/// An internal `i32 (ptr s)` function for a chunk or an outlined loop body (LowerProgram.cpp);
+/// `carried`: `i32 (ptr s, ptr carry)` for a chunk of a body with carried cuts.
+llvm::Function *makeBodyFunction(ModuleContext &mc, const std::string &name, bool carried);
+
+/// Where a chunk finds the carry buffer, and (bodies with ChunkPlan::jumps) which chunk starts
+/// at each jumped-to label.
+struct CarryBuffer {
+  llvm::Value *buf = nullptr;
+  int32_t msBase = 0;
+  const std::unordered_map<int32_t, uint32_t> *labelChunk = nullptr;
 };
 
 /// Status a body chunk of a subroutine returns when a RETN fired (never seen by the host).
 inline constexpr uint32_t kStatusReturn = 0x80000000u;
+/// Status kStatusJump + k: a chunk's JMP goes on at chunk k of the same body (never seen by the
+/// host either; chunk indices stay far below 2^30).
+inline constexpr uint32_t kStatusJump = 0x40000000u;
 
 /// Emits statements into `fn`, whose state pointer is `state`. Usage: emitRange, then finish.
 class FunctionEmitter {
@@ -39,8 +77,11 @@ public:
 
   /// Lower statements [r.begin, r.end), entering with `deadDepth` ST entries that are never read
   /// (they hold 0) and an empty MS.
-  llvm::Error emitRange(StmtRange r, int32_t deadDepth);
-  /// Store the cached state and return LJ_FAULT_NONE; checks every jump target was placed.
+  /// With `chunk`, the entries of a carried cut come from (and go to) `carry` instead.
+  llvm::Error emitRange(StmtRange r, int32_t deadDepth, const ChunkPlan *chunk = nullptr,
+                        const CarryBuffer *carry = nullptr);
+  /// Store the cached state (and a carried chunk's entries) and return LJ_FAULT_NONE; checks
+  /// every jump target was placed.
   llvm::Error finish();
 
 private:
@@ -49,6 +90,10 @@ private:
   llvm::Error emitJmp(int32_t i);
   void emitLabel(int32_t i);
   void emitLoop(int32_t i);
+  /// A LOOP whose body is long becomes a call of the body's own function (lowered later), so
+  /// no function grows with the loop nesting or the body length.
+  void emitOutlinedLoop(int32_t i);
+  bool outlines(int32_t loopIndex) const;
   llvm::Error emitNext(int32_t i);
   llvm::Error emitCall(int32_t i);
   void emitRetn();
@@ -190,11 +235,21 @@ private:
   };
   std::vector<Loop> loops_;
   llvm::BasicBlock *abort_ = nullptr; ///< `ret LJ_FAULT_WATCHDOG`, created on first use
+  const ChunkPlan *chunk_ = nullptr;  ///< set for a chunk with carried entries
+  CarryBuffer carry_;
+  StmtRange range_{};
 };
 
 /// Split [r.begin, r.end) into consecutive ranges of about `target` statements. Cuts are placed
 /// only before statements where no ST entry is live (read later before a stack reset), MS is
 /// empty, and no loop body or JMP..LBL span crosses the cut.
+/// Where no such cut comes for 2 * `target` statements, a carried cut (ChunkPlan) is placed at
+/// the next statement outside loops and JMP spans, so a function's length stays bounded.
+std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target);
+/// Estimated size of the lowering of [r.begin, r.end), in the units of `target` (ordinary
+/// statements weigh 1, rows whose lowering is long more).
+int64_t bodyWeight(const VerifiedProgram &p, StmtRange r);
+/// The ranges of planChunkFunctions.
 std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target);
 
 } // namespace lj::lower

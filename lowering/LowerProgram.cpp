@@ -10,12 +10,13 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace lj::lower {
 
 namespace {
 
-enum class FnKind { Entry, SliceEntry, Body };
+enum class FnKind { Entry, SliceEntry, Body, CarriedBody };
 
 // Attributes promised for the state pointer: it is the only way generated code reaches memory,
 // so LLVM may keep image bytes in registers and merge stores.
@@ -38,6 +39,7 @@ llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind ki
   llvm::Type *ptr = llvm::PointerType::getUnqual(ctx);
   std::vector<llvm::Type *> params;
   if (kind == FnKind::Body) params = {ptr};
+  if (kind == FnKind::CarriedBody) params = {ptr, ptr};
   if (kind == FnKind::Entry) params = {ptr, ptr};
   if (kind == FnKind::SliceEntry) params = {ptr, ptr, i32};
   // `shared`: a body another partition's module may call, so it must be visible to the linker.
@@ -47,6 +49,13 @@ llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind ki
       llvm::Function::Create(llvm::FunctionType::get(i32, params, false), linkage, name, m);
   fn->addFnAttr(llvm::Attribute::NoUnwind);
   if (shared) fn->setDSOLocal(true); // the partitions are linked together: direct calls, no PLT
+  if (kind == FnKind::CarriedBody) {
+    markStateParam(fn, 0);
+    fn->addParamAttr(1, llvm::Attribute::NoAlias);
+    fn->addParamAttr(1, llvm::Attribute::NoCapture);
+    fn->getArg(1)->setName("carry");
+    return fn;
+  }
   markStateParam(fn, kind == FnKind::Body ? 0 : 1);
   if (kind != FnKind::Body) {
     fn->getArg(0)->setName("ctx"); // the engine context; compiled code does not use it
@@ -57,42 +66,98 @@ llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind ki
 
 llvm::Value *stateArg(llvm::Function *fn) { return fn->getArg(fn->arg_size() == 1 ? 0 : 1); }
 
-// Lowers one body (a part, a slice or a subroutine) into `fn`, cutting it into chunk functions
-// when it is long. In a subroutine (`isSub`), a RETN inside a chunk returns kStatusReturn,
-// which the driver turns into a normal return.
+// Lowers one body (a part, a slice, a subroutine or an outlined loop body) into `fn`, cutting it
+// into chunk functions when it is long. `retnStatus` is what a taken RETN returns from `fn`: 0
+// from a subroutine's own function, kStatusReturn from an outlined loop body; in a chunk of a
+// subroutine (`isSub`) a RETN returns kStatusReturn, which becomes `retnStatus` here.
 llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
-                      bool isSub) {
-  std::vector<StmtRange> chunks = planChunks(mc.prog, r, mc.opts.chunkStatements);
+                      bool isSub, uint32_t retnStatus = LJ_FAULT_NONE) {
+  std::vector<ChunkPlan> chunks = planChunkFunctions(mc.prog, r, mc.opts.chunkStatements);
   if (chunks.size() <= 1) {
-    FunctionEmitter fe(mc, fn, stateArg(fn), LJ_FAULT_NONE);
+    FunctionEmitter fe(mc, fn, stateArg(fn), retnStatus);
     if (llvm::Error e = fe.emitRange(r, deadDepth)) return e;
     return fe.finish();
   }
   llvm::LLVMContext &ctx = fn->getContext();
   llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", fn));
+  // The carry buffer holds the live entries at carried cuts (zeroed: dead entries read as 0).
+  int32_t stMax = 0, msMax = 0;
+  bool carried = false;
+  for (const ChunkPlan &c : chunks) {
+    if (!c.carriedOut) continue;
+    carried = true;
+    stMax = std::max(stMax, mc.prog.info[c.r.end].depth);
+    msMax = std::max(msMax, mc.prog.info[c.r.end].msDepth);
+  }
+  CarryBuffer carry;
+  if (carried) {
+    const uint64_t size = static_cast<uint64_t>(std::max(stMax + msMax, 1));
+    carry.buf = b.CreateAlloca(llvm::ArrayType::get(b.getInt8Ty(), size), nullptr, "carry");
+    carry.msBase = stMax;
+    b.CreateMemSet(carry.buf, b.getInt8(0), size, llvm::MaybeAlign(1));
+  }
+  // Chunk k runs in block chunk<k>; a non-zero status goes to `stop`, or with jumps between
+  // chunks first to `dispatch`, which goes on at the chunk a kStatusJump names.
+  const bool jumps = chunks.front().jumps;
+  std::unordered_map<int32_t, uint32_t> labelChunk;
+  std::vector<llvm::BasicBlock *> callAt;
+  for (size_t k = 0; k < chunks.size(); ++k) {
+    callAt.push_back(llvm::BasicBlock::Create(ctx, "chunk" + std::to_string(k), fn));
+    if (jumps && mc.prog.stmts[chunks[k].r.begin].op == Op::LBL)
+      labelChunk[chunks[k].r.begin] = static_cast<uint32_t>(k);
+  }
+  b.CreateBr(callAt[0]);
+  llvm::BasicBlock *done = llvm::BasicBlock::Create(ctx, "done", fn);
+  llvm::IRBuilder<>(done).CreateRet(b.getInt32(LJ_FAULT_NONE));
   llvm::BasicBlock *stop = llvm::BasicBlock::Create(ctx, "stop", fn);
   llvm::PHINode *stopStatus = llvm::PHINode::Create(b.getInt32Ty(), chunks.size(), "status", stop);
-  for (size_t k = 0; k < chunks.size(); ++k) {
-    llvm::Function *cfn =
-        makeFunction(mc.mod, fn->getName().str() + ".c" + std::to_string(k), FnKind::Body);
-    cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
-    FunctionEmitter fe(mc, cfn, cfn->getArg(0), isSub ? kStatusReturn : LJ_FAULT_NONE);
-    int32_t dead = k == 0 ? deadDepth : mc.prog.info[chunks[k].begin].depth;
-    if (llvm::Error e = fe.emitRange(chunks[k], dead)) return e;
-    if (llvm::Error e = fe.finish()) return e;
-    llvm::Value *st = b.CreateCall(cfn, {stateArg(fn)}, "st");
-    llvm::BasicBlock *next = llvm::BasicBlock::Create(ctx, "next", fn);
-    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), stop, next);
-    stopStatus->addIncoming(st, b.GetInsertBlock());
-    b.SetInsertPoint(next);
+  llvm::BasicBlock *dispatch = stop;
+  llvm::PHINode *jumpStatus = nullptr;
+  if (jumps) {
+    dispatch = llvm::BasicBlock::Create(ctx, "dispatch", fn);
+    llvm::IRBuilder<> db(dispatch);
+    jumpStatus = db.CreatePHI(b.getInt32Ty(), chunks.size(), "status");
+    llvm::SwitchInst *sw = db.CreateSwitch(jumpStatus, stop, labelChunk.size());
+    for (auto &[lbl, k] : labelChunk) sw->addCase(db.getInt32(kStatusJump + k), callAt[k]);
+    stopStatus->addIncoming(jumpStatus, dispatch);
   }
-  b.CreateRet(b.getInt32(LJ_FAULT_NONE));
+  for (size_t k = 0; k < chunks.size(); ++k) {
+    const ChunkPlan &c = chunks[k];
+    b.SetInsertPoint(callAt[k]);
+    llvm::Function *cfn =
+        makeBodyFunction(mc, fn->getName().str() + ".c" + std::to_string(k), carried);
+    cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
+    FunctionEmitter fe(mc, cfn, cfn->getArg(0), isSub ? kStatusReturn : retnStatus);
+    int32_t dead = k == 0 ? deadDepth : mc.prog.info[c.r.begin].depth;
+    const CarryBuffer mine{carried ? cfn->getArg(1) : nullptr, carry.msBase,
+                           jumps ? &labelChunk : nullptr};
+    if (llvm::Error e = fe.emitRange(c.r, dead, &c, &mine)) return e;
+    if (llvm::Error e = fe.finish()) return e;
+    llvm::Value *st = carried ? b.CreateCall(cfn, {stateArg(fn), carry.buf}, "st")
+                              : b.CreateCall(cfn, {stateArg(fn)}, "st");
+    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), dispatch,
+                   k + 1 < chunks.size() ? callAt[k + 1] : done);
+    (jumps ? jumpStatus : stopStatus)->addIncoming(st, callAt[k]);
+  }
   b.SetInsertPoint(stop);
   llvm::Value *status = stopStatus;
-  if (isSub) // a RETN ends the subroutine normally
+  if (isSub && retnStatus != kStatusReturn) // a RETN ends the subroutine normally
     status = b.CreateSelect(b.CreateICmpEQ(status, b.getInt32(kStatusReturn)),
-                            b.getInt32(LJ_FAULT_NONE), status);
+                            b.getInt32(retnStatus), status);
   b.CreateRet(status);
+  return llvm::Error::success();
+}
+
+// lowerBody, then the loop bodies it outlined (and theirs), without recursion.
+llvm::Error lowerTopBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
+                         bool isSub) {
+  if (llvm::Error e = lowerBody(mc, fn, r, deadDepth, isSub)) return e;
+  while (!mc.pendingLoops.empty()) {
+    ModuleContext::Outlined o = mc.pendingLoops.back();
+    mc.pendingLoops.pop_back();
+    // A RETN in the body (only in a subroutine) reaches the LOOP's function as kStatusReturn.
+    if (llvm::Error e = lowerBody(mc, o.fn, o.body, 0, true, kStatusReturn)) return e;
+  }
   return llvm::Error::success();
 }
 
@@ -112,6 +177,10 @@ void emitSliceSwitch(llvm::Function *plc2, const std::vector<llvm::Function *> &
 }
 
 } // namespace
+
+llvm::Function *makeBodyFunction(ModuleContext &mc, const std::string &name, bool carried) {
+  return makeFunction(mc.mod, name, carried ? FnKind::CarriedBody : FnKind::Body);
+}
 
 std::vector<uint32_t> planPartitions(const VerifiedProgram &prog, uint32_t partitions) {
   std::vector<int64_t> weight;
@@ -144,7 +213,9 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
   if (!layout) return layout.takeError();
   if (prog.info.size() != prog.stmts.size())
     return llvm::createStringError("verified program without statement facts");
-  ModuleContext mc{prog, *mod, *layout, opts, {}};
+  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {0}};
+  for (int32_t i = 0; i < static_cast<int32_t>(prog.stmts.size()); ++i)
+    mc.weightBefore.push_back(mc.weightBefore.back() + bodyWeight(prog, {i, i + 1}));
   const uint32_t parts = std::max<uint32_t>(opts.partitions, 1);
   const bool shared = parts > 1;
   const std::vector<uint32_t> owner = planPartitions(prog, parts);
@@ -156,15 +227,15 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
         makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body, shared));
   for (size_t k = 0; k < prog.subs.size(); ++k, ++unit)
     if (mine(unit))
-      if (llvm::Error e = lowerBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
+      if (llvm::Error e = lowerTopBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
 
   if (mine(unit++)) {
     llvm::Function *init = makeFunction(*mod, kInitSymbol, FnKind::Entry);
-    if (llvm::Error e = lowerBody(mc, init, prog.init, 0, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, init, prog.init, 0, false)) return e;
   }
   if (mine(unit++)) {
     llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
-    if (llvm::Error e = lowerBody(mc, plc1, prog.plc1, 0, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, plc1, prog.plc1, 0, false)) return e;
   }
 
   std::vector<StmtRange> slices = prog.slices;
@@ -176,7 +247,7 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
     if (!mine(unit)) continue; // declared only: another partition defines it
     fn->addFnAttr(llvm::Attribute::NoInline);
     int32_t dead = k < prog.sliceDepth.size() ? prog.sliceDepth[k] : 0;
-    if (llvm::Error e = lowerBody(mc, fn, slices[k], dead, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, fn, slices[k], dead, false)) return e;
   }
   if (opts.partition == 0)
     emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);

@@ -11,6 +11,7 @@
 #include <llvm/IR/LLVMContext.h>
 #include <llvm/IR/Module.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <regex>
 
@@ -64,19 +65,40 @@ TEST(Chunking, CutsOnlyWhereNothingIsLive) {
           "LBL L1\nLDT\nOUT Y4.0\n";
   auto prog = compileOrFail(text);
   ASSERT_TRUE(prog);
-  std::vector<StmtRange> chunks = lower::planChunks(*prog, prog->plc1, 1);
+  std::vector<lower::ChunkPlan> chunks = lower::planChunkFunctions(*prog, prog->plc1, 1);
   ASSERT_GT(chunks.size(), 30u);
-  EXPECT_EQ(chunks.front().begin, prog->plc1.begin);
-  EXPECT_EQ(chunks.back().end, prog->plc1.end);
+  EXPECT_EQ(chunks.front().r.begin, prog->plc1.begin);
+  EXPECT_EQ(chunks.back().r.end, prog->plc1.end);
   const int32_t base = prog->plc1.begin, anb = base + 80, mps = base + 85, loop = base + 91;
   for (size_t k = 1; k < chunks.size(); ++k) {
-    int32_t cut = chunks[k].begin;
-    EXPECT_EQ(chunks[k - 1].end, cut);
-    EXPECT_FALSE(cut > anb && cut <= anb + 3) << cut;        // X0.0 live until the ANB
-    EXPECT_FALSE(cut > mps && cut <= mps + 5) << cut;        // MS holds an entry
-    EXPECT_FALSE(cut > loop && cut <= loop + 5) << cut;      // inside LOOP..NEXT
-    EXPECT_FALSE(cut > loop + 7 && cut <= loop + 12) << cut; // between JMP and its LBL
+    int32_t cut = chunks[k].r.begin;
+    EXPECT_EQ(chunks[k - 1].r.end, cut);
+    EXPECT_EQ(chunks[k - 1].carriedOut, chunks[k].carriedIn);
+    // A cut where an entry is live must hand it over (a carried cut), elsewhere it is clean.
+    const bool live = (cut > anb && cut <= anb + 4)       // X0.0, then the ANB's result
+                      || (cut > mps && cut <= mps + 5);   // MS holds an entry
+    EXPECT_FALSE(cut > loop && cut <= loop + 5) << cut;   // inside LOOP..NEXT
+    const bool span = cut > loop + 7 && cut <= loop + 12; // between JMP and its LBL
+    if (!span) {
+      EXPECT_EQ(chunks[k].carriedIn, live) << cut;
+    }
+    // A cut inside a JMP span is the last resort (3 x target without another cut) and makes
+    // the label start a chunk, to which the JMP's chunk hands over by status.
+    if (span) {
+      EXPECT_TRUE(chunks[k].jumps) << cut;
+      EXPECT_TRUE(std::any_of(chunks.begin(), chunks.end(),
+                              [&](const lower::ChunkPlan &c) { return c.r.begin == loop + 12; }));
+    }
   }
+  // The carried cuts load and store only the positions their chunk touches: the chunk
+  // `OUT Y2.0 / ANB` (depth 42 on entry) reads positions 41 and 40, nothing below.
+  for (const lower::ChunkPlan &c : chunks)
+    if (c.r.begin == anb + 2) {
+      EXPECT_TRUE(c.carriedIn);
+      EXPECT_EQ(c.r.end, anb + 4);
+      EXPECT_EQ(c.stLoad, prog->info[anb + 2].depth - 2);
+      EXPECT_EQ(c.stStore, prog->info[anb + 2].depth - 2);
+    }
   EXPECT_EQ(lower::planChunks(*prog, prog->plc1, 0).size(), 1u);
 }
 
