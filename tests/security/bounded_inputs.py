@@ -81,6 +81,11 @@ def main():
     rc, err, _ = lj("check", errs, timeout=20)
     check(rc == 1 and err.count("error:") <= 101 and "too many errors" in err,
           f"5,000 bad lines: at most 101 errors ({err.count('error:')})")
+    anb = os.path.join(tmp, "anb.stl")
+    write(anb, "LDT\n" + "ANB\n" * 3000 + "1END\n2END\n")
+    rc, err, _ = lj("check", anb, timeout=20)
+    check(rc == 1 and err.count("\n") == 201 and "2800 more diagnostic lines not shown" in err,
+          f"3,000 verifier errors: 200 lines and a count ({err.count(chr(10))} lines)")
     secret = os.path.join(tmp, "shadow")
     write(secret, "".join(f"user{i}:$6$SECRETSALT{i}:19000:0:99999:7:::\n" for i in range(50)))
     rc, err, _ = lj("check", secret, timeout=10)
