@@ -4,7 +4,7 @@
 #pragma once
 
 #include "bench/Rng.h"
-#include "instructions/Area.h"
+#include "ir/Area.h"
 
 #include <cstdint>
 

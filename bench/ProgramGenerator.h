@@ -2,8 +2,8 @@
 // table-driven random valid programs (plus input stimulus) for differential fuzzing.
 #pragma once
 
-#include "instructions/Area.h"
-#include "instructions/InstrTable.h"
+#include "ir/Area.h"
+#include "ir/OpTable.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>

@@ -4,7 +4,7 @@
 
 #include "bench/ProgramGenerator.h"
 #include "bench/Rng.h"
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 
 #include <array>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #include "bench/GenPools.h"
 #include "bench/ProgramGenerator.h"
 #include "bench/RandomGen.h"
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 
 #include <array>
 #include <cassert>

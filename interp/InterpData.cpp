@@ -4,7 +4,7 @@
 // Written as the oracle: element by element, every read before any write where the reference
 // says so, no shortcuts. The verifier (VerifyData.cpp) has checked every constant range, so only
 // the indices computed at run time (XMOV/XCH formats 1 and 2, the COD index) are checked here.
-#include "instructions/InterpreterInternal.h"
+#include "interp/InterpreterInternal.h"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // Interpreter semantics of family Nc: NC services (chapter-4 CNC blocks, host callbacks, stateful
 // chapter-6 blocks). Written straight from hnc8-functions-1.md 2.4/3.1, hnc8-functions-2.md
 // 2.19-2.23, hnc8-cnc-interface.md section 2 and docs/dialect-notes.md "NC services".
-#include "instructions/InterpreterInternal.h"
+#include "interp/InterpreterInternal.h"
 
 namespace lj::interp {
 

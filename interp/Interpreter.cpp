@@ -5,8 +5,8 @@
 // loop body) runs as a statement range with explicit ST/MS stacks. Recursion is a compile error,
 // so every subroutine can own one preallocated pair of stacks; loops run on their scope's stacks
 // (they are emptied at LOOP and NEXT anyway).
-#include "instructions/Interpreter.h"
-#include "instructions/InterpreterInternal.h"
+#include "interp/Interpreter.h"
+#include "interp/InterpreterInternal.h"
 
 #include <algorithm>
 #include <array>

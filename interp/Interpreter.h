@@ -2,8 +2,8 @@
 // statement with explicit ST/MS stacks, written straight from DIALECT.md (STYLE.md 8).
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/Program.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 #include "ladderjit/abi.h"
 
 #include <memory>

@@ -3,7 +3,7 @@
 // InstrTable.h `Family`). Not part of the library's interface.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 #include "ladderjit/abi.h"
 
 #include <cassert>

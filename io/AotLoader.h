@@ -2,7 +2,7 @@
 // and ELF checks before dlopen, then ABI version and program hash. Plain dlopen/dlsym, no LLVM.
 #pragma once
 
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 #include "io/PlcDit.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 #include "io/PlcDit.h"
 
 #include <cstdint>

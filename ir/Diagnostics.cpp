@@ -1,5 +1,5 @@
 // Rendering of collected diagnostics as `file:line:col: severity: text` lines, sorted by position.
-#include "instructions/Diagnostics.h"
+#include "ir/Diagnostics.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // Located diagnostics (`file:line:col: error: text`), collected, never thrown.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 
 #include <string>
 #include <string_view>

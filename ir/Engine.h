@@ -3,7 +3,7 @@
 // every engine the same way (through lj_tick / lj_run_init).
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 #include "ladderjit/abi.h"
 
 #include <memory>

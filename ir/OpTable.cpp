@@ -1,7 +1,7 @@
 // The rows of the instruction table, one per mnemonic, from hnc8-core.md and
 // hnc8-functions-1/-2.md (summary tables). Adding an instruction = one row here + its two
 // semantics (interpreter, lowering) + tests.
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 
 #include <cctype>
 #include <cstring>

@@ -2,7 +2,7 @@
 // interpreter, the lowering and the fuzzer's program generator.
 #pragma once
 
-#include "instructions/Area.h"
+#include "ir/Area.h"
 
 #include <cstdint>
 #include <span>

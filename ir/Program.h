@@ -2,8 +2,8 @@
 // VerifiedProgram. Checkers observe, lowerers transform; these types carry no behaviour.
 #pragma once
 
-#include "instructions/Area.h"
-#include "instructions/InstrTable.h"
+#include "ir/Area.h"
+#include "ir/OpTable.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // The call graph between subroutines: recursion is an error, the call nesting depth is limited
 // (the main part is depth 0; dialect-notes "Flow"), and a subroutine no main part can reach is
 // never called (a warning).
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 namespace lj::verifier {
 

@@ -1,7 +1,7 @@
 // Per-unit checks (a main part or a subroutine): loop bodies and scopes, labels and jumps, the
 // static ST/MS depth before every statement, MPS pairing, double coils, unreachable code and
 // CALL sites (DIALECT.md 2, 3, 6; dialect-notes "Stacks and blocks", "Flow", "Double coils").
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <algorithm>
 #include <unordered_map>

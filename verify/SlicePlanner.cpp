@@ -2,7 +2,7 @@
 // rung boundary after at least plc2_nvalue statements. A rung boundary before statement i: MS
 // empty, no ST entry present there read later (before the next stack reset), not inside a loop
 // body, not between a JMP and its label.
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <climits>
 

@@ -1,7 +1,7 @@
 // State slots of instruction instances: edge bits (LDP..ORF, CTR) numbered in statement order,
 // timer/counter slots (lj_tc_slot) with the one-kind-per-number rule, and PLS/PLF/ALT block
 // numbers (DIALECT.md 3, 6; dialect-notes "Function blocks").
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include "ladderjit/abi.h"
 

@@ -1,7 +1,7 @@
 // The verifier's entry point and its first pass: program parts, markers and subroutines
 // (DIALECT.md 2, dialect-notes "Program parts"). Later passes live in Scopes.cpp,
 // StateSlots.cpp, CallGraph.cpp and SlicePlanner.cpp.
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <algorithm>
 

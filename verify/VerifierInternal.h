@@ -2,7 +2,7 @@
 // Internal to instructions/: not part of the front end's public interface.
 #pragma once
 
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // Verifier checks of family Cnc (hnc8-cnc-interface.md 2, docs/cnc-blocks.md) that an operand
 // spec cannot express: ALARM's number gap, USEROUT's four bytes, SPDLBUS1's P block, constant
 // MDST modes, and REFPT 5 (no status bit). Diagnostics point at the operand (DIALECT.md 6).
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 // Verifier checks of family Data (hnc8-functions-2.md 0.5, 2.2-2.18): constant ranges that must
 // lie inside their area (BMOV, tables, ASSEM/DISAS, the ACVT P block) and the start/end pairs of
 // FMOV and ZRST. Errors point at the offending operand (DIALECT.md 6).
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 // Verifier checks of family Nc that the operand table cannot express: register blocks that must
 // fit in their area (TEMPSEN X word and P block, HEADSEN D range, SPDA P block, NIXIE's second
 // display byte). Errors point at the operand (DIALECT.md 6, docs/dialect-notes.md "NC services").
-#include "instructions/VerifierInternal.h"
+#include "verify/VerifierInternal.h"
 
 #include <string>
 

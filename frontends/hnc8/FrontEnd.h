@@ -1,9 +1,9 @@
 // The STL front end: text -> ParsedProgram -> VerifiedProgram, with located diagnostics.
 #pragma once
 
-#include "instructions/Diagnostics.h"
-#include "instructions/Program.h"
-#include "instructions/Symbols.h"
+#include "ir/Diagnostics.h"
+#include "ir/Program.h"
+#include "frontends/hnc8/Symbols.h"
 
 #include <optional>
 #include <string_view>

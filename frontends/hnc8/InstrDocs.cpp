@@ -1,6 +1,6 @@
 // Per-mnemonic behaviour paragraphs and examples (from the reference files, sections cited) and
 // the renderer of docs/instructions.md: operands, roles, kinds and areas come from the table.
-#include "instructions/InstrDocs.h"
+#include "frontends/hnc8/InstrDocs.h"
 
 #include <sstream>
 

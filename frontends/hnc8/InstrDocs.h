@@ -3,7 +3,7 @@
 // texts (regenerate: `build/tools/gen-instr-doc/gen-instr-doc -o docs/instructions.md`).
 #pragma once
 
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 
 #include <span>
 #include <string>

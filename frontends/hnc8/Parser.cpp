@@ -1,7 +1,7 @@
 // Lexer and parser for STL text (DIALECT.md 2, docs/dialect-notes.md "Text"): one statement per
 // line, every operand (or the symbol standing for one) checked against the instruction table;
 // bad lines become located diagnostics and are dropped, parsing always continues.
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
 // Text dump of a verified program (`ladderjit check --print`, golden tests): a summary of parts,
 // subroutines and PLC2 slices, then one line per statement with the verifier's facts.
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <cstdio>
 

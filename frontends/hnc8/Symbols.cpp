@@ -1,9 +1,9 @@
 // Symbol names and their addresses: name syntax, address validation and case-insensitive lookup
 // (docs/plc-dit.md "Symbols").
-#include "instructions/Symbols.h"
+#include "frontends/hnc8/Symbols.h"
 
-#include "instructions/Area.h"
-#include "instructions/Diagnostics.h"
+#include "ir/Area.h"
+#include "ir/Diagnostics.h"
 
 namespace lj {
 

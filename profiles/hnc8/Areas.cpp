@@ -1,5 +1,5 @@
 // Area facts from DIALECT.md section 1, in one table.
-#include "instructions/Area.h"
+#include "ir/Area.h"
 
 #include "ladderjit/abi.h"
 

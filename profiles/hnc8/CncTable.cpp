@@ -1,7 +1,7 @@
 // The rows of the CNC interface table: hnc8-cnc-interface.md section 2 ("Effect" of each block)
 // with the write rules of section 3.1 and the decisions of docs/cnc-blocks.md. Axis words are
 // GA[k] = G[A*80+k], channel words GC[k] = G[2560+C*80+k] (section 0).
-#include "instructions/CncTable.h"
+#include "profiles/hnc8/CncTable.h"
 
 namespace lj::cnc {
 

@@ -3,8 +3,8 @@
 // correcting a mapping of hnc8-cnc-interface.md is a one-line change here (docs/cnc-blocks.md).
 #pragma once
 
-#include "instructions/InstrTable.h"
-#include "instructions/Program.h"
+#include "ir/OpTable.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <span>

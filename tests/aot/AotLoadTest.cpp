@@ -2,7 +2,7 @@
 // damaged, truncated, foreign and mismatched files (issue 5: "a clear error, never a crash").
 #include "tests/aot/AotTestUtil.h"
 
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 #include "io/AotLoader.h"
 #include "io/PlcDit.h"
 #include "ladderjit/program.h"

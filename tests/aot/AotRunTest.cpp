@@ -3,7 +3,7 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "fuzz/Fuzz.h"
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 #include "io/AotLoader.h"
 
 #include <gtest/gtest.h>

@@ -3,10 +3,10 @@
 // can be emitted by the fuzzer's generator and has an entry in docs/instructions.md; and every
 // table row is a mnemonic of the manual.
 #include "bench/ProgramGenerator.h"
-#include "instructions/FrontEnd.h"
-#include "instructions/InstrDocs.h"
-#include "instructions/InstrTable.h"
-#include "instructions/Interpreter.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/InstrDocs.h"
+#include "ir/OpTable.h"
+#include "interp/Interpreter.h"
 #include "jit/Jit.h"
 
 #include <gtest/gtest.h>

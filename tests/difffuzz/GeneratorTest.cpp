@@ -2,8 +2,8 @@
 // every row of the instruction table, generation is deterministic, the realistic mix matches its
 // description, and the stimulus applies and prints in the CLI format.
 #include "bench/ProgramGenerator.h"
-#include "instructions/FrontEnd.h"
-#include "instructions/InstrTable.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "ir/OpTable.h"
 
 #include <gtest/gtest.h>
 

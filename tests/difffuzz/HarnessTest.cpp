@@ -3,7 +3,7 @@
 // and a differing field is named the way the CLI names addresses.
 #include "fuzz/Differential.h"
 #include "fuzz/Fuzz.h"
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <gtest/gtest.h>
 

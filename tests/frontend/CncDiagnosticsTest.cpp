@@ -3,7 +3,7 @@
 // warning (hnc8-cnc-interface.md 2 #60, #20, #30, #1, #56; docs/cnc-blocks.md), and that
 // docs/cnc-blocks.md lists the table as it is.
 #include "FrontEndTestUtil.h"
-#include "instructions/CncTable.h"
+#include "profiles/hnc8/CncTable.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // table) on both tiers, with and without cutting bodies into small functions: the JIT's state
 // must equal the interpreter's after init and after every tick, whatever the inputs, faults and
 // slice plan. Also checks that the seeds used here and in PartitionJitTest cover every row.
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 #include "tests/jit/JitHarness.h"
 
 #include <algorithm>

@@ -2,8 +2,8 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/Program.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 #include "io/ProgramFile.h"
 
 #include <cstdint>

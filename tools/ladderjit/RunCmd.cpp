@@ -3,7 +3,7 @@
 // optionally dump the final state.
 #include "tools/ladderjit/Commands.h"
 
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 #include "io/Simulation.h"
 #include "io/StateJson.h"
 
