@@ -68,7 +68,7 @@ GenProgram generateSnippet(Op op, uint64_t seed);
 
 /// One host write: a whole element (`bit` < 0) or one bit.
 struct HostWrite {
-  Area area = Area::X;
+  Area area = Area::Input;
   int32_t index = 0;
   int8_t bit = -1;
   int32_t value = 0;

@@ -38,7 +38,7 @@ bool resolve(lj_state *s, const Operand &format, const Operand &addr, Ref &out) 
     out = element(addr.area, addr.index);
     return true;
   }
-  Area target = format.value == 1 ? Area::B : Area::P;
+  Area target = format.value == 1 ? Area::Retained : Area::Param;
   int32_t k = readAt(s, addr.area, addr.index);
   if (!validIndex(target, k)) return false;
   out = element(target, k);
@@ -123,7 +123,7 @@ void zrst(const BlockCall &b) {
 /// ENCO / DECO / COD / SER: table T[i] = area[start + i], i = 0..n-1.
 void table(const BlockCall &b) {
   if (!b.f.input()) {
-    if (b.c.op == Op::SER) b.f.output(false); // compare-like: output EN and found
+    if (b.c.op == Op::TableSearch) b.f.output(false); // compare-like: output EN and found
     return;
   }
   const auto &o = b.stmt.ops;
@@ -132,7 +132,7 @@ void table(const BlockCall &b) {
   const int32_t x = readValue(b.s, b.ops[2]);
   auto t = [&](int32_t i) { return readAt(b.s, area, start + i); };
   switch (b.c.op) {
-  case Op::ENCO: { // first entry equal to x -> its one-hot bit; not found -> 0 (2.7)
+  case Op::TableEncode: { // first entry equal to x -> its one-hot bit; not found -> 0 (2.7)
     uint32_t r = 0;
     for (int32_t i = 0; i < n; ++i) {
       if (t(i) == x) {
@@ -143,7 +143,7 @@ void table(const BlockCall &b) {
     writeValue(b.s, b.ops[3], static_cast<int32_t>(r));
     return;
   }
-  case Op::DECO: { // lowest set bit i < n of x -> T[i]; none -> 0 (2.8)
+  case Op::TableDecode: { // lowest set bit i < n of x -> T[i]; none -> 0 (2.8)
     int32_t r = 0;
     for (int32_t i = 0; i < n; ++i) {
       if ((static_cast<uint32_t>(x) >> i) & 1u) {
@@ -154,7 +154,7 @@ void table(const BlockCall &b) {
     writeValue(b.s, b.ops[3], r);
     return;
   }
-  case Op::COD: // T[x] for 0 <= x < n; else an index fault (2.9, DIALECT.md 4)
+  case Op::TableLookup: // T[x] for 0 <= x < n; else an index fault (2.9, DIALECT.md 4)
     if (x >= 0 && x < n)
       writeValue(b.s, b.ops[3], t(x));
     else
@@ -204,8 +204,8 @@ void acvt(const BlockCall &b) {
   // dst := (src - P[k]) * (P[k+3] - P[k+2]) / (P[k+1] - P[k]) + P[k+2] (the "+P2" fix, 2.13).
   // int64 intermediates: the differences are exact; the product wraps modulo 2^64 (only when
   // both ranges are wider than 2^31); the quotient truncates toward zero; the sum wraps.
-  int64_t smin = readAt(b.s, Area::P, k), smax = readAt(b.s, Area::P, k + 1);
-  int64_t dmin = readAt(b.s, Area::P, k + 2), dmax = readAt(b.s, Area::P, k + 3);
+  int64_t smin = readAt(b.s, Area::Param, k), smax = readAt(b.s, Area::Param, k + 1);
+  int64_t dmin = readAt(b.s, Area::Param, k + 2), dmax = readAt(b.s, Area::Param, k + 3);
   int64_t x = readValue(b.s, b.ops[1]);
   int64_t den = smax - smin;
   if (den == 0) { // division by zero (DIALECT.md 4): nothing written, output 0, counted
@@ -243,40 +243,40 @@ void ntp(const BlockCall &b) {
 
 bool runData(const BlockCall &b) {
   switch (b.c.op) {
-  case Op::XMOV:
+  case Op::IndexedMove:
     xmov(b);
     return true;
-  case Op::XCH:
+  case Op::Exchange:
     xch(b);
     return true;
-  case Op::BMOV:
+  case Op::BlockMove:
     bmov(b);
     return true;
-  case Op::FMOV:
+  case Op::Fill:
     fmov(b);
     return true;
-  case Op::ZRST:
+  case Op::ZoneReset:
     zrst(b);
     return true;
-  case Op::ENCO:
-  case Op::DECO:
-  case Op::COD:
-  case Op::SER:
+  case Op::TableEncode:
+  case Op::TableDecode:
+  case Op::TableLookup:
+  case Op::TableSearch:
     table(b);
     return true;
-  case Op::ASSEM:
+  case Op::Pack:
     assem(b);
     return true;
-  case Op::DISAS:
+  case Op::Unpack:
     disas(b);
     return true;
-  case Op::ACVT:
+  case Op::RangeConvert:
     acvt(b);
     return true;
-  case Op::PTN:
+  case Op::PointToNumber:
     ptn(b);
     return true;
-  case Op::NTP:
+  case Op::NumberToPoint:
     ntp(b);
     return true;
   default:

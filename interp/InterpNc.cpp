@@ -63,7 +63,7 @@ bool runNc(const BlockCall &b) {
   const Ref *o = b.ops;
   const bool en = f.input();
   switch (b.c.op) {
-  case Op::MGET: {
+  case Op::MCodeGet: {
     // out = EN and one of FC[48..55] holds the M code; nothing written (functions-1 3.1).
     int32_t cb = chanBase(o[0].value);
     bool pending = false;
@@ -71,7 +71,7 @@ bool runNc(const BlockCall &b) {
     f.output(en && pending);
     return true;
   }
-  case Op::MACK:
+  case Op::MCodeAck:
     // Every slot k holding the M code is acknowledged: GC[48+k] := M (functions-1 3.1).
     if (en) {
       int32_t cb = chanBase(o[0].value);
@@ -79,7 +79,7 @@ bool runNc(const BlockCall &b) {
         if (s->img.F[cb + 48 + k] == o[1].value) setG(s, cb + 48 + k, o[1].value);
     }
     return true;
-  case Op::TGET: {
+  case Op::TCodeGet: {
     // FC[56] != -1: a T code is pending; it goes to the destination, or is compared with a
     // constant destination (functions-1 3.1 TGET resolution).
     int16_t t = s->img.F[chanBase(o[0].value) + 56];
@@ -92,18 +92,18 @@ bool runNc(const BlockCall &b) {
     }
     return true;
   }
-  case Op::TACK:
+  case Op::TCodeAck:
     if (en) {
       int32_t cb = chanBase(o[0].value);
       setG(s, cb + 56, s->img.F[cb + 56]); // GC[56] := FC[56]
     }
     return true;
-  case Op::RTOMPG:
+  case Op::HandwheelPulse:
     if (en)
       if (auto fn = callback(s, &lj_host::mpg_input))
         fn(s->host->ctx, o[1].value, readValue(s, o[0]));
     return true;
-  case Op::TEMPSEN:
+  case Op::TempSensor:
     if (en)
       if (auto fn = callback(s, &lj_host::temp_input)) {
         // raw: the 16-bit AD word of the X group, X[n] low byte, X[n+1] high byte, signed.
@@ -113,22 +113,22 @@ bool runNc(const BlockCall &b) {
            s->img.P[p + 3]);
       }
     return true;
-  case Op::PARTCNT:
-  case Op::PARTCLR:
+  case Op::PartCount:
+  case Op::PartClear:
     // The part count of channel ch is GC[19] (functions-2 2.19, 2.20); level-triggered.
     if (en) {
       int32_t i = chanBase(o[0].value) + 19;
-      setG(s, i, b.c.op == Op::PARTCNT ? addWrap(s->img.G[i], 1) : 0);
+      setG(s, i, b.c.op == Op::PartCount ? addWrap(s->img.G[i], 1) : 0);
     }
     f.output(en);
     return true;
-  case Op::HEADSEN:
+  case Op::HeadSensors:
     // enable == 0: D[start + i] := temperature i = G[3080 + i] (functions-2 2.21).
     if (en && o[1].value == 0)
       for (int32_t i = 0; i < o[0].value; ++i)
         s->img.D[b.stmt.ops[2].index + i] = s->img.G[3080 + i];
     return true;
-  case Op::VARGET:
+  case Op::VarGet:
     if (en)
       if (auto fn = callback(s, &lj_host::var_get)) {
         int32_t v = 0;
@@ -137,20 +137,20 @@ bool runNc(const BlockCall &b) {
       }
     f.output(en);
     return true;
-  case Op::VARSET:
+  case Op::VarSet:
     if (en)
       if (auto fn = callback(s, &lj_host::var_set))
         fn(s->host->ctx, o[0].value, readValue(s, o[1]), o[2].value, readValue(s, o[3]));
     f.output(en);
     return true;
-  case Op::TOOLSET:
-  case Op::TOOLCLR:
+  case Op::ToolVectorOn:
+  case Op::ToolVectorOff:
     if (en)
       if (auto fn = callback(s, &lj_host::tool_vector))
-        fn(s->host->ctx, o[0].value, b.c.op == Op::TOOLSET ? 1 : 0);
+        fn(s->host->ctx, o[0].value, b.c.op == Op::ToolVectorOn ? 1 : 0);
     f.output(en);
     return true;
-  case Op::NIXIE:
+  case Op::PanelDisplay:
     if (en) {
       int32_t v = readValue(s, o[0]);
       if (auto fn = callback(s, &lj_host::nixie_encode)) v = fn(s->host->ctx, v, o[1].value);
@@ -171,12 +171,12 @@ bool runNc(const BlockCall &b) {
     }
     f.output(en);
     return true;
-  case Op::TOOLUSE:
+  case Op::ToolInUse:
     if (en)
       if (auto fn = callback(s, &lj_host::tool_in_use))
         fn(s->host->ctx, readValue(s, o[0]), readValue(s, o[1]));
     return true;
-  case Op::TOOLLIFE: {
+  case Op::ToolLife: {
     // inst_word[slot] = installs counted, [slot + 1] = ACT of the previous execution. Every
     // execution writes the response: 1 when this rising edge reached the count, else 0.
     int32_t &count = s->inst_word[b.c.slot];
@@ -194,7 +194,7 @@ bool runNc(const BlockCall &b) {
     writeValue(s, o[2], reached ? 1 : 0);
     return true;
   }
-  case Op::TOOL: {
+  case Op::ToolSelect: {
     bool found = false;
     if (en)
       if (auto fn = callback(s, &lj_host::tool_select)) {
@@ -208,7 +208,7 @@ bool runNc(const BlockCall &b) {
     f.output(found);
     return true;
   }
-  case Op::SPDA:
+  case Op::SpindleAnalog:
     if (en)
       if (auto fn = callback(s, &lj_host::spindle_da)) {
         // rpm: the spindle's S command FC[10+2sp] (32 bits, low word first); the DA value goes
@@ -222,11 +222,11 @@ bool runNc(const BlockCall &b) {
         setG32(s, cb + 10 + 2 * sp, da);
       }
     return true;
-  case Op::SUBAXEN:
+  case Op::SlaveHomingEnable:
     // Level, like a coil: the host is told the enable state on every execution.
     if (auto fn = callback(s, &lj_host::slave_home)) fn(s->host->ctx, o[0].value, en ? 1 : 0);
     return true;
-  case Op::MPGSET:
+  case Op::HandwheelSet:
     if (en) {
       int32_t axis = readValue(s, o[1]);
       if (axis < 0 || axis > 31) {
@@ -240,10 +240,10 @@ bool runNc(const BlockCall &b) {
         setG32(s, axis * 80 + 10, fn(s->host->ctx, o[0].value)); // GA[10/11] = pulses
     }
     return true;
-  case Op::ROT:
+  case Op::MagazineRotate:
     rot(b);
     return true;
-  case Op::EVENT: {
+  case Op::RaiseEvent: {
     // G[3040 + n/16] bit n%16 := ACT (level); the host hears of the rising edge.
     uint8_t &m = s->edge[b.c.slot];
     bool rise = en && !m;
@@ -256,7 +256,7 @@ bool runNc(const BlockCall &b) {
       if (auto fn = callback(s, &lj_host::event)) fn(s->host->ctx, n);
     return true;
   }
-  case Op::SAVEDATA: {
+  case Op::SaveRetained: {
     uint8_t &m = s->edge[b.c.slot];
     bool rise = en && !m;
     m = en;

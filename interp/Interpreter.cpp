@@ -121,9 +121,9 @@ Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
       for (int k = 0; k < st.operandCount; ++k) w[k] = decode(st.ops[k]);
     }
     assert(slotInRange(instrInfo(c.op).state, c.slot) && "state slot out of range");
-    assert((c.op != Op::JMP && c.op != Op::LOOP) ||
+    assert((c.op != Op::Jump && c.op != Op::LoopBegin) ||
            (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
-    assert(c.op != Op::CALL || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));
+    assert(c.op != Op::Call || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));
   }
   // Stack capacity per scope: the deepest "depth before" in the scope, plus one because a
   // statement raises the depth by at most one.
@@ -176,7 +176,7 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     const Code &c = code[pc];
     // The dynamic depth must equal the verifier's static one, except at a label reached by a
     // jump (the LBL empties the stacks anyway).
-    assert((c.op == Op::LBL || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
+    assert((c.op == Op::Label || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
     // A forced contact (Stmt::force, docs/serve.md "Forcing") conducts its constant.
     auto contact = [&](bool real) {
       int8_t force = prog.stmts[pc].force;
@@ -184,101 +184,101 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     };
     switch (c.op) {
     // Contacts (hnc8-core.md 4.2).
-    case Op::LD:
+    case Op::Load:
       f.push(contact(readBit(s, c.a)));
       break;
-    case Op::LDI:
+    case Op::LoadNot:
       f.push(contact(!readBit(s, c.a)));
       break;
-    case Op::LDT:
+    case Op::LoadTrue:
       f.push(true);
       break;
-    case Op::LDP: // the edge memory is updated with the real bit even when forced
+    case Op::LoadRise: // the edge memory is updated with the real bit even when forced
       f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), true)));
       break;
-    case Op::LDF:
+    case Op::LoadFall:
       f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false)));
       break;
-    case Op::AND:
+    case Op::And:
       f.setTop(f.top() && contact(readBit(s, c.a)));
       break;
-    case Op::ANI:
+    case Op::AndNot:
       f.setTop(f.top() && contact(!readBit(s, c.a)));
       break;
-    case Op::OR:
+    case Op::Or:
       f.setTop(f.top() || contact(readBit(s, c.a)));
       break;
-    case Op::ORI:
+    case Op::OrNot:
       f.setTop(f.top() || contact(!readBit(s, c.a)));
       break;
     // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
-    case Op::ANDP: {
+    case Op::AndRise: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
       f.setTop(f.top() && e);
       break;
     }
-    case Op::ANDF: {
+    case Op::AndFall: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
       f.setTop(f.top() && e);
       break;
     }
-    case Op::ORP: {
+    case Op::OrRise: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
       f.setTop(f.top() || e);
       break;
     }
-    case Op::ORF: {
+    case Op::OrFall: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
       f.setTop(f.top() || e);
       break;
     }
-    case Op::ANB: {
+    case Op::AndBlock: {
       bool t = f.pop();
       f.setTop(f.top() && t);
       break;
     }
-    case Op::ORB: {
+    case Op::OrBlock: {
       bool t = f.pop();
       f.setTop(f.top() || t);
       break;
     }
-    case Op::MPS:
+    case Op::BranchPush:
       assert(f.msp < f.msCap);
       f.ms[f.msp++] = f.top();
       break;
-    case Op::MRD:
+    case Op::BranchRead:
       assert(f.msp > 0);
       f.setTop(f.ms[f.msp - 1] != 0);
       break;
-    case Op::MPP:
+    case Op::BranchPop:
       assert(f.msp > 0);
       f.setTop(f.ms[--f.msp] != 0);
       break;
     // Coils leave ST unchanged.
-    case Op::OUT:
+    case Op::Coil:
       writeBit(s, c.a, f.top());
       break;
-    case Op::OOUT:
+    case Op::CoilNot:
       writeBit(s, c.a, !f.top());
       break;
-    case Op::SET:
+    case Op::Set:
       writeBit(s, c.a, readBit(s, c.a) || f.top());
       break;
-    case Op::RST:
+    case Op::Reset:
       writeBit(s, c.a, readBit(s, c.a) && !f.top());
       break;
 
     // Structure: both stacks are emptied (dialect-notes "Stacks and blocks").
-    case Op::IEND:
-    case Op::END1:
-    case Op::END2:
-    case Op::SP:
-    case Op::SPE:
-    case Op::LBL:
-    case Op::NEXT:
+    case Op::EndInit:
+    case Op::EndCyclic:
+    case Op::EndSliced:
+    case Op::SubBegin:
+    case Op::SubEnd:
+    case Op::Label:
+    case Op::LoopEnd:
       f.clear();
       break;
-    case Op::JMP:
+    case Op::Jump:
       if (f.input()) {
         // A taken backward jump counts one watchdog step, checked before jumping.
         if (c.target < pc && ++s->steps > s->max_backward_steps) return Flow::Watchdog;
@@ -286,13 +286,13 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
         continue;
       }
       break;
-    case Op::CALL:
+    case Op::Call:
       if (f.input() && call(s, c.target) == Flow::Watchdog) return Flow::Watchdog;
       break;
-    case Op::RETN:
+    case Op::Return:
       if (f.input()) return Flow::Return;
       break;
-    case Op::LOOP: {
+    case Op::LoopBegin: {
       int32_t n = readValue(s, c.a); // read once on entry
       const int32_t next = c.target;
       f.clear();
@@ -326,29 +326,29 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
 // Function blocks with data (DIALECT.md 5, hnc8-functions-1/-2.md).
 void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   switch (c.op) {
-  case Op::ADD:
-  case Op::SUB:
-  case Op::MUL:
-  case Op::WAND:
-  case Op::WOR:
-  case Op::WXOR: {
+  case Op::Add:
+  case Op::Subtract:
+  case Op::Multiply:
+  case Op::BitAnd:
+  case Op::BitOr:
+  case Op::BitXor: {
     bool en = f.input();
     if (en) {
       int32_t a = readValue(s, c.a), b = readValue(s, c.b), r = 0;
       switch (c.op) {
-      case Op::ADD:
+      case Op::Add:
         r = addWrap(a, b);
         break;
-      case Op::SUB:
+      case Op::Subtract:
         r = subWrap(a, b);
         break;
-      case Op::MUL:
+      case Op::Multiply:
         r = mulWrap(a, b);
         break;
-      case Op::WAND:
+      case Op::BitAnd:
         r = a & b;
         break;
-      case Op::WOR:
+      case Op::BitOr:
         r = a | b;
         break;
       default:
@@ -360,7 +360,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     f.output(en);
     return;
   }
-  case Op::DIV: {
+  case Op::Divide: {
     bool en = f.input(), out = en;
     if (en) {
       int32_t a = readValue(s, c.a), b = readValue(s, c.b);
@@ -374,41 +374,43 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     f.output(out);
     return;
   }
-  case Op::INC:
-  case Op::DEC:
-  case Op::NEG: {
+  case Op::Increment:
+  case Op::Decrement:
+  case Op::Negate: {
     bool en = f.input();
     if (en) {
       int32_t x = readValue(s, c.a);
-      int32_t r = c.op == Op::INC ? addWrap(x, 1) : c.op == Op::DEC ? subWrap(x, 1) : subWrap(0, x);
+      int32_t r = c.op == Op::Increment   ? addWrap(x, 1)
+                  : c.op == Op::Decrement ? subWrap(x, 1)
+                                          : subWrap(0, x);
       writeValue(s, c.a, r);
     }
     f.output(en);
     return;
   }
-  case Op::MOV: {
+  case Op::Move: {
     bool en = f.input();
     if (en) writeValue(s, c.b, readValue(s, c.a));
     f.output(en);
     return;
   }
-  case Op::CMP:
+  case Op::CompareLe:
     f.output(f.input() && readValue(s, c.a) <= readValue(s, c.b));
     return;
-  case Op::LT:
+  case Op::CompareLt:
     f.output(f.input() && readValue(s, c.a) < readValue(s, c.b));
     return;
-  case Op::COIN:
+  case Op::CompareEq:
     f.output(f.input() && readValue(s, c.a) == readValue(s, c.b));
     return;
-  case Op::ACMP: {
+  case Op::CompareRange: {
     int32_t lo = readValue(s, c.a), hi = readValue(s, c.b), x = readValue(s, c.c);
     f.output(f.input() && lo < x && x < hi);
     return;
   }
 
   // Counters: pop k inputs (first loaded = input 1 = deepest), push the output.
-  case Op::CTR: {
+  case Op::RegisterCounter: {
     bool rst = f.pop(), dn = f.pop(), s1 = f.pop(), cnt = f.pop();
     int32_t cv = readValue(s, c.a);
     bool prev = s->edge[c.slot] != 0;
@@ -418,10 +420,10 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     f.push(out);
     return;
   }
-  case Op::CTRC:
-  case Op::CTUD: {
+  case Op::RingCounter:
+  case Op::UpDownCounter: {
     bool rst = f.pop(), dn = false, s1 = false;
-    if (c.op == Op::CTUD) {
+    if (c.op == Op::UpDownCounter) {
       dn = f.pop();
       s1 = f.pop();
     }
@@ -436,7 +438,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   }
 
   // Timers (dialect-notes "Timers"); state in T[slot], time from now_ms.
-  case Op::TMRB: {
+  case Op::OnDelayTimer: {
     lj_timer &t = s->T[c.slot];
     int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
@@ -455,7 +457,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     f.output(t.out != 0);
     return;
   }
-  case Op::STMR: {
+  case Op::OffDelayTimer: {
     lj_timer &t = s->T[c.slot];
     int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
@@ -481,21 +483,21 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   }
 
   // Power-flow edge and toggle blocks; prev = EN on every execution.
-  case Op::PLS: {
+  case Op::RisePulse: {
     bool en = f.input();
     bool out = en && !s->pls_prev[c.slot];
     s->pls_prev[c.slot] = en;
     f.output(out);
     return;
   }
-  case Op::PLF: {
+  case Op::FallPulse: {
     bool en = f.input();
     bool out = !en && s->plf_prev[c.slot];
     s->plf_prev[c.slot] = en;
     f.output(out);
     return;
   }
-  case Op::ALT: {
+  case Op::Toggle: {
     bool en = f.input();
     if (en && !s->alt_prev[c.slot]) s->alt_state[c.slot] = !s->alt_state[c.slot];
     s->alt_prev[c.slot] = en;

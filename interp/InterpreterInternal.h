@@ -22,7 +22,7 @@ struct Ref {
 
 /// One statement ready to run.
 struct Code {
-  Op op = Op::LDT;
+  Op op = Op::LoadTrue;
   Ref a, b, c;         ///< operands in table order (L/S operands are not decoded)
   int32_t target = -1; ///< JMP: its LBL; LOOP: its NEXT; CALL: index into subs
   int32_t slot = -1;   ///< edge / timer / counter / PLS-PLF-ALT slot, first inst_word
@@ -82,11 +82,11 @@ inline Ref decode(const Operand &o) {
   }
   case Operand::Kind::Bit: {
     r.kind = Ref::Kind::Bit;
-    if (o.area == Area::T || o.area == Area::C) {
+    if (o.area == Area::Timer || o.area == Area::Counter) {
       // Tn.0 / Cn.0 read the output bit of the timer / counter (dialect-notes "Function blocks").
       int slot = lj_tc_slot(o.index);
       assert(slot >= 0 && o.bit == 0);
-      r.off = o.area == Area::T
+      r.off = o.area == Area::Timer
                   ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
                                           offsetof(lj_timer, out))
                   : static_cast<uint32_t>(offsetof(lj_state, C) + slot * sizeof(lj_counter) +

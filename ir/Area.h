@@ -8,7 +8,22 @@
 namespace lj {
 
 /// One memory area (DIALECT.md section 1). The order is the order of AreaMask bits.
-enum class Area : uint8_t { X, Y, F, G, R, W, D, B, P, T, C, L, S, None };
+enum class Area : uint8_t {
+  Input,      ///< X
+  Output,     ///< Y
+  NcStatus,   ///< F
+  NcControl,  ///< G
+  Relay,      ///< R
+  Word,       ///< W
+  DWord,      ///< D
+  Retained,   ///< B
+  Param,      ///< P
+  Timer,      ///< T
+  Counter,    ///< C
+  Label,      ///< L
+  Subroutine, ///< S
+  None
+};
 
 constexpr int kAreaCount = 13;
 

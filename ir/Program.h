@@ -31,7 +31,7 @@ struct Operand {
 
 /// One STL statement.
 struct Stmt {
-  Op op = Op::LDT;
+  Op op = Op::LoadTrue;
   uint8_t operandCount = 0;
   std::array<Operand, kMaxOperands> ops{};
   SourceLoc loc;
@@ -45,7 +45,7 @@ struct Stmt {
 /// verifier applies its stack effect, silently, so one bad operand causes no follow-on errors.
 struct DroppedStmt {
   int32_t before = 0; ///< index in ParsedProgram::stmts of the next kept statement
-  Op op = Op::LDT;
+  Op op = Op::LoadTrue;
 };
 
 /// What the parser produces: statements in source order (markers included).

@@ -62,9 +62,9 @@ std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t
     const Stmt &s = p.stmts[i];
     const StmtInfo &info = p.info[i];
     if (nest > 0 || info.msDepth != 0) ok[i - r.begin] = 0;
-    if (s.op == Op::LOOP) ++nest;
-    if (s.op == Op::NEXT) --nest;
-    if (s.op == Op::JMP && info.target >= r.begin && info.target < r.end) {
+    if (s.op == Op::LoopBegin) ++nest;
+    if (s.op == Op::LoopEnd) --nest;
+    if (s.op == Op::Jump && info.target >= r.begin && info.target < r.end) {
       // Cuts before statements lo+1 .. hi would separate the JMP from its label.
       int32_t lo = std::min(i, info.target), hi = std::max(i, info.target);
       spans[lo + 1 - r.begin] += 1;

@@ -68,19 +68,19 @@ llvm::Error FunctionEmitter::emitStmt(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const InstrInfo &row = instrInfo(s.op);
   switch (s.op) {
-  case Op::JMP:
+  case Op::Jump:
     return emitJmp(i);
-  case Op::LBL:
+  case Op::Label:
     emitLabel(i);
     return llvm::Error::success();
-  case Op::LOOP:
+  case Op::LoopBegin:
     emitLoop(i);
     return llvm::Error::success();
-  case Op::NEXT:
+  case Op::LoopEnd:
     return emitNext(i);
-  case Op::CALL:
+  case Op::Call:
     return emitCall(i);
-  case Op::RETN:
+  case Op::Return:
     emitRetn();
     return llvm::Error::success();
   default:
@@ -130,7 +130,7 @@ void FunctionEmitter::watchdogStep(llvm::BasicBlock *next) {
 
 llvm::Error FunctionEmitter::emitJmp(int32_t i) {
   const StmtInfo &info = prog_.info[i];
-  if (info.target < 0 || prog_.stmts[info.target].op != Op::LBL)
+  if (info.target < 0 || prog_.stmts[info.target].op != Op::Label)
     return fail(i, "jump target is not a LBL");
   llvm::Value *en = enable(); // ST is left as it is
   llvm::BasicBlock *target = labelBlock(info.target);

@@ -35,10 +35,10 @@ private:
     for (int32_t i = unit_.body.begin; i < unit_.body.end; ++i) {
       const Stmt &s = cx_.stmt(i);
       scope_[rel(i)] = cur;
-      if (s.op == Op::LOOP) {
+      if (s.op == Op::LoopBegin) {
         open.push_back(i);
         cur = next++;
-      } else if (s.op == Op::NEXT) {
+      } else if (s.op == Op::LoopEnd) {
         if (open.empty()) {
           cx_.error(s.loc, "NEXT without LOOP");
           continue;
@@ -49,7 +49,7 @@ private:
         cx_.info(i).target = loop;
         cur = scope_[rel(loop)];
         scope_[rel(i)] = cur;
-      } else if (s.op == Op::LBL) {
+      } else if (s.op == Op::Label) {
         int32_t n = s.ops[0].index;
         auto [it, fresh] = labels_.try_emplace(n, i);
         if (!fresh)
@@ -133,9 +133,9 @@ private:
                     std::string(ii.mnemonic) + ": block needs an input; ST is empty, input is 1");
       if (ii.output != OutputRule::None && d == 0) d = 1; // output pushed onto an empty ST
     }
-    if (s.op == Op::JMP) jump(i);
-    if (s.op == Op::CALL) call(i);
-    if (s.op == Op::RETN && unit_.kind != Unit::Kind::Sub)
+    if (s.op == Op::Jump) jump(i);
+    if (s.op == Op::Call) call(i);
+    if (s.op == Op::Return && unit_.kind != Unit::Kind::Sub)
       cx_.error(s.loc, "RETN outside a subroutine");
   }
 
@@ -194,7 +194,7 @@ private:
       StmtInfo &inf = cx_.info(i);
       inf.depth = d;
       inf.msDepth = ms;
-      if (s.op == Op::LBL || s.op == Op::NEXT) dead = false;
+      if (s.op == Op::Label || s.op == Op::LoopEnd) dead = false;
       if (dead) {
         cx_.warning(s.loc, "unreachable code");
         dead = false;
@@ -231,17 +231,17 @@ private:
         break;
       case StackRule::Coil:
         if (d < 1) underflow(s, std::string(ii.mnemonic) + " with an empty ST");
-        if (s.op == Op::OUT || s.op == Op::OOUT) doubleCoil(i);
+        if (s.op == Op::Coil || s.op == Op::CoilNot) doubleCoil(i);
         break;
       case StackRule::Structural:
-        if (s.op == Op::LBL || s.op == Op::LOOP || s.op == Op::NEXT)
+        if (s.op == Op::Label || s.op == Op::LoopBegin || s.op == Op::LoopEnd)
           closeMps(std::string(mnem(s)) + " (" + lineText(s) + ")");
         d = ms = 0;
         break;
       case StackRule::Block: {
-        bool uncond = d == 0 || (i > unit_.body.begin && cx_.stmt(i - 1).op == Op::LDT);
+        bool uncond = d == 0 || (i > unit_.body.begin && cx_.stmt(i - 1).op == Op::LoadTrue);
         block(i, ii, d);
-        if ((s.op == Op::JMP || s.op == Op::RETN) && uncond) dead = true;
+        if ((s.op == Op::Jump || s.op == Op::Return) && uncond) dead = true;
         break;
       }
       }
@@ -264,7 +264,7 @@ private:
       break;
     }
     int32_t end = unit_.body.end;
-    if (end < static_cast<int32_t>(cx_.prog.stmts.size()) && cx_.stmt(end).op == Op::SPE)
+    if (end < static_cast<int32_t>(cx_.prog.stmts.size()) && cx_.stmt(end).op == Op::SubEnd)
       return "SPE (" + lineText(cx_.stmt(end)) + ")";
     return "the end of the subroutine";
   }

@@ -76,7 +76,7 @@ void planSlices(Context &cx) {
   };
   for (const auto &[a, b] : cx.jumpSpans) span(a, b);
   for (int32_t i = r.begin; i < r.end; ++i)
-    if (cx.stmt(i).op == Op::LOOP && p.info[static_cast<size_t>(i)].target > i)
+    if (cx.stmt(i).op == Op::LoopBegin && p.info[static_cast<size_t>(i)].target > i)
       span(i, p.info[static_cast<size_t>(i)].target);
   for (size_t i = 1; i <= len; ++i) cover[i] += cover[i - 1];
 

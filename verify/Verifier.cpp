@@ -11,8 +11,8 @@ namespace verifier {
 
 namespace {
 
-bool isMarker(Op op) { return op == Op::IEND || op == Op::END1 || op == Op::END2; }
-int markerRank(Op op) { return op == Op::IEND ? 0 : op == Op::END1 ? 1 : 2; }
+bool isMarker(Op op) { return op == Op::EndInit || op == Op::EndCyclic || op == Op::EndSliced; }
+int markerRank(Op op) { return op == Op::EndInit ? 0 : op == Op::EndCyclic ? 1 : 2; }
 const char *markerName(Op op) { return instrInfo(op).mnemonic; }
 std::string lineOf(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
 
@@ -24,7 +24,7 @@ void addPart(Context &cx, int rank, StmtRange r, bool (&have)[3]) {
   if (rank > 2) {
     // After 2END only subroutines may follow (dialect-notes "Program parts").
     for (int32_t i = r.begin; i < r.end; ++i) {
-      if (isMarker(cx.stmt(i).op) || cx.stmt(i).op == Op::SPE) continue; // reported already
+      if (isMarker(cx.stmt(i).op) || cx.stmt(i).op == Op::SubEnd) continue; // reported already
       cx.error(cx.stmt(i).loc, "statement after 2END outside a subroutine");
       break;
     }
@@ -43,7 +43,7 @@ void planParts(Context &cx, int32_t mainEnd) {
   std::vector<int32_t> markers; // accepted markers, in order
   for (int32_t i = 0; i < mainEnd; ++i) {
     const Stmt &s = cx.stmt(i);
-    if (s.op == Op::SPE) {
+    if (s.op == Op::SubEnd) {
       cx.error(s.loc, "SPE without SP");
       continue;
     }
@@ -106,7 +106,7 @@ void planSubs(Context &cx, int32_t mainEnd) {
   bool inSub = false, outsideReported = false;
   for (int32_t i = mainEnd; i < n; ++i) {
     const Stmt &s = cx.stmt(i);
-    if (s.op == Op::SP) {
+    if (s.op == Op::SubBegin) {
       if (inSub) {
         const Subroutine &cur = cx.prog.subs.back();
         cx.error(s.loc, "nested SP: S" + std::to_string(cur.number) + " (" +
@@ -116,7 +116,7 @@ void planSubs(Context &cx, int32_t mainEnd) {
       openSub(cx, i);
       inSub = true;
       outsideReported = false;
-    } else if (s.op == Op::SPE) {
+    } else if (s.op == Op::SubEnd) {
       if (inSub) {
         closeSub(cx, i);
         inSub = false;
@@ -146,7 +146,7 @@ void planStructure(Context &cx) {
   auto n = static_cast<int32_t>(cx.prog.stmts.size());
   int32_t mainEnd = n;
   for (int32_t i = 0; i < n; ++i) {
-    if (cx.stmt(i).op == Op::SP) {
+    if (cx.stmt(i).op == Op::SubBegin) {
       mainEnd = i;
       break;
     }

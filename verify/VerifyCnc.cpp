@@ -18,7 +18,7 @@ std::string lastOf(Area a) { return addr(a, areaInfo(a).count - 1); }
 void checkStmt(Context &cx, const Stmt &s) {
   const std::string mn = instrInfo(s.op).mnemonic;
   switch (s.op) {
-  case Op::ALARM: {
+  case Op::Alarm: {
     // Alarms 1..256 (G3010-3025) and prompts 501..884 (G3056-3079); nothing in between.
     const Operand &n = s.ops[0];
     if (n.value > 256 && n.value < 501)
@@ -26,7 +26,7 @@ void checkStmt(Context &cx, const Stmt &s) {
                           " is neither an alarm (1..256) nor a prompt (501..884)");
     break;
   }
-  case Op::USEROUT: {
+  case Op::UserOutput: {
     // 32 user outputs go to four consecutive bytes from the start operand.
     const Operand &o = s.ops[2];
     if (!validIndex(o.area, int64_t{o.index} + 3))
@@ -36,16 +36,16 @@ void checkStmt(Context &cx, const Stmt &s) {
                           ")");
     break;
   }
-  case Op::SPDLBUS1: {
+  case Op::BusSpindleGeared: {
     // Gear g uses P[base + 5(g-1) .. + 4]; at least gear 1's block must exist.
     const Operand &p = s.ops[3];
-    if (!validIndex(Area::P, int64_t{p.index} + 4))
-      cx.error(p.loc, mn + " parameter block " + addr(Area::P, p.index) + ".." +
-                          addr(Area::P, int64_t{p.index} + 4) + " runs past the end of P (P0.." +
-                          lastOf(Area::P) + ")");
+    if (!validIndex(Area::Param, int64_t{p.index} + 4))
+      cx.error(p.loc, mn + " parameter block " + addr(Area::Param, p.index) + ".." +
+                          addr(Area::Param, int64_t{p.index} + 4) +
+                          " runs past the end of P (P0.." + lastOf(Area::Param) + ")");
     break;
   }
-  case Op::MDST: {
+  case Op::ChannelModeSet: {
     const Operand &m = s.ops[1];
     if (m.kind == Operand::Kind::Const &&
         (m.value <= 0 || m.value > 64 || (m.value & (m.value - 1)) != 0))
@@ -54,7 +54,7 @@ void checkStmt(Context &cx, const Stmt &s) {
                           "increment, home, MPG, PMC)");
     break;
   }
-  case Op::REFPT:
+  case Op::ReferencePoint:
     if (s.ops[1].value == 5)
       cx.warning(s.ops[1].loc,
                  "REFPT 5: the 5th reference point has no status bit; the output is always 0");

@@ -59,27 +59,27 @@ void checkData(Context &cx) {
     if (opFamily(s.op) != Family::Data) continue;
     const auto &o = s.ops;
     switch (s.op) {
-    case Op::BMOV: // functions-2 0.5: `BMOV D98 D0 5` is an error
+    case Op::BlockMove: // functions-2 0.5: `BMOV D98 D0 5` is an error
       checkRange(cx, s, o[0], o[2].value, "source range");
       checkRange(cx, s, o[1], o[2].value, "destination range");
       break;
-    case Op::FMOV:
-    case Op::ZRST:
+    case Op::Fill:
+    case Op::ZoneReset:
       checkZone(cx, s);
       break;
-    case Op::ENCO:
-    case Op::DECO:
-    case Op::COD:
-    case Op::SER:
+    case Op::TableEncode:
+    case Op::TableDecode:
+    case Op::TableLookup:
+    case Op::TableSearch:
       checkRange(cx, s, o[0], o[1].value, "table");
       break;
-    case Op::ASSEM:
+    case Op::Pack:
       checkRange(cx, s, o[0], o[1].value, "source range");
       break;
-    case Op::DISAS:
+    case Op::Unpack:
       checkRange(cx, s, o[2], o[1].value, "destination range");
       break;
-    case Op::ACVT: // P[k] .. P[k+3] (functions-2 2.13)
+    case Op::RangeConvert: // P[k] .. P[k+3] (functions-2 2.13)
       checkRange(cx, s, o[0], 4, "parameter block");
       break;
     default: // XMOV XCH PTN NTP: the table's operand checks are enough

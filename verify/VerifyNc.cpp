@@ -28,17 +28,17 @@ void mustFit(Context &cx, const Stmt &s, int k, int32_t count, const char *what)
 void checkNc(Context &cx) {
   for (const Stmt &s : cx.prog.stmts) {
     switch (s.op) {
-    case Op::TEMPSEN:
+    case Op::TempSensor:
       mustFit(cx, s, 1, 2, "AD word"); // low byte X[n], high byte X[n+1]
       mustFit(cx, s, 3, 4, "parameter block");
       break;
-    case Op::HEADSEN:
+    case Op::HeadSensors:
       if (s.ops[0].kind == Operand::Kind::Const) mustFit(cx, s, 2, s.ops[0].value, "storage range");
       break;
-    case Op::SPDA:
+    case Op::SpindleAnalog:
       mustFit(cx, s, 4, 5, "parameter block");
       break;
-    case Op::NIXIE:
+    case Op::PanelDisplay:
       // Width 1 into a byte area writes two bytes; W/D/B elements hold both.
       if (s.ops[1].kind == Operand::Kind::Const && s.ops[1].value == 1 &&
           s.ops[2].kind == Operand::Kind::Reg && areaInfo(s.ops[2].area).bytes == 1)

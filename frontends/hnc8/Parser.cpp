@@ -55,7 +55,8 @@ std::string areaList(AreaMask m) {
 /// "X0..X512", or the two ranges of T/C.
 std::string indexRange(Area a) {
   std::string l(1, areaInfo(a).letter);
-  if (a == Area::T || a == Area::C) return l + "0.." + l + "127, " + l + "300.." + l + "427";
+  if (a == Area::Timer || a == Area::Counter)
+    return l + "0.." + l + "127, " + l + "300.." + l + "427";
   return l + "0.." + l + std::to_string(areaInfo(a).count - 1);
 }
 
@@ -281,8 +282,8 @@ private:
     const char *accepts = spec.areas == 0 ? "a constant"
                           : spec.constOk  ? "a register or constant"
                                           : "a register";
-    if (hasArea(spec.areas, Area::L)) accepts = "a label (L0..L9999)";
-    if (hasArea(spec.areas, Area::S)) accepts = "a subroutine (S0..S511)";
+    if (hasArea(spec.areas, Area::Label)) accepts = "a label (L0..L9999)";
+    if (hasArea(spec.areas, Area::Subroutine)) accepts = "a subroutine (S0..S511)";
     if (isConst) {
       if (!spec.constOk) {
         error(t, what + accepts + " as " + spec.role + ", got constant " + quote(t.text));

@@ -30,35 +30,35 @@ std::optional<Area> areaFromLetter(char c) {
 
 bool validIndex(Area a, int64_t n) {
   if (n < 0) return false;
-  if (a == Area::T || a == Area::C)
+  if (a == Area::Timer || a == Area::Counter)
     return lj_tc_slot(static_cast<int32_t>(n > 100000 ? -1 : n)) >= 0;
   return n < areaInfo(a).count;
 }
 
 int bitWidth(Area a) {
-  if (a == Area::T || a == Area::C) return 1;
+  if (a == Area::Timer || a == Area::Counter) return 1;
   return areaInfo(a).bytes * 8;
 }
 
 uint32_t stateOffset(Area a) {
   switch (a) {
-  case Area::X:
+  case Area::Input:
     return offsetof(lj_state, img.X);
-  case Area::Y:
+  case Area::Output:
     return offsetof(lj_state, img.Y);
-  case Area::F:
+  case Area::NcStatus:
     return offsetof(lj_state, img.F);
-  case Area::G:
+  case Area::NcControl:
     return offsetof(lj_state, img.G);
-  case Area::R:
+  case Area::Relay:
     return offsetof(lj_state, img.R);
-  case Area::W:
+  case Area::Word:
     return offsetof(lj_state, img.W);
-  case Area::D:
+  case Area::DWord:
     return offsetof(lj_state, img.D);
-  case Area::B:
+  case Area::Retained:
     return offsetof(lj_state, img.B);
-  case Area::P:
+  case Area::Param:
     return offsetof(lj_state, img.P);
   default:
     return 0;

@@ -113,79 +113,79 @@ constexpr Action kNone{Do::Status, 0};
 // clang-format off
 constexpr CncRow kRows[] = {
     // ---- 6.1 NC functions (channel C = operand 0 unless noted) ----
-    ROW1(MDST, Channel, 0, false,
+    ROW1(ChannelModeSet, Channel, 0, false,
          modeSet(0, 60, 1),
          "one-hot mode 1..64 -> GC[60].0-6 and its code -> GC[0].0-3 (while ACT)"),
-    ROW1(MDGT, Channel, 0, false, modeGet(0, 1),
+    ROW1(ChannelModeGet, Channel, 0, false, modeGet(0, 1),
          "destination := one-hot of the mode code FC[0].0-3 (while ACT)"),
-    ROW(MDI, Channel, 0, false, 2, field(0, 0, 4, 8), field(60, 0, 7, 0), kNone,
+    ROW(MdiMode, Channel, 0, false, 2, field(0, 0, 4, 8), field(60, 0, 7, 0), kNone,
         "GC[0].0-3 := 8 (MDI) and GC[60].0-6 := 0 (while ACT)"),
-    ROW1(MST, Channel, 0, false, level(2, 11), "GC[2].11 MST lock := ACT"),
-    ROW1(CYCLE, Channel, 0, false, level(0, 5), "GC[0].5 cycle start := ACT"),
-    ROW1(STOP, Channel, 0, false, level(0, 11), "GC[0].11 emergency stop := ACT"),
-    ROW1(RESET, Channel, 0, false, level(0, 13), "GC[0].13 machine reset := ACT"),
-    ROW1(CHANSW, System, 0, false, write(2970, 1, 0), "G2970 active channel := C (while ACT)"),
-    ROW1(HOLD, Channel, 0, false, level(0, 4), "GC[0].4 feed hold := ACT"),
-    ROW1(CYCLED, Channel, 0, false, status(0, 5), "output := ACT and FC[0].5 (cycle running)"),
-    ROW1(HOLDLED, Channel, 0, false, status(0, 4), "output := ACT and FC[0].4 (feed hold)"),
-    ROW(ESCBLK, Channel, 0, false, 2, write(22, 1, 1), level(0, 7), kNone,
+    ROW1(MstLock, Channel, 0, false, level(2, 11), "GC[2].11 MST lock := ACT"),
+    ROW1(CycleStart, Channel, 0, false, level(0, 5), "GC[0].5 cycle start := ACT"),
+    ROW1(EmergencyStop, Channel, 0, false, level(0, 11), "GC[0].11 emergency stop := ACT"),
+    ROW1(ChannelReset, Channel, 0, false, level(0, 13), "GC[0].13 machine reset := ACT"),
+    ROW1(ChannelSwitch, System, 0, false, write(2970, 1, 0), "G2970 active channel := C (while ACT)"),
+    ROW1(FeedHold, Channel, 0, false, level(0, 4), "GC[0].4 feed hold := ACT"),
+    ROW1(CycleStartLamp, Channel, 0, false, status(0, 5), "output := ACT and FC[0].5 (cycle running)"),
+    ROW1(FeedHoldLamp, Channel, 0, false, status(0, 4), "output := ACT and FC[0].4 (feed hold)"),
+    ROW(SkipG31, Channel, 0, false, 2, write(22, 1, 1), level(0, 7), kNone,
         "GC[22] := G31 number (while ACT); GC[0].7 measurement interrupt := ACT"),
-    ROW1(RPOVRD, Channel, 0, false, write(5, 1, 1), "GC[5] rapid override := value (while ACT)"),
-    ROW1(FEEDOVRD, Channel, 0, false, write(4, 1, 1), "GC[4] feed override := value (while ACT)"),
-    ROW1(SPDLOVRD, Channel, 0, false,
+    ROW1(RapidOverride, Channel, 0, false, write(5, 1, 1), "GC[5] rapid override := value (while ACT)"),
+    ROW1(FeedOverride, Channel, 0, false, write(4, 1, 1), "GC[4] feed override := value (while ACT)"),
+    ROW1(SpindleOverride, Channel, 0, false,
          writeAt(6, 1, 2),
          "GC[6+sp] spindle override := value (while ACT)"),
-    ROW1(STEPMUL, Axis, 0, false, write(8, 1, 1), "GA[8] increment multiplier := value (while ACT)"),
-    ROW1(DRYRUN, Channel, 0, false, level(0, 6), "GC[0].6 dry run := ACT"),
-    ROW1(SKIP, Channel, 0, false, level(1, 2), "GC[1].2 block skip := ACT"),
-    ROW1(USERIN, Channel, 0, false, levelAt(24, 0, 2, 0, 31),
+    ROW1(StepMultiplier, Axis, 0, false, write(8, 1, 1), "GA[8] increment multiplier := value (while ACT)"),
+    ROW1(DryRun, Channel, 0, false, level(0, 6), "GC[0].6 dry run := ACT"),
+    ROW1(BlockSkip, Channel, 0, false, level(1, 2), "GC[1].2 block skip := ACT"),
+    ROW1(UserInput, Channel, 0, false, levelAt(24, 0, 2, 0, 31),
          "bit p of the 32-bit user input GC[24..25] := ACT (macro #1190)"),
-    ROW1(USEROUT, Channel, 0, true, userOut(44, 2),
+    ROW1(UserOutput, Channel, 0, true, userOut(44, 2),
          "4 bytes from the destination := the 32-bit user output FC[44..45] (while ACT)"),
-    ROW1(SELSTOP, Channel, 0, false, level(1, 3), "GC[1].3 optional stop := ACT"),
+    ROW1(OptionalStop, Channel, 0, false, level(1, 3), "GC[1].3 optional stop := ACT"),
     // ---- 6.2 axis function units (axis A = operand 0) ----
-    ROW(SPDLJOG, Axis, 0, false, 2, levelDir(1, 6, 1, true), levelDir(1, 7, 1, false), kNone,
+    ROW(SpindleJog, Axis, 0, false, 2, levelDir(1, 6, 1, true), levelDir(1, 7, 1, false), kNone,
         "GA[1].6 forward := ACT and dir; GA[1].7 reverse := ACT and not dir"),
-    ROW(SPDLBUS, Channel, 0, false, 2, spindle(-1, -1), spindleAck(), kNone,
+    ROW(BusSpindle, Channel, 0, false, 2, spindle(-1, -1), spindleAck(), kNone,
         "GC[10+2sp] := S * GC[6+sp] / 100 (while ACT); GC[2].sp := ACT and FC[2].(12+sp)"),
-    ROW(SPDLBUS1, Channel, 0, false, 2, spindle(2, 3), spindleAck(), kNone,
+    ROW(BusSpindleGeared, Channel, 0, false, 2, spindle(2, 3), spindleAck(), kNone,
         "as SPDLBUS, scaled by the gear's P block (ratio, motor maximum)"),
-    ROW1(SPDLORI, Axis, 0, false, level(2, 12), "GA[2].12 spindle orientation := ACT"),
-    ROW1(SPDLOROK, Axis, 0, false, status(3, 8), "output := ACT and FA[3].8 (orientation done)"),
-    ROW1(SPDLZERO, Axis, 0, false, status(2, 15), "output := ACT and FA[2].15 (zero speed)"),
-    ROW1(SPDLRCH, Axis, 0, false, status(2, 14), "output := ACT and FA[2].14 (speed reached)"),
-    ROW1(DESYN, Axis, 0, false, level(0, 11), "GA[0].11 release slave := ACT"),
-    ROW1(JOGSW, Axis, 0, false, jog(4, 1, true), "GA[4] := ACT ? (dir ? +1 : -1) : 0"),
-    ROW1(STEPAXIS, Axis, 0, false, jog(5, 1, false), "GA[5] := ACT ? (dir ? -1 : +1) : 0"),
-    ROW1(JOGVEL, Axis, 0, false, write(6, 2, 1), "GA[6/7] jog speed := value (while ACT)"),
-    ROW1(HOMRUN, Axis, 0, false, level(0, 4), "GA[0].4 homing start := ACT"),
-    ROW1(HOMERUN1, Axis, 0, false, level(0, 4),
+    ROW1(SpindleOrient, Axis, 0, false, level(2, 12), "GA[2].12 spindle orientation := ACT"),
+    ROW1(SpindleOrientDone, Axis, 0, false, status(3, 8), "output := ACT and FA[3].8 (orientation done)"),
+    ROW1(SpindleZeroSpeed, Axis, 0, false, status(2, 15), "output := ACT and FA[2].15 (zero speed)"),
+    ROW1(SpindleSpeedReached, Axis, 0, false, status(2, 14), "output := ACT and FA[2].14 (speed reached)"),
+    ROW1(SlaveRelease, Axis, 0, false, level(0, 11), "GA[0].11 release slave := ACT"),
+    ROW1(AxisJog, Axis, 0, false, jog(4, 1, true), "GA[4] := ACT ? (dir ? +1 : -1) : 0"),
+    ROW1(AxisStep, Axis, 0, false, jog(5, 1, false), "GA[5] := ACT ? (dir ? -1 : +1) : 0"),
+    ROW1(JogSpeed, Axis, 0, false, write(6, 2, 1), "GA[6/7] jog speed := value (while ACT)"),
+    ROW1(HomingStart, Axis, 0, false, level(0, 4), "GA[0].4 homing start := ACT"),
+    ROW1(HomingStartDir, Axis, 0, false, level(0, 4),
          "GA[0].4 homing start := ACT (the direction has no G bit)"),
-    ROW1(HOMESW, Axis, 0, false, level(0, 5), "GA[0].5 home dog := ACT"),
-    ROW1(HOMLED, Axis, 0, false, status(0, 4), "output := ACT and FA[0].4 (homing done)"),
-    ROW1(AXEN, Axis, 0, false, level(0, 7), "GA[0].7 axis enable := ACT"),
-    ROW1(AXRDY, Axis, 0, false, push(2, 8), "push FA[2].8 (bus servo ready)"),
-    ROW1(AXISLOCK, Axis, 0, false, level(0, 6), "GA[0].6 axis lock := ACT"),
-    ROW(AXISMOVE, Axis, 0, false, 2, write(52, 4, 1), level(1, 1), kNone,
+    ROW1(HomeDog, Axis, 0, false, level(0, 5), "GA[0].5 home dog := ACT"),
+    ROW1(HomingDoneLamp, Axis, 0, false, status(0, 4), "output := ACT and FA[0].4 (homing done)"),
+    ROW1(AxisEnable, Axis, 0, false, level(0, 7), "GA[0].7 axis enable := ACT"),
+    ROW1(AxisReady, Axis, 0, false, push(2, 8), "push FA[2].8 (bus servo ready)"),
+    ROW1(AxisLock, Axis, 0, false, level(0, 6), "GA[0].6 axis lock := ACT"),
+    ROW(AxisMoveRelative, Axis, 0, false, 2, write(52, 4, 1), level(1, 1), kNone,
         "GA[52..55] (64 bit) := distance (while ACT); GA[1].1 relative move := ACT"),
-    ROW(AXISMVTO, Axis, 0, false, 2, write(48, 4, 1), level(1, 0), kNone,
+    ROW(AxisMoveAbsolute, Axis, 0, false, 2, write(48, 4, 1), level(1, 0), kNone,
         "GA[48..51] (64 bit) := target (while ACT); GA[1].0 absolute move := ACT"),
-    ROW1(AXLMF2, Axis, 0, false, level(1, 2), "GA[1].2 second soft limit := ACT"),
-    ROW1(AXISPLMT, Axis, 0, false, level(0, 0), "GA[0].0 positive limit := ACT"),
-    ROW1(AXISNLMT, Axis, 0, false, level(0, 1), "GA[0].1 negative limit := ACT"),
-    ROW1(SVSW, Axis, 0, false, level(3, 0), "GA[3].0 servo enable := ACT"),
-    ROW(AXISMODE, Axis, 0, false, 2,
+    ROW1(SecondSoftLimit, Axis, 0, false, level(1, 2), "GA[1].2 second soft limit := ACT"),
+    ROW1(PositiveLimitDog, Axis, 0, false, level(0, 0), "GA[0].0 positive limit := ACT"),
+    ROW1(NegativeLimitDog, Axis, 0, false, level(0, 1), "GA[0].1 negative limit := ACT"),
+    ROW1(ServoEnable, Axis, 0, false, level(3, 0), "GA[3].0 servo enable := ACT"),
+    ROW(AxisControlMode, Axis, 0, false, 2,
         fieldShl(2, 9, 3, 1), levelAt(2, 9, 1, 0, 2), kNone,
         "GA[2].9-11 := one-hot of mode (while ACT); GA[2].(9+mode) := ACT"),
-    ROW1(REFPT, Axis, 0, false, statusAt(0, 9, 1, 2, 4),
+    ROW1(ReferencePoint, Axis, 0, false, statusAt(0, 9, 1, 2, 4),
          "output := ACT and FA[0].(7+n) for n = 2..4; n = 5 has no bit: output 0"),
-    ROW1(AXISHOM2, Axis, 0, true, status(0, 2), "output := ACT and FA[0].2 (homing phase 2)"),
-    ROW1(AXMOVING, Axis, 0, true, status(0, 0), "output := ACT and FA[0].0 (axis moving)"),
+    ROW1(AxisHoming, Axis, 0, true, status(0, 2), "output := ACT and FA[0].2 (homing phase 2)"),
+    ROW1(AxisMoving, Axis, 0, true, status(0, 0), "output := ACT and FA[0].0 (axis moving)"),
     // ---- 6.3 system functions ----
-    ROW(ALARM, System, -1, false, 2, levelAt(3010, 0, 0, 1, 256), levelAt(3056, 0, 0, 501, 884),
+    ROW(Alarm, System, -1, false, 2, levelAt(3010, 0, 0, 1, 256), levelAt(3056, 0, 0, 501, 884),
         kNone, "alarm n: G3010 bit n-1 := ACT; prompt n: G3056 bit n-501 := ACT"),
-    ROW1(RSTCHK, Channel, 0, false, status(0, 12), "output := ACT and FC[0].12 (reset flag)"),
-    ROW1(RSTCLR, Channel, 0, false, level(0, 9), "GC[0].9 PLC reset acknowledge := ACT"),
+    ROW1(ResetRequested, Channel, 0, false, status(0, 12), "output := ACT and FC[0].12 (reset flag)"),
+    ROW1(ResetClear, Channel, 0, false, level(0, 9), "GC[0].9 PLC reset acknowledge := ACT"),
 };
 // clang-format on
 
@@ -196,10 +196,10 @@ constexpr bool rowsComplete() {
   // One row per Cnc-family Op, in Op order.
   int n = 0;
   for (const CncRow &r : kRows) {
-    if (static_cast<int>(r.op) != static_cast<int>(Op::MDST) + n) return false;
+    if (static_cast<int>(r.op) != static_cast<int>(Op::ChannelModeSet) + n) return false;
     ++n;
   }
-  return n == static_cast<int>(Op::Count_) - static_cast<int>(Op::MDST);
+  return n == static_cast<int>(Op::Count_) - static_cast<int>(Op::ChannelModeSet);
 }
 static_assert(rowsComplete(), "one CNC row per family-Cnc Op, in Op order");
 
@@ -209,7 +209,7 @@ int32_t constOf(const Stmt &s, int8_t op) { return op >= 0 ? s.ops[op].value : 0
 
 const CncRow *cncRow(Op op) {
   if (opFamily(op) != Family::Cnc) return nullptr;
-  return &kRows[static_cast<int>(op) - static_cast<int>(Op::MDST)];
+  return &kRows[static_cast<int>(op) - static_cast<int>(Op::ChannelModeSet)];
 }
 
 std::span<const CncRow> cncTable() { return kRows; }

@@ -123,7 +123,7 @@ TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
     for (const Stmt &s : v->stmts) {
       const Operand &a = s.ops[0], &b = s.ops[1];
       switch (s.op) {
-      case Op::BMOV: {
+      case Op::BlockMove: {
         const int32_t n = s.ops[2].value;
         if (n <= 32) break;
         const bool same = a.area == b.area;
@@ -135,20 +135,20 @@ TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
           ++count[BmovApart];
         break;
       }
-      case Op::FMOV:
+      case Op::Fill:
         count[Fmov] += b.index - a.index + 1 > 32;
         break;
-      case Op::ZRST:
+      case Op::ZoneReset:
         // Bit form: the whole elements strictly between the two bounds' elements.
         if (a.kind == Operand::Kind::Bit)
           count[ZrstBits] += b.index - a.index - 1 > 32;
         else
           count[ZrstWord] += b.index - a.index + 1 > 32;
         break;
-      case Op::SER:
+      case Op::TableSearch:
         count[Ser] += s.ops[1].value > 32;
         break;
-      case Op::COD:
+      case Op::TableLookup:
         count[Cod] += s.ops[1].value > 32;
         break;
       default:
@@ -183,10 +183,11 @@ TEST(Stimulus, BitWritesChangeOnlyThatBitElementWritesTruncate) {
   lj_state s;
   lj_state_reset(&s);
   s.img.X[3] = 0xF0;
-  applyWrites(s, {{Area::X, 3, 1, 1}, {Area::X, 3, 7, 0}, {Area::F, 2, -1, 0x12345}});
+  applyWrites(s,
+              {{Area::Input, 3, 1, 1}, {Area::Input, 3, 7, 0}, {Area::NcStatus, 2, -1, 0x12345}});
   EXPECT_EQ(s.img.X[3], 0x72);
   EXPECT_EQ(s.img.F[2], 0x2345);
-  applyWrites(s, {{Area::F, 2, 15, 1}});
+  applyWrites(s, {{Area::NcStatus, 2, 15, 1}});
   EXPECT_EQ(s.img.F[2], static_cast<int16_t>(0xA345));
 }
 
@@ -194,7 +195,7 @@ TEST(Stimulus, PrintsTheCliStimulusFormat) {
   // CLI.md `--stimulus`: lines `@TICK ADDR=VALUE [ADDR=VALUE ...]`, `#` comments.
   Stimulus st;
   st.nowMs = {0, 1, 2};
-  st.writes = {{}, {{Area::X, 1, 0, 1}, {Area::F, 7, -1, -3}}, {}};
+  st.writes = {{}, {{Area::Input, 1, 0, 1}, {Area::NcStatus, 7, -1, -3}}, {}};
   std::string text = formatStimulus(st);
   EXPECT_NE(text.find("\n@1 X1.0=1 F7=-3\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("@0"), std::string::npos);

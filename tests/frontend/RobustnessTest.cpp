@@ -29,17 +29,17 @@ void checkInvariants(const VerifiedProgram &p, const std::string &text) {
     EXPECT_GE(in.msDepth, 0);
     EXPECT_LE(in.depth, p.maxDepth);
     EXPECT_LE(in.msDepth, p.maxMsDepth);
-    if (s.op == Op::JMP) {
+    if (s.op == Op::Jump) {
       ASSERT_GE(in.target, 0) << text;
       ASSERT_LT(in.target, n);
-      EXPECT_EQ(p.stmts[static_cast<size_t>(in.target)].op, Op::LBL);
+      EXPECT_EQ(p.stmts[static_cast<size_t>(in.target)].op, Op::Label);
       EXPECT_EQ(in.backward, in.target < i);
     }
-    if (s.op == Op::LOOP || s.op == Op::NEXT) {
+    if (s.op == Op::LoopBegin || s.op == Op::LoopEnd) {
       ASSERT_GE(in.target, 0) << text;
       EXPECT_EQ(p.info[static_cast<size_t>(in.target)].target, i);
     }
-    if (s.op == Op::CALL) {
+    if (s.op == Op::Call) {
       ASSERT_GE(in.target, 0);
       ASSERT_LT(in.target, static_cast<int32_t>(p.subs.size()));
     }

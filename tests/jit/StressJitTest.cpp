@@ -67,7 +67,7 @@ TEST(StressJitPrograms, CoverEveryRowAndStructure) {
       seen.insert(op);
       maxDepth = std::max(maxDepth, prog->info[i].depth);
       maxMs = std::max(maxMs, prog->info[i].msDepth);
-      loops += op == Op::LOOP ? 1 : op == Op::NEXT ? -1 : 0;
+      loops += op == Op::LoopBegin ? 1 : op == Op::LoopEnd ? -1 : 0;
       maxLoopNest = std::max(maxLoopNest, loops);
     }
     maxSlices = std::max(maxSlices, prog->slices.size());
