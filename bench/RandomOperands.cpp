@@ -13,27 +13,9 @@ namespace lj::gen::detail {
 
 namespace {
 
-/// Consecutive elements register operand `i` of `op` uses (verifier checks of
-/// instructions/Verify{Data,Nc,Cnc}.cpp): P parameter blocks (ACVT 4, TEMPSEN 4, SPDA and
-/// SPDLBUS1 5), TEMPSEN's two-byte AD word, NIXIE's two-byte display, USEROUT's four bytes.
-int32_t spanOf(Op op, int i) {
-  switch (op) {
-  case Op::RangeConvert:
-    return i == 0 ? 4 : 1;
-  case Op::TempSensor:
-    return i == 3 ? 4 : i == 1 ? 2 : 1;
-  case Op::SpindleAnalog:
-    return i == 4 ? 5 : 1;
-  case Op::BusSpindleGeared:
-    return i == 3 ? 5 : 1;
-  case Op::PanelDisplay:
-    return i == 2 ? 2 : 1;
-  case Op::UserOutput:
-    return i == 2 ? 4 : 1;
-  default:
-    return 1;
-  }
-}
+/// Consecutive elements register operand `i` of `op` uses: the table's span column, which the
+/// verifier checks (verify/Verify{Data,Nc,Cnc}.cpp).
+int32_t spanOf(Op op, int i) { return instrInfo(op).operands[i].span; }
 
 /// Elements a written range may use: D88.. are the planner's guards.
 int32_t rangeLimit(Area a, bool writes) {
@@ -93,11 +75,14 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
     if (i == 0 && rng_.chance(85)) return static_cast<int32_t>(rng_.range(1, 16));
     break;
   case Op::Alarm: {
-    // PLC alarms 1..256 and prompts 501..884; the gap between is rejected (cnc-interface 60).
-    static constexpr int32_t kEdges[] = {1, 16, 17, 256, 501, 502, 884};
+    // PLC alarms and prompts: the table's two value ranges; the gap between is rejected.
+    const std::span<const ValueRange> v = in.operands[i].values;
+    assert(v.size() == 2);
+    const int32_t edges[] = {v[0].lo, 16, 17, v[0].hi, v[1].lo, v[1].lo + 1, v[1].hi};
     if (rng_.chance(50)) return static_cast<int32_t>(rng_.range(1, 20));
-    if (rng_.chance(50)) return kEdges[rng_.below(std::size(kEdges))];
-    return static_cast<int32_t>(rng_.chance(50) ? rng_.range(1, 256) : rng_.range(501, 884));
+    if (rng_.chance(50)) return edges[rng_.below(std::size(edges))];
+    return static_cast<int32_t>(rng_.chance(50) ? rng_.range(v[0].lo, v[0].hi)
+                                                : rng_.range(v[1].lo, v[1].hi));
   }
   case Op::VarGet:
   case Op::VarSet:

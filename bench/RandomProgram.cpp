@@ -4,6 +4,7 @@
 #include "bench/GenPools.h"
 #include "bench/ProgramGenerator.h"
 #include "bench/RandomGen.h"
+#include "frontends/hnc8/Mnemonics.h"
 #include "ir/OpTable.h"
 
 #include <array>
@@ -105,8 +106,8 @@ void RandomGen::emitPush() {
 }
 
 void RandomGen::emitGeneric(const InstrInfo &in) {
-  std::string s = in.mnemonic;
-  if (in.op == Op::Coil && rng_.chance(5)) s = "WRT"; // alias (DIALECT.md 2)
+  std::string s = hnc8::mnemonicOf(in.op);
+  if (in.op == Op::Coil && rng_.chance(5)) s = hnc8::mnemonicRow(in.op).alias; // DIALECT.md 2
   if (!specialOperands(in, s))
     for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
   emit(std::move(s));

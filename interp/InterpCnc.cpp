@@ -1,8 +1,8 @@
 // Interpreter semantics of family Cnc: chapter-6 CNC blocks on F/G words
 // (hnc8-cnc-interface.md 2 and 3.1), by reading the CNC table (CncTable.h) at run time. Written
 // plainly, word by word, as the oracle the lowering is checked against.
-#include "profiles/hnc8/CncTable.h"
 #include "interp/InterpreterInternal.h"
+#include "profiles/hnc8/CncTable.h"
 
 #include <cstdint>
 

@@ -2,13 +2,16 @@
 // chapter-6 blocks). Written straight from hnc8-functions-1.md 2.4/3.1, hnc8-functions-2.md
 // 2.19-2.23, hnc8-cnc-interface.md section 2 and docs/dialect-notes.md "NC services".
 #include "interp/InterpreterInternal.h"
+#include "ir/Profile.h"
 
 namespace lj::interp {
 
 namespace {
 
-// Channel words FC[k] / GC[k] = F/G[2560 + 80 ch + k] (hnc8-cnc-interface.md 1.3, 1.4).
-int32_t chanBase(int32_t ch) { return 2560 + 80 * ch; }
+/// The target's CNC words (profile): FC[k] / GC[k] = F/G[channelBase + blockWords * ch + k]
+/// (hnc8-cnc-interface.md 1.3, 1.4).
+const CncLayout &kCnc = targetProfile().cnc;
+int32_t chanBase(int32_t ch) { return kCnc.channelBase + kCnc.blockWords * ch; }
 
 /// Store the low 16 bits of v into G[i] (a write keeps the low bits, DIALECT.md 1).
 void setG(lj_state *s, int32_t i, int32_t v) {
@@ -67,7 +70,8 @@ bool runNc(const BlockCall &b) {
     // out = EN and one of FC[48..55] holds the M code; nothing written (functions-1 3.1).
     int32_t cb = chanBase(o[0].value);
     bool pending = false;
-    for (int k = 0; k < 8; ++k) pending = pending || s->img.F[cb + 48 + k] == o[1].value;
+    for (int k = 0; k < kCnc.mCodeSlots; ++k)
+      pending = pending || s->img.F[cb + kCnc.mCodeWord + k] == o[1].value;
     f.output(en && pending);
     return true;
   }
@@ -75,14 +79,15 @@ bool runNc(const BlockCall &b) {
     // Every slot k holding the M code is acknowledged: GC[48+k] := M (functions-1 3.1).
     if (en) {
       int32_t cb = chanBase(o[0].value);
-      for (int k = 0; k < 8; ++k)
-        if (s->img.F[cb + 48 + k] == o[1].value) setG(s, cb + 48 + k, o[1].value);
+      for (int k = 0; k < kCnc.mCodeSlots; ++k)
+        if (s->img.F[cb + kCnc.mCodeWord + k] == o[1].value)
+          setG(s, cb + kCnc.mCodeWord + k, o[1].value);
     }
     return true;
   case Op::TCodeGet: {
     // FC[56] != -1: a T code is pending; it goes to the destination, or is compared with a
     // constant destination (functions-1 3.1 TGET resolution).
-    int16_t t = s->img.F[chanBase(o[0].value) + 56];
+    int16_t t = s->img.F[chanBase(o[0].value) + kCnc.tCodeWord];
     bool pending = t != -1;
     if (o[1].kind == Ref::Kind::Const) {
       f.output(en && pending && t == o[1].value);
@@ -95,7 +100,7 @@ bool runNc(const BlockCall &b) {
   case Op::TCodeAck:
     if (en) {
       int32_t cb = chanBase(o[0].value);
-      setG(s, cb + 56, s->img.F[cb + 56]); // GC[56] := FC[56]
+      setG(s, cb + kCnc.tCodeWord, s->img.F[cb + kCnc.tCodeWord]); // GC[56] := FC[56]
     }
     return true;
   case Op::HandwheelPulse:
@@ -117,7 +122,7 @@ bool runNc(const BlockCall &b) {
   case Op::PartClear:
     // The part count of channel ch is GC[19] (functions-2 2.19, 2.20); level-triggered.
     if (en) {
-      int32_t i = chanBase(o[0].value) + 19;
+      int32_t i = chanBase(o[0].value) + kCnc.partCountWord;
       setG(s, i, b.c.op == Op::PartCount ? addWrap(s->img.G[i], 1) : 0);
     }
     f.output(en);

@@ -1,14 +1,18 @@
-// Internals of the reference interpreter shared by its instruction-family files
-// (Interpreter.cpp: core set; InterpData.cpp, InterpNc.cpp, InterpCnc.cpp: the families of
-// InstrTable.h `Family`). Not part of the library's interface.
+// Internals of the reference interpreter shared by its files (Interpreter.cpp: decoding and
+// entries; InterpFlow.cpp: dispatch, basic instructions, flow; InterpBlocks.cpp: function blocks;
+// InterpData.cpp, InterpNc.cpp, InterpCnc.cpp: the families of ir/OpTable.h `Family`). Not part
+// of the library's interface.
 #pragma once
 
+#include "interp/Interpreter.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 
+#include <array>
 #include <cassert>
 #include <cstddef>
 #include <cstring>
+#include <vector>
 
 namespace lj::interp {
 
@@ -188,3 +192,39 @@ bool runNc(const BlockCall &b);
 bool runCnc(const BlockCall &b);
 
 } // namespace lj::interp
+
+namespace lj::interp {
+
+/// How a statement range ended.
+enum class Flow { Done, Return, Watchdog };
+
+/// Edge contact on one instance's memory m (DIALECT.md 3): always updates m.
+inline bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising) {
+  bool m = s->edge[slot] != 0;
+  s->edge[slot] = cur;
+  return rising ? (cur && !m) : (!cur && m);
+}
+
+} // namespace lj::interp
+
+namespace lj {
+
+struct Interpreter::Impl {
+  const VerifiedProgram &prog;
+  std::vector<interp::Code> code; ///< parallel to prog.stmts
+  /// All decoded operands of the non-core statements (Code::wide indexes it).
+  std::vector<std::array<interp::Ref, kMaxOperands>> wide;
+  /// The last executed instruction that had no semantics (Op::Count_: none so far).
+  Op unimplemented = Op::Count_;
+  // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
+  std::vector<std::vector<uint8_t>> stStore, msStore;
+
+  explicit Impl(const VerifiedProgram &p);
+  interp::Frame frame(size_t scope);
+  uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);
+  interp::Flow run(lj_state *s, interp::Frame &f, int32_t begin, int32_t end);
+  interp::Flow call(lj_state *s, int32_t sub);
+  void block(lj_state *s, interp::Frame &f, const interp::Code &c);
+};
+
+} // namespace lj

@@ -2,8 +2,8 @@
 // and ELF checks before dlopen, then ABI version and program hash. Plain dlopen/dlsym, no LLVM.
 #pragma once
 
-#include "ir/Engine.h"
 #include "io/PlcDit.h"
+#include "ir/Engine.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,4 +1,5 @@
-// Memory areas of the HNC-8 process image: letters, element counts, widths and signedness.
+// Memory areas by role (the core never names a dialect letter) and the per-area facts a target
+// profile gives for each (ir/Profile.h; the HNC-8 values are in profiles/hnc8/Areas.cpp).
 #pragma once
 
 #include <cstdint>
@@ -7,7 +8,8 @@
 
 namespace lj {
 
-/// One memory area (DIALECT.md section 1). The order is the order of AreaMask bits.
+/// One memory area by what it holds (DIALECT.md section 1 lists HNC-8's). The order is the order
+/// of AreaMask bits.
 enum class Area : uint8_t {
   Input,      ///< X
   Output,     ///< Y
@@ -32,28 +34,34 @@ constexpr AreaMask bit(Area a) { return static_cast<AreaMask>(1u << static_cast<
 template <typename... A> constexpr AreaMask areas(A... a) { return (bit(a) | ... | 0); }
 constexpr bool hasArea(AreaMask m, Area a) { return (m & bit(a)) != 0; }
 
-/// Static facts about one area.
+/// Static facts about one area, as the target profile gives them.
 struct AreaInfo {
-  char letter;
-  int32_t count; ///< elements when contiguous from 0 (T/C: see validIndex)
-  uint8_t bytes; ///< element width in bytes (0 for T/C/L/S)
+  char letter;   ///< how the dialect writes it (one letter for HNC-8)
+  int32_t count; ///< elements when contiguous from 0 (timers/counters: see validIndex)
+  uint8_t bytes; ///< element width in bytes (0 for timer/counter/label/subroutine areas)
   bool isSigned; ///< read rule: sign-extend (true) or zero-extend (false)
   bool writable; ///< writable by ordinary program instructions
+  bool bitAddressable = false; ///< `A12.3` bit addresses accepted (contacts, coils)
+  uint32_t offset = 0;         ///< byte offset of element 0 inside lj_state (numeric areas)
 };
 
+// Implemented by the linked target profile (profiles/hnc8/Areas.cpp): the core reads areas only
+// through these and ir/Profile.h.
+
+/// The facts of area `a` in the target profile.
 const AreaInfo &areaInfo(Area a);
 
-/// Area named by a letter (case-insensitive), if any.
+/// Area the dialect writes as `c` (case-insensitive), if any.
 std::optional<Area> areaFromLetter(char c);
 
-/// Whether element `n` exists in area `a` (T/C have the gap 128..299; L 0..9999; S 0..511).
+/// Whether element `n` exists in area `a` (timers/counters: the profile's number spaces).
 bool validIndex(Area a, int64_t n);
 
-/// Byte offset of element 0 of a numeric area (X Y F G R W D B P) inside lj_state (abi.h); 0
-/// for the other areas. Element n is at stateOffset(a) + n * areaInfo(a).bytes.
+/// Byte offset of element 0 of a numeric area inside lj_state (abi.h); 0 for the other areas.
+/// Element n is at stateOffset(a) + n * areaInfo(a).bytes.
 uint32_t stateOffset(Area a);
 
-/// Number of bits of one element (8, 16, 32), or 1 for T/C whose only bit is .0.
+/// Number of bits of one element (8, 16, 32), or 1 for timers/counters whose only bit is .0.
 int bitWidth(Area a);
 
 } // namespace lj

@@ -1,16 +1,18 @@
-// The instruction set as a table (STYLE.md 7): read by the parser, the verifier, the
-// interpreter, the lowering and the fuzzer's program generator.
+// The semantic instruction set as a table (STYLE.md 7): what each operation does to the stacks,
+// its operands and state, read by the verifier, the interpreter, the lowering, the generator and
+// the front ends. No dialect spelling here: a front end maps its mnemonics onto these rows
+// (frontends/hnc8/Mnemonics.cpp for HNC-8).
 #pragma once
 
 #include "ir/Area.h"
 
 #include <cstdint>
 #include <span>
-#include <string_view>
 
 namespace lj {
 
-/// Every mnemonic the engine knows. Aliases (WRT, END1, END2) map onto these.
+/// Every operation the engines run, named by what it does (the HNC-8 spelling of each is in
+/// frontends/hnc8/Mnemonics.cpp).
 enum class Op : uint8_t {
   // basic (hnc8-core.md 4.2)
   Load,
@@ -209,6 +211,11 @@ enum class Family : uint8_t { Core, Data, Nc, Cnc };
 /// Most operands an instruction takes (PTN / NTP).
 constexpr int kMaxOperands = 9;
 
+/// An inclusive range of constant values.
+struct ValueRange {
+  int32_t lo, hi;
+};
+
 /// Operand position: which syntactic forms and areas are accepted.
 struct OperandSpec {
   const char *role;    ///< shown in diagnostics ("destination", "preset"...)
@@ -218,12 +225,26 @@ struct OperandSpec {
   int64_t cmin, cmax;  ///< constant range (inclusive)
   bool writes;         ///< the instruction writes this operand (areas must be writable)
   bool wordOk = false; ///< isBit positions only: a whole register is accepted too (ZRST)
+  /// Register operands: consecutive elements the operand touches (a P parameter block, a byte
+  /// pair); the verifier checks the last one exists, the generator keeps room for them.
+  uint8_t span = 1;
+  /// Constants: when not empty, the only values accepted (cmin..cmax has gaps).
+  std::span<const ValueRange> values = {};
 };
+
+/// Whether constant `v` is one of `spec`'s values (always, when the spec has no value set).
+inline bool inValueSet(const OperandSpec &spec, int64_t v) {
+  if (spec.values.empty()) return true;
+  for (const ValueRange &r : spec.values)
+    if (v >= r.lo && v <= r.hi) return true;
+  return false;
+}
 
 /// One row of the instruction table.
 struct InstrInfo {
   Op op;
-  const char *mnemonic;
+  const char *name; ///< the semantic name (the enumerator), for dumps and messages
+  Family family;    ///< which part of the engines implements it
   StackRule stack;
   InputRule input;
   uint8_t inputs; ///< ST entries a block consumes (1, or 2/4 for counters)
@@ -234,28 +255,24 @@ struct InstrInfo {
   const char *summary;
 };
 
-/// Family of `op` (by its position in the Op enum).
-constexpr Family opFamily(Op op) {
-  if (op >= Op::IndexedMove && op <= Op::NumberToPoint) return Family::Data;
-  if (op >= Op::MCodeGet && op <= Op::SaveRetained) return Family::Nc;
-  if (op >= Op::ChannelModeSet && op < Op::Count_) return Family::Cnc;
-  return Family::Core;
-}
-
 /// The row of `op`.
 const InstrInfo &instrInfo(Op op);
 
 /// All rows, in Op order.
 std::span<const InstrInfo> instrTable();
 
-/// Whether `op` is a contact (LD LDI AND ANI OR ORI and the edge contacts): the instructions an
-/// online-monitor force applies to (hnc8-core.md 6.1 RESOLUTION (a), Stmt::force).
-constexpr bool isContact(Op op) {
-  return (op >= Op::Load && op <= Op::OrFall) && op != Op::LoadTrue;
-}
+/// Family of `op` (the row's column).
+inline Family opFamily(Op op) { return instrInfo(op).family; }
 
-/// Op named by `mnemonic` (case-insensitive, aliases WRT/END1/END2 included).
-bool lookupMnemonic(std::string_view mnemonic, Op &out);
+/// Whether `op` is a contact (a basic push or combine of one bit operand, edge contacts
+/// included): the instructions an online-monitor force applies to (hnc8-core.md 6.1 RESOLUTION
+/// (a), Stmt::force).
+inline bool isContact(Op op) {
+  const InstrInfo &r = instrInfo(op);
+  return r.family == Family::Core &&
+         (r.stack == StackRule::Push || r.stack == StackRule::Combine) && r.operandCount == 1 &&
+         r.operands[0].isBit;
+}
 
 // Area groups used by the table and by tests.
 constexpr AreaMask kContactAreas =

@@ -41,6 +41,19 @@ struct Stmt {
   int8_t force = -1;
 };
 
+/// How the core words an operation or an operand in a message: in the dialect the program was
+/// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
+struct DialectText {
+  const char *name;                              ///< "hnc8"
+  const char *(*spell)(Op);                      ///< the mnemonic of an operation
+  std::string (*formatOperand)(const Operand &); ///< an operand as source text
+};
+
+/// The mnemonic of `op` in `d`, or its semantic name without a dialect.
+inline const char *spelling(const DialectText *d, Op op) {
+  return d ? d->spell(op) : instrInfo(op).name;
+}
+
 /// A line the parser dropped although its mnemonic was known (bad operands or count). The
 /// verifier applies its stack effect, silently, so one bad operand causes no follow-on errors.
 struct DroppedStmt {
@@ -50,7 +63,8 @@ struct DroppedStmt {
 
 /// What the parser produces: statements in source order (markers included).
 struct ParsedProgram {
-  std::string file; ///< name used in diagnostics
+  std::string file;                     ///< name used in diagnostics
+  const DialectText *dialect = nullptr; ///< the front end that read it
   std::vector<Stmt> stmts;
   std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
 };
@@ -84,6 +98,7 @@ struct Subroutine {
 /// A verified program: every fact the engines need, computed once by the front end.
 struct VerifiedProgram {
   std::string file;
+  const DialectText *dialect = nullptr; ///< copied from ParsedProgram
   std::vector<Stmt> stmts;
   std::vector<StmtInfo> info; ///< parallel to stmts
   StmtRange init;             ///< statements of the init part (markers excluded)

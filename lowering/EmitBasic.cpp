@@ -113,7 +113,7 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
   }
   case Op::AndBlock:
   case Op::OrBlock: {
-    if (st_.size() < 2) return fail(i, "ANB/ORB with fewer than 2 ST entries");
+    if (st_.size() < 2) return fail(i, "AndBlock/OrBlock with fewer than 2 ST entries");
     llvm::Value *top = st_.back();
     st_.pop_back();
     st_.back() =
@@ -125,7 +125,7 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
     break;
   case Op::BranchRead:
   case Op::BranchPop:
-    if (ms_.empty()) return fail(i, "MRD/MPP with an empty MS");
+    if (ms_.empty()) return fail(i, "BranchRead/BranchPop with an empty MS");
     st0 = ms_.back();
     if (s.op == Op::BranchPop) ms_.pop_back();
     break;

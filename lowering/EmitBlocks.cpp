@@ -3,6 +3,8 @@
 // block never splits the basic block and the image stays in registers across it.
 #include "lowering/FunctionEmitter.h"
 
+#include "ir/Profile.h"
+
 #include "ladderjit/abi.h"
 
 namespace lj::lower {
@@ -196,7 +198,6 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const int32_t slot = prog_.info[i].slot;
   if (slot < 0 || slot >= LJ_TC_SLOTS) return fail(i, "timer slot out of range");
-  static constexpr int64_t kUnitMs[] = {1, 1000, 60000, 3600000};
   int32_t unit = s.ops[1].value;
   if (s.ops[1].kind != Operand::Kind::Const || unit < 0 || unit > 3)
     return fail(i, "timer unit is not a constant 0..3");
@@ -204,7 +205,8 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   llvm::Value *zero64 = b_.getInt64(0);
   llvm::Value *en = enable();
   llvm::Value *len = b_.CreateSExt(readInt(s.ops[2]), i64);
-  llvm::Value *preset = b_.CreateMul(len, b_.getInt64(kUnitMs[unit])); // fits: |len| < 2^31
+  llvm::Value *preset =
+      b_.CreateMul(len, b_.getInt64(targetProfile().timerUnitMs[unit])); // fits: |len| < 2^31
   preset = b_.CreateSelect(b_.CreateICmpSLT(preset, zero64), zero64, preset, "preset");
   llvm::Value *now = cache_.load(mc_.layout.scalar(Scalar::NowMs));
   StateLoc startL = mc_.layout.timer(slot, TimerField::Start);

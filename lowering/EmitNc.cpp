@@ -2,6 +2,7 @@
 // blocks), written from the same rules as instructions/InterpNc.cpp (docs/dialect-notes.md
 // "NC services"). F/G work is straight-line selects; only a host call (or MPGSET's runtime axis)
 // branches, after flushing the image cache.
+#include "ir/Profile.h"
 #include "lowering/FunctionEmitter.h"
 
 #include "ladderjit/abi.h"
@@ -12,8 +13,10 @@ namespace lj::lower {
 
 namespace {
 
-// Channel words FC[k] / GC[k] = F/G[2560 + 80 ch + k] (hnc8-cnc-interface.md 1.3, 1.4).
-int32_t chanBase(int32_t ch) { return 2560 + 80 * ch; }
+/// The target's CNC words (profile): FC[k] / GC[k] = F/G[channelBase + blockWords * ch + k]
+/// (hnc8-cnc-interface.md 1.3, 1.4).
+const CncLayout &kCnc = targetProfile().cnc;
+int32_t chanBase(int32_t ch) { return kCnc.channelBase + kCnc.blockWords * ch; }
 
 } // namespace
 
@@ -115,24 +118,26 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     llvm::Value *en = enable();
     int32_t cb = chanBase(o[0].value);
     llvm::Value *pending = b_.getFalse();
-    for (int k = 0; k < 8; ++k)
-      pending = b_.CreateOr(pending,
-                            b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + 48 + k), k32(o[1].value)));
+    for (int k = 0; k < kCnc.mCodeSlots; ++k)
+      pending =
+          b_.CreateOr(pending, b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + kCnc.mCodeWord + k),
+                                               k32(o[1].value)));
     setOutput(b_.CreateAnd(en, pending));
     return llvm::Error::success();
   }
   case Op::MCodeAck: {
     llvm::Value *en = enable();
     int32_t cb = chanBase(o[0].value);
-    for (int k = 0; k < 8; ++k) {
-      llvm::Value *hit = b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + 48 + k), k32(o[1].value));
-      ncWrite(Area::NcControl, cb + 48 + k, k32(o[1].value), b_.CreateAnd(en, hit));
+    for (int k = 0; k < kCnc.mCodeSlots; ++k) {
+      llvm::Value *hit =
+          b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + kCnc.mCodeWord + k), k32(o[1].value));
+      ncWrite(Area::NcControl, cb + kCnc.mCodeWord + k, k32(o[1].value), b_.CreateAnd(en, hit));
     }
     return llvm::Error::success();
   }
   case Op::TCodeGet: {
     llvm::Value *en = enable();
-    llvm::Value *t = ncRead(Area::NcStatus, chanBase(o[0].value) + 56);
+    llvm::Value *t = ncRead(Area::NcStatus, chanBase(o[0].value) + kCnc.tCodeWord);
     llvm::Value *got = b_.CreateAnd(en, b_.CreateICmpNE(t, k32(-1)));
     if (o[1].kind == Operand::Kind::Const) {
       setOutput(b_.CreateAnd(got, b_.CreateICmpEQ(t, k32(o[1].value))));
@@ -144,7 +149,8 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   }
   case Op::TCodeAck: {
     int32_t cb = chanBase(o[0].value);
-    ncWrite(Area::NcControl, cb + 56, ncRead(Area::NcStatus, cb + 56), enable());
+    ncWrite(Area::NcControl, cb + kCnc.tCodeWord, ncRead(Area::NcStatus, cb + kCnc.tCodeWord),
+            enable());
     return llvm::Error::success();
   }
   case Op::HandwheelPulse:
@@ -165,7 +171,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   case Op::PartCount:
   case Op::PartClear: {
     llvm::Value *en = enable();
-    int32_t g = chanBase(o[0].value) + 19; // GC[19] part count (functions-2 2.19)
+    int32_t g = chanBase(o[0].value) + kCnc.partCountWord; // GC[19] part count (functions-2 2.19)
     llvm::Value *v =
         s.op == Op::PartCount ? b_.CreateAdd(ncRead(Area::NcControl, g), k32(1)) : k32(0);
     ncWrite(Area::NcControl, g, v, en);
@@ -263,7 +269,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     emitMpgSet(i);
     return llvm::Error::success();
   case Op::MagazineRotate:
-    if (st_.size() < 5) return fail(i, "ROT with fewer than 5 ST entries");
+    if (st_.size() < 5) return fail(i, "MagazineRotate with fewer than 5 ST entries");
     emitRot(i);
     return llvm::Error::success();
   case Op::RaiseEvent:

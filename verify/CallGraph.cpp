@@ -8,7 +8,8 @@ namespace lj::verifier {
 namespace {
 
 std::string subName(const Context &cx, int32_t sub) {
-  return "S" + std::to_string(cx.prog.subs[static_cast<size_t>(sub)].number);
+  return std::string(1, areaInfo(Area::Subroutine).letter) +
+         std::to_string(cx.prog.subs[static_cast<size_t>(sub)].number);
 }
 
 } // namespace

@@ -11,7 +11,10 @@ namespace lj::verifier {
 namespace {
 
 std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
-const char *mnem(const Stmt &s) { return instrInfo(s.op).mnemonic; }
+/// A label as the dialect writes it ("L3").
+std::string label(int32_t n) {
+  return std::string(1, areaInfo(Area::Label).letter) + std::to_string(n);
+}
 
 class UnitChecker {
 public:
@@ -40,7 +43,8 @@ private:
         cur = next++;
       } else if (s.op == Op::LoopEnd) {
         if (open.empty()) {
-          cx_.error(s.loc, "NEXT without LOOP");
+          cx_.error(s.loc,
+                    std::string(cx_.spell(Op::LoopEnd)) + " without " + cx_.spell(Op::LoopBegin));
           continue;
         }
         int32_t loop = open.back();
@@ -57,7 +61,9 @@ private:
                                       lineText(cx_.stmt(it->second)) + ")");
       }
     }
-    for (int32_t loop : open) cx_.error(cx_.stmt(loop).loc, "LOOP without NEXT");
+    for (int32_t loop : open)
+      cx_.error(cx_.stmt(loop).loc,
+                std::string(cx_.spell(Op::LoopBegin)) + " without " + cx_.spell(Op::LoopEnd));
   }
 
   size_t rel(int32_t i) const { return static_cast<size_t>(i - unit_.body.begin); }
@@ -72,8 +78,9 @@ private:
     }
     int32_t lbl = it->second;
     if (scope_[rel(lbl)] != scope_[rel(i)]) {
-      cx_.error(s.ops[0].loc, "JMP L" + std::to_string(n) + " crosses a scope boundary (LBL L" +
-                                  std::to_string(n) + " on " + lineText(cx_.stmt(lbl)) +
+      cx_.error(s.ops[0].loc, std::string(cx_.spell(Op::Jump)) + " " + label(n) +
+                                  " crosses a scope boundary (" + cx_.spell(Op::Label) + " " +
+                                  label(n) + " on " + lineText(cx_.stmt(lbl)) +
                                   " is not in the same loop body)");
       return;
     }
@@ -101,7 +108,9 @@ private:
   /// Every MPS still open at a stack reset is an error, reported at the MPS.
   void closeMps(const std::string &where) {
     for (int32_t mps : mps_)
-      if (mps >= 0) cx_.error(cx_.stmt(mps).loc, "unclosed MPS: MS is not empty at " + where);
+      if (mps >= 0)
+        cx_.error(cx_.stmt(mps).loc, "unclosed " + std::string(cx_.spell(Op::BranchPush)) +
+                                         ": MS is not empty at " + where);
     mps_.clear();
   }
 
@@ -112,7 +121,7 @@ private:
     auto [it, fresh] = coils_.try_emplace(key, i);
     if (fresh) return;
     const Stmt &first = cx_.stmt(it->second);
-    std::string a = formatOperand(o);
+    std::string a = cx_.operandText(o);
     cx_.warning(o.loc, "double coil: " + a + " is also written on " + lineText(first));
     cx_.note(first.ops[0].loc, "first write of " + a + " is here");
   }
@@ -124,19 +133,19 @@ private:
     if (ii.inputs > 1) {
       // Multi-input blocks pop k (first loaded = input 1) and push their output.
       if (d < ii.inputs)
-        underflow(s, std::string(ii.mnemonic) + " needs " + std::to_string(ii.inputs) +
+        underflow(s, std::string(cx_.spell(ii.op)) + " needs " + std::to_string(ii.inputs) +
                          " inputs on ST, found " + std::to_string(d));
       d = std::max(d - ii.inputs, 0) + 1;
     } else {
       if (ii.input == InputRule::Required && d == 0)
-        cx_.warning(s.loc,
-                    std::string(ii.mnemonic) + ": block needs an input; ST is empty, input is 1");
+        cx_.warning(s.loc, std::string(cx_.spell(ii.op)) +
+                               ": block needs an input; ST is empty, input is 1");
       if (ii.output != OutputRule::None && d == 0) d = 1; // output pushed onto an empty ST
     }
     if (s.op == Op::Jump) jump(i);
     if (s.op == Op::Call) call(i);
     if (s.op == Op::Return && unit_.kind != Unit::Kind::Sub)
-      cx_.error(s.loc, "RETN outside a subroutine");
+      cx_.error(s.loc, std::string(cx_.spell(Op::Return)) + " outside a subroutine");
   }
 
   /// Stack effect of the dropped lines just before statement `i` (or the unit's end), without
@@ -204,17 +213,17 @@ private:
         ++d;
         break;
       case StackRule::Combine:
-        if (d < 1) underflow(s, std::string(ii.mnemonic) + " with an empty ST");
+        if (d < 1) underflow(s, std::string(cx_.spell(ii.op)) + " with an empty ST");
         d = std::max(d, 1);
         break;
       case StackRule::BlockPop:
         if (d < 2)
-          underflow(s, std::string(ii.mnemonic) + " needs 2 entries on ST, found " +
+          underflow(s, std::string(cx_.spell(ii.op)) + " needs 2 entries on ST, found " +
                            std::to_string(d));
         d = std::max(d - 1, 1);
         break;
       case StackRule::MpsPush:
-        if (d < 1) underflow(s, "MPS with an empty ST");
+        if (d < 1) underflow(s, std::string(cx_.spell(Op::BranchPush)) + " with an empty ST");
         d = std::max(d, 1);
         ++ms;
         mps_.push_back(i);
@@ -222,7 +231,7 @@ private:
       case StackRule::MsRead:
       case StackRule::MsPop:
         if (ms < 1) {
-          underflow(s, std::string(ii.mnemonic) + " with an empty MS");
+          underflow(s, std::string(cx_.spell(ii.op)) + " with an empty MS");
         } else if (ii.stack == StackRule::MsPop) {
           --ms;
           mps_.pop_back();
@@ -230,12 +239,12 @@ private:
         d = std::max(d, 1);
         break;
       case StackRule::Coil:
-        if (d < 1) underflow(s, std::string(ii.mnemonic) + " with an empty ST");
+        if (d < 1) underflow(s, std::string(cx_.spell(ii.op)) + " with an empty ST");
         if (s.op == Op::Coil || s.op == Op::CoilNot) doubleCoil(i);
         break;
       case StackRule::Structural:
         if (s.op == Op::Label || s.op == Op::LoopBegin || s.op == Op::LoopEnd)
-          closeMps(std::string(mnem(s)) + " (" + lineText(s) + ")");
+          closeMps(std::string(cx_.spell(s.op)) + " (" + lineText(s) + ")");
         d = ms = 0;
         break;
       case StackRule::Block: {
@@ -265,7 +274,7 @@ private:
     }
     int32_t end = unit_.body.end;
     if (end < static_cast<int32_t>(cx_.prog.stmts.size()) && cx_.stmt(end).op == Op::SubEnd)
-      return "SPE (" + lineText(cx_.stmt(end)) + ")";
+      return std::string(cx_.spell(Op::SubEnd)) + " (" + lineText(cx_.stmt(end)) + ")";
     return "the end of the subroutine";
   }
 

@@ -3,6 +3,8 @@
 // StateSlots.cpp, CallGraph.cpp and SlicePlanner.cpp.
 #include "verify/VerifierInternal.h"
 
+#include "ir/Profile.h"
+
 #include <algorithm>
 
 namespace lj {
@@ -13,8 +15,20 @@ namespace {
 
 bool isMarker(Op op) { return op == Op::EndInit || op == Op::EndCyclic || op == Op::EndSliced; }
 int markerRank(Op op) { return op == Op::EndInit ? 0 : op == Op::EndCyclic ? 1 : 2; }
-const char *markerName(Op op) { return instrInfo(op).mnemonic; }
 std::string lineOf(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
+
+/// A subroutine as the dialect writes it ("S7").
+std::string subText(int32_t n) {
+  return std::string(1, areaInfo(Area::Subroutine).letter) + std::to_string(n);
+}
+
+/// The part markers in the order the profile runs the parts ("IEND, 1END, 2END").
+std::string markerOrder(const Context &cx) {
+  std::string out;
+  for (const PartSpec &p : targetProfile().parts)
+    out += (out.empty() ? "" : ", ") + std::string(cx.spell(p.endMarker));
+  return out;
+}
 
 Unit::Kind partKind(int rank) {
   return rank == 0 ? Unit::Kind::Init : rank == 1 ? Unit::Kind::Plc1 : Unit::Kind::Plc2;
@@ -25,7 +39,8 @@ void addPart(Context &cx, int rank, StmtRange r, bool (&have)[3]) {
     // After 2END only subroutines may follow (dialect-notes "Program parts").
     for (int32_t i = r.begin; i < r.end; ++i) {
       if (isMarker(cx.stmt(i).op) || cx.stmt(i).op == Op::SubEnd) continue; // reported already
-      cx.error(cx.stmt(i).loc, "statement after 2END outside a subroutine");
+      cx.error(cx.stmt(i).loc,
+               "statement after " + std::string(cx.spell(Op::EndSliced)) + " outside a subroutine");
       break;
     }
     return;
@@ -44,18 +59,18 @@ void planParts(Context &cx, int32_t mainEnd) {
   for (int32_t i = 0; i < mainEnd; ++i) {
     const Stmt &s = cx.stmt(i);
     if (s.op == Op::SubEnd) {
-      cx.error(s.loc, "SPE without SP");
+      cx.error(s.loc, std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
       continue;
     }
     if (!isMarker(s.op)) continue;
     int rank = markerRank(s.op);
     if (first[rank] >= 0) {
-      cx.error(s.loc, std::string("duplicate ") + markerName(s.op) + " (first on " +
+      cx.error(s.loc, std::string("duplicate ") + cx.spell(s.op) + " (first on " +
                           lineOf(cx.stmt(first[rank])) + ")");
     } else if (rank < lastRank) {
-      cx.error(s.loc, std::string(markerName(s.op)) + " after " +
-                          markerName(cx.stmt(markers.back()).op) +
-                          ": markers must come in the order IEND, 1END, 2END");
+      cx.error(s.loc, std::string(cx.spell(s.op)) + " after " +
+                          cx.spell(cx.stmt(markers.back()).op) +
+                          ": markers must come in the order " + markerOrder(cx));
     } else {
       first[rank] = i;
       lastRank = rank;
@@ -109,8 +124,9 @@ void planSubs(Context &cx, int32_t mainEnd) {
     if (s.op == Op::SubBegin) {
       if (inSub) {
         const Subroutine &cur = cx.prog.subs.back();
-        cx.error(s.loc, "nested SP: S" + std::to_string(cur.number) + " (" +
-                            lineOf(cx.stmt(cur.spIndex)) + ") has no SPE before it");
+        cx.error(s.loc, "nested " + std::string(cx.spell(Op::SubBegin)) + ": " +
+                            subText(cur.number) + " (" + lineOf(cx.stmt(cur.spIndex)) +
+                            ") has no " + cx.spell(Op::SubEnd) + " before it");
         closeSub(cx, i);
       }
       openSub(cx, i);
@@ -121,13 +137,12 @@ void planSubs(Context &cx, int32_t mainEnd) {
         closeSub(cx, i);
         inSub = false;
       } else {
-        cx.error(s.loc, "SPE without SP");
+        cx.error(s.loc, std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
       }
     } else if (isMarker(s.op)) {
-      cx.error(s.loc, std::string(markerName(s.op)) +
-                          " after a subroutine: SP before the end of the main parts (first SP "
-                          "on " +
-                          lineOf(cx.stmt(mainEnd)) + ")");
+      cx.error(s.loc, std::string(cx.spell(s.op)) + " after a subroutine: " +
+                          cx.spell(Op::SubBegin) + " before the end of the main parts (first " +
+                          cx.spell(Op::SubBegin) + " on " + lineOf(cx.stmt(mainEnd)) + ")");
     } else if (!inSub && !outsideReported) {
       cx.error(s.loc, "statement after the subroutines");
       outsideReported = true;
@@ -135,7 +150,8 @@ void planSubs(Context &cx, int32_t mainEnd) {
   }
   if (inSub) {
     const Subroutine &cur = cx.prog.subs.back();
-    cx.error(cx.stmt(cur.spIndex).loc, "SP S" + std::to_string(cur.number) + " has no SPE");
+    cx.error(cx.stmt(cur.spIndex).loc, std::string(cx.spell(Op::SubBegin)) + " " +
+                                           subText(cur.number) + " has no " + cx.spell(Op::SubEnd));
     closeSub(cx, n);
   }
 }
@@ -161,6 +177,7 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
                                       Diagnostics &diags) {
   VerifiedProgram prog;
   prog.file = parsed.file;
+  prog.dialect = parsed.dialect;
   prog.stmts = parsed.stmts;
   prog.info.assign(prog.stmts.size(), StmtInfo{});
   prog.subByNumber.fill(-1);
@@ -185,14 +202,6 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   verifier::checkCallGraph(cx);
   if (diags.errorCount() > errorsBefore) return std::nullopt;
   verifier::planSlices(cx);
-  return prog;
-}
-
-std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
-                                               const VerifyOptions &opts, Diagnostics &diags) {
-  ParsedProgram parsed = parseStl(text, std::move(file), diags);
-  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
-  if (diags.hasErrors()) return std::nullopt;
   return prog;
 }
 

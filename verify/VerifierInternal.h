@@ -1,8 +1,9 @@
 // Shared state of the verifier's passes (structure, scopes and stacks, call graph, slicing).
-// Internal to instructions/: not part of the front end's public interface.
+// Internal to verify/: not part of the front end's public interface.
 #pragma once
 
-#include "frontends/hnc8/FrontEnd.h"
+#include "ir/Diagnostics.h"
+#include "verify/Verify.h"
 
 #include <string>
 #include <vector>
@@ -42,6 +43,11 @@ struct Context {
   void error(SourceLoc l, std::string m) { diags.error(l, std::move(m)); }
   void warning(SourceLoc l, std::string m) { diags.warning(l, std::move(m)); }
   void note(SourceLoc l, std::string m) { diags.note(l, std::move(m)); }
+  /// `op` / `o` as the program's dialect writes them (messages name what the user wrote).
+  const char *spell(Op op) const { return spelling(prog.dialect, op); }
+  std::string operandText(const Operand &o) const {
+    return prog.dialect ? prog.dialect->formatOperand(o) : std::string("?");
+  }
 };
 
 /// Parts, markers and subroutines (DIALECT.md 2): fills units, prog.init/plc1/plc2/subs.

@@ -13,43 +13,49 @@ std::string addr(Area a, int64_t index) {
   return std::string(1, areaInfo(a).letter) + std::to_string(index);
 }
 
+std::string range(const ValueRange &r) {
+  return std::to_string(r.lo) + ".." + std::to_string(r.hi);
+}
 std::string lastOf(Area a) { return addr(a, areaInfo(a).count - 1); }
 
 void checkStmt(Context &cx, const Stmt &s) {
-  const std::string mn = instrInfo(s.op).mnemonic;
+  const std::string mn = cx.spell(s.op);
   switch (s.op) {
   case Op::Alarm: {
     // Alarms 1..256 (G3010-3025) and prompts 501..884 (G3056-3079); nothing in between.
     const Operand &n = s.ops[0];
-    if (n.value > 256 && n.value < 501)
-      cx.error(n.loc, "ALARM number " + std::to_string(n.value) +
-                          " is neither an alarm (1..256) nor a prompt (501..884)");
+    const std::span<const ValueRange> v = instrInfo(s.op).operands[0].values;
+    if (!inValueSet(instrInfo(s.op).operands[0], n.value))
+      cx.error(n.loc, mn + " number " + std::to_string(n.value) + " is neither an alarm (" +
+                          range(v[0]) + ") nor a prompt (" + range(v[1]) + ")");
     break;
   }
   case Op::UserOutput: {
     // 32 user outputs go to four consecutive bytes from the start operand.
     const Operand &o = s.ops[2];
-    if (!validIndex(o.area, int64_t{o.index} + 3))
-      cx.error(o.loc, mn + " output bytes " + addr(o.area, o.index) + ".." +
-                          addr(o.area, int64_t{o.index} + 3) + " run past the end of " +
-                          areaInfo(o.area).letter + " (" + addr(o.area, 0) + ".." + lastOf(o.area) +
-                          ")");
+    const int64_t last = int64_t{o.index} + instrInfo(s.op).operands[2].span - 1;
+    if (!validIndex(o.area, last))
+      cx.error(o.loc, mn + " output bytes " + addr(o.area, o.index) + ".." + addr(o.area, last) +
+                          " run past the end of " + areaInfo(o.area).letter + " (" +
+                          addr(o.area, 0) + ".." + lastOf(o.area) + ")");
     break;
   }
   case Op::BusSpindleGeared: {
     // Gear g uses P[base + 5(g-1) .. + 4]; at least gear 1's block must exist.
     const Operand &p = s.ops[3];
-    if (!validIndex(Area::Param, int64_t{p.index} + 4))
+    const int64_t last = int64_t{p.index} + instrInfo(s.op).operands[3].span - 1;
+    if (!validIndex(Area::Param, last))
       cx.error(p.loc, mn + " parameter block " + addr(Area::Param, p.index) + ".." +
-                          addr(Area::Param, int64_t{p.index} + 4) +
-                          " runs past the end of P (P0.." + lastOf(Area::Param) + ")");
+                          addr(Area::Param, last) + " runs past the end of " +
+                          areaInfo(Area::Param).letter + " (" + addr(Area::Param, 0) + ".." +
+                          lastOf(Area::Param) + ")");
     break;
   }
   case Op::ChannelModeSet: {
     const Operand &m = s.ops[1];
     if (m.kind == Operand::Kind::Const &&
         (m.value <= 0 || m.value > 64 || (m.value & (m.value - 1)) != 0))
-      cx.error(m.loc, "MDST mode " + std::to_string(m.value) +
+      cx.error(m.loc, mn + " mode " + std::to_string(m.value) +
                           " is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single block, manual, "
                           "increment, home, MPG, PMC)");
     break;
@@ -57,7 +63,7 @@ void checkStmt(Context &cx, const Stmt &s) {
   case Op::ReferencePoint:
     if (s.ops[1].value == 5)
       cx.warning(s.ops[1].loc,
-                 "REFPT 5: the 5th reference point has no status bit; the output is always 0");
+                 mn + " 5: the 5th reference point has no status bit; the output is always 0");
     break;
   default:
     break;

@@ -26,8 +26,8 @@ std::string addr(const Operand &o) {
 void checkRange(Context &cx, const Stmt &s, const Operand &start, int64_t count, const char *what) {
   const int64_t last = int64_t{start.index} + count - 1;
   if (validIndex(start.area, last)) return;
-  cx.error(start.loc, std::string(instrInfo(s.op).mnemonic) + " " + what + " " + addr(start) +
-                          ".." + addr(start.area, last) + " runs past the end of " +
+  cx.error(start.loc, std::string(cx.spell(s.op)) + " " + what + " " + addr(start) + ".." +
+                          addr(start.area, last) + " runs past the end of " +
                           areaInfo(start.area).letter + " (" + addr(start.area, 0) + ".." +
                           addr(start.area, areaInfo(start.area).count - 1) + ")");
 }
@@ -35,7 +35,7 @@ void checkRange(Context &cx, const Stmt &s, const Operand &start, int64_t count,
 /// FMOV / ZRST: start and end in the same form and area, start <= end (bits: index*width+bit).
 void checkZone(Context &cx, const Stmt &s) {
   const Operand &a = s.ops[0], &b = s.ops[1];
-  const std::string mn = instrInfo(s.op).mnemonic;
+  const std::string mn = cx.spell(s.op);
   if (a.kind != b.kind) {
     cx.error(b.loc, mn + " start " + addr(a) + " and end " + addr(b) +
                         " must both be registers or both be bit addresses");
@@ -80,7 +80,7 @@ void checkData(Context &cx) {
       checkRange(cx, s, o[2], o[1].value, "destination range");
       break;
     case Op::RangeConvert: // P[k] .. P[k+3] (functions-2 2.13)
-      checkRange(cx, s, o[0], 4, "parameter block");
+      checkRange(cx, s, o[0], instrInfo(s.op).operands[0].span, "parameter block");
       break;
     default: // XMOV XCH PTN NTP: the table's operand checks are enough
       break;

@@ -17,11 +17,13 @@ void mustFit(Context &cx, const Stmt &s, int k, int32_t count, const char *what)
   int64_t last = int64_t{op.index} + count - 1;
   if (last < a.count) return;
   std::string l(1, a.letter);
-  cx.error(op.loc, std::string(instrInfo(s.op).mnemonic) + " " + what + " " + l +
-                       std::to_string(op.index) + ".." + l + std::to_string(last) +
-                       " runs past the end of area " + l + " (" + l + "0.." + l +
-                       std::to_string(a.count - 1) + ")");
+  cx.error(op.loc, std::string(cx.spell(s.op)) + " " + what + " " + l + std::to_string(op.index) +
+                       ".." + l + std::to_string(last) + " runs past the end of area " + l + " (" +
+                       l + "0.." + l + std::to_string(a.count - 1) + ")");
 }
+
+/// Elements operand `k` of `s` touches (the table's span column).
+int32_t spanOf(const Stmt &s, int k) { return instrInfo(s.op).operands[k].span; }
 
 } // namespace
 
@@ -29,20 +31,20 @@ void checkNc(Context &cx) {
   for (const Stmt &s : cx.prog.stmts) {
     switch (s.op) {
     case Op::TempSensor:
-      mustFit(cx, s, 1, 2, "AD word"); // low byte X[n], high byte X[n+1]
-      mustFit(cx, s, 3, 4, "parameter block");
+      mustFit(cx, s, 1, spanOf(s, 1), "AD word"); // low byte X[n], high byte X[n+1]
+      mustFit(cx, s, 3, spanOf(s, 3), "parameter block");
       break;
     case Op::HeadSensors:
       if (s.ops[0].kind == Operand::Kind::Const) mustFit(cx, s, 2, s.ops[0].value, "storage range");
       break;
     case Op::SpindleAnalog:
-      mustFit(cx, s, 4, 5, "parameter block");
+      mustFit(cx, s, 4, spanOf(s, 4), "parameter block");
       break;
     case Op::PanelDisplay:
       // Width 1 into a byte area writes two bytes; W/D/B elements hold both.
       if (s.ops[1].kind == Operand::Kind::Const && s.ops[1].value == 1 &&
           s.ops[2].kind == Operand::Kind::Reg && areaInfo(s.ops[2].area).bytes == 1)
-        mustFit(cx, s, 2, 2, "two-byte display");
+        mustFit(cx, s, 2, spanOf(s, 2), "two-byte display");
       break;
     default:
       break;

@@ -1,6 +1,7 @@
 // Per-mnemonic behaviour paragraphs and examples (from the reference files, sections cited) and
 // the renderer of docs/instructions.md: operands, roles, kinds and areas come from the table.
 #include "frontends/hnc8/InstrDocs.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <sstream>
 
@@ -591,22 +592,9 @@ const char *familyTitle(Family f) {
   }
 }
 
-const char *aliasOf(Op op) {
-  switch (op) {
-  case Op::Coil:
-    return "WRT";
-  case Op::EndCyclic:
-    return "END1";
-  case Op::EndSliced:
-    return "END2";
-  default:
-    return nullptr;
-  }
-}
-
 void renderEntry(std::ostream &o, const InstrInfo &in, const InstrDoc &d) {
-  o << "\n## " << in.mnemonic << "\n\n" << in.summary << ".";
-  if (const char *a = aliasOf(in.op)) o << " Alias: `" << a << "`.";
+  o << "\n## " << hnc8::mnemonicOf(in.op) << "\n\n" << in.summary << ".";
+  if (const char *a = hnc8::mnemonicRow(in.op).alias) o << " Alias: `" << a << "`.";
   o << "\n\n";
   if (in.operandCount == 0) {
     o << "Operands: none.\n\n";

@@ -2,6 +2,7 @@
 // line, every operand (or the symbol standing for one) checked against the instruction table;
 // bad lines become located diagnostics and are dropped, parsing always continues.
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <cstdint>
 #include <string>
@@ -83,7 +84,7 @@ public:
   /// Returns true and fills `stmt` when the line holds one valid statement.
   bool parse(const std::vector<Token> &toks, Stmt &stmt) {
     Op op;
-    if (!lookupMnemonic(toks[0].text, op)) {
+    if (!hnc8::lookupMnemonic(toks[0].text, op)) {
       error(toks[0], "unknown mnemonic " + quote(toks[0].text));
       return false;
     }
@@ -113,9 +114,10 @@ private:
   void countError(const InstrInfo &info, const std::vector<Token> &toks, size_t given) {
     std::string want;
     if (info.operandCount == 0) {
-      want = std::string(info.mnemonic) + " takes no operands";
+      want = std::string(hnc8::mnemonicOf(info.op)) + " takes no operands";
     } else {
-      want = std::string(info.mnemonic) + " takes " + std::to_string(info.operandCount) +
+      want = std::string(hnc8::mnemonicOf(info.op)) + " takes " +
+             std::to_string(info.operandCount) +
              (info.operandCount == 1 ? " operand (" : " operands (");
       for (int i = 0; i < info.operandCount; ++i)
         want += std::string(i ? ", " : "") + info.operands[i].role;
@@ -226,13 +228,13 @@ private:
   bool checkArea(const InstrInfo &info, const OperandSpec &spec, const Token &t,
                  const RawOperand &r) {
     if (spec.writes && !areaInfo(r.area).writable) {
-      error(t, addrText(r) + " is read-only; " + info.mnemonic + " cannot write its " + spec.role +
-                   " (writable: " + areaList(spec.areas) + ")");
+      error(t, addrText(r) + " is read-only; " + hnc8::mnemonicOf(info.op) + " cannot write its " +
+                   spec.role + " (writable: " + areaList(spec.areas) + ")");
       return false;
     }
     if (!hasArea(spec.areas, r.area)) {
       error(t, std::string("area ") + areaInfo(r.area).letter + " is not allowed as " + spec.role +
-                   " of " + info.mnemonic + " (allowed: " + areaList(spec.areas) + ")");
+                   " of " + hnc8::mnemonicOf(info.op) + " (allowed: " + areaList(spec.areas) + ")");
       return false;
     }
     if (!validIndex(r.area, r.index)) {
@@ -246,7 +248,7 @@ private:
     RawOperand r;
     if (!lex(t, r)) return false;
     out.loc = {line_, t.col};
-    std::string what = std::string(info.mnemonic) + " expects ";
+    std::string what = std::string(hnc8::mnemonicOf(info.op)) + " expects ";
     bool isConst = r.shape == RawOperand::Shape::Const;
     if (spec.isBit && spec.wordOk && !isConst && r.bit < 0) {
       // Word form of a bit-or-word position (ZRST): a whole register.
@@ -291,7 +293,7 @@ private:
       }
       if (r.value < spec.cmin || r.value > spec.cmax) {
         error(t, "constant " + quote(t.text) + " out of range for " + spec.role + " of " +
-                     info.mnemonic + " (" + std::to_string(spec.cmin) + ".." +
+                     hnc8::mnemonicOf(info.op) + " (" + std::to_string(spec.cmin) + ".." +
                      std::to_string(spec.cmax) + ")");
         return false;
       }
@@ -345,6 +347,11 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
 }
 
 std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
+                                               const VerifyOptions &opts, Diagnostics &diags) {
+  return compileFrontEnd(text, std::move(file), opts, diags, nullptr);
+}
+
+std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
                                                const VerifyOptions &opts, Diagnostics &diags,
                                                const SymbolTable *symbols) {
   ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols);
@@ -357,6 +364,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
                        const SymbolTable *symbols) {
   ParsedProgram prog;
   prog.file = std::move(file);
+  prog.dialect = &hnc8::dialectText();
   // A UTF-8 byte-order mark from a Windows editor is not part of the first statement.
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   std::vector<Token> toks;
@@ -374,7 +382,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     Op known;
     if (lp.parse(toks, stmt))
       prog.stmts.push_back(stmt);
-    else if (lookupMnemonic(toks[0].text, known))
+    else if (hnc8::lookupMnemonic(toks[0].text, known))
       prog.dropped.push_back({static_cast<int32_t>(prog.stmts.size()), known});
   }
   return prog;

@@ -1,6 +1,7 @@
 // Text dump of a verified program (`ladderjit check --print`, golden tests): a summary of parts,
 // subroutines and PLC2 slices, then one line per statement with the verifier's facts.
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <cstdio>
 
@@ -65,7 +66,7 @@ std::string printProgram(const VerifiedProgram &p) {
     std::string ops;
     for (int k = 0; k < s.operandCount; ++k) ops += (k ? " " : "") + formatOperand(s.ops[k]);
     std::snprintf(buf, sizeof buf, "%5zu %5d:%-3d %-5s %-6s ", i, s.loc.line, s.loc.col,
-                  partOf(p, idx).c_str(), instrInfo(s.op).mnemonic);
+                  partOf(p, idx).c_str(), hnc8::mnemonicOf(s.op));
     std::string line = buf;
     line += ops;
     if (line.size() < 48) line.resize(48, ' ');

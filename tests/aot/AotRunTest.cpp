@@ -3,8 +3,8 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "fuzz/Fuzz.h"
-#include "ir/Engine.h"
 #include "io/AotLoader.h"
+#include "ir/Engine.h"
 
 #include <gtest/gtest.h>
 

@@ -3,6 +3,7 @@
 // description, and the stimulus applies and prints in the CLI format.
 #include "bench/ProgramGenerator.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/Mnemonics.h"
 #include "ir/OpTable.h"
 
 #include <gtest/gtest.h>
@@ -92,7 +93,7 @@ TEST(RandomGenerator, ABatchCoversEveryRowOfTheTable) {
     for (const Stmt &s : pp.stmts) seen.insert(s.op);
   }
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << in.mnemonic << " never generated";
+    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
 }
 
 TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {

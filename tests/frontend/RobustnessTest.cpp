@@ -1,6 +1,7 @@
 // Robustness: the front end never crashes or hangs on any byte input (DIALECT.md 6: "never a
 // crash"), and every program it accepts satisfies the invariants of Program.h.
 #include "FrontEndTestUtil.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <gtest/gtest.h>
 
@@ -87,7 +88,7 @@ TEST(Robustness, RandomTokenPrograms) {
     int lines = static_cast<int>(rng() % 40);
     for (int l = 0; l < lines; ++l) {
       const InstrInfo &row = table[rng() % table.size()];
-      text += row.mnemonic;
+      text += hnc8::mnemonicOf(row.op);
       int ops = row.operandCount + (rng() % 10 == 0 ? 1 : 0);
       for (int k = 0; k < ops; ++k) {
         text += ' ';

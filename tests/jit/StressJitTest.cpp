@@ -2,6 +2,7 @@
 // table) on both tiers, with and without cutting bodies into small functions: the JIT's state
 // must equal the interpreter's after init and after every tick, whatever the inputs, faults and
 // slice plan. Also checks that the seeds used here and in PartitionJitTest cover every row.
+#include "frontends/hnc8/Mnemonics.h"
 #include "ir/OpTable.h"
 #include "tests/jit/JitHarness.h"
 
@@ -76,7 +77,7 @@ TEST(StressJitPrograms, CoverEveryRowAndStructure) {
   for (uint64_t seed = kFirstSeed; seed <= kLastSeed; ++seed) scan(seed, kStressStatements);
   for (uint64_t seed = 101; seed <= 112; ++seed) scan(seed, 1500);
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << in.mnemonic << " never generated";
+    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
   EXPECT_GE(maxDepth, 8);
   EXPECT_GE(maxMs, 3);
   EXPECT_GE(maxLoopNest, 2);
