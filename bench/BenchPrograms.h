@@ -3,7 +3,7 @@
 #pragma once
 
 #include "bench/ProgramGenerator.h"
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <benchmark/benchmark.h>
 

@@ -3,7 +3,7 @@
 // (targets: JIT full scan of 10k < 10 us and >= 30x the interpreter), and AOT shared objects
 // (`ladderjit compile`) against the optimizing JIT in the same run.
 #include "bench/BenchPrograms.h"
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "io/AotLoader.h"

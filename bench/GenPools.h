@@ -4,7 +4,7 @@
 #pragma once
 
 #include "bench/Rng.h"
-#include "instructions/Area.h"
+#include "ir/Area.h"
 
 #include <cstdint>
 
@@ -13,13 +13,13 @@ namespace lj::gen {
 /// Elements 0..n-1 of each area are the "hot" pool.
 constexpr int32_t poolSize(Area a) {
   switch (a) {
-  case Area::R:
+  case Area::Relay:
     return 16;
-  case Area::D:
+  case Area::DWord:
     return 12;
-  case Area::B:
+  case Area::Retained:
     return 4;
-  case Area::P:
+  case Area::Param:
     return 4;
   default:
     return 8;

@@ -2,8 +2,8 @@
 // table-driven random valid programs (plus input stimulus) for differential fuzzing.
 #pragma once
 
-#include "instructions/Area.h"
-#include "instructions/InstrTable.h"
+#include "ir/Area.h"
+#include "ir/OpTable.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -68,7 +68,7 @@ GenProgram generateSnippet(Op op, uint64_t seed);
 
 /// One host write: a whole element (`bit` < 0) or one bit.
 struct HostWrite {
-  Area area = Area::X;
+  Area area = Area::Input;
   int32_t index = 0;
   int8_t bit = -1;
   int32_t value = 0;

@@ -4,7 +4,7 @@
 
 #include "bench/ProgramGenerator.h"
 #include "bench/Rng.h"
-#include "instructions/InstrTable.h"
+#include "ir/OpTable.h"
 
 #include <array>
 #include <cstdint>
@@ -23,7 +23,8 @@ constexpr int kLongPercent = 10;
 /// them in long form on top of kLongPercent: a long BMOV overlapping the hot registers in the
 /// wrong direction shows only when it runs with EN = 1 on varied values, so the campaign needs
 /// a few hundred of them, more than 10% of a row among ~145 gives (item 2 of the fuzz2 brief).
-constexpr Op kLongRows[] = {Op::BMOV, Op::BMOV, Op::BMOV, Op::FMOV, Op::ZRST, Op::SER, Op::COD};
+constexpr Op kLongRows[] = {Op::BlockMove, Op::BlockMove,   Op::BlockMove,  Op::Fill,
+                            Op::ZoneReset, Op::TableSearch, Op::TableLookup};
 constexpr int kLongPerMille = 12;
 
 /// Per-program mix of stack behaviour: deep block nesting, or flat rungs with dead entries

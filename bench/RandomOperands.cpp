@@ -13,31 +13,13 @@ namespace lj::gen::detail {
 
 namespace {
 
-/// Consecutive elements register operand `i` of `op` uses (verifier checks of
-/// instructions/Verify{Data,Nc,Cnc}.cpp): P parameter blocks (ACVT 4, TEMPSEN 4, SPDA and
-/// SPDLBUS1 5), TEMPSEN's two-byte AD word, NIXIE's two-byte display, USEROUT's four bytes.
-int32_t spanOf(Op op, int i) {
-  switch (op) {
-  case Op::ACVT:
-    return i == 0 ? 4 : 1;
-  case Op::TEMPSEN:
-    return i == 3 ? 4 : i == 1 ? 2 : 1;
-  case Op::SPDA:
-    return i == 4 ? 5 : 1;
-  case Op::SPDLBUS1:
-    return i == 3 ? 5 : 1;
-  case Op::NIXIE:
-    return i == 2 ? 2 : 1;
-  case Op::USEROUT:
-    return i == 2 ? 4 : 1;
-  default:
-    return 1;
-  }
-}
+/// Consecutive elements register operand `i` of `op` uses: the table's span column, which the
+/// verifier checks (verify/Verify{Data,Nc,Cnc}.cpp).
+int32_t spanOf(Op op, int i) { return instrInfo(op).operands[i].span; }
 
 /// Elements a written range may use: D88.. are the planner's guards.
 int32_t rangeLimit(Area a, bool writes) {
-  return writes && a == Area::D ? kGuardFirst : areaInfo(a).count;
+  return writes && a == Area::DWord ? kGuardFirst : areaInfo(a).count;
 }
 
 } // namespace
@@ -69,40 +51,43 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
   int64_t lo = sp.cmin, hi = sp.cmax;
   // Catalogue constants whose useful values the range alone does not tell.
   switch (in.op) {
-  case Op::MGET:
-  case Op::MACK:
+  case Op::MCodeGet:
+  case Op::MCodeAck:
     if (i == 1 && rng_.chance(85)) return kMCodes[rng_.below(std::size(kMCodes))];
     break;
-  case Op::TGET:
+  case Op::TCodeGet:
     // A constant destination is a compare against the pending T code (functions-1 3.1 TGET).
     if (i == 1) return kTCodes[rng_.below(std::size(kTCodes))];
     break;
-  case Op::PTN:
-  case Op::NTP:
+  case Op::PointToNumber:
+  case Op::NumberToPoint:
     // Point numbers the hot registers actually hold, so a point matches now and then.
     if (rng_.chance(80)) return static_cast<int32_t>(rng_.range(-1, 5));
     break;
-  case Op::MDST:
+  case Op::ChannelModeSet:
     // A constant mode is one of the one-hot codes 1..64 (cnc-interface 6.1 MDST).
     if (i == 1) return 1 << rng_.below(7);
     break;
-  case Op::TOOLLIFE:
+  case Op::ToolLife:
     if (i == 1 && rng_.chance(85)) return static_cast<int32_t>(rng_.range(1, 4));
     break;
-  case Op::ROT:
+  case Op::MagazineRotate:
     if (i == 0 && rng_.chance(85)) return static_cast<int32_t>(rng_.range(1, 16));
     break;
-  case Op::ALARM: {
-    // PLC alarms 1..256 and prompts 501..884; the gap between is rejected (cnc-interface 60).
-    static constexpr int32_t kEdges[] = {1, 16, 17, 256, 501, 502, 884};
+  case Op::Alarm: {
+    // PLC alarms and prompts: the table's two value ranges; the gap between is rejected.
+    const std::span<const ValueRange> v = in.operands[i].values;
+    assert(v.size() == 2);
+    const int32_t edges[] = {v[0].lo, 16, 17, v[0].hi, v[1].lo, v[1].lo + 1, v[1].hi};
     if (rng_.chance(50)) return static_cast<int32_t>(rng_.range(1, 20));
-    if (rng_.chance(50)) return kEdges[rng_.below(std::size(kEdges))];
-    return static_cast<int32_t>(rng_.chance(50) ? rng_.range(1, 256) : rng_.range(501, 884));
+    if (rng_.chance(50)) return edges[rng_.below(std::size(edges))];
+    return static_cast<int32_t>(rng_.chance(50) ? rng_.range(v[0].lo, v[0].hi)
+                                                : rng_.range(v[1].lo, v[1].hi));
   }
-  case Op::VARGET:
-  case Op::VARSET:
-  case Op::USERIN:
-  case Op::ESCBLK:
+  case Op::VarGet:
+  case Op::VarSet:
+  case Op::UserInput:
+  case Op::SkipG31:
     if (hi - lo > 1024 && rng_.chance(70))
       return static_cast<int32_t>(rng_.range(std::max<int64_t>(lo, -1), 10));
     break;
@@ -121,8 +106,8 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
   if (timing && rng_.chance(35)) return static_cast<int32_t>(rng_.range(-1, 3));
   if (timing && rng_.chance(60)) return static_cast<int32_t>(rng_.range(-2, 30));
   // The two division faults (DIALECT.md 1, dialect-notes DIV): x / 0 and INT32_MIN / -1.
-  if (in.op == Op::DIV && i == 1 && rng_.chance(30)) return rng_.chance(50) ? 0 : -1;
-  if (in.op == Op::DIV && i == 0 && rng_.chance(20)) return INT32_MIN;
+  if (in.op == Op::Divide && i == 1 && rng_.chance(30)) return rng_.chance(50) ? 0 : -1;
+  if (in.op == Op::Divide && i == 0 && rng_.chance(20)) return INT32_MIN;
   int32_t v = interestingConst(rng_);
   if (v < lo || v > hi) v = static_cast<int32_t>(rng_.range(lo, hi));
   return v;
@@ -131,21 +116,22 @@ int32_t RandomGen::constFor(const InstrInfo &in, int i) {
 std::string RandomGen::regAddress(AreaMask mask, bool writes) {
   Area a = pickArea(mask);
   int32_t idx = pickIndex(rng_, a);
-  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
+  if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
   return std::string(1, areaInfo(a).letter) + std::to_string(idx);
 }
 
 std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
-  static constexpr Area kBits[] = {Area::X, Area::Y, Area::F, Area::G, Area::R, Area::W,
-                                   Area::D, Area::B, Area::P, Area::T, Area::C};
+  static constexpr Area kBits[] = {Area::Input, Area::Output, Area::NcStatus, Area::NcControl,
+                                   Area::Relay, Area::Word,   Area::DWord,    Area::Retained,
+                                   Area::Param, Area::Timer,  Area::Counter};
   static constexpr int kWeight[] = {6, 3, 3, 3, 6, 2, 2, 1, 1, 2, 2};
   std::array<int, 11> w{};
   for (int i = 0; i < 11; ++i) w[i] = hasArea(mask, kBits[i]) ? kWeight[i] : 0;
   Area a = kBits[rng_.weighted(w)];
   std::string s(1, areaInfo(a).letter);
-  if (a == Area::T || a == Area::C) return s + std::to_string(tcNumber(rng_)) + ".0";
+  if (a == Area::Timer || a == Area::Counter) return s + std::to_string(tcNumber(rng_)) + ".0";
   int32_t idx = pickIndex(rng_, a);
-  if (writes && a == Area::D && idx >= kGuardFirst) idx %= poolSize(Area::D);
+  if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
   int bitNo = static_cast<int>(rng_.below(static_cast<uint64_t>(bitWidth(a))));
   return s + std::to_string(idx) + "." + std::to_string(bitNo);
 }
@@ -201,8 +187,9 @@ std::string RandomGen::checkedRegister(const InstrInfo &in, int i) {
 // ---- Catalogue constraints the OperandSpecs cannot express (hnc8-functions-2.md 0.5/0.6) ----
 
 Area RandomGen::pickArea(AreaMask mask) {
-  static constexpr Area kRegs[] = {Area::X, Area::Y, Area::F, Area::G, Area::R,
-                                   Area::W, Area::D, Area::B, Area::P};
+  static constexpr Area kRegs[] = {Area::Input,     Area::Output,   Area::NcStatus,
+                                   Area::NcControl, Area::Relay,    Area::Word,
+                                   Area::DWord,     Area::Retained, Area::Param};
   Area cand[9];
   int n = 0;
   for (Area a : kRegs)
@@ -214,8 +201,9 @@ Area RandomGen::pickArea(AreaMask mask) {
 /// A random area of `mask` in which `n` consecutive elements fit (B has only 50 elements and a
 /// written D range must stay below the guards).
 Area RandomGen::pickFitting(AreaMask mask, bool writes, int32_t n) {
-  static constexpr Area kRegs[] = {Area::X, Area::Y, Area::F, Area::G, Area::R,
-                                   Area::W, Area::D, Area::B, Area::P};
+  static constexpr Area kRegs[] = {Area::Input,     Area::Output,   Area::NcStatus,
+                                   Area::NcControl, Area::Relay,    Area::Word,
+                                   Area::DWord,     Area::Retained, Area::Param};
   Area cand[9];
   int c = 0;
   for (Area a : kRegs)
@@ -354,14 +342,14 @@ bool RandomGen::specialOperands(const InstrInfo &in, std::string &s) {
                                                 : rng_.range(1, hi));
   };
   switch (in.op) {
-  case Op::XMOV:
-  case Op::XCH: {
+  case Op::IndexedMove:
+  case Op::Exchange: {
     std::string a = indirect(in, 0);
     std::string b = indirect(in, 2);
     s += " " + a + " " + b;
     return true;
   }
-  case Op::BMOV: {
+  case Op::BlockMove: {
     if (longRange()) {
       s += " " + longBmov(in);
       return true;
@@ -371,7 +359,7 @@ bool RandomGen::specialOperands(const InstrInfo &in, std::string &s) {
          " " + std::to_string(n);
     return true;
   }
-  case Op::FMOV: {
+  case Op::Fill: {
     if (longRange()) {
       s += " " + longZone(false) + " " + operand(in, 2);
       return true;
@@ -386,39 +374,39 @@ bool RandomGen::specialOperands(const InstrInfo &in, std::string &s) {
          operand(in, 2);
     return true;
   }
-  case Op::ZRST:
+  case Op::ZoneReset:
     s += " " + zone();
     return true;
-  case Op::ENCO:
-  case Op::DECO:
-  case Op::COD:
-  case Op::SER: {
+  case Op::TableEncode:
+  case Op::TableDecode:
+  case Op::TableLookup:
+  case Op::TableSearch: {
     // A table of n entries that fits in its area; ENCO/DECO map entries to the bits of a word.
     // COD / SER tables are sometimes long (the SER loop); a long COD then mostly gets a
     // constant index around the table's end (the last entries and the fault just past them).
-    const bool wide = in.op == Op::COD || in.op == Op::SER;
+    const bool wide = in.op == Op::TableLookup || in.op == Op::TableSearch;
     const bool long_ = wide && longRange();
     int32_t n = long_ ? longCount(100) : small(wide ? 40 : 32);
-    std::string x = long_ && in.op == Op::COD && rng_.chance(60)
+    std::string x = long_ && in.op == Op::TableLookup && rng_.chance(60)
                         ? std::to_string(rng_.range(std::max(0, n - 3), n))
                         : operand(in, 2);
     s += " " + range(in.operands[0].areas, false, n) + " " + std::to_string(n) + " " + x + " " +
          operand(in, 3);
     return true;
   }
-  case Op::ASSEM: {
+  case Op::Pack: {
     int32_t n = small(8);
     s += " " + range(in.operands[0].areas, false, n) + " " + std::to_string(n) + " " +
          operand(in, 2);
     return true;
   }
-  case Op::DISAS: {
+  case Op::Unpack: {
     int32_t n = small(8);
     s +=
         " " + operand(in, 0) + " " + std::to_string(n) + " " + range(in.operands[2].areas, true, n);
     return true;
   }
-  case Op::HEADSEN: {
+  case Op::HeadSensors: {
     // count temperatures stored from a D register on; enable 0 = acquire (functions-2 2.21).
     int32_t n = small(20);
     int32_t start = static_cast<int32_t>(rng_.below(static_cast<uint64_t>(kGuardFirst - n + 1)));

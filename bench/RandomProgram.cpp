@@ -4,7 +4,8 @@
 #include "bench/GenPools.h"
 #include "bench/ProgramGenerator.h"
 #include "bench/RandomGen.h"
-#include "instructions/InstrTable.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "ir/OpTable.h"
 
 #include <array>
 #include <cassert>
@@ -22,9 +23,10 @@ namespace {
 bool isPlanned(const InstrInfo &in) {
   if (in.stack == StackRule::Structural) return true;
   for (int i = 0; i < in.operandCount; ++i)
-    if (hasArea(in.operands[i].areas, Area::L) || hasArea(in.operands[i].areas, Area::S))
+    if (hasArea(in.operands[i].areas, Area::Label) ||
+        hasArea(in.operands[i].areas, Area::Subroutine))
       return true;
-  return in.op == Op::RETN; // only valid inside a subroutine
+  return in.op == Op::Return; // only valid inside a subroutine
 }
 
 /// The per-program stack mixes (Profile, bench/RandomGen.h).
@@ -104,8 +106,8 @@ void RandomGen::emitPush() {
 }
 
 void RandomGen::emitGeneric(const InstrInfo &in) {
-  std::string s = in.mnemonic;
-  if (in.op == Op::OUT && rng_.chance(5)) s = "WRT"; // alias (DIALECT.md 2)
+  std::string s = hnc8::mnemonicOf(in.op);
+  if (in.op == Op::Coil && rng_.chance(5)) s = hnc8::mnemonicRow(in.op).alias; // DIALECT.md 2
   if (!specialOperands(in, s))
     for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
   emit(std::move(s));
@@ -215,7 +217,8 @@ void RandomGen::backwardJump(int32_t budget, int nest) {
     emit("INC " + g);
     emit("LT " + g + " " + std::to_string(bound));
   } else if (mode == 1) {
-    emit("LD X" + std::to_string(pickIndex(rng_, Area::X)) + "." + std::to_string(rng_.below(8)));
+    emit("LD X" + std::to_string(pickIndex(rng_, Area::Input)) + "." +
+         std::to_string(rng_.below(8)));
   } else {
     emit("LDT");
   }
@@ -235,15 +238,15 @@ void RandomGen::loop(int32_t budget, int nest) {
     n = std::to_string(kLoopCounts[rng_.below(6)]);
   } else if (rng_.chance(60)) {
     // A register count: whatever the program left there (often large: the watchdog).
-    const OperandSpec &sp = instrInfo(Op::LOOP).operands[0];
+    const OperandSpec &sp = instrInfo(Op::LoopBegin).operands[0];
     n = regAddress(sp.areas, false);
   } else {
-    n = operand(instrInfo(Op::LOOP), 0);
+    n = operand(instrInfo(Op::LoopBegin), 0);
   }
   // Drawn after the default choice, so the default programs stay the same. A register count
   // then comes from an input byte (only the host writes X: at most 255 iterations).
   if (o_.avoidWatchdog)
-    n = rng_.chance(40) ? "X" + std::to_string(pickIndex(rng_, Area::X))
+    n = rng_.chance(40) ? "X" + std::to_string(pickIndex(rng_, Area::Input))
                         : std::to_string(kLoopCounts[rng_.below(std::size(kLoopCounts))]);
   emit("LOOP " + n);
   resetStacks();
@@ -314,21 +317,21 @@ GenProgram RandomGen::snippet(Op op) {
     return p;
   };
   switch (op) {
-  case Op::IEND:
-  case Op::END1:
-  case Op::END2:
+  case Op::EndInit:
+  case Op::EndCyclic:
+  case Op::EndSliced:
     return lines({"LDT", "OUT R0.0", "IEND", "LDT", "OUT R0.1", "1END", "LDT", "OUT R0.2", "2END"});
-  case Op::JMP:
-  case Op::LBL:
+  case Op::Jump:
+  case Op::Label:
     return lines({"LDT", "JMP L1", "LDT", "OUT R0.0", "LBL L1", "LDT", "OUT R0.1"});
-  case Op::CALL:
-  case Op::SP:
-  case Op::SPE:
-  case Op::RETN:
+  case Op::Call:
+  case Op::SubBegin:
+  case Op::SubEnd:
+  case Op::Return:
     return lines({"LDT", "CALL S1", "1END", "2END", "SP S1", "LDT", "OUT R0.0", "LDT", "RETN",
                   "LDT", "OUT R0.1", "SPE"});
-  case Op::LOOP:
-  case Op::NEXT:
+  case Op::LoopBegin:
+  case Op::LoopEnd:
     return lines({"LOOP 3", "LDT", "INC D0", "NEXT"});
   default:
     break;
@@ -337,20 +340,20 @@ GenProgram RandomGen::snippet(Op op) {
   case StackRule::Push:
     break;
   case StackRule::BlockPop:
-    emitGeneric(instrInfo(Op::LDT));
-    emitGeneric(instrInfo(Op::LDT));
+    emitGeneric(instrInfo(Op::LoadTrue));
+    emitGeneric(instrInfo(Op::LoadTrue));
     break;
   case StackRule::MsRead:
   case StackRule::MsPop:
-    emitGeneric(instrInfo(Op::LDT));
-    emitGeneric(instrInfo(Op::MPS));
+    emitGeneric(instrInfo(Op::LoadTrue));
+    emitGeneric(instrInfo(Op::BranchPush));
     break;
   default:
-    for (int k = 0; k < std::max<int>(in.inputs, 1); ++k) emitGeneric(instrInfo(Op::LDT));
+    for (int k = 0; k < std::max<int>(in.inputs, 1); ++k) emitGeneric(instrInfo(Op::LoadTrue));
     break;
   }
   emitGeneric(in);
-  if (op == Op::MRD) emitGeneric(instrInfo(Op::MPP));
+  if (op == Op::BranchRead) emitGeneric(instrInfo(Op::BranchPop));
   closeMs();
   GenProgram p;
   p.lines = std::move(lines_);

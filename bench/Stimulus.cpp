@@ -26,7 +26,7 @@ namespace {
 /// status bits, mostly for channel 0 and the low axes the generator picks most.
 HostWrite cncInput(Rng &rng) {
   HostWrite w;
-  w.area = Area::F;
+  w.area = Area::NcStatus;
   const int32_t ch = static_cast<int32_t>(rng.chance(60) ? 0 : rng.below(4));
   const int32_t axis = static_cast<int32_t>(rng.chance(80) ? rng.below(4) : rng.below(32));
   switch (rng.below(6)) {
@@ -62,12 +62,12 @@ HostWrite cncInput(Rng &rng) {
 HostWrite randomInput(Rng &rng) {
   if (rng.chance(20)) return cncInput(rng);
   HostWrite w;
-  w.area = rng.chance(60) ? Area::X : Area::F;
+  w.area = rng.chance(60) ? Area::Input : Area::NcStatus;
   w.index = pickIndex(rng, w.area);
   if (rng.chance(50)) {
     w.bit = static_cast<int8_t>(rng.below(static_cast<uint64_t>(bitWidth(w.area))));
     w.value = static_cast<int32_t>(rng.below(2));
-  } else if (w.area == Area::X) {
+  } else if (w.area == Area::Input) {
     w.value = static_cast<int32_t>(rng.below(256));
   } else {
     w.value = static_cast<int16_t>(interestingConst(rng));
@@ -79,31 +79,31 @@ HostWrite randomInput(Rng &rng) {
 void *elementPtr(lj_state &s, Area a, int32_t index, int &bytes) {
   lj_image &m = s.img;
   switch (a) {
-  case Area::X:
+  case Area::Input:
     bytes = 1;
     return &m.X[index];
-  case Area::Y:
+  case Area::Output:
     bytes = 1;
     return &m.Y[index];
-  case Area::F:
+  case Area::NcStatus:
     bytes = 2;
     return &m.F[index];
-  case Area::G:
+  case Area::NcControl:
     bytes = 2;
     return &m.G[index];
-  case Area::R:
+  case Area::Relay:
     bytes = 1;
     return &m.R[index];
-  case Area::W:
+  case Area::Word:
     bytes = 2;
     return &m.W[index];
-  case Area::D:
+  case Area::DWord:
     bytes = 4;
     return &m.D[index];
-  case Area::B:
+  case Area::Retained:
     bytes = 4;
     return &m.B[index];
-  case Area::P:
+  case Area::Param:
     bytes = 4;
     return &m.P[index];
   default:
@@ -119,14 +119,15 @@ Stimulus generateStimulus(uint64_t seed, uint32_t ticks) {
   Stimulus st;
   static constexpr uint64_t kLimits[] = {50, 300, 2000, 20000};
   st.maxBackwardSteps = kLimits[rng.below(4)];
-  for (Area a : {Area::P, Area::B}) {
+  for (Area a : {Area::Param, Area::Retained}) {
     for (int32_t i = 0; i < poolSize(a); ++i)
       if (rng.chance(70)) st.beforeInit.push_back({a, i, -1, interestingConst(rng)});
   }
   // Most programs start with no M / T code pending in any channel (FC[48..56] = -1).
   for (int32_t ch = 0; ch < 4; ++ch) {
     if (!rng.chance(80)) continue;
-    for (int32_t k = 48; k <= 56; ++k) st.beforeInit.push_back({Area::F, fcWord(ch, k), -1, -1});
+    for (int32_t k = 48; k <= 56; ++k)
+      st.beforeInit.push_back({Area::NcStatus, fcWord(ch, k), -1, -1});
   }
   int initial = static_cast<int>(rng.range(0, 6));
   for (int i = 0; i < initial; ++i) st.beforeInit.push_back(randomInput(rng));

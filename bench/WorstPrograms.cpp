@@ -2,7 +2,8 @@
 // keeps its rung alive, with the operands the random generator's snippet of the row chose.
 #include "bench/WorstPrograms.h"
 
-#include "instructions/InstrTable.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "ir/OpTable.h"
 
 #include <algorithm>
 
@@ -12,7 +13,7 @@ namespace {
 
 /// Rows that cannot repeat inside one body: the part markers and the subroutine brackets.
 bool unrepeatable(Op op) {
-  return op == Op::IEND || op == Op::END1 || op == Op::END2 || op == Op::SP || op == Op::SPE;
+  return op == Op::EndInit || op == Op::EndCyclic || op == Op::EndSliced || op == Op::SubBegin || op == Op::SubEnd;
 }
 
 /// The row's statement in its snippet: the snippet is the feed (LDTs, an MPS) then the row.
@@ -42,38 +43,38 @@ void repeat(std::vector<std::string> &out, int32_t n, const std::string &line) {
 /// Flow shapes, named after the row they stress.
 bool flowShape(Op op, int32_t n, std::vector<std::string> &l) {
   switch (op) {
-  case Op::JMP: // nested forward spans, each on its own input: no cut is outside all of them
+  case Op::Jump: // nested forward spans, each on its own input: no cut is outside all of them
     for (int32_t k = 1; k <= n / 3; ++k) {
       l.push_back("LD X" + std::to_string(k / 8 % 64) + "." + std::to_string(k % 8));
       l.push_back("JMP L" + std::to_string(k));
     }
     for (int32_t k = n / 3; k >= 1; --k) l.push_back("LBL L" + std::to_string(k));
     return true;
-  case Op::LBL: // a forward jump to every label
+  case Op::Label: // a forward jump to every label
     for (int32_t k = 1; k <= n / 3; ++k) {
       l.push_back("LDT");
       l.push_back("JMP L" + std::to_string(k));
       l.push_back("LBL L" + std::to_string(k));
     }
     return true;
-  case Op::LOOP: // nested loops (the 3,000 nested LOOP 2)
+  case Op::LoopBegin: // nested loops (the 3,000 nested LOOP 2)
     repeat(l, n / 2, "LOOP 2");
     l.push_back("LDT");
     l.push_back("INC D0");
     repeat(l, n / 2, "NEXT");
     return true;
-  case Op::NEXT: // one loop with a long body on one live rung
+  case Op::LoopEnd: // one loop with a long body on one live rung
     l.push_back("LOOP 2");
     l.push_back("LDT");
     repeat(l, n, "OUT Y0.0");
     l.push_back("NEXT");
     return true;
-  case Op::CALL:
+  case Op::Call:
     l.push_back("LDT");
     repeat(l, n, "CALL S1");
     for (const char *x : {"1END", "2END", "SP S1", "LDT", "OUT R0.0", "SPE"}) l.push_back(x);
     return true;
-  case Op::RETN:
+  case Op::Return:
     for (const char *x : {"LDF X0.0", "CALL S1", "1END", "2END", "SP S1", "LDF X0.1"})
       l.push_back(x);
     repeat(l, n, "RETN");
@@ -89,7 +90,7 @@ bool flowShape(Op op, int32_t n, std::vector<std::string> &l) {
 std::vector<std::string> worstCaseNames() {
   std::vector<std::string> names;
   for (const InstrInfo &in : instrTable())
-    if (!unrepeatable(in.op)) names.push_back(in.mnemonic);
+    if (!unrepeatable(in.op)) names.push_back(hnc8::mnemonicOf(in.op));
   return names;
 }
 
@@ -97,12 +98,12 @@ GenProgram generateWorst(const std::string &name, int32_t n) {
   GenProgram p;
   p.plc2Nvalue = 0;
   Op op;
-  if (!lookupMnemonic(name, op) || unrepeatable(op)) return p;
+  if (!hnc8::lookupMnemonic(name, op) || unrepeatable(op)) return p;
   std::vector<std::string> &l = p.lines;
   if (flowShape(op, n, l)) return p;
   const InstrInfo &in = instrInfo(op);
   const std::string row = rowLine(in);
-  if (op == Op::TOOLLIFE) n = std::min(n, 500); // the verifier allows 512 TOOLLIFE instances
+  if (op == Op::ToolLife) n = std::min(n, 500); // the verifier allows 512 TOOLLIFE instances
   switch (in.stack) {
   case StackRule::Push: // a deep stack: every entry is live until the ORB chain folds it
     repeat(l, n / 2, row);

@@ -2,7 +2,7 @@
 // the first field of lj_state where they part.
 #include "fuzz/Differential.h"
 
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 #include "tests/support/TestHost.h"
 
 #include <cstring>

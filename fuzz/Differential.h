@@ -5,7 +5,7 @@
 
 #include "bench/ProgramGenerator.h"
 #include "fuzz/Fuzz.h"
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 #include "ladderjit/abi.h"
 #include "tests/support/TestHost.h"
 

@@ -2,7 +2,7 @@
 // ladderjit_jit target exists, so the fuzz library (and the CLI) build before the JIT lands.
 #include "fuzz/Fuzz.h"
 
-#include "instructions/Engine.h"
+#include "ir/Engine.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Jit.h"

@@ -66,7 +66,7 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
   };
   if (text.empty()) return fail("empty");
   std::optional<Area> area = areaFromLetter(text[0]);
-  if (!area || *area == Area::L || *area == Area::S || *area == Area::None)
+  if (!area || *area == Area::Label || *area == Area::Subroutine || *area == Area::None)
     return fail("unknown area (expected one of X Y F G R W D B P T C)");
   std::string_view rest = text.substr(1);
   std::string_view indexPart = rest, bitPart;
@@ -80,7 +80,7 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
   if (hasBit && !isDigits(bitPart)) return fail("expected a bit number after '.'");
   int64_t index = digitsValue(indexPart);
   if (!validIndex(*area, index)) {
-    if (*area == Area::T || *area == Area::C)
+    if (*area == Area::Timer || *area == Area::Counter)
       return fail("number out of range (0..127 or 300..427)");
     return fail("element out of range (0.." + std::to_string(areaInfo(*area).count - 1) + ")");
   }
@@ -92,7 +92,7 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
     int64_t b = digitsValue(bitPart);
     int width = bitWidth(*area);
     if (b >= width) {
-      if (*area == Area::T || *area == Area::C)
+      if (*area == Area::Timer || *area == Area::Counter)
         return fail("the only bit of a timer/counter is .0");
       return fail("bit out of range (0.." + std::to_string(width - 1) + ")");
     }
@@ -132,7 +132,7 @@ std::optional<int64_t> parseValue(std::string_view text, std::string &error) {
 }
 
 bool checkWritable(const CliAddress &addr, int64_t value, std::string &error) {
-  if (addr.area == Area::T) {
+  if (addr.area == Area::Timer) {
     error = "cannot write timer '" + addr.text + "': its state follows from its input and now_ms";
     return false;
   }
@@ -144,9 +144,9 @@ bool checkWritable(const CliAddress &addr, int64_t value, std::string &error) {
 }
 
 int64_t readAddress(const lj_state &s, const CliAddress &addr) {
-  if (addr.area == Area::T || addr.area == Area::C) {
+  if (addr.area == Area::Timer || addr.area == Area::Counter) {
     int slot = lj_tc_slot(addr.index);
-    if (addr.area == Area::T) return addr.isBit() ? s.T[slot].out : s.T[slot].elapsed_ms;
+    if (addr.area == Area::Timer) return addr.isBit() ? s.T[slot].out : s.T[slot].elapsed_ms;
     return addr.isBit() ? s.C[slot].out : s.C[slot].value;
   }
   Cell c = cellOf(s, addr.area, addr.index);
@@ -155,7 +155,7 @@ int64_t readAddress(const lj_state &s, const CliAddress &addr) {
 }
 
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
-  if (addr.area == Area::C) {
+  if (addr.area == Area::Counter) {
     lj_counter &k = s.C[lj_tc_slot(addr.index)];
     if (addr.isBit())
       k.out = static_cast<uint8_t>(value & 1);
@@ -163,7 +163,7 @@ void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
       k.value = static_cast<int32_t>(static_cast<uint32_t>(value));
     return;
   }
-  if (addr.area == Area::T) return; // rejected by checkWritable
+  if (addr.area == Area::Timer) return; // rejected by checkWritable
   Cell c = cellOf(s, addr.area, addr.index);
   void *ptr = const_cast<void *>(c.ptr);
   uint32_t raw = rawBits(c);

@@ -2,7 +2,7 @@
 // (CLI.md "Addresses on the command line"), and reading/writing them in an lj_state.
 #pragma once
 
-#include "instructions/Area.h"
+#include "ir/Area.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>

@@ -2,10 +2,10 @@
 // identity, ABI and ELF checks on the bytes read once, then dlopen of exactly those bytes.
 #pragma once
 
-#include "instructions/Engine.h"
 #include "io/AotTrust.h"
 #include "io/PlcDit.h"
 #include "io/ProgramFile.h"
+#include "ir/Engine.h"
 
 #include <cstdint>
 #include <memory>

@@ -133,7 +133,7 @@ std::optional<std::vector<Assignment>> parseParams(std::string_view text, const 
       error = where(file, lineNo) + why;
       return false;
     }
-    if (a->addr.area != Area::P || a->addr.isBit()) {
+    if (a->addr.area != Area::Param || a->addr.isBit()) {
       error = where(file, lineNo) + "'" + a->addr.text +
               "' is not a parameter; expected Pn=VALUE (P0..P199)";
       return false;

@@ -36,23 +36,24 @@ int width(Kind k) { return k == Kind::Bit ? 8 : k == Kind::Word32 ? 2 : 1; }
 // The map of docs/modbus-map.md. T and C are indexed by slot (T0..T127 = 0..127, T300..T427 =
 // 128..255), as in lj_state.
 constexpr Block kBlocks[] = {
-    {MbTable::Coils, 0, Area::Y, LJ_Y_COUNT, Kind::Bit, Access::ReadWrite},
-    {MbTable::Coils, 5000, Area::R, LJ_R_COUNT, Kind::Bit, Access::ReadWrite},
-    {MbTable::Coils, 10000, Area::X, LJ_X_COUNT, Kind::Bit, Access::InputWrite},
-    {MbTable::DiscreteInputs, 0, Area::X, LJ_X_COUNT, Kind::Bit, Access::ReadOnly},
-    {MbTable::HoldingRegisters, 0, Area::W, LJ_W_COUNT, Kind::Word16, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 1000, Area::D, LJ_D_COUNT, Kind::Word32, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 2000, Area::B, LJ_B_COUNT, Kind::Word32, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 3000, Area::G, LJ_G_COUNT, Kind::Word16, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 7000, Area::Y, LJ_Y_COUNT, Kind::Byte, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 8000, Area::R, LJ_R_COUNT, Kind::Byte, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 9000, Area::X, LJ_X_COUNT, Kind::Byte, Access::InputWrite},
-    {MbTable::HoldingRegisters, 10000, Area::F, LJ_F_COUNT, Kind::Word16, Access::InputWrite},
-    {MbTable::InputRegisters, 0, Area::F, LJ_F_COUNT, Kind::Word16, Access::ReadOnly},
-    {MbTable::InputRegisters, 4000, Area::X, LJ_X_COUNT, Kind::Byte, Access::ReadOnly},
-    {MbTable::InputRegisters, 5000, Area::P, LJ_P_COUNT, Kind::Word32, Access::ReadOnly},
-    {MbTable::InputRegisters, 6000, Area::T, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
-    {MbTable::InputRegisters, 7000, Area::C, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
+    {MbTable::Coils, 0, Area::Output, LJ_Y_COUNT, Kind::Bit, Access::ReadWrite},
+    {MbTable::Coils, 5000, Area::Relay, LJ_R_COUNT, Kind::Bit, Access::ReadWrite},
+    {MbTable::Coils, 10000, Area::Input, LJ_X_COUNT, Kind::Bit, Access::InputWrite},
+    {MbTable::DiscreteInputs, 0, Area::Input, LJ_X_COUNT, Kind::Bit, Access::ReadOnly},
+    {MbTable::HoldingRegisters, 0, Area::Word, LJ_W_COUNT, Kind::Word16, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 1000, Area::DWord, LJ_D_COUNT, Kind::Word32, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 2000, Area::Retained, LJ_B_COUNT, Kind::Word32, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 3000, Area::NcControl, LJ_G_COUNT, Kind::Word16, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 7000, Area::Output, LJ_Y_COUNT, Kind::Byte, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 8000, Area::Relay, LJ_R_COUNT, Kind::Byte, Access::ReadWrite},
+    {MbTable::HoldingRegisters, 9000, Area::Input, LJ_X_COUNT, Kind::Byte, Access::InputWrite},
+    {MbTable::HoldingRegisters, 10000, Area::NcStatus, LJ_F_COUNT, Kind::Word16,
+     Access::InputWrite},
+    {MbTable::InputRegisters, 0, Area::NcStatus, LJ_F_COUNT, Kind::Word16, Access::ReadOnly},
+    {MbTable::InputRegisters, 4000, Area::Input, LJ_X_COUNT, Kind::Byte, Access::ReadOnly},
+    {MbTable::InputRegisters, 5000, Area::Param, LJ_P_COUNT, Kind::Word32, Access::ReadOnly},
+    {MbTable::InputRegisters, 6000, Area::Timer, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
+    {MbTable::InputRegisters, 7000, Area::Counter, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
 };
 
 /// One address resolved: the block, the element, and the bit (Bit) or word half (Word32).
@@ -85,7 +86,7 @@ CliAddress elementAddress(const Block &b, int element, int bit) {
   CliAddress a;
   a.area = b.area;
   a.index = element;
-  if (b.area == Area::T || b.area == Area::C)
+  if (b.area == Area::Timer || b.area == Area::Counter)
     a.index = element < 128 ? element : element - 128 + 300;
   a.bit = static_cast<int8_t>(bit);
   static const char letters[] = "XYFGRWDBPTC";
@@ -161,7 +162,7 @@ uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool
     } else if (b.kind == Kind::Byte && value > 0xFF) {
       return kMbIllegalDataValue;
     }
-    if (b.area == Area::B) retained = true;
+    if (b.area == Area::Retained) retained = true;
     out.push_back({elementAddress(b, c.element, -1), value});
   }
   return 0;

@@ -167,7 +167,7 @@ public:
               " (expected plc2_nvalue, period_ms or Pn)";
       return r_.fail(i, "bad parameter: " + why);
     }
-    if (a->addr.area != Area::P || a->addr.isBit())
+    if (a->addr.area != Area::Param || a->addr.isBit())
       return r_.fail(i, "bad parameter " + SymbolTable::quote(key) +
                             " (expected plc2_nvalue, period_ms or Pn with n in 0..199)");
     for (const Assignment &p : dit.params)

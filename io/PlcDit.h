@@ -3,7 +3,7 @@
 // every problem is one `file:line: problem` message.
 #pragma once
 
-#include "instructions/Symbols.h"
+#include "frontends/hnc8/Symbols.h"
 #include "io/Address.h"
 
 #include <cstdint>

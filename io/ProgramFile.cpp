@@ -1,10 +1,10 @@
 // Reading and verifying PROGRAM (io/ProgramFile.h).
 #include "io/ProgramFile.h"
 
-#include "instructions/Diagnostics.h"
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 #include "io/AotLoader.h"
 #include "io/InputFiles.h"
+#include "ir/Diagnostics.h"
 
 namespace lj::io {
 

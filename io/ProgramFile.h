@@ -3,8 +3,8 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
-#include "instructions/Program.h"
 #include "io/PlcDit.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <optional>

@@ -14,8 +14,8 @@ void apply(lj_state &s, const std::vector<Assignment> &list) {
 void leaveUserWords(SimNc &nc, const SimOptions &opts) {
   auto leave = [&](const std::vector<Assignment> &list) {
     for (const Assignment &a : list)
-      if (a.addr.area == Area::F || a.addr.area == Area::G)
-        nc.leaveWord(a.addr.area == Area::F, a.addr.index);
+      if (a.addr.area == Area::NcStatus || a.addr.area == Area::NcControl)
+        nc.leaveWord(a.addr.area == Area::NcStatus, a.addr.index);
   };
   leave(opts.params);
   leave(opts.sets);

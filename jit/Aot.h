@@ -3,7 +3,7 @@
 // JIT; the system C compiler (`cc`, or $LADDERJIT_CC) links it.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <string>

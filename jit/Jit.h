@@ -2,8 +2,8 @@
 // Nothing outside jit/ includes llvm/ExecutionEngine/Orc/*.
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/Program.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <memory>

@@ -3,7 +3,7 @@
 // damaged or foreign file is never trusted: it is ignored, counted and rewritten.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <memory>

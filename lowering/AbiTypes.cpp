@@ -123,23 +123,23 @@ llvm::Error checkLayout(llvm::StructType *st, const llvm::DataLayout &dl) {
 
 uint32_t imageIndex(Area a) {
   switch (a) {
-  case Area::D:
+  case Area::DWord:
     return kImgD;
-  case Area::B:
+  case Area::Retained:
     return kImgB;
-  case Area::P:
+  case Area::Param:
     return kImgP;
-  case Area::F:
+  case Area::NcStatus:
     return kImgF;
-  case Area::G:
+  case Area::NcControl:
     return kImgG;
-  case Area::W:
+  case Area::Word:
     return kImgW;
-  case Area::X:
+  case Area::Input:
     return kImgX;
-  case Area::Y:
+  case Area::Output:
     return kImgY;
-  case Area::R:
+  case Area::Relay:
     return kImgR;
   default:
     return ~0u;
@@ -148,23 +148,23 @@ uint32_t imageIndex(Area a) {
 
 size_t imageOffset(Area a) {
   switch (a) {
-  case Area::D:
+  case Area::DWord:
     return offsetof(lj_image, D);
-  case Area::B:
+  case Area::Retained:
     return offsetof(lj_image, B);
-  case Area::P:
+  case Area::Param:
     return offsetof(lj_image, P);
-  case Area::F:
+  case Area::NcStatus:
     return offsetof(lj_image, F);
-  case Area::G:
+  case Area::NcControl:
     return offsetof(lj_image, G);
-  case Area::W:
+  case Area::Word:
     return offsetof(lj_image, W);
-  case Area::X:
+  case Area::Input:
     return offsetof(lj_image, X);
-  case Area::Y:
+  case Area::Output:
     return offsetof(lj_image, Y);
-  case Area::R:
+  case Area::Relay:
     return offsetof(lj_image, R);
   default:
     return 0;

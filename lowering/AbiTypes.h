@@ -2,7 +2,7 @@
 // and the location of every field the lowering touches (STYLE.md 6).
 #pragma once
 
-#include "instructions/Area.h"
+#include "ir/Area.h"
 
 #include <llvm/ADT/SmallVector.h>
 #include <llvm/IR/DataLayout.h>

@@ -108,61 +108,61 @@ void carryRanges(const VerifiedProgram &p, ChunkPlan &c) {
 int32_t stmtWeight(const Stmt &s) {
   auto unrolled = [](int32_t n) { return n >= 1 && n <= 32 ? n : 0; };
   switch (s.op) {
-  case Op::BMOV:
+  case Op::BlockMove:
     return std::max(5, unrolled(s.ops[2].value));
-  case Op::FMOV:
-  case Op::ZRST:
+  case Op::Fill:
+  case Op::ZoneReset:
     return std::max(
         4, s.ops[0].kind == Operand::Kind::Reg ? unrolled(s.ops[1].index - s.ops[0].index + 1) : 0);
-  case Op::ENCO:
-  case Op::DECO:
-  case Op::SER:
+  case Op::TableEncode:
+  case Op::TableDecode:
+  case Op::TableSearch:
     return std::max(6, unrolled(s.ops[1].value));
-  case Op::SPDLBUS1:
+  case Op::BusSpindleGeared:
     return 22;
-  case Op::SPDA:
+  case Op::SpindleAnalog:
     return 10;
-  case Op::TOOL:
-  case Op::MPGSET:
-  case Op::TEMPSEN:
+  case Op::ToolSelect:
+  case Op::HandwheelSet:
+  case Op::TempSensor:
     return 8;
-  case Op::ACVT:
-  case Op::NIXIE:
-  case Op::MGET:
-  case Op::MACK:
-  case Op::COD:
-  case Op::VARGET:
-  case Op::EVENT:
+  case Op::RangeConvert:
+  case Op::PanelDisplay:
+  case Op::MCodeGet:
+  case Op::MCodeAck:
+  case Op::TableLookup:
+  case Op::VarGet:
+  case Op::RaiseEvent:
     return 6;
-  case Op::SAVEDATA:
-  case Op::TOOLLIFE:
-  case Op::SPDLBUS:
-  case Op::PTN:
-  case Op::VARSET:
-  case Op::MDGT:
-  case Op::TOOLUSE:
+  case Op::SaveRetained:
+  case Op::ToolLife:
+  case Op::BusSpindle:
+  case Op::PointToNumber:
+  case Op::VarSet:
+  case Op::ChannelModeGet:
+  case Op::ToolInUse:
     return 4;
-  case Op::TMRB:
-  case Op::SPDLJOG:
-  case Op::TOOLSET:
-  case Op::TOOLCLR:
-  case Op::SUBAXEN:
-  case Op::RTOMPG:
-  case Op::DIV:
-  case Op::ANDP:
-  case Op::ANDF:
-  case Op::USEROUT:
-  case Op::ORP:
-  case Op::ORF:
-  case Op::NTP:
-  case Op::STMR:
-  case Op::AXISMVTO:
-  case Op::AXISMOVE:
-  case Op::LOOP: // four blocks and a phi
+  case Op::OnDelayTimer:
+  case Op::SpindleJog:
+  case Op::ToolVectorOn:
+  case Op::ToolVectorOff:
+  case Op::SlaveHomingEnable:
+  case Op::HandwheelPulse:
+  case Op::Divide:
+  case Op::AndRise:
+  case Op::AndFall:
+  case Op::UserOutput:
+  case Op::OrRise:
+  case Op::OrFall:
+  case Op::NumberToPoint:
+  case Op::OffDelayTimer:
+  case Op::AxisMoveAbsolute:
+  case Op::AxisMoveRelative:
+  case Op::LoopBegin: // four blocks and a phi
     return 3;
-  case Op::ROT:
-  case Op::LDP:
-  case Op::LDF:
+  case Op::MagazineRotate:
+  case Op::LoadRise:
+  case Op::LoadFall:
     return 2;
   default:
     return 1;
@@ -192,9 +192,9 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
     const StmtInfo &info = p.info[i];
     if (nest > 0) inLoop[i - r.begin] = 1;
     if (info.msDepth != 0) carried[i - r.begin] = 1;
-    if (s.op == Op::LOOP) ++nest;
-    if (s.op == Op::NEXT) --nest;
-    if (s.op == Op::JMP && info.target >= r.begin && info.target < r.end) {
+    if (s.op == Op::LoopBegin) ++nest;
+    if (s.op == Op::LoopEnd) --nest;
+    if (s.op == Op::Jump && info.target >= r.begin && info.target < r.end) {
       // Cuts before statements lo+1 .. hi would separate the JMP from its label.
       int32_t lo = std::min(i, info.target), hi = std::max(i, info.target);
       spans[lo + 1 - r.begin] += 1;

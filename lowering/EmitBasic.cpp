@@ -12,10 +12,10 @@ llvm::Value *FunctionEmitter::readBit(const Operand &op) {
   if (mc_.opts.readableNames)
     name = std::string(1, areaInfo(op.area).letter) + std::to_string(op.index) + "." +
            std::to_string(op.bit);
-  if (op.area == Area::T || op.area == Area::C) {
+  if (op.area == Area::Timer || op.area == Area::Counter) {
     // Tn.0 / Cn.0: the timer's / counter's output byte (dialect-notes "Function blocks").
     int slot = lj_tc_slot(op.index);
-    llvm::Value *out = op.area == Area::T
+    llvm::Value *out = op.area == Area::Timer
                            ? cache_.load(mc_.layout.timer(slot, TimerField::Out))
                            : cache_.load(mc_.layout.counter(slot, CounterField::Out));
     return b_.CreateICmpNE(out, llvm::ConstantInt::get(out->getType(), 0), name);
@@ -64,21 +64,21 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
     return s.force >= 0 ? b_.getInt1(s.force != 0) : real;
   };
   switch (s.op) {
-  case Op::LD:
+  case Op::Load:
     st_.push_back(contact(readBit(s.ops[0])));
     return llvm::Error::success();
-  case Op::LDI:
+  case Op::LoadNot:
     st_.push_back(contact(notV(readBit(s.ops[0]))));
     return llvm::Error::success();
-  case Op::LDT:
+  case Op::LoadTrue:
     st_.push_back(b_.getTrue());
     return llvm::Error::success();
-  case Op::LDP:
-  case Op::LDF: {
+  case Op::LoadRise:
+  case Op::LoadFall: {
     llvm::Expected<int32_t> slot = edgeSlot();
     if (!slot) return slot.takeError();
     auto [rise, fall] = edge(*slot, readBit(s.ops[0]));
-    st_.push_back(contact(s.op == Op::LDP ? rise : fall)); // memory updated even when forced
+    st_.push_back(contact(s.op == Op::LoadRise ? rise : fall)); // memory updated even when forced
     return llvm::Error::success();
   }
   default:
@@ -87,46 +87,47 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
   if (st_.empty()) return fail(i, "combine with an empty ST");
   llvm::Value *&st0 = st_.back();
   switch (s.op) {
-  case Op::AND:
+  case Op::And:
     st0 = b_.CreateAnd(st0, contact(readBit(s.ops[0])));
     break;
-  case Op::ANI:
+  case Op::AndNot:
     st0 = b_.CreateAnd(st0, contact(notV(readBit(s.ops[0]))));
     break;
-  case Op::OR:
+  case Op::Or:
     st0 = b_.CreateOr(st0, contact(readBit(s.ops[0])));
     break;
-  case Op::ORI:
+  case Op::OrNot:
     st0 = b_.CreateOr(st0, contact(notV(readBit(s.ops[0]))));
     break;
-  case Op::ANDP:
-  case Op::ANDF:
-  case Op::ORP:
-  case Op::ORF: {
+  case Op::AndRise:
+  case Op::AndFall:
+  case Op::OrRise:
+  case Op::OrFall: {
     // The edge instance always executes, whatever ST0 is: and/or of i1, never a branch.
     llvm::Expected<int32_t> slot = edgeSlot();
     if (!slot) return slot.takeError();
     auto [rise, fall] = edge(*slot, readBit(s.ops[0]));
-    llvm::Value *e = contact((s.op == Op::ANDP || s.op == Op::ORP) ? rise : fall);
-    st0 = (s.op == Op::ANDP || s.op == Op::ANDF) ? b_.CreateAnd(st0, e) : b_.CreateOr(st0, e);
+    llvm::Value *e = contact((s.op == Op::AndRise || s.op == Op::OrRise) ? rise : fall);
+    st0 = (s.op == Op::AndRise || s.op == Op::AndFall) ? b_.CreateAnd(st0, e) : b_.CreateOr(st0, e);
     break;
   }
-  case Op::ANB:
-  case Op::ORB: {
-    if (st_.size() < 2) return fail(i, "ANB/ORB with fewer than 2 ST entries");
+  case Op::AndBlock:
+  case Op::OrBlock: {
+    if (st_.size() < 2) return fail(i, "AndBlock/OrBlock with fewer than 2 ST entries");
     llvm::Value *top = st_.back();
     st_.pop_back();
-    st_.back() = s.op == Op::ANB ? b_.CreateAnd(st_.back(), top) : b_.CreateOr(st_.back(), top);
+    st_.back() =
+        s.op == Op::AndBlock ? b_.CreateAnd(st_.back(), top) : b_.CreateOr(st_.back(), top);
     break;
   }
-  case Op::MPS:
+  case Op::BranchPush:
     ms_.push_back(st0);
     break;
-  case Op::MRD:
-  case Op::MPP:
-    if (ms_.empty()) return fail(i, "MRD/MPP with an empty MS");
+  case Op::BranchRead:
+  case Op::BranchPop:
+    if (ms_.empty()) return fail(i, "BranchRead/BranchPop with an empty MS");
     st0 = ms_.back();
-    if (s.op == Op::MPP) ms_.pop_back();
+    if (s.op == Op::BranchPop) ms_.pop_back();
     break;
   default:
     return emitCoil(i);
@@ -154,16 +155,16 @@ llvm::Error FunctionEmitter::emitCoil(int32_t i) {
   auto cleared = [&] { return b_.CreateAnd(old, b_.CreateNot(mask)); };
   llvm::Value *nv = nullptr;
   switch (s.op) {
-  case Op::OUT:
+  case Op::Coil:
     nv = b_.CreateOr(cleared(), bitOf(st0));
     break;
-  case Op::OOUT:
+  case Op::CoilNot:
     nv = b_.CreateOr(cleared(), bitOf(notV(st0)));
     break;
-  case Op::SET:
+  case Op::Set:
     nv = b_.CreateOr(old, bitOf(st0));
     break;
-  case Op::RST:
+  case Op::Reset:
     nv = b_.CreateAnd(old, b_.CreateNot(bitOf(st0)));
     break;
   default:

@@ -3,6 +3,8 @@
 // block never splits the basic block and the image stays in registers across it.
 #include "lowering/FunctionEmitter.h"
 
+#include "ir/Profile.h"
+
 #include "ladderjit/abi.h"
 
 namespace lj::lower {
@@ -21,41 +23,41 @@ void FunctionEmitter::setOutput(llvm::Value *out) {
 llvm::Error FunctionEmitter::emitBlock(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   switch (s.op) {
-  case Op::ADD:
-  case Op::SUB:
-  case Op::MUL:
-  case Op::DIV:
-  case Op::INC:
-  case Op::DEC:
-  case Op::WAND:
-  case Op::WOR:
-  case Op::WXOR:
-  case Op::NEG:
+  case Op::Add:
+  case Op::Subtract:
+  case Op::Multiply:
+  case Op::Divide:
+  case Op::Increment:
+  case Op::Decrement:
+  case Op::BitAnd:
+  case Op::BitOr:
+  case Op::BitXor:
+  case Op::Negate:
     emitMath(s);
     return llvm::Error::success();
-  case Op::CMP:
-  case Op::LT:
-  case Op::ACMP:
-  case Op::COIN:
+  case Op::CompareLe:
+  case Op::CompareLt:
+  case Op::CompareRange:
+  case Op::CompareEq:
     emitCompare(s);
     return llvm::Error::success();
-  case Op::MOV: {
+  case Op::Move: {
     // Math and move blocks with EN = 0 write nothing; their output is EN.
     llvm::Value *en = enable();
     writeInt(s.ops[1], readInt(s.ops[0]), en);
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::CTR:
-  case Op::CTRC:
-  case Op::CTUD:
+  case Op::RegisterCounter:
+  case Op::RingCounter:
+  case Op::UpDownCounter:
     return emitCounter(i);
-  case Op::TMRB:
-  case Op::STMR:
+  case Op::OnDelayTimer:
+  case Op::OffDelayTimer:
     return emitTimer(i);
-  case Op::PLS:
-  case Op::PLF:
-  case Op::ALT:
+  case Op::RisePulse:
+  case Op::FallPulse:
+  case Op::Toggle:
     return emitPulse(i);
   default:
     return fail(i, "not a function block");
@@ -67,17 +69,17 @@ void FunctionEmitter::emitMath(const Stmt &s) {
   llvm::Value *out = en;
   // int32 two's-complement wrap everywhere: plain add/sub/mul, never nsw/nuw (DIALECT.md 1).
   switch (s.op) {
-  case Op::INC:
-  case Op::DEC:
-  case Op::NEG: {
+  case Op::Increment:
+  case Op::Decrement:
+  case Op::Negate: {
     llvm::Value *x = readInt(s.ops[0]);
-    llvm::Value *r = s.op == Op::INC   ? b_.CreateAdd(x, b_.getInt32(1))
-                     : s.op == Op::DEC ? b_.CreateSub(x, b_.getInt32(1))
-                                       : b_.CreateSub(b_.getInt32(0), x);
+    llvm::Value *r = s.op == Op::Increment   ? b_.CreateAdd(x, b_.getInt32(1))
+                     : s.op == Op::Decrement ? b_.CreateSub(x, b_.getInt32(1))
+                                             : b_.CreateSub(b_.getInt32(0), x);
     writeInt(s.ops[0], r, en);
     break;
   }
-  case Op::DIV: {
+  case Op::Divide: {
     // dialect-notes: b = 0 writes nothing, output 0, fault_divzero counts it (EN = 1 only);
     // INT32_MIN / -1 = INT32_MIN. The divisor is made safe first so sdiv never has UB.
     llvm::Value *a = readInt(s.ops[0]), *d = readInt(s.ops[1]);
@@ -97,19 +99,19 @@ void FunctionEmitter::emitMath(const Stmt &s) {
     llvm::Value *a = readInt(s.ops[0]), *c = readInt(s.ops[1]);
     llvm::Value *r = nullptr;
     switch (s.op) {
-    case Op::ADD:
+    case Op::Add:
       r = b_.CreateAdd(a, c);
       break;
-    case Op::SUB:
+    case Op::Subtract:
       r = b_.CreateSub(a, c);
       break;
-    case Op::MUL:
+    case Op::Multiply:
       r = b_.CreateMul(a, c);
       break;
-    case Op::WAND:
+    case Op::BitAnd:
       r = b_.CreateAnd(a, c);
       break;
-    case Op::WOR:
+    case Op::BitOr:
       r = b_.CreateOr(a, c);
       break;
     default:
@@ -129,13 +131,13 @@ void FunctionEmitter::emitCompare(const Stmt &s) {
   llvm::Value *a = readInt(s.ops[0]), *c = readInt(s.ops[1]);
   llvm::Value *cond = nullptr;
   switch (s.op) {
-  case Op::CMP:
+  case Op::CompareLe:
     cond = b_.CreateICmpSLE(a, c);
     break;
-  case Op::LT:
+  case Op::CompareLt:
     cond = b_.CreateICmpSLT(a, c);
     break;
-  case Op::COIN:
+  case Op::CompareEq:
     cond = b_.CreateICmpEQ(a, c);
     break;
   default: { // ACMP lo hi x: lo < x < hi
@@ -151,9 +153,10 @@ llvm::Error FunctionEmitter::emitCounter(int32_t i) {
   // hnc8-functions-1.md 3.3, common counter algorithm, as straight-line selects.
   const Stmt &s = prog_.stmts[i];
   const int32_t slot = prog_.info[i].slot;
-  const size_t k = s.op == Op::CTRC ? 2 : 4;
+  const size_t k = s.op == Op::RingCounter ? 2 : 4;
   if (st_.size() < k) return fail(i, "counter with too few ST entries");
-  if (s.op == Op::CTR ? (slot < 0 || slot >= LJ_EDGE_SLOTS) : (slot < 0 || slot >= LJ_TC_SLOTS))
+  if (s.op == Op::RegisterCounter ? (slot < 0 || slot >= LJ_EDGE_SLOTS)
+                                  : (slot < 0 || slot >= LJ_TC_SLOTS))
     return fail(i, "counter slot " + std::to_string(slot) + " out of range");
   std::vector<llvm::Value *> in(st_.end() - k, st_.end()); // in[0] = input 1 (loaded first)
   st_.resize(st_.size() - k);
@@ -163,10 +166,10 @@ llvm::Error FunctionEmitter::emitCounter(int32_t i) {
 
   llvm::Value *pv = readInt(s.ops[1]); // preset read on every execution
   llvm::Value *init = b_.CreateZExt(s1, b_.getInt32Ty());
-  StateLoc prevLoc =
-      s.op == Op::CTR ? mc_.layout.edge(slot) : mc_.layout.counter(slot, CounterField::Prev);
+  StateLoc prevLoc = s.op == Op::RegisterCounter ? mc_.layout.edge(slot)
+                                                 : mc_.layout.counter(slot, CounterField::Prev);
   StateLoc valLoc = mc_.layout.counter(slot, CounterField::Value);
-  llvm::Value *cv = s.op == Op::CTR ? readInt(s.ops[0]) : cache_.load(valLoc);
+  llvm::Value *cv = s.op == Op::RegisterCounter ? readInt(s.ops[0]) : cache_.load(valLoc);
   llvm::Value *prev = b_.CreateICmpNE(cache_.load(prevLoc), b_.getInt8(0));
 
   llvm::Value *rise = b_.CreateAnd(cnt, notV(prev), "count");
@@ -179,7 +182,7 @@ llvm::Error FunctionEmitter::emitCounter(int32_t i) {
   llvm::Value *reached = selectBit(dn, b_.CreateICmpSLE(cvNew, init), b_.CreateICmpSGE(cvNew, pv));
   llvm::Value *out = b_.CreateAnd(notV(rst), reached, "reached");
 
-  if (s.op == Op::CTR) {
+  if (s.op == Op::RegisterCounter) {
     writeInt(s.ops[0], cvNew, nullptr); // value in its register, written truncated
   } else {
     cache_.store(valLoc, cvNew);
@@ -195,7 +198,6 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const int32_t slot = prog_.info[i].slot;
   if (slot < 0 || slot >= LJ_TC_SLOTS) return fail(i, "timer slot out of range");
-  static constexpr int64_t kUnitMs[] = {1, 1000, 60000, 3600000};
   int32_t unit = s.ops[1].value;
   if (s.ops[1].kind != Operand::Kind::Const || unit < 0 || unit > 3)
     return fail(i, "timer unit is not a constant 0..3");
@@ -203,7 +205,8 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   llvm::Value *zero64 = b_.getInt64(0);
   llvm::Value *en = enable();
   llvm::Value *len = b_.CreateSExt(readInt(s.ops[2]), i64);
-  llvm::Value *preset = b_.CreateMul(len, b_.getInt64(kUnitMs[unit])); // fits: |len| < 2^31
+  llvm::Value *preset =
+      b_.CreateMul(len, b_.getInt64(targetProfile().timerUnitMs[unit])); // fits: |len| < 2^31
   preset = b_.CreateSelect(b_.CreateICmpSLT(preset, zero64), zero64, preset, "preset");
   llvm::Value *now = cache_.load(mc_.layout.scalar(Scalar::NowMs));
   StateLoc startL = mc_.layout.timer(slot, TimerField::Start);
@@ -217,7 +220,7 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
     return b_.CreateSelect(b_.CreateICmpSLT(el, zero64), zero64, el, "elapsed");
   };
   llvm::Value *out, *running, *elapsed, *startNew;
-  if (s.op == Op::TMRB) {
+  if (s.op == Op::OnDelayTimer) {
     startNew = b_.CreateSelect(b_.CreateAnd(en, notV(runOld)), now, start);
     llvm::Value *el = elapsedSince(startNew);
     llvm::Value *done = b_.CreateICmpSGE(el, preset);
@@ -251,15 +254,15 @@ llvm::Error FunctionEmitter::emitPulse(int32_t i) {
   const int32_t slot = prog_.info[i].slot;
   if (slot < 0 || slot >= LJ_BLOCK_SLOTS) return fail(i, "block number out of range");
   llvm::Value *en = enable();
-  BlockArray prevArr = s.op == Op::PLS   ? BlockArray::PlsPrev
-                       : s.op == Op::PLF ? BlockArray::PlfPrev
-                                         : BlockArray::AltPrev;
+  BlockArray prevArr = s.op == Op::RisePulse   ? BlockArray::PlsPrev
+                       : s.op == Op::FallPulse ? BlockArray::PlfPrev
+                                               : BlockArray::AltPrev;
   StateLoc prevL = mc_.layout.block(prevArr, slot);
   llvm::Value *prev = b_.CreateICmpNE(cache_.load(prevL), b_.getInt8(0));
   llvm::Value *out;
-  if (s.op == Op::PLS) {
+  if (s.op == Op::RisePulse) {
     out = b_.CreateAnd(en, notV(prev));
-  } else if (s.op == Op::PLF) {
+  } else if (s.op == Op::FallPulse) {
     out = b_.CreateAnd(notV(en), prev);
   } else {
     StateLoc stateL = mc_.layout.block(BlockArray::AltState, slot);

@@ -1,5 +1,5 @@
 // Lowering of family Cnc: chapter-6 CNC blocks on F/G words (hnc8-cnc-interface.md 2, 3.1). The
-// CNC table (instructions/CncTable.h) is interpreted at compile time into straight-line IR:
+// CNC table (profiles/hnc8/CncTable.h) is interpreted at compile time into straight-line IR:
 // constant words go through the image cache, EN guards are selects. Only a runtime axis operand
 // (JOGSW, STEPAXIS, JOGVEL, AXEN, AXISMOVE, AXISMVTO, AXLMF2) and SPDLBUS1's gear use computed
 // addresses: the index is clamped into range and the store writes the old value back when the
@@ -26,12 +26,12 @@ llvm::Value *FunctionEmitter::cncLoad(Area a, const CncBase &base, int32_t k) {
 void FunctionEmitter::cncUpdate(const CncBase &base, int32_t k,
                                 llvm::function_ref<llvm::Value *(llvm::Value *)> f) {
   if (!base.dyn) {
-    StateLoc loc = mc_.layout.area(Area::G, base.word + k);
+    StateLoc loc = mc_.layout.area(Area::NcControl, base.word + k);
     cache_.store(loc, f(cache_.load(loc)));
     return;
   }
   cache_.flush();
-  llvm::Value *p0 = mc_.layout.address(b_, state_, mc_.layout.area(Area::G, k));
+  llvm::Value *p0 = mc_.layout.address(b_, state_, mc_.layout.area(Area::NcControl, k));
   llvm::Value *p =
       b_.CreateInBoundsGEP(b_.getInt16Ty(), p0, b_.CreateZExt(base.dyn, b_.getInt64Ty()));
   llvm::Value *old = b_.CreateLoad(b_.getInt16Ty(), p);
@@ -88,7 +88,7 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     return;
   }
   case Do::Ack: {
-    llvm::Value *on = b_.CreateAnd(act, cncBit(Area::F, base, r.auxWord, r.auxBit));
+    llvm::Value *on = b_.CreateAnd(act, cncBit(Area::NcStatus, base, r.auxWord, r.auxBit));
     cncUpdate(base, r.word, [&](llvm::Value *old) { return withBit(b_, old, r.bit, on); });
     return;
   }
@@ -118,7 +118,7 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     return;
   }
   case Do::Status:
-    cond = cncBit(Area::F, base, r.word, r.bit);
+    cond = cncBit(Area::NcStatus, base, r.word, r.bit);
     return;
   case Do::Push:
     return; // emitCncBlock pushes it
@@ -142,7 +142,7 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     return;
   }
   case Do::ModeGet: {
-    llvm::Value *code = b_.CreateAnd(cncLoad(Area::F, base, r.word), b_.getInt16(0xF));
+    llvm::Value *code = b_.CreateAnd(cncLoad(Area::NcStatus, base, r.word), b_.getInt16(0xF));
     llvm::Value *v = b_.getInt32(0);
     for (int k = 0; k < 7; ++k)
       v = b_.CreateSelect(
@@ -152,8 +152,8 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     return;
   }
   case Do::UserOut: {
-    llvm::Value *lo = b_.CreateZExt(cncLoad(Area::F, base, r.word), b_.getInt32Ty());
-    llvm::Value *hi = b_.CreateZExt(cncLoad(Area::F, base, r.word + 1), b_.getInt32Ty());
+    llvm::Value *lo = b_.CreateZExt(cncLoad(Area::NcStatus, base, r.word), b_.getInt32Ty());
+    llvm::Value *hi = b_.CreateZExt(cncLoad(Area::NcStatus, base, r.word + 1), b_.getInt32Ty());
     llvm::Value *u = b_.CreateOr(lo, b_.CreateShl(hi, 16));
     for (int k = 0; k < 4; ++k) {
       Operand byte = s.ops[a.srcOp];
@@ -173,10 +173,10 @@ void FunctionEmitter::emitCncSpindle(int32_t i, const Action &a, const CncBase &
   const Stmt &s = prog_.stmts[i];
   const cnc::Resolved r = cnc::resolve(a, s);
   llvm::Type *i64 = b_.getInt64Ty();
-  llvm::Value *lo = b_.CreateZExt(cncLoad(Area::F, base, r.auxWord), b_.getInt32Ty());
-  llvm::Value *hi = b_.CreateZExt(cncLoad(Area::F, base, r.auxWord + 1), b_.getInt32Ty());
+  llvm::Value *lo = b_.CreateZExt(cncLoad(Area::NcStatus, base, r.auxWord), b_.getInt32Ty());
+  llvm::Value *hi = b_.CreateZExt(cncLoad(Area::NcStatus, base, r.auxWord + 1), b_.getInt32Ty());
   llvm::Value *sval = b_.CreateSExt(b_.CreateOr(lo, b_.CreateShl(hi, 16)), i64);
-  llvm::Value *ovr = b_.CreateSExt(cncLoad(Area::G, base, r.aux2Word), i64);
+  llvm::Value *ovr = b_.CreateSExt(cncLoad(Area::NcControl, base, r.aux2Word), i64);
   // |S * ovr| < 2^47: exact in 64 bits; sdiv by 100 truncates toward zero.
   llvm::Value *cmd = b_.CreateSDiv(b_.CreateMul(sval, ovr), b_.getInt64(100));
   llvm::Value *write = act;
@@ -191,7 +191,7 @@ void FunctionEmitter::emitCncSpindle(int32_t i, const Action &a, const CncBase &
                      b_.CreateICmpSLT(b_.CreateAdd(blk, b_.getInt64(4)), b_.getInt64(LJ_P_COUNT)));
     llvm::Value *safe = b_.CreateSelect(ok, blk, b_.getInt64(pbase)); // pbase + 4 is verified
     cache_.flush();
-    llvm::Value *p0 = mc_.layout.address(b_, state_, mc_.layout.area(Area::P, 0));
+    llvm::Value *p0 = mc_.layout.address(b_, state_, mc_.layout.area(Area::Param, 0));
     auto loadP = [&](int k) {
       llvm::Value *idx = b_.CreateAdd(safe, b_.getInt64(k));
       return b_.CreateSExt(
@@ -246,7 +246,7 @@ llvm::Error FunctionEmitter::emitCncBlock(int32_t i) {
 
   if (info.stack == StackRule::Push) { // AXRDY: a status source pushed like a contact
     cnc::Resolved r = cnc::resolve(row->act[0], s);
-    st_.push_back(cncBit(Area::F, base, r.word, r.bit));
+    st_.push_back(cncBit(Area::NcStatus, base, r.word, r.bit));
     return llvm::Error::success();
   }
 

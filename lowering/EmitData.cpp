@@ -33,37 +33,37 @@ uint32_t widthMask(int width) { return width >= 32 ? ~0u : (1u << width) - 1u; }
 llvm::Error FunctionEmitter::emitDataBlock(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   switch (s.op) {
-  case Op::XMOV:
-  case Op::XCH:
+  case Op::IndexedMove:
+  case Op::Exchange:
     emitXmovXch(s);
     break;
-  case Op::BMOV:
+  case Op::BlockMove:
     emitBmov(s);
     break;
-  case Op::FMOV: {
+  case Op::Fill: {
     // The value is read once, before any write (functions-2 2.4); output rule None.
     llvm::Value *v = readInt(s.ops[2]);
     dataFill(s.ops[0].area, s.ops[0].index, s.ops[1].index, v, enable());
     break;
   }
-  case Op::ZRST:
+  case Op::ZoneReset:
     emitZrst(s);
     break;
-  case Op::ENCO:
-  case Op::DECO:
-  case Op::COD:
-  case Op::SER:
+  case Op::TableEncode:
+  case Op::TableDecode:
+  case Op::TableLookup:
+  case Op::TableSearch:
     emitTable(s);
     break;
-  case Op::ASSEM:
-  case Op::DISAS:
+  case Op::Pack:
+  case Op::Unpack:
     emitAssemDisas(s);
     break;
-  case Op::ACVT:
+  case Op::RangeConvert:
     emitAcvt(s);
     break;
-  case Op::PTN:
-  case Op::NTP:
+  case Op::PointToNumber:
+  case Op::NumberToPoint:
     emitPtnNtp(s);
     break;
   default:
@@ -98,7 +98,7 @@ FunctionEmitter::DataRef FunctionEmitter::dataResolve(const Operand &format, con
     r.ok = b_.getTrue();
     return r;
   }
-  r.area = format.value == 1 ? Area::B : Area::P;
+  r.area = format.value == 1 ? Area::Retained : Area::Param;
   llvm::Value *k = readInt(addr);
   // Unsigned compare: a negative index is out of range too.
   r.ok = b_.CreateICmpULT(k, b_.getInt32(static_cast<uint32_t>(areaInfo(r.area).count)));
@@ -185,7 +185,7 @@ void FunctionEmitter::emitXmovXch(const Stmt &s) {
   llvm::Value *ok = b_.CreateAnd(r1.ok, r2.ok);
   llvm::Value *doIt = b_.CreateAnd(en, ok);
   llvm::Value *v1 = dataRead(r1);
-  if (s.op == Op::XMOV) {
+  if (s.op == Op::IndexedMove) {
     dataWrite(r2, v1, doIt);
     dataIndexFault(en, ok, true);
     setOutput(doIt);
@@ -252,14 +252,14 @@ void FunctionEmitter::emitTable(const Stmt &s) {
   llvm::Value *x = readInt(s.ops[2]);
   auto entry = [&](int32_t k) { return readInt(element(t.area, t.index + k)); };
   switch (s.op) {
-  case Op::ENCO: { // first T[i] == x -> 1 << i, none -> 0; scanned from the end so i wins
+  case Op::TableEncode: { // first T[i] == x -> 1 << i, none -> 0; scanned from the end so i wins
     llvm::Value *r = b_.getInt32(0);
     for (int32_t k = n - 1; k >= 0; --k)
       r = b_.CreateSelect(b_.CreateICmpEQ(entry(k), x), b_.getInt32(1u << k), r);
     writeInt(s.ops[3], r, en);
     return;
   }
-  case Op::DECO: { // lowest set bit i < n of x -> T[i], none -> 0
+  case Op::TableDecode: { // lowest set bit i < n of x -> T[i], none -> 0
     llvm::Value *r = b_.getInt32(0);
     for (int32_t k = n - 1; k >= 0; --k) {
       llvm::Value *bitK = b_.CreateICmpNE(b_.CreateAnd(x, b_.getInt32(1u << k)), b_.getInt32(0));
@@ -268,7 +268,7 @@ void FunctionEmitter::emitTable(const Stmt &s) {
     writeInt(s.ops[3], r, en);
     return;
   }
-  case Op::COD: { // T[x] for 0 <= x < n, else an index fault
+  case Op::TableLookup: { // T[x] for 0 <= x < n, else an index fault
     llvm::Value *ok = b_.CreateICmpULT(x, b_.getInt32(static_cast<uint32_t>(n)));
     llvm::Value *k = b_.CreateSelect(ok, x, b_.getInt32(0));
     llvm::Value *v = dataLoadAt(t.area, b_.CreateAdd(k, b_.getInt32(t.index)));
@@ -298,7 +298,7 @@ void FunctionEmitter::emitTable(const Stmt &s) {
 void FunctionEmitter::emitAssemDisas(const Stmt &s) {
   llvm::Value *en = enable();
   const int32_t n = s.ops[1].value;
-  if (s.op == Op::ASSEM) {
+  if (s.op == Op::Pack) {
     // Raw pieces of the source width, the first in the least-significant bits; pieces at or
     // beyond bit 32 are lost (functions-2 2.11).
     const Operand &src = s.ops[0];
@@ -332,7 +332,7 @@ void FunctionEmitter::emitAcvt(const Stmt &s) {
   const int32_t k = s.ops[0].index;
   llvm::Value *en = enable();
   llvm::Type *i64 = b_.getInt64Ty();
-  auto p = [&](int32_t j) { return b_.CreateSExt(readInt(element(Area::P, k + j)), i64); };
+  auto p = [&](int32_t j) { return b_.CreateSExt(readInt(element(Area::Param, k + j)), i64); };
   llvm::Value *smin = p(0), *smax = p(1), *dmin = p(2), *dmax = p(3);
   llvm::Value *x = b_.CreateSExt(readInt(s.ops[1]), i64);
   llvm::Value *den = b_.CreateSub(smax, smin);
@@ -352,7 +352,7 @@ void FunctionEmitter::emitAcvt(const Stmt &s) {
 
 void FunctionEmitter::emitPtnNtp(const Stmt &s) {
   llvm::Value *en = enable();
-  if (s.op == Op::PTN) {
+  if (s.op == Op::PointToNumber) {
     // First active point wins: chain the selects from the last pair to the first.
     llvm::Value *r = b_.getInt32(0), *any = b_.getFalse();
     for (int p = kMaxOperands - 2; p >= 1; p -= 2) {

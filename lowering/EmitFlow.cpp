@@ -18,7 +18,8 @@ FunctionEmitter::FunctionEmitter(ModuleContext &mc, llvm::Function *fn, llvm::Va
 llvm::Error FunctionEmitter::fail(int32_t i, const std::string &what) const {
   const Stmt &s = prog_.stmts[i];
   return llvm::createStringError("%s:%d:%d: internal error: lowering %s: %s", prog_.file.c_str(),
-                                 s.loc.line, s.loc.col, instrInfo(s.op).mnemonic, what.c_str());
+                                 s.loc.line, s.loc.col, spelling(prog_.dialect, s.op),
+                                 what.c_str());
 }
 
 llvm::BasicBlock *FunctionEmitter::newBlock(const char *name) {
@@ -34,8 +35,10 @@ void FunctionEmitter::continueIn(llvm::BasicBlock *bb) {
 llvm::BasicBlock *FunctionEmitter::labelBlock(int32_t lblIndex) {
   auto [it, fresh] = labels_.try_emplace(lblIndex, nullptr);
   if (fresh) {
-    it->second = llvm::BasicBlock::Create(
-        fn_->getContext(), "L" + std::to_string(prog_.stmts[lblIndex].ops[0].index), fn_);
+    it->second = llvm::BasicBlock::Create(fn_->getContext(),
+                                          std::string(1, areaInfo(Area::Label).letter) +
+                                              std::to_string(prog_.stmts[lblIndex].ops[0].index),
+                                          fn_);
   }
   return it->second;
 }
@@ -67,7 +70,7 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
       return fail(i, "stack depth " + std::to_string(st_.size()) + "/" +
                          std::to_string(ms_.size()) + " differs from the verifier's " +
                          std::to_string(info.depth) + "/" + std::to_string(info.msDepth));
-    if (prog_.stmts[i].op == Op::LOOP && outlines(i)) {
+    if (prog_.stmts[i].op == Op::LoopBegin && outlines(i)) {
       if (info.target < i || info.target >= r.end) return fail(i, "LOOP without NEXT in this body");
       emitOutlinedLoop(i);
       i = info.target; // the body and its NEXT are lowered in the loop's own function
@@ -75,7 +78,8 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
     }
     if (llvm::Error e = emitStmt(i)) return e;
   }
-  if (!loops_.empty()) return fail(loops_.back().loopIndex, "LOOP without NEXT in this body");
+  if (!loops_.empty())
+    return fail(loops_.back().loopIndex, "LoopBegin without LoopEnd in this body");
   return llvm::Error::success();
 }
 
@@ -102,19 +106,19 @@ llvm::Error FunctionEmitter::emitStmt(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const InstrInfo &row = instrInfo(s.op);
   switch (s.op) {
-  case Op::JMP:
+  case Op::Jump:
     return emitJmp(i);
-  case Op::LBL:
+  case Op::Label:
     emitLabel(i);
     return llvm::Error::success();
-  case Op::LOOP:
+  case Op::LoopBegin:
     emitLoop(i);
     return llvm::Error::success();
-  case Op::NEXT:
+  case Op::LoopEnd:
     return emitNext(i);
-  case Op::CALL:
+  case Op::Call:
     return emitCall(i);
-  case Op::RETN:
+  case Op::Return:
     emitRetn();
     return llvm::Error::success();
   default:
@@ -164,8 +168,8 @@ void FunctionEmitter::watchdogStep(llvm::BasicBlock *next) {
 
 llvm::Error FunctionEmitter::emitJmp(int32_t i) {
   const StmtInfo &info = prog_.info[i];
-  if (info.target < 0 || prog_.stmts[info.target].op != Op::LBL)
-    return fail(i, "jump target is not a LBL");
+  if (info.target < 0 || prog_.stmts[info.target].op != Op::Label)
+    return fail(i, "jump target is not a Label");
   llvm::Value *en = enable(); // ST is left as it is
   llvm::BasicBlock *target = nullptr;
   if (info.target >= range_.begin && info.target < range_.end) {
@@ -272,7 +276,7 @@ void FunctionEmitter::emitOutlinedLoop(int32_t i) {
 
 llvm::Error FunctionEmitter::emitNext(int32_t i) {
   if (loops_.empty() || prog_.info[i].target != loops_.back().loopIndex)
-    return fail(i, "NEXT does not close the innermost LOOP");
+    return fail(i, "LoopEnd does not close the innermost LoopBegin");
   Loop l = loops_.back();
   loops_.pop_back();
   cache_.flush();
@@ -288,7 +292,7 @@ llvm::Error FunctionEmitter::emitNext(int32_t i) {
 llvm::Error FunctionEmitter::emitCall(int32_t i) {
   const StmtInfo &info = prog_.info[i];
   if (info.target < 0 || info.target >= static_cast<int32_t>(mc_.subFns.size()))
-    return fail(i, "CALL of an unknown subroutine");
+    return fail(i, "Call of an unknown subroutine");
   // The caller's ST/MS are compile-time values here, so they survive the call untouched.
   llvm::Value *en = enable();
   llvm::BasicBlock *cont = newBlock("after.call");

@@ -1,7 +1,8 @@
 // Lowering of family Nc: NC services (chapter-4 CNC blocks, host callbacks, stateful chapter-6
-// blocks), written from the same rules as instructions/InterpNc.cpp (docs/dialect-notes.md
+// blocks), written from the same rules as interp/InterpNc.cpp (docs/dialect-notes.md
 // "NC services"). F/G work is straight-line selects; only a host call (or MPGSET's runtime axis)
 // branches, after flushing the image cache.
+#include "ir/Profile.h"
 #include "lowering/FunctionEmitter.h"
 
 #include "ladderjit/abi.h"
@@ -12,8 +13,10 @@ namespace lj::lower {
 
 namespace {
 
-// Channel words FC[k] / GC[k] = F/G[2560 + 80 ch + k] (hnc8-cnc-interface.md 1.3, 1.4).
-int32_t chanBase(int32_t ch) { return 2560 + 80 * ch; }
+/// The target's CNC words (profile): FC[k] / GC[k] = F/G[channelBase + blockWords * ch + k]
+/// (hnc8-cnc-interface.md 1.3, 1.4).
+const CncLayout &kCnc = targetProfile().cnc;
+int32_t chanBase(int32_t ch) { return kCnc.channelBase + kCnc.blockWords * ch; }
 
 } // namespace
 
@@ -34,7 +37,7 @@ void FunctionEmitter::ncWrite(Area a, int32_t index, llvm::Value *v, llvm::Value
 }
 
 void FunctionEmitter::ncStoreGAt(llvm::Value *index, llvm::Value *v) {
-  llvm::Value *base = mc_.layout.address(b_, state_, mc_.layout.area(Area::G, 0));
+  llvm::Value *base = mc_.layout.address(b_, state_, mc_.layout.area(Area::NcControl, 0));
   llvm::Value *addr =
       b_.CreateInBoundsGEP(b_.getInt16Ty(), base, b_.CreateZExt(index, b_.getInt64Ty()));
   b_.CreateStore(b_.CreateTrunc(v, b_.getInt16Ty()), addr);
@@ -110,29 +113,31 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   const Operand *o = s.ops.data();
   auto k32 = [&](int32_t v) { return b_.getInt32(static_cast<uint32_t>(v)); };
   switch (s.op) {
-  case Op::MGET: {
+  case Op::MCodeGet: {
     // out = EN and one of FC[48..55] holds the M code (functions-1 3.1); nothing written.
     llvm::Value *en = enable();
     int32_t cb = chanBase(o[0].value);
     llvm::Value *pending = b_.getFalse();
-    for (int k = 0; k < 8; ++k)
+    for (int k = 0; k < kCnc.mCodeSlots; ++k)
       pending =
-          b_.CreateOr(pending, b_.CreateICmpEQ(ncRead(Area::F, cb + 48 + k), k32(o[1].value)));
+          b_.CreateOr(pending, b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + kCnc.mCodeWord + k),
+                                               k32(o[1].value)));
     setOutput(b_.CreateAnd(en, pending));
     return llvm::Error::success();
   }
-  case Op::MACK: {
+  case Op::MCodeAck: {
     llvm::Value *en = enable();
     int32_t cb = chanBase(o[0].value);
-    for (int k = 0; k < 8; ++k) {
-      llvm::Value *hit = b_.CreateICmpEQ(ncRead(Area::F, cb + 48 + k), k32(o[1].value));
-      ncWrite(Area::G, cb + 48 + k, k32(o[1].value), b_.CreateAnd(en, hit));
+    for (int k = 0; k < kCnc.mCodeSlots; ++k) {
+      llvm::Value *hit =
+          b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + kCnc.mCodeWord + k), k32(o[1].value));
+      ncWrite(Area::NcControl, cb + kCnc.mCodeWord + k, k32(o[1].value), b_.CreateAnd(en, hit));
     }
     return llvm::Error::success();
   }
-  case Op::TGET: {
+  case Op::TCodeGet: {
     llvm::Value *en = enable();
-    llvm::Value *t = ncRead(Area::F, chanBase(o[0].value) + 56);
+    llvm::Value *t = ncRead(Area::NcStatus, chanBase(o[0].value) + kCnc.tCodeWord);
     llvm::Value *got = b_.CreateAnd(en, b_.CreateICmpNE(t, k32(-1)));
     if (o[1].kind == Operand::Kind::Const) {
       setOutput(b_.CreateAnd(got, b_.CreateICmpEQ(t, k32(o[1].value))));
@@ -142,41 +147,45 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     }
     return llvm::Error::success();
   }
-  case Op::TACK: {
+  case Op::TCodeAck: {
     int32_t cb = chanBase(o[0].value);
-    ncWrite(Area::G, cb + 56, ncRead(Area::F, cb + 56), enable());
+    ncWrite(Area::NcControl, cb + kCnc.tCodeWord, ncRead(Area::NcStatus, cb + kCnc.tCodeWord),
+            enable());
     return llvm::Error::success();
   }
-  case Op::RTOMPG:
+  case Op::HandwheelPulse:
     ncHostCall(enable(), offsetof(lj_host, mpg_input), false, {k32(o[1].value), readInt(o[0])});
     return llvm::Error::success();
-  case Op::TEMPSEN: {
+  case Op::TempSensor: {
     // raw: the signed 16-bit AD word X[n] (low byte), X[n+1] (high byte).
     int32_t x = o[1].index, p = o[3].index;
-    llvm::Value *word = b_.CreateOr(ncRead(Area::X, x), b_.CreateShl(ncRead(Area::X, x + 1), 8));
+    llvm::Value *word =
+        b_.CreateOr(ncRead(Area::Input, x), b_.CreateShl(ncRead(Area::Input, x + 1), 8));
     llvm::Value *raw = b_.CreateSExt(b_.CreateTrunc(word, b_.getInt16Ty()), b_.getInt32Ty());
     ncHostCall(enable(), offsetof(lj_host, temp_input), false,
-               {k32(o[0].value), raw, k32(o[2].value), ncRead(Area::P, p), ncRead(Area::P, p + 1),
-                ncRead(Area::P, p + 2), ncRead(Area::P, p + 3)});
+               {k32(o[0].value), raw, k32(o[2].value), ncRead(Area::Param, p),
+                ncRead(Area::Param, p + 1), ncRead(Area::Param, p + 2),
+                ncRead(Area::Param, p + 3)});
     return llvm::Error::success();
   }
-  case Op::PARTCNT:
-  case Op::PARTCLR: {
+  case Op::PartCount:
+  case Op::PartClear: {
     llvm::Value *en = enable();
-    int32_t g = chanBase(o[0].value) + 19; // GC[19] part count (functions-2 2.19)
-    llvm::Value *v = s.op == Op::PARTCNT ? b_.CreateAdd(ncRead(Area::G, g), k32(1)) : k32(0);
-    ncWrite(Area::G, g, v, en);
+    int32_t g = chanBase(o[0].value) + kCnc.partCountWord; // GC[19] part count (functions-2 2.19)
+    llvm::Value *v =
+        s.op == Op::PartCount ? b_.CreateAdd(ncRead(Area::NcControl, g), k32(1)) : k32(0);
+    ncWrite(Area::NcControl, g, v, en);
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::HEADSEN: {
+  case Op::HeadSensors: {
     llvm::Value *en = enable();
     if (o[1].value == 0)
       for (int32_t k = 0; k < o[0].value; ++k)
-        ncWrite(Area::D, o[2].index + k, ncRead(Area::G, 3080 + k), en);
+        ncWrite(Area::DWord, o[2].index + k, ncRead(Area::NcControl, 3080 + k), en);
     return llvm::Error::success();
   }
-  case Op::VARGET: {
+  case Op::VarGet: {
     llvm::Value *en = enable();
     NcCall c = ncHostCall(en, offsetof(lj_host, var_get), true,
                           {k32(o[0].value), readInt(o[1]), k32(o[2].value)}, 1);
@@ -184,22 +193,22 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::VARSET: {
+  case Op::VarSet: {
     llvm::Value *en = enable();
     ncHostCall(en, offsetof(lj_host, var_set), true,
                {k32(o[0].value), readInt(o[1]), k32(o[2].value), readInt(o[3])});
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::TOOLSET:
-  case Op::TOOLCLR: {
+  case Op::ToolVectorOn:
+  case Op::ToolVectorOff: {
     llvm::Value *en = enable();
     ncHostCall(en, offsetof(lj_host, tool_vector), false,
-               {k32(o[0].value), k32(s.op == Op::TOOLSET ? 1 : 0)});
+               {k32(o[0].value), k32(s.op == Op::ToolVectorOn ? 1 : 0)});
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::NIXIE: {
+  case Op::PanelDisplay: {
     llvm::Value *en = enable();
     llvm::Value *v = readInt(o[0]);
     NcCall c = ncHostCall(en, offsetof(lj_host, nixie_encode), true, {v, k32(o[1].value)});
@@ -211,10 +220,10 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     setOutput(en);
     return llvm::Error::success();
   }
-  case Op::TOOLUSE:
+  case Op::ToolInUse:
     ncHostCall(enable(), offsetof(lj_host, tool_in_use), false, {readInt(o[0]), readInt(o[1])});
     return llvm::Error::success();
-  case Op::TOOLLIFE: {
+  case Op::ToolLife: {
     if (info.slot < 0 || info.slot + 1 >= LJ_INST_WORDS)
       return fail(i, "inst_word slot " + std::to_string(info.slot) + " out of range");
     // [slot] installs counted, [slot + 1] previous ACT; the response is written every time.
@@ -231,7 +240,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     writeInt(o[2], b_.CreateZExt(reached, b_.getInt32Ty()), nullptr);
     return llvm::Error::success();
   }
-  case Op::TOOL: {
+  case Op::ToolSelect: {
     NcCall c = ncHostCall(enable(), offsetof(lj_host, tool_select), true,
                           {readInt(o[0]), readInt(o[1])}, 2);
     llvm::Value *found = b_.CreateAnd(c.called, b_.CreateICmpNE(c.ret, k32(0)));
@@ -240,42 +249,42 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     setOutput(found);
     return llvm::Error::success();
   }
-  case Op::SPDA: {
+  case Op::SpindleAnalog: {
     // rpm = FC[10+2sp] (32 bits, low word first); DA -> reference operand and GC[10+2sp].
     int32_t cb = chanBase(o[0].value), w = cb + 10 + 2 * o[1].value;
-    llvm::Value *lo = b_.CreateAnd(ncRead(Area::F, w), k32(0xFFFF));
-    llvm::Value *rpm = b_.CreateOr(lo, b_.CreateShl(ncRead(Area::F, w + 1), 16));
+    llvm::Value *lo = b_.CreateAnd(ncRead(Area::NcStatus, w), k32(0xFFFF));
+    llvm::Value *rpm = b_.CreateOr(lo, b_.CreateShl(ncRead(Area::NcStatus, w + 1), 16));
     NcCall c = ncHostCall(enable(), offsetof(lj_host, spindle_da), true,
                           {k32(o[0].value), k32(o[1].value), rpm, readInt(o[2]), k32(o[4].index)});
     writeInt(o[3], c.ret, c.called);
-    ncWrite(Area::G, w, c.ret, c.called);
-    ncWrite(Area::G, w + 1, b_.CreateLShr(c.ret, 16), c.called);
+    ncWrite(Area::NcControl, w, c.ret, c.called);
+    ncWrite(Area::NcControl, w + 1, b_.CreateLShr(c.ret, 16), c.called);
     return llvm::Error::success();
   }
-  case Op::SUBAXEN:
+  case Op::SlaveHomingEnable:
     ncHostCall(b_.getTrue(), offsetof(lj_host, slave_home), false,
                {k32(o[0].value), b_.CreateZExt(enable(), b_.getInt32Ty())});
     return llvm::Error::success();
-  case Op::MPGSET:
+  case Op::HandwheelSet:
     emitMpgSet(i);
     return llvm::Error::success();
-  case Op::ROT:
-    if (st_.size() < 5) return fail(i, "ROT with fewer than 5 ST entries");
+  case Op::MagazineRotate:
+    if (st_.size() < 5) return fail(i, "MagazineRotate with fewer than 5 ST entries");
     emitRot(i);
     return llvm::Error::success();
-  case Op::EVENT:
-  case Op::SAVEDATA: {
+  case Op::RaiseEvent:
+  case Op::SaveRetained: {
     if (info.slot < 0 || info.slot >= LJ_EDGE_SLOTS)
       return fail(i, "edge slot " + std::to_string(info.slot) + " out of range");
     llvm::Value *en = enable();
     llvm::Value *rise = edge(info.slot, en).first;
-    if (s.op == Op::SAVEDATA) {
+    if (s.op == Op::SaveRetained) {
       ncHostCall(rise, offsetof(lj_host, save_data), false, {});
       return llvm::Error::success();
     }
     // G[3040 + n/16] bit n%16 := ACT; the host hears of the rising edge.
     int32_t n = o[0].value;
-    StateLoc loc = mc_.layout.area(Area::G, 3040 + n / 16);
+    StateLoc loc = mc_.layout.area(Area::NcControl, 3040 + n / 16);
     llvm::Value *old = cache_.load(loc);
     auto mask = static_cast<uint16_t>(1u << (n % 16));
     llvm::Value *nv = b_.CreateOr(b_.CreateAnd(old, b_.getInt16(static_cast<uint16_t>(~mask))),

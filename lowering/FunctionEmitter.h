@@ -2,11 +2,11 @@
 // time (vectors of i1 SSA values); state fields go through a per-block ImageCache.
 #pragma once
 
-#include "instructions/CncTable.h"
-#include "instructions/Program.h"
+#include "ir/Program.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/ImageCache.h"
 #include "lowering/Lower.h"
+#include "profiles/hnc8/CncTable.h"
 
 #include <llvm/Analysis/InstSimplifyFolder.h>
 #include <llvm/IR/Function.h>

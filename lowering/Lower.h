@@ -2,7 +2,7 @@
 // functions have the signatures of runtime_abi's lj_part_fn / lj_slice_fn (STYLE.md 5).
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 
 #include <llvm/IR/DataLayout.h>
 #include <llvm/IR/LLVMContext.h>

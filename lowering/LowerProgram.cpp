@@ -103,7 +103,7 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
   std::vector<llvm::BasicBlock *> callAt;
   for (size_t k = 0; k < chunks.size(); ++k) {
     callAt.push_back(llvm::BasicBlock::Create(ctx, "chunk" + std::to_string(k), fn));
-    if (jumps && mc.prog.stmts[chunks[k].r.begin].op == Op::LBL)
+    if (jumps && mc.prog.stmts[chunks[k].r.begin].op == Op::Label)
       labelChunk[chunks[k].r.begin] = static_cast<uint32_t>(k);
   }
   b.CreateBr(callAt[0]);

@@ -18,7 +18,7 @@ bool applyForces(VerifiedProgram &prog, const std::map<int32_t, int8_t> &forces,
       found = true;
       if (!isContact(st.op)) {
         error = prog.file + ":" + std::to_string(line) + ": '" +
-                std::string(instrInfo(st.op).mnemonic) +
+                std::string(spelling(prog.dialect, st.op)) +
                 "' is not a contact (only LD LDI AND ANI OR ORI LDP LDF ANDP ANDF ORP ORF can be "
                 "forced)";
         return false;

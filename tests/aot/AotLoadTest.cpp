@@ -3,9 +3,10 @@
 // Signer trust and attacks on it: tests/security/AotTrustTest.cpp.
 #include "tests/aot/AotTestUtil.h"
 
-#include "instructions/Engine.h"
 #include "io/AotLoader.h"
 #include "io/AotSigned.h"
+#include "io/PlcDit.h"
+#include "ir/Engine.h"
 #include "ladderjit/program.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"

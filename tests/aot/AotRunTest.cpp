@@ -3,8 +3,8 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "fuzz/Fuzz.h"
-#include "instructions/Engine.h"
 #include "io/AotLoader.h"
+#include "ir/Engine.h"
 #include "tests/support/EngineRegistry.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Shared helpers of the AOT tests: temp directories, building a .so from STL, running commands.
 #pragma once
 
-#include "instructions/Program.h"
+#include "ir/Program.h"
 
 #include <string>
 

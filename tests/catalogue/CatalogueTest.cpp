@@ -3,10 +3,11 @@
 // can be emitted by the fuzzer's generator and has an entry in docs/instructions.md; and every
 // table row is a mnemonic of the manual.
 #include "bench/ProgramGenerator.h"
-#include "instructions/FrontEnd.h"
-#include "instructions/InstrDocs.h"
-#include "instructions/InstrTable.h"
-#include "instructions/Interpreter.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/InstrDocs.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "interp/Interpreter.h"
+#include "ir/OpTable.h"
 #include "jit/Jit.h"
 
 #include <gtest/gtest.h>
@@ -80,7 +81,7 @@ class Mnemonic : public ::testing::TestWithParam<ManualName> {
 protected:
   Op op() const {
     Op o = Op::Count_;
-    lookupMnemonic(GetParam().name, o);
+    hnc8::lookupMnemonic(GetParam().name, o);
     return o;
   }
 };
@@ -92,7 +93,7 @@ TEST(ManualList, HasEveryTable) {
 
 TEST_P(Mnemonic, IsInTheInstructionTable) {
   Op o;
-  ASSERT_TRUE(lookupMnemonic(GetParam().name, o))
+  ASSERT_TRUE(hnc8::lookupMnemonic(GetParam().name, o))
       << GetParam().name << " (" << GetParam().section << ") is not in InstrTable.cpp";
 }
 
@@ -100,7 +101,8 @@ TEST(Catalogue, EveryTableRowIsAMnemonicOfTheManual) {
   std::set<std::string> names;
   for (const ManualName &m : manualNames()) names.insert(m.name);
   for (const InstrInfo &row : instrTable())
-    EXPECT_TRUE(names.count(row.mnemonic)) << row.mnemonic << " is not in the manual's tables";
+    EXPECT_TRUE(names.count(hnc8::mnemonicOf(row.op)))
+        << hnc8::mnemonicOf(row.op) << " is not in the manual's tables";
 }
 
 TEST_P(Mnemonic, GeneratorEmitsAStatementThatVerifies) {
@@ -125,7 +127,7 @@ TEST_P(Mnemonic, InterpreterHasSemantics) {
     lj_tick(st.get(), &interp.entries());
   }
   EXPECT_EQ(interp.unimplemented(), Op::Count_)
-      << "no interpreter semantics for " << instrInfo(interp.unimplemented()).mnemonic << " in\n"
+      << "no interpreter semantics for " << hnc8::mnemonicOf(interp.unimplemented()) << " in\n"
       << s.text;
 }
 
@@ -143,7 +145,7 @@ TEST_P(Mnemonic, JitLowersIt) {
 TEST_P(Mnemonic, HasAnEntryInTheInstructionReference) {
   ASSERT_NE(op(), Op::Count_);
   static const std::string doc = readFile(LJ_INSTRUCTIONS_DOC);
-  const std::string row = instrInfo(op()).mnemonic;
+  const std::string row = hnc8::mnemonicOf(op());
   EXPECT_NE(doc.find("\n## " + row + "\n"), std::string::npos) << "no `## " << row << "` entry";
   if (row != GetParam().name) { // an alias is named in its instruction's entry
     EXPECT_NE(doc.find("`" + GetParam().name + "`"), std::string::npos);
@@ -161,13 +163,13 @@ TEST(InstructionReference, EveryExamplePassesTheFrontEnd) {
     Diagnostics diags("example.stl");
     VerifyOptions vo;
     EXPECT_TRUE(compileFrontEnd(d.example, "example.stl", vo, diags).has_value())
-        << instrInfo(d.op).mnemonic << " example:\n"
+        << hnc8::mnemonicOf(d.op) << " example:\n"
         << d.example << "\n"
         << diags.render();
     bool uses = false;
     Diagnostics d2("example.stl");
     for (const Stmt &s : parseStl(d.example, "example.stl", d2).stmts) uses = uses || s.op == d.op;
-    EXPECT_TRUE(uses) << instrInfo(d.op).mnemonic << " example does not use it";
+    EXPECT_TRUE(uses) << hnc8::mnemonicOf(d.op) << " example does not use it";
   }
 }
 

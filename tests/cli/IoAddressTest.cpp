@@ -29,18 +29,18 @@ struct Fresh {
 
 TEST(CliAddress, ParsesBitsAndElements) {
   CliAddress a = addr("X1.0");
-  EXPECT_EQ(a.area, Area::X);
+  EXPECT_EQ(a.area, Area::Input);
   EXPECT_EQ(a.index, 1);
   EXPECT_EQ(a.bit, 0);
   EXPECT_EQ(a.text, "X1.0");
   CliAddress g = addr("G2560.9"); // G is 16 bits: .9 exists (DIALECT.md 1)
-  EXPECT_EQ(g.area, Area::G);
+  EXPECT_EQ(g.area, Area::NcControl);
   EXPECT_EQ(g.index, 2560);
   EXPECT_EQ(g.bit, 9);
   CliAddress d = addr("D5.31");
   EXPECT_EQ(d.bit, 31);
   CliAddress p = addr("P10");
-  EXPECT_EQ(p.area, Area::P);
+  EXPECT_EQ(p.area, Area::Param);
   EXPECT_FALSE(p.isBit());
   EXPECT_EQ(addr("F2616").index, 2616);
 }
@@ -48,7 +48,7 @@ TEST(CliAddress, ParsesBitsAndElements) {
 TEST(CliAddress, CaseInsensitiveWithLeadingZeros) {
   // docs/dialect-notes.md "Text": area letters case-insensitive, X0010.3 = X10.3.
   CliAddress a = addr("x0010.3");
-  EXPECT_EQ(a.area, Area::X);
+  EXPECT_EQ(a.area, Area::Input);
   EXPECT_EQ(a.index, 10);
   EXPECT_EQ(a.bit, 3);
   EXPECT_EQ(a.text, "x0010.3"); // kept as written for watch columns
@@ -57,7 +57,7 @@ TEST(CliAddress, CaseInsensitiveWithLeadingZeros) {
 
 TEST(CliAddress, TimersAndCounters) {
   // T0..T127 and T300..T427; the only bit is .0 (dialect-notes "Function blocks").
-  EXPECT_EQ(addr("T5").area, Area::T);
+  EXPECT_EQ(addr("T5").area, Area::Timer);
   EXPECT_EQ(addr("T5.0").bit, 0);
   EXPECT_EQ(addr("C427").index, 427);
   EXPECT_EQ(addr("t300").index, 300);

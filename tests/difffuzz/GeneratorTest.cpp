@@ -2,8 +2,9 @@
 // every row of the instruction table, generation is deterministic, the realistic mix matches its
 // description, and the stimulus applies and prints in the CLI format.
 #include "bench/ProgramGenerator.h"
-#include "instructions/FrontEnd.h"
-#include "instructions/InstrTable.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "ir/OpTable.h"
 
 #include <gtest/gtest.h>
 
@@ -92,7 +93,7 @@ TEST(RandomGenerator, ABatchCoversEveryRowOfTheTable) {
     for (const Stmt &s : pp.stmts) seen.insert(s.op);
   }
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << in.mnemonic << " never generated";
+    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
 }
 
 TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
@@ -123,7 +124,7 @@ TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
     for (const Stmt &s : v->stmts) {
       const Operand &a = s.ops[0], &b = s.ops[1];
       switch (s.op) {
-      case Op::BMOV: {
+      case Op::BlockMove: {
         const int32_t n = s.ops[2].value;
         if (n <= 32) break;
         const bool same = a.area == b.area;
@@ -135,20 +136,20 @@ TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {
           ++count[BmovApart];
         break;
       }
-      case Op::FMOV:
+      case Op::Fill:
         count[Fmov] += b.index - a.index + 1 > 32;
         break;
-      case Op::ZRST:
+      case Op::ZoneReset:
         // Bit form: the whole elements strictly between the two bounds' elements.
         if (a.kind == Operand::Kind::Bit)
           count[ZrstBits] += b.index - a.index - 1 > 32;
         else
           count[ZrstWord] += b.index - a.index + 1 > 32;
         break;
-      case Op::SER:
+      case Op::TableSearch:
         count[Ser] += s.ops[1].value > 32;
         break;
-      case Op::COD:
+      case Op::TableLookup:
         count[Cod] += s.ops[1].value > 32;
         break;
       default:
@@ -183,10 +184,11 @@ TEST(Stimulus, BitWritesChangeOnlyThatBitElementWritesTruncate) {
   lj_state s;
   lj_state_reset(&s);
   s.img.X[3] = 0xF0;
-  applyWrites(s, {{Area::X, 3, 1, 1}, {Area::X, 3, 7, 0}, {Area::F, 2, -1, 0x12345}});
+  applyWrites(s,
+              {{Area::Input, 3, 1, 1}, {Area::Input, 3, 7, 0}, {Area::NcStatus, 2, -1, 0x12345}});
   EXPECT_EQ(s.img.X[3], 0x72);
   EXPECT_EQ(s.img.F[2], 0x2345);
-  applyWrites(s, {{Area::F, 2, 15, 1}});
+  applyWrites(s, {{Area::NcStatus, 2, 15, 1}});
   EXPECT_EQ(s.img.F[2], static_cast<int16_t>(0xA345));
 }
 
@@ -194,7 +196,7 @@ TEST(Stimulus, PrintsTheCliStimulusFormat) {
   // CLI.md `--stimulus`: lines `@TICK ADDR=VALUE [ADDR=VALUE ...]`, `#` comments.
   Stimulus st;
   st.nowMs = {0, 1, 2};
-  st.writes = {{}, {{Area::X, 1, 0, 1}, {Area::F, 7, -1, -3}}, {}};
+  st.writes = {{}, {{Area::Input, 1, 0, 1}, {Area::NcStatus, 7, -1, -3}}, {}};
   std::string text = formatStimulus(st);
   EXPECT_NE(text.find("\n@1 X1.0=1 F7=-3\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("@0"), std::string::npos);

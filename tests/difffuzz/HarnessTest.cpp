@@ -1,9 +1,9 @@
 // The differential harness itself, without the JIT: the interpreter against itself never
 // mismatches, an engine with an injected bug is caught and minimized to a tiny replayable case,
 // and a differing field is named the way the CLI names addresses.
+#include "frontends/hnc8/FrontEnd.h"
 #include "fuzz/Differential.h"
 #include "fuzz/Fuzz.h"
-#include "instructions/FrontEnd.h"
 
 #include <gtest/gtest.h>
 
@@ -104,7 +104,7 @@ TEST(Harness, MinimizedCaseStillFails) {
   c.lines = {"LD X1.0", "AND X1.1", "OUT R3.0", "IEND", "LD X2.0",  "OUT R5.0",
              "LDT",     "INC D1",   "1END",     "LDT",  "MOV 5 W3", "2END"};
   c.stim.nowMs = {1, 2, 3, 4, 5};
-  c.stim.writes = {{}, {}, {{Area::X, 2, -1, 1}}, {}, {}};
+  c.stim.writes = {{}, {}, {{Area::Input, 2, -1, 1}}, {}, {}};
   EngineFactory buggy = [](const VerifiedProgram &p, bool, std::string &) {
     return std::unique_ptr<Engine>(new BuggyEngine(p));
   };

@@ -1,6 +1,6 @@
 // Symbols as STL operands (docs/plc-dit.md "Symbols"): name syntax, address normalization, and
 // the parser resolving names in contacts, coils and blocks exactly like the written address.
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // STL example of hnc8-cnc-interface.md section 2, its F/G mapping from that section (axis A:
 // word A*80+k, channel C: 2560+C*80+k, section 0) and the write rules of section 3.1; decisions
 // of docs/cnc-blocks.md are cited where they matter. Plus the CNC table's own resolution tests.
-#include "instructions/CncTable.h"
+#include "profiles/hnc8/CncTable.h"
 #include "tests/exec/ExecTest.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 // Family Cnc blocks with more than a bit or a word (hnc8-cnc-interface.md section 2): mode set /
 // get, MDI, user outputs, jog and step flags, spindle commands, runtime axis operands, a
 // whole-state run of every block on all engines, and the CNC table's resolution of operands.
-#include "instructions/CncTable.h"
+#include "profiles/hnc8/CncTable.h"
 #include "tests/exec/ExecTest.h"
 
 #include <cstdint>

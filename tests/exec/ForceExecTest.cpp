@@ -4,7 +4,7 @@
 // (DIALECT.md 3: m = cur on every execution). Every engine, plus a lock-step state comparison.
 #include "tests/exec/ExecTest.h"
 
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 namespace lj::test {
 namespace {

@@ -1,9 +1,10 @@
-// Golden diagnostics of the family-Cnc verifier checks (instructions/VerifyCnc.cpp): the ALARM
+// Golden diagnostics of the family-Cnc verifier checks (verify/VerifyCnc.cpp): the ALARM
 // number gap, USEROUT's four bytes, SPDLBUS1's P block, constant MDST modes and the REFPT 5
 // warning (hnc8-cnc-interface.md 2 #60, #20, #30, #1, #56; docs/cnc-blocks.md), and that
 // docs/cnc-blocks.md lists the table as it is.
 #include "FrontEndTestUtil.h"
-#include "instructions/CncTable.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "profiles/hnc8/CncTable.h"
 
 #include <gtest/gtest.h>
 
@@ -71,7 +72,7 @@ TEST(CncDiagnostics, DocMatchesTable) {
   ss << in.rdbuf();
   const std::string doc = ss.str();
   for (const cnc::CncRow &r : cnc::cncTable()) {
-    std::string line = std::string("| ") + instrInfo(r.op).mnemonic + " | " + r.effect + " | " +
+    std::string line = std::string("| ") + hnc8::mnemonicOf(r.op) + " | " + r.effect + " | " +
                        (r.documented ? "documented" : "inferred") + " |\n";
     EXPECT_NE(doc.find(line), std::string::npos) << "missing or stale: " << line;
   }

@@ -1,7 +1,7 @@
 // Helpers shared by the front-end tests: compile a snippet and keep its rendered diagnostics.
 #pragma once
 
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <optional>
 #include <string>

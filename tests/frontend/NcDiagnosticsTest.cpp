@@ -1,4 +1,4 @@
-// Golden diagnostics of family Nc's verifier checks (instructions/VerifyNc.cpp): register blocks
+// Golden diagnostics of family Nc's verifier checks (verify/VerifyNc.cpp): register blocks
 // that must fit in their area, reported at the operand (DIALECT.md 6).
 #include "FrontEndTestUtil.h"
 

@@ -20,9 +20,9 @@ TEST(Parser, CommentsAndBlankLines) {
   auto p = parse("; header\n\n   \nLD X1.0 ; trailing\n// whole line\nOUT Y0.0// glued\n\t\n");
   ASSERT_EQ(p.errors, 0) << p.diags;
   ASSERT_EQ(p.prog.stmts.size(), 2u);
-  EXPECT_EQ(p.prog.stmts[0].op, Op::LD);
+  EXPECT_EQ(p.prog.stmts[0].op, Op::Load);
   EXPECT_EQ(p.prog.stmts[0].loc.line, 4);
-  EXPECT_EQ(p.prog.stmts[1].op, Op::OUT);
+  EXPECT_EQ(p.prog.stmts[1].op, Op::Coil);
   EXPECT_EQ(p.prog.stmts[1].loc.line, 6);
   EXPECT_EQ(formatOperand(p.prog.stmts[1].ops[0]), "Y0.0");
 }
@@ -32,33 +32,33 @@ TEST(Parser, CaseInsensitiveAndAliases) {
   auto p = parse("ld x1.0\nwrt y0.1\niEND\nend1\nEnd2\n1end\n2END\nLdT\n");
   ASSERT_EQ(p.errors, 0) << p.diags;
   ASSERT_EQ(p.prog.stmts.size(), 8u);
-  EXPECT_EQ(p.prog.stmts[0].op, Op::LD);
-  EXPECT_EQ(p.prog.stmts[0].ops[0].area, Area::X);
-  EXPECT_EQ(p.prog.stmts[1].op, Op::OUT);
-  EXPECT_EQ(p.prog.stmts[1].ops[0].area, Area::Y);
-  EXPECT_EQ(p.prog.stmts[2].op, Op::IEND);
-  EXPECT_EQ(p.prog.stmts[3].op, Op::END1);
-  EXPECT_EQ(p.prog.stmts[4].op, Op::END2);
-  EXPECT_EQ(p.prog.stmts[5].op, Op::END1);
-  EXPECT_EQ(p.prog.stmts[6].op, Op::END2);
-  EXPECT_EQ(p.prog.stmts[7].op, Op::LDT);
+  EXPECT_EQ(p.prog.stmts[0].op, Op::Load);
+  EXPECT_EQ(p.prog.stmts[0].ops[0].area, Area::Input);
+  EXPECT_EQ(p.prog.stmts[1].op, Op::Coil);
+  EXPECT_EQ(p.prog.stmts[1].ops[0].area, Area::Output);
+  EXPECT_EQ(p.prog.stmts[2].op, Op::EndInit);
+  EXPECT_EQ(p.prog.stmts[3].op, Op::EndCyclic);
+  EXPECT_EQ(p.prog.stmts[4].op, Op::EndSliced);
+  EXPECT_EQ(p.prog.stmts[5].op, Op::EndCyclic);
+  EXPECT_EQ(p.prog.stmts[6].op, Op::EndSliced);
+  EXPECT_EQ(p.prog.stmts[7].op, Op::LoadTrue);
 }
 
 // DIALECT.md 2: operands separated by spaces or tabs; columns are 1-based.
 TEST(Parser, OperandsAndColumns) {
   auto p = parse("  ADD\tD0   100\t\tD1\r\n");
   const Stmt &s = only(p);
-  EXPECT_EQ(s.op, Op::ADD);
+  EXPECT_EQ(s.op, Op::Add);
   EXPECT_EQ(s.loc.col, 3);
   ASSERT_EQ(s.operandCount, 3);
   EXPECT_EQ(s.ops[0].kind, Operand::Kind::Reg);
-  EXPECT_EQ(s.ops[0].area, Area::D);
+  EXPECT_EQ(s.ops[0].area, Area::DWord);
   EXPECT_EQ(s.ops[0].index, 0);
   EXPECT_EQ(s.ops[0].loc.col, 7);
   EXPECT_EQ(s.ops[1].kind, Operand::Kind::Const);
   EXPECT_EQ(s.ops[1].value, 100);
   EXPECT_EQ(s.ops[1].loc.col, 12);
-  EXPECT_EQ(s.ops[2].area, Area::D);
+  EXPECT_EQ(s.ops[2].area, Area::DWord);
   EXPECT_EQ(s.ops[2].index, 1);
   EXPECT_EQ(s.ops[2].loc.col, 17);
 }
@@ -207,7 +207,7 @@ TEST(Parser, DroppedLinesRecorded) {
   auto p = parse("LD X1.0\nLD X1.8\nFOO\nOUT Y0.0\n");
   ASSERT_EQ(p.prog.dropped.size(), 1u);
   EXPECT_EQ(p.prog.dropped[0].before, 1);
-  EXPECT_EQ(p.prog.dropped[0].op, Op::LD);
+  EXPECT_EQ(p.prog.dropped[0].op, Op::Load);
 }
 
 // Several bad operands on one line are all reported.

@@ -1,6 +1,7 @@
 // Robustness: the front end never crashes or hangs on any byte input (DIALECT.md 6: "never a
 // crash"), and every program it accepts satisfies the invariants of Program.h.
 #include "FrontEndTestUtil.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <gtest/gtest.h>
 
@@ -29,17 +30,17 @@ void checkInvariants(const VerifiedProgram &p, const std::string &text) {
     EXPECT_GE(in.msDepth, 0);
     EXPECT_LE(in.depth, p.maxDepth);
     EXPECT_LE(in.msDepth, p.maxMsDepth);
-    if (s.op == Op::JMP) {
+    if (s.op == Op::Jump) {
       ASSERT_GE(in.target, 0) << text;
       ASSERT_LT(in.target, n);
-      EXPECT_EQ(p.stmts[static_cast<size_t>(in.target)].op, Op::LBL);
+      EXPECT_EQ(p.stmts[static_cast<size_t>(in.target)].op, Op::Label);
       EXPECT_EQ(in.backward, in.target < i);
     }
-    if (s.op == Op::LOOP || s.op == Op::NEXT) {
+    if (s.op == Op::LoopBegin || s.op == Op::LoopEnd) {
       ASSERT_GE(in.target, 0) << text;
       EXPECT_EQ(p.info[static_cast<size_t>(in.target)].target, i);
     }
-    if (s.op == Op::CALL) {
+    if (s.op == Op::Call) {
       ASSERT_GE(in.target, 0);
       ASSERT_LT(in.target, static_cast<int32_t>(p.subs.size()));
     }
@@ -87,7 +88,7 @@ TEST(Robustness, RandomTokenPrograms) {
     int lines = static_cast<int>(rng() % 40);
     for (int l = 0; l < lines; ++l) {
       const InstrInfo &row = table[rng() % table.size()];
-      text += row.mnemonic;
+      text += hnc8::mnemonicOf(row.op);
       int ops = row.operandCount + (rng() % 10 == 0 ? 1 : 0);
       for (int k = 0; k < ops; ++k) {
         text += ' ';

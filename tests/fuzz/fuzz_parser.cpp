@@ -1,6 +1,6 @@
 // libFuzzer target for the front end: any bytes -> parseStl + verify (+ printProgram when the
 // program is accepted). The front end must never crash, hang or read out of bounds.
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #include <cstddef>
 #include <cstdint>

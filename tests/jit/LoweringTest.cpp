@@ -31,17 +31,17 @@ TEST(AbiTypes, OffsetsMatchTheCHeader) {
     return static_cast<uint32_t>(reinterpret_cast<const char *>(p) -
                                  reinterpret_cast<const char *>(&s));
   };
-  EXPECT_EQ(layout->area(Area::R, 10).offset, off(&s.img.R[10]));
-  EXPECT_EQ(layout->area(Area::W, 3).offset, off(&s.img.W[3]));
-  EXPECT_EQ(layout->area(Area::P, 199).offset, off(&s.img.P[199]));
-  EXPECT_EQ(layout->area(Area::G, 3119).offset, off(&s.img.G[3119]));
+  EXPECT_EQ(layout->area(Area::Relay, 10).offset, off(&s.img.R[10]));
+  EXPECT_EQ(layout->area(Area::Word, 3).offset, off(&s.img.W[3]));
+  EXPECT_EQ(layout->area(Area::Param, 199).offset, off(&s.img.P[199]));
+  EXPECT_EQ(layout->area(Area::NcControl, 3119).offset, off(&s.img.G[3119]));
   EXPECT_EQ(layout->timer(255, lower::TimerField::Running).offset, off(&s.T[255].running));
   EXPECT_EQ(layout->counter(7, lower::CounterField::Prev).offset, off(&s.C[7].prev));
   EXPECT_EQ(layout->block(lower::BlockArray::AltState, 511).offset, off(&s.alt_state[511]));
   EXPECT_EQ(layout->edge(16383).offset, off(&s.edge[16383]));
   EXPECT_EQ(layout->scalar(lower::Scalar::Steps).offset, off(&s.steps));
   EXPECT_EQ(layout->scalar(lower::Scalar::FaultDivzero).offset, off(&s.fault_divzero));
-  EXPECT_EQ(layout->area(Area::F, 1).type->getIntegerBitWidth(), 16u);
+  EXPECT_EQ(layout->area(Area::NcStatus, 1).type->getIntegerBitWidth(), 16u);
 }
 
 TEST(AbiTypes, RejectsAForeignLayout) {

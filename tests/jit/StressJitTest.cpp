@@ -2,7 +2,8 @@
 // table) on both tiers, with and without cutting bodies into small functions: the JIT's state
 // must equal the interpreter's after init and after every tick, whatever the inputs, faults and
 // slice plan. Also checks that the seeds used here and in PartitionJitTest cover every row.
-#include "instructions/InstrTable.h"
+#include "frontends/hnc8/Mnemonics.h"
+#include "ir/OpTable.h"
 #include "tests/jit/JitHarness.h"
 
 #include <algorithm>
@@ -67,7 +68,7 @@ TEST(StressJitPrograms, CoverEveryRowAndStructure) {
       seen.insert(op);
       maxDepth = std::max(maxDepth, prog->info[i].depth);
       maxMs = std::max(maxMs, prog->info[i].msDepth);
-      loops += op == Op::LOOP ? 1 : op == Op::NEXT ? -1 : 0;
+      loops += op == Op::LoopBegin ? 1 : op == Op::LoopEnd ? -1 : 0;
       maxLoopNest = std::max(maxLoopNest, loops);
     }
     maxSlices = std::max(maxSlices, prog->slices.size());
@@ -76,7 +77,7 @@ TEST(StressJitPrograms, CoverEveryRowAndStructure) {
   for (uint64_t seed = kFirstSeed; seed <= kLastSeed; ++seed) scan(seed, kStressStatements);
   for (uint64_t seed = 101; seed <= 112; ++seed) scan(seed, 1500);
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << in.mnemonic << " never generated";
+    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
   EXPECT_GE(maxDepth, 8);
   EXPECT_GE(maxMs, 3);
   EXPECT_GE(maxLoopNest, 2);

@@ -72,13 +72,13 @@ TEST(ModbusMap, WritesOnlyWherePermitted) {
   bool retained = false;
   ASSERT_EQ(mbmap::planRegisterWrite(2006, {0x5678, 0x1234}, false, w, retained), 0);
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0].addr.area, lj::Area::B);
+  EXPECT_EQ(w[0].addr.area, lj::Area::Retained);
   EXPECT_EQ(w[0].addr.index, 3);
   EXPECT_EQ(w[0].value, 0x12345678);
   EXPECT_TRUE(retained);
   ASSERT_EQ(mbmap::planRegisterWrite(0, {0xFFFF}, false, w, retained), 0);
   EXPECT_FALSE(retained);
-  EXPECT_EQ(w[0].addr.area, lj::Area::W);
+  EXPECT_EQ(w[0].addr.area, lj::Area::Word);
   // Half of a 32-bit element, or starting at its high word: refused.
   EXPECT_EQ(mbmap::planRegisterWrite(2006, {1}, false, w, retained), kMbIllegalDataAddress);
   EXPECT_EQ(mbmap::planRegisterWrite(2007, {1, 2}, false, w, retained), kMbIllegalDataAddress);
@@ -88,7 +88,7 @@ TEST(ModbusMap, WritesOnlyWherePermitted) {
   EXPECT_EQ(mbmap::planRegisterWrite(10000, {1}, false, w, retained), kMbIllegalDataAddress);
   EXPECT_EQ(mbmap::planCoilWrite(10000, {1}, false, w), kMbIllegalDataAddress);
   EXPECT_EQ(mbmap::planCoilWrite(10000, {1}, true, w), 0);
-  EXPECT_EQ(w[0].addr.area, lj::Area::X);
+  EXPECT_EQ(w[0].addr.area, lj::Area::Input);
   // Byte registers take 0..255.
   EXPECT_EQ(mbmap::planRegisterWrite(7000, {256}, false, w, retained), kMbIllegalDataValue);
   ASSERT_EQ(mbmap::planCoilWrite(4103, {1}, false, w), 0); // Y512.7

@@ -1,8 +1,8 @@
 // The registry of engines every execution test runs on (interpreter, JIT, ...).
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/Program.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 
 #include <functional>
 #include <memory>

@@ -2,9 +2,9 @@
 // now_ms = tick * period, inputs written between ticks. The building block of every exec test.
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/FrontEnd.h"
-#include "instructions/Program.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 #include "ladderjit/abi.h"
 #include "tests/support/EngineRegistry.h"
 

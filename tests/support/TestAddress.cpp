@@ -22,31 +22,31 @@ bool parseNumber(std::string_view t, size_t &pos, int32_t &out) {
 /// Element base and width of the numeric areas inside lj_image.
 unsigned char *elementPtr(lj_image &img, Area a, int32_t n, int &bytes) {
   switch (a) {
-  case Area::X:
+  case Area::Input:
     bytes = 1;
     return img.X + n;
-  case Area::Y:
+  case Area::Output:
     bytes = 1;
     return img.Y + n;
-  case Area::R:
+  case Area::Relay:
     bytes = 1;
     return img.R + n;
-  case Area::F:
+  case Area::NcStatus:
     bytes = 2;
     return reinterpret_cast<unsigned char *>(img.F + n);
-  case Area::G:
+  case Area::NcControl:
     bytes = 2;
     return reinterpret_cast<unsigned char *>(img.G + n);
-  case Area::W:
+  case Area::Word:
     bytes = 2;
     return reinterpret_cast<unsigned char *>(img.W + n);
-  case Area::D:
+  case Area::DWord:
     bytes = 4;
     return reinterpret_cast<unsigned char *>(img.D + n);
-  case Area::B:
+  case Area::Retained:
     bytes = 4;
     return reinterpret_cast<unsigned char *>(img.B + n);
-  case Area::P:
+  case Area::Param:
     bytes = 4;
     return reinterpret_cast<unsigned char *>(img.P + n);
   default:
@@ -77,7 +77,7 @@ TestAddr parseTestAddr(std::string_view text) {
   };
   if (text.empty()) return bad();
   std::optional<Area> area = areaFromLetter(text[0]);
-  if (!area || *area == Area::L || *area == Area::S) return bad();
+  if (!area || *area == Area::Label || *area == Area::Subroutine) return bad();
   size_t pos = 1;
   int32_t n = 0, bitNo = -1;
   if (!parseNumber(text, pos, n) || !validIndex(*area, n)) return bad();
@@ -95,9 +95,9 @@ TestAddr parseTestAddr(std::string_view text) {
 
 int64_t readAddr(const lj_state &s, const TestAddr &a) {
   if (a.area == Area::None) return 0;
-  if (a.area == Area::T || a.area == Area::C) {
+  if (a.area == Area::Timer || a.area == Area::Counter) {
     int slot = lj_tc_slot(a.index);
-    if (a.area == Area::T) return a.bit >= 0 ? s.T[slot].out : s.T[slot].elapsed_ms;
+    if (a.area == Area::Timer) return a.bit >= 0 ? s.T[slot].out : s.T[slot].elapsed_ms;
     return a.bit >= 0 ? s.C[slot].out : s.C[slot].value;
   }
   if (a.bit >= 0) return (readElement(s, a.area, a.index, false) >> a.bit) & 1;
@@ -106,9 +106,9 @@ int64_t readAddr(const lj_state &s, const TestAddr &a) {
 
 void writeAddr(lj_state &s, const TestAddr &a, int64_t value) {
   if (a.area == Area::None) return;
-  if (a.area == Area::T || a.area == Area::C) {
+  if (a.area == Area::Timer || a.area == Area::Counter) {
     int slot = lj_tc_slot(a.index);
-    if (a.area == Area::T) {
+    if (a.area == Area::Timer) {
       if (a.bit >= 0)
         s.T[slot].out = value != 0;
       else

@@ -2,7 +2,7 @@
 // lj_state, independently of the engines and of the io library (tests check engines with it).
 #pragma once
 
-#include "instructions/Area.h"
+#include "ir/Area.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // gen-instr-doc: prints docs/instructions.md (the instruction reference) from the instruction
 // table and instructions/InstrDocs.cpp; `-o FILE` writes it to a file instead.
-#include "instructions/InstrDocs.h"
+#include "frontends/hnc8/InstrDocs.h"
 
 #include <cstring>
 #include <fstream>

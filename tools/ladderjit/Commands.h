@@ -2,9 +2,9 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "instructions/Engine.h"
-#include "instructions/Program.h"
 #include "io/ProgramFile.h"
+#include "ir/Engine.h"
+#include "ir/Program.h"
 
 #include <cstdint>
 #include <memory>

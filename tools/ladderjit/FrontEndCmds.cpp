@@ -3,7 +3,7 @@
 // libraries exist.
 #include "tools/ladderjit/Commands.h"
 
-#include "instructions/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Jit.h"

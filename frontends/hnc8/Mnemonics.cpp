@@ -1,0 +1,207 @@
+// The HNC-8 mnemonic table (hnc8-core.md 5.1, hnc8-functions-1.md 6, hnc8-functions-2.md 5,
+// hnc8-cnc-interface.md 4): spelling -> semantic Op, aliases as a column (DIALECT.md 2).
+#include "frontends/hnc8/Mnemonics.h"
+
+#include "frontends/hnc8/FrontEnd.h"
+
+#include <cctype>
+#include <cstring>
+
+namespace lj::hnc8 {
+
+namespace {
+
+constexpr MnemonicRow kRows[] = {
+    {Op::Load, "LD", nullptr},
+    {Op::LoadNot, "LDI", nullptr},
+    {Op::LoadTrue, "LDT", nullptr},
+    {Op::LoadRise, "LDP", nullptr},
+    {Op::LoadFall, "LDF", nullptr},
+    {Op::And, "AND", nullptr},
+    {Op::AndNot, "ANI", nullptr},
+    {Op::Or, "OR", nullptr},
+    {Op::OrNot, "ORI", nullptr},
+    {Op::AndRise, "ANDP", nullptr},
+    {Op::AndFall, "ANDF", nullptr},
+    {Op::OrRise, "ORP", nullptr},
+    {Op::OrFall, "ORF", nullptr},
+    {Op::AndBlock, "ANB", nullptr},
+    {Op::OrBlock, "ORB", nullptr},
+    {Op::BranchPush, "MPS", nullptr},
+    {Op::BranchRead, "MRD", nullptr},
+    {Op::BranchPop, "MPP", nullptr},
+    {Op::Coil, "OUT", "WRT"},
+    {Op::CoilNot, "OOUT", nullptr},
+    {Op::Set, "SET", nullptr},
+    {Op::Reset, "RST", nullptr},
+    {Op::EndInit, "IEND", nullptr},
+    {Op::EndCyclic, "1END", "END1"},
+    {Op::EndSliced, "2END", "END2"},
+    {Op::Jump, "JMP", nullptr},
+    {Op::Label, "LBL", nullptr},
+    {Op::Call, "CALL", nullptr},
+    {Op::SubBegin, "SP", nullptr},
+    {Op::SubEnd, "SPE", nullptr},
+    {Op::Return, "RETN", nullptr},
+    {Op::LoopBegin, "LOOP", nullptr},
+    {Op::LoopEnd, "NEXT", nullptr},
+    {Op::Add, "ADD", nullptr},
+    {Op::Subtract, "SUB", nullptr},
+    {Op::Multiply, "MUL", nullptr},
+    {Op::Divide, "DIV", nullptr},
+    {Op::Increment, "INC", nullptr},
+    {Op::Decrement, "DEC", nullptr},
+    {Op::BitAnd, "WAND", nullptr},
+    {Op::BitOr, "WOR", nullptr},
+    {Op::BitXor, "WXOR", nullptr},
+    {Op::Negate, "NEG", nullptr},
+    {Op::CompareLe, "CMP", nullptr},
+    {Op::CompareLt, "LT", nullptr},
+    {Op::CompareRange, "ACMP", nullptr},
+    {Op::CompareEq, "COIN", nullptr},
+    {Op::Move, "MOV", nullptr},
+    {Op::RegisterCounter, "CTR", nullptr},
+    {Op::RingCounter, "CTRC", nullptr},
+    {Op::UpDownCounter, "CTUD", nullptr},
+    {Op::OnDelayTimer, "TMRB", nullptr},
+    {Op::OffDelayTimer, "STMR", nullptr},
+    {Op::RisePulse, "PLS", nullptr},
+    {Op::FallPulse, "PLF", nullptr},
+    {Op::Toggle, "ALT", nullptr},
+    {Op::IndexedMove, "XMOV", nullptr},
+    {Op::BlockMove, "BMOV", nullptr},
+    {Op::Fill, "FMOV", nullptr},
+    {Op::Exchange, "XCH", nullptr},
+    {Op::ZoneReset, "ZRST", nullptr},
+    {Op::TableEncode, "ENCO", nullptr},
+    {Op::TableDecode, "DECO", nullptr},
+    {Op::TableLookup, "COD", nullptr},
+    {Op::TableSearch, "SER", nullptr},
+    {Op::Pack, "ASSEM", nullptr},
+    {Op::Unpack, "DISAS", nullptr},
+    {Op::RangeConvert, "ACVT", nullptr},
+    {Op::PointToNumber, "PTN", nullptr},
+    {Op::NumberToPoint, "NTP", nullptr},
+    {Op::MCodeGet, "MGET", nullptr},
+    {Op::MCodeAck, "MACK", nullptr},
+    {Op::TCodeGet, "TGET", nullptr},
+    {Op::TCodeAck, "TACK", nullptr},
+    {Op::HandwheelPulse, "RTOMPG", nullptr},
+    {Op::TempSensor, "TEMPSEN", nullptr},
+    {Op::PartCount, "PARTCNT", nullptr},
+    {Op::PartClear, "PARTCLR", nullptr},
+    {Op::HeadSensors, "HEADSEN", nullptr},
+    {Op::VarGet, "VARGET", nullptr},
+    {Op::VarSet, "VARSET", nullptr},
+    {Op::ToolVectorOn, "TOOLSET", nullptr},
+    {Op::ToolVectorOff, "TOOLCLR", nullptr},
+    {Op::PanelDisplay, "NIXIE", nullptr},
+    {Op::ToolInUse, "TOOLUSE", nullptr},
+    {Op::ToolLife, "TOOLLIFE", nullptr},
+    {Op::ToolSelect, "TOOL", nullptr},
+    {Op::SpindleAnalog, "SPDA", nullptr},
+    {Op::SlaveHomingEnable, "SUBAXEN", nullptr},
+    {Op::HandwheelSet, "MPGSET", nullptr},
+    {Op::MagazineRotate, "ROT", nullptr},
+    {Op::RaiseEvent, "EVENT", nullptr},
+    {Op::SaveRetained, "SAVEDATA", nullptr},
+    {Op::ChannelModeSet, "MDST", nullptr},
+    {Op::ChannelModeGet, "MDGT", nullptr},
+    {Op::MdiMode, "MDI", nullptr},
+    {Op::MstLock, "MST", nullptr},
+    {Op::CycleStart, "CYCLE", nullptr},
+    {Op::EmergencyStop, "STOP", nullptr},
+    {Op::ChannelReset, "RESET", nullptr},
+    {Op::ChannelSwitch, "CHANSW", nullptr},
+    {Op::FeedHold, "HOLD", nullptr},
+    {Op::CycleStartLamp, "CYCLED", nullptr},
+    {Op::FeedHoldLamp, "HOLDLED", nullptr},
+    {Op::SkipG31, "ESCBLK", nullptr},
+    {Op::RapidOverride, "RPOVRD", nullptr},
+    {Op::FeedOverride, "FEEDOVRD", nullptr},
+    {Op::SpindleOverride, "SPDLOVRD", nullptr},
+    {Op::StepMultiplier, "STEPMUL", nullptr},
+    {Op::DryRun, "DRYRUN", nullptr},
+    {Op::BlockSkip, "SKIP", nullptr},
+    {Op::UserInput, "USERIN", nullptr},
+    {Op::UserOutput, "USEROUT", nullptr},
+    {Op::OptionalStop, "SELSTOP", nullptr},
+    {Op::SpindleJog, "SPDLJOG", nullptr},
+    {Op::BusSpindle, "SPDLBUS", nullptr},
+    {Op::BusSpindleGeared, "SPDLBUS1", nullptr},
+    {Op::SpindleOrient, "SPDLORI", nullptr},
+    {Op::SpindleOrientDone, "SPDLOROK", nullptr},
+    {Op::SpindleZeroSpeed, "SPDLZERO", nullptr},
+    {Op::SpindleSpeedReached, "SPDLRCH", nullptr},
+    {Op::SlaveRelease, "DESYN", nullptr},
+    {Op::AxisJog, "JOGSW", nullptr},
+    {Op::AxisStep, "STEPAXIS", nullptr},
+    {Op::JogSpeed, "JOGVEL", nullptr},
+    {Op::HomingStart, "HOMRUN", nullptr},
+    {Op::HomingStartDir, "HOMERUN1", nullptr},
+    {Op::HomeDog, "HOMESW", nullptr},
+    {Op::HomingDoneLamp, "HOMLED", nullptr},
+    {Op::AxisEnable, "AXEN", nullptr},
+    {Op::AxisReady, "AXRDY", nullptr},
+    {Op::AxisLock, "AXISLOCK", nullptr},
+    {Op::AxisMoveRelative, "AXISMOVE", nullptr},
+    {Op::AxisMoveAbsolute, "AXISMVTO", nullptr},
+    {Op::SecondSoftLimit, "AXLMF2", nullptr},
+    {Op::PositiveLimitDog, "AXISPLMT", nullptr},
+    {Op::NegativeLimitDog, "AXISNLMT", nullptr},
+    {Op::ServoEnable, "SVSW", nullptr},
+    {Op::AxisControlMode, "AXISMODE", nullptr},
+    {Op::ReferencePoint, "REFPT", nullptr},
+    {Op::AxisHoming, "AXISHOM2", nullptr},
+    {Op::AxisMoving, "AXMOVING", nullptr},
+    {Op::Alarm, "ALARM", nullptr},
+    {Op::ResetRequested, "RSTCHK", nullptr},
+    {Op::ResetClear, "RSTCLR", nullptr},
+};
+
+static_assert(sizeof(kRows) / sizeof(kRows[0]) == kOpCount, "one spelling per Op");
+
+constexpr bool rowsInOrder() {
+  for (int i = 0; i < kOpCount; ++i)
+    if (static_cast<int>(kRows[i].op) != i) return false;
+  return true;
+}
+static_assert(rowsInOrder(), "rows are in Op order");
+
+bool equalsNoCase(std::string_view a, const char *b) {
+  size_t n = std::strlen(b);
+  if (a.size() != n) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (std::toupper(static_cast<unsigned char>(a[i])) != b[i]) return false;
+  return true;
+}
+
+} // namespace
+
+std::span<const MnemonicRow> mnemonicTable() { return {kRows, static_cast<size_t>(kOpCount)}; }
+
+const MnemonicRow &mnemonicRow(Op op) { return kRows[static_cast<int>(op)]; }
+
+bool lookupMnemonic(std::string_view m, Op &out) {
+  // Spellings first, then aliases: the order the one table of before checked them in.
+  for (const MnemonicRow &row : kRows) {
+    if (equalsNoCase(m, row.spelling)) {
+      out = row.op;
+      return true;
+    }
+  }
+  for (const MnemonicRow &row : kRows) {
+    if (row.alias && equalsNoCase(m, row.alias)) {
+      out = row.op;
+      return true;
+    }
+  }
+  return false;
+}
+
+const DialectText &dialectText() {
+  static constexpr DialectText kText{"hnc8", &mnemonicOf, &formatOperand};
+  return kText;
+}
+
+} // namespace lj::hnc8

@@ -1,0 +1,146 @@
+// Symbol names and their addresses: name syntax, address validation and case-insensitive lookup
+// (docs/plc-dit.md "Symbols").
+#include "frontends/hnc8/Symbols.h"
+
+#include "ir/Area.h"
+#include "ir/Diagnostics.h"
+
+namespace lj {
+
+namespace {
+
+bool isAsciiLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isHigh(char c) { return static_cast<unsigned char>(c) >= 0x80; }
+
+} // namespace
+
+std::string SymbolTable::quote(std::string_view text) {
+  // Non-ASCII bytes are kept: symbol names are often Chinese (UTF-8).
+  return quoteToken(text, 80, /*keepNonAscii=*/true);
+}
+
+bool SymbolTable::isNameShaped(std::string_view t) {
+  if (t.empty()) return false;
+  if (!isAsciiLetter(t[0]) && t[0] != '_' && !isHigh(t[0])) return false;
+  bool allDigitsAfterFirst = t.size() > 1;
+  for (size_t i = 1; i < t.size(); ++i) {
+    char c = t[i];
+    if (!isAsciiLetter(c) && !isDigit(c) && c != '_' && !isHigh(c)) return false;
+    allDigitsAfterFirst = allDigitsAfterFirst && isDigit(c);
+  }
+  // `X10`, `L3`, `Q7`: an address (or a mistyped one), never a name.
+  return !(isAsciiLetter(t[0]) && allDigitsAfterFirst);
+}
+
+std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error) {
+  std::optional<Area> area = t.empty() ? std::nullopt : areaFromLetter(t[0]);
+  if (!area) {
+    error = "bad address " + quote(t) +
+            ": expected an area letter (X Y F G R W D B P T C L S), "
+            "a number and an optional .bit";
+    return {};
+  }
+  // Digits saturate far above any index so huge numbers are "out of range", not wrapped.
+  auto number = [&](size_t &pos, int64_t &v) {
+    size_t start = pos;
+    v = 0;
+    while (pos < t.size() && isDigit(t[pos])) {
+      v = v * 10 + (t[pos] - '0');
+      if (v > (int64_t{1} << 40)) v = int64_t{1} << 40;
+      ++pos;
+    }
+    return pos > start;
+  };
+  size_t pos = 1;
+  int64_t index = 0, bit = -1;
+  bool ok = number(pos, index);
+  if (ok && pos < t.size() && t[pos] == '.') {
+    ++pos;
+    ok = number(pos, bit);
+  }
+  if (!ok || pos != t.size()) {
+    error = "bad address " + quote(t) + ": expected an area letter, a number and an optional .bit";
+    return {};
+  }
+  char letter = areaInfo(*area).letter;
+  if (!validIndex(*area, index)) {
+    error = "address " + quote(t) + " out of range for area " + std::string(1, letter);
+    return {};
+  }
+  if (bit >= 0 && bit >= bitWidth(*area)) {
+    error = "bit number out of range in address " + quote(t);
+    return {};
+  }
+  std::string out(1, letter);
+  out += std::to_string(index);
+  if (bit >= 0) {
+    out += '.';
+    out += std::to_string(bit);
+  }
+  return out;
+}
+
+std::string SymbolTable::key(std::string_view name) {
+  std::string k(name);
+  for (char &c : k)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return k;
+}
+
+bool SymbolTable::add(std::string_view name, std::string_view address, std::string_view comment,
+                      std::string &error) {
+  if (name.size() > kMaxNameBytes) {
+    error = "symbol name " + quote(name) + " is longer than " + std::to_string(kMaxNameBytes) +
+            " bytes";
+    return false;
+  }
+  if (!isNameShaped(name)) {
+    error = "bad symbol name " + quote(name) +
+            ": a name starts with a letter, '_' or a non-ASCII character, continues with "
+            "letters, digits, '_' or non-ASCII characters, and is not an address like X10";
+    return false;
+  }
+  std::string canon = canonicalAddress(address, error);
+  if (canon.empty()) {
+    error = "symbol " + quote(name) + ": " + error;
+    return false;
+  }
+  // Blanks around a comment are layout, not content (the container trims them when reading).
+  while (!comment.empty() && (comment.front() == ' ' || comment.front() == '\t'))
+    comment.remove_prefix(1);
+  while (!comment.empty() && (comment.back() == ' ' || comment.back() == '\t'))
+    comment.remove_suffix(1);
+  if (comment.size() > kMaxCommentBytes) {
+    error = "symbol " + quote(name) + ": comment longer than " + std::to_string(kMaxCommentBytes) +
+            " bytes";
+    return false;
+  }
+  for (char c : comment) {
+    auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t') || u == 0x7f) {
+      error = "symbol " + quote(name) + ": control character in comment";
+      return false;
+    }
+  }
+  std::string k = key(name);
+  if (auto it = index_.find(k); it != index_.end()) {
+    error = "duplicate symbol " + quote(name) + " (already defined as " +
+            quote(list_[it->second].name) + "; names are case-insensitive)";
+    return false;
+  }
+  if (list_.size() >= kMaxSymbols) {
+    error = "too many symbols: at most " + std::to_string(kMaxSymbols) + " (HNC-8 limit)";
+    return false;
+  }
+  index_.emplace(std::move(k), list_.size());
+  list_.push_back({std::string(name), std::move(canon), std::string(comment)});
+  return true;
+}
+
+const Symbol *SymbolTable::find(std::string_view name) const {
+  auto it = index_.find(key(name));
+  return it == index_.end() ? nullptr : &list_[it->second];
+}
+
+} // namespace lj

@@ -1,0 +1,230 @@
+// Internals of the reference interpreter shared by its files (Interpreter.cpp: decoding and
+// entries; InterpFlow.cpp: dispatch, basic instructions, flow; InterpBlocks.cpp: function blocks;
+// InterpData.cpp, InterpNc.cpp, InterpCnc.cpp: the families of ir/OpTable.h `Family`). Not part
+// of the library's interface.
+#pragma once
+
+#include "interp/Interpreter.h"
+#include "ir/Program.h"
+#include "ladderjit/abi.h"
+
+#include <array>
+#include <cassert>
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
+namespace lj::interp {
+
+/// An operand decoded once: a constant, an element (read rule by width) or one bit.
+struct Ref {
+  enum class Kind : uint8_t { None, Const, U8, I16, I32, Bit } kind = Kind::None;
+  uint8_t mask = 0;  ///< Bit: mask inside the byte at `off`
+  uint32_t off = 0;  ///< byte offset inside lj_state
+  int32_t value = 0; ///< Const
+};
+
+/// One statement ready to run.
+struct Code {
+  Op op = Op::LoadTrue;
+  Ref a, b, c;         ///< operands in table order (L/S operands are not decoded)
+  int32_t target = -1; ///< JMP: its LBL; LOOP: its NEXT; CALL: index into subs
+  int32_t slot = -1;   ///< edge / timer / counter / PLS-PLF-ALT slot, first inst_word
+  int32_t wide = -1;   ///< non-core families: index of its WideRefs in Impl::wide
+};
+
+/// The ST and MS stacks of one active scope. Entries are 0/1; top is [sp - 1].
+struct Frame {
+  uint8_t *st;
+  uint8_t *ms;
+  int32_t stCap, msCap;
+  int32_t sp = 0, msp = 0;
+
+  void clear() { sp = msp = 0; }
+  void push(bool v) {
+    assert(sp < stCap && "ST deeper than the verifier said");
+    st[sp++] = v;
+  }
+  bool pop() {
+    assert(sp > 0 && "ST underflow the verifier should have rejected");
+    return st[--sp] != 0;
+  }
+  bool top() const {
+    assert(sp > 0);
+    return st[sp - 1] != 0;
+  }
+  void setTop(bool v) {
+    assert(sp > 0);
+    st[sp - 1] = v;
+  }
+  /// EN of a single-input block: ST0, or 1 (left rail) when ST is empty (DIALECT.md 3).
+  bool input() const { return sp > 0 ? st[sp - 1] != 0 : true; }
+  /// Output of a single-input block: replaces ST0, or is pushed when ST was empty.
+  void output(bool v) {
+    if (sp > 0)
+      st[sp - 1] = v;
+    else
+      push(v);
+  }
+};
+
+inline Ref decode(const Operand &o) {
+  Ref r;
+  switch (o.kind) {
+  case Operand::Kind::None:
+    return r;
+  case Operand::Kind::Const:
+    r.kind = Ref::Kind::Const;
+    r.value = o.value;
+    return r;
+  case Operand::Kind::Reg: {
+    uint32_t bytes = areaInfo(o.area).bytes;
+    if (bytes == 0) return r; // L, S: handled through StmtInfo::target
+    r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
+    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
+    return r;
+  }
+  case Operand::Kind::Bit: {
+    r.kind = Ref::Kind::Bit;
+    if (o.area == Area::Timer || o.area == Area::Counter) {
+      // Tn.0 / Cn.0 read the output bit of the timer / counter (dialect-notes "Function blocks").
+      int slot = lj_tc_slot(o.index);
+      assert(slot >= 0 && o.bit == 0);
+      r.off = o.area == Area::Timer
+                  ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
+                                          offsetof(lj_timer, out))
+                  : static_cast<uint32_t>(offsetof(lj_state, C) + slot * sizeof(lj_counter) +
+                                          offsetof(lj_counter, out));
+      r.mask = 1;
+      return r;
+    }
+    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
+            static_cast<uint32_t>(o.bit / 8);
+    r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
+    return r;
+  }
+  }
+  return r;
+}
+
+inline unsigned char *bytes(lj_state *s) { return reinterpret_cast<unsigned char *>(s); }
+
+/// Read rule of DIALECT.md 1: X/Y/R zero-extend, F/G/W sign-extend, D/B/P as is.
+inline int32_t readValue(lj_state *s, const Ref &r) {
+  const unsigned char *p = bytes(s) + r.off;
+  switch (r.kind) {
+  case Ref::Kind::Const:
+    return r.value;
+  case Ref::Kind::U8:
+    return *p;
+  case Ref::Kind::I16: {
+    int16_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  case Ref::Kind::I32: {
+    int32_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  case Ref::Kind::Bit:
+    return (*p & r.mask) != 0;
+  case Ref::Kind::None:
+    break;
+  }
+  assert(false && "reading an operand that is not a value");
+  return 0;
+}
+
+/// A write keeps the low 8/16/32 bits of the destination (DIALECT.md 1).
+inline void writeValue(lj_state *s, const Ref &r, int32_t v) {
+  unsigned char *p = bytes(s) + r.off;
+  switch (r.kind) {
+  case Ref::Kind::U8:
+    *p = static_cast<uint8_t>(static_cast<uint32_t>(v) & 0xFFu);
+    return;
+  case Ref::Kind::I16: {
+    uint16_t w = static_cast<uint16_t>(static_cast<uint32_t>(v) & 0xFFFFu);
+    std::memcpy(p, &w, sizeof w);
+    return;
+  }
+  case Ref::Kind::I32:
+    std::memcpy(p, &v, sizeof v);
+    return;
+  default:
+    assert(false && "writing an operand that is not a register");
+  }
+}
+
+inline bool readBit(lj_state *s, const Ref &r) { return (bytes(s)[r.off] & r.mask) != 0; }
+
+inline void writeBit(lj_state *s, const Ref &r, bool v) {
+  unsigned char &b = bytes(s)[r.off];
+  b = static_cast<unsigned char>(v ? (b | r.mask) : (b & ~r.mask));
+}
+
+// int32 two's-complement arithmetic without undefined behaviour (DIALECT.md 1).
+inline int32_t wrap(uint32_t v) { return static_cast<int32_t>(v); }
+inline int32_t addWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) + uint32_t(b)); }
+inline int32_t subWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) - uint32_t(b)); }
+inline int32_t mulWrap(int32_t a, int32_t b) { return wrap(uint32_t(a) * uint32_t(b)); }
+
+/// Every operand of a non-core statement, decoded (index = operand position).
+using WideRefs = Ref[kMaxOperands];
+
+/// What a family implementation gets for one statement: the state, the scope's stacks, the
+/// decoded statement (`ops` holds all its operands) and the verifier's facts.
+struct BlockCall {
+  lj_state *s;
+  Frame &f;
+  const Code &c;
+  const Ref *ops;
+  const Stmt &stmt;
+  const StmtInfo &info;
+};
+
+/// Family Data (InterpData.cpp): XMOV .. NTP. Each family runner returns false for an
+/// instruction it has no semantics for (the catalogue completeness test checks none is left).
+bool runData(const BlockCall &b);
+/// Family Nc (InterpNc.cpp): MGET .. SAVEDATA.
+bool runNc(const BlockCall &b);
+/// Family Cnc (InterpCnc.cpp): the chapter-6 F/G blocks, MDST .. RSTCLR.
+bool runCnc(const BlockCall &b);
+
+} // namespace lj::interp
+
+namespace lj::interp {
+
+/// How a statement range ended.
+enum class Flow { Done, Return, Watchdog };
+
+/// Edge contact on one instance's memory m (DIALECT.md 3): always updates m.
+inline bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising) {
+  bool m = s->edge[slot] != 0;
+  s->edge[slot] = cur;
+  return rising ? (cur && !m) : (!cur && m);
+}
+
+} // namespace lj::interp
+
+namespace lj {
+
+struct Interpreter::Impl {
+  const VerifiedProgram &prog;
+  std::vector<interp::Code> code; ///< parallel to prog.stmts
+  /// All decoded operands of the non-core statements (Code::wide indexes it).
+  std::vector<std::array<interp::Ref, kMaxOperands>> wide;
+  /// The last executed instruction that had no semantics (Op::Count_: none so far).
+  Op unimplemented = Op::Count_;
+  // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
+  std::vector<std::vector<uint8_t>> stStore, msStore;
+
+  explicit Impl(const VerifiedProgram &p);
+  interp::Frame frame(size_t scope);
+  uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);
+  interp::Flow run(lj_state *s, interp::Frame &f, int32_t begin, int32_t end);
+  interp::Flow call(lj_state *s, int32_t sub);
+  void block(lj_state *s, interp::Frame &f, const interp::Code &c);
+};
+
+} // namespace lj

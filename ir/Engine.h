@@ -1,0 +1,25 @@
+// A program ready to run: its entry table plus whatever keeps the code alive. The interpreter,
+// the JIT and AOT loaders all hand out this one type, so tests, the fuzzer and the CLI drive
+// every engine the same way (through lj_tick / lj_run_init).
+#pragma once
+
+#include "ir/Program.h"
+#include "ladderjit/abi.h"
+
+#include <memory>
+
+namespace lj {
+
+class Engine {
+public:
+  virtual ~Engine() = default;
+  /// Entry points; valid while the engine lives.
+  virtual const lj_entries &entries() const = 0;
+  /// Short name for messages ("interp", "jit").
+  virtual const char *name() const = 0;
+};
+
+/// The reference interpreter bound to `prog` (which must outlive the engine).
+std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog);
+
+} // namespace lj

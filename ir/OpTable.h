@@ -1,0 +1,288 @@
+// The semantic instruction set as a table (STYLE.md 7): what each operation does to the stacks,
+// its operands and state, read by the verifier, the interpreter, the lowering, the generator and
+// the front ends. No dialect spelling here: a front end maps its mnemonics onto these rows
+// (frontends/hnc8/Mnemonics.cpp for HNC-8).
+#pragma once
+
+#include "ir/Area.h"
+
+#include <cstdint>
+#include <span>
+
+namespace lj {
+
+/// Every operation the engines run, named by what it does (the HNC-8 spelling of each is in
+/// frontends/hnc8/Mnemonics.cpp).
+enum class Op : uint8_t {
+  // basic (hnc8-core.md 4.2)
+  Load,
+  LoadNot,
+  LoadTrue,
+  LoadRise,
+  LoadFall,
+  And,
+  AndNot,
+  Or,
+  OrNot,
+  AndRise,
+  AndFall,
+  OrRise,
+  OrFall,
+  AndBlock,
+  OrBlock,
+  BranchPush,
+  BranchRead,
+  BranchPop,
+  Coil,
+  CoilNot,
+  Set,
+  Reset,
+  // flow (hnc8-functions-1.md 3.5)
+  EndInit,
+  EndCyclic,
+  EndSliced,
+  Jump,
+  Label,
+  Call,
+  SubBegin,
+  SubEnd,
+  Return,
+  LoopBegin,
+  LoopEnd,
+  // math (3.2)
+  Add,
+  Subtract,
+  Multiply,
+  Divide,
+  Increment,
+  Decrement,
+  BitAnd,
+  BitOr,
+  BitXor,
+  Negate,
+  // compare (3.6, functions-2 1.x)
+  CompareLe,
+  CompareLt,
+  CompareRange,
+  CompareEq,
+  // moves (functions-2 2.1)
+  Move,
+  // counters (3.3), timers (3.4)
+  RegisterCounter,
+  RingCounter,
+  UpDownCounter,
+  OnDelayTimer,
+  OffDelayTimer,
+  // edge and toggle blocks (functions-2 2.14-2.16)
+  RisePulse,
+  FallPulse,
+  Toggle,
+  // data operations (functions-2 2.2-2.13, 2.17-2.18): family Data
+  IndexedMove,
+  BlockMove,
+  Fill,
+  Exchange,
+  ZoneReset,
+  TableEncode,
+  TableDecode,
+  TableLookup,
+  TableSearch,
+  Pack,
+  Unpack,
+  RangeConvert,
+  PointToNumber,
+  NumberToPoint,
+  // NC services: chapter-4 CNC blocks (functions-1 3.1, functions-2 2.19-2.23) and the chapter-6
+  // blocks that call the host or keep state (cnc-interface 3.4): family Nc
+  MCodeGet,
+  MCodeAck,
+  TCodeGet,
+  TCodeAck,
+  HandwheelPulse,
+  TempSensor,
+  PartCount,
+  PartClear,
+  HeadSensors,
+  VarGet,
+  VarSet,
+  ToolVectorOn,
+  ToolVectorOff,
+  PanelDisplay,
+  ToolInUse,
+  ToolLife,
+  ToolSelect,
+  SpindleAnalog,
+  SlaveHomingEnable,
+  HandwheelSet,
+  MagazineRotate,
+  RaiseEvent,
+  SaveRetained,
+  // chapter-6 CNC blocks acting on F/G words through the CNC table (cnc-interface 2): family Cnc
+  ChannelModeSet,
+  ChannelModeGet,
+  MdiMode,
+  MstLock,
+  CycleStart,
+  EmergencyStop,
+  ChannelReset,
+  ChannelSwitch,
+  FeedHold,
+  CycleStartLamp,
+  FeedHoldLamp,
+  SkipG31,
+  RapidOverride,
+  FeedOverride,
+  SpindleOverride,
+  StepMultiplier,
+  DryRun,
+  BlockSkip,
+  UserInput,
+  UserOutput,
+  OptionalStop,
+  SpindleJog,
+  BusSpindle,
+  BusSpindleGeared,
+  SpindleOrient,
+  SpindleOrientDone,
+  SpindleZeroSpeed,
+  SpindleSpeedReached,
+  SlaveRelease,
+  AxisJog,
+  AxisStep,
+  JogSpeed,
+  HomingStart,
+  HomingStartDir,
+  HomeDog,
+  HomingDoneLamp,
+  AxisEnable,
+  AxisReady,
+  AxisLock,
+  AxisMoveRelative,
+  AxisMoveAbsolute,
+  SecondSoftLimit,
+  PositiveLimitDog,
+  NegativeLimitDog,
+  ServoEnable,
+  AxisControlMode,
+  ReferencePoint,
+  AxisHoming,
+  AxisMoving,
+  Alarm,
+  ResetRequested,
+  ResetClear,
+  Count_
+};
+
+constexpr int kOpCount = static_cast<int>(Op::Count_);
+
+/// How an instruction moves the ST / MS stacks (DIALECT.md 3 and 5).
+enum class StackRule : uint8_t {
+  Push,       ///< LD-type: push a bit
+  Combine,    ///< AND/OR-type: ST0 := ST0 op bit; needs depth >= 1
+  BlockPop,   ///< ANB/ORB: pop one, combine into ST0; needs depth >= 2
+  MpsPush,    ///< MPS: MS push ST0
+  MsRead,     ///< MRD: ST0 := top(MS)
+  MsPop,      ///< MPP: ST0 := pop(MS)
+  Coil,       ///< OUT/OOUT/SET/RST: read ST0, leave ST; needs depth >= 1
+  Structural, ///< IEND/1END/2END/SP/SPE/LBL/LOOP/NEXT: both stacks emptied
+  Block,      ///< function block: input(s) from ST, output by OutputRule
+};
+
+/// Whether a block needs a power-flow input (前置).
+enum class InputRule : uint8_t { None, Optional, Required };
+
+/// What a block leaves in ST (后置), applied after popping its `inputs`.
+enum class OutputRule : uint8_t {
+  None,    ///< leaves ST unchanged (后置 ×); with an empty ST nothing is pushed
+  Enable,  ///< ST0 := EN (math/move pass-through; DIV by zero gives 0)
+  Compare, ///< ST0 := EN and condition
+  Result,  ///< ST0 := the block's own result (timers, PLS/PLF/ALT)
+};
+
+/// Kind of persistent state an instruction instance owns. Words: two consecutive
+/// lj_state.inst_word entries per instance (slot, slot + 1).
+enum class StateKind : uint8_t { None, Edge, Timer, Counter, Pls, Plf, Alt, Words };
+
+/// Which part of the engines implements an instruction (interpreter and lowering dispatch on
+/// it): Core = the original set, Data = data operations, Nc = NC services (host callbacks,
+/// chapter-4 CNC blocks), Cnc = chapter-6 blocks driven by the CNC F/G table.
+enum class Family : uint8_t { Core, Data, Nc, Cnc };
+
+/// Most operands an instruction takes (PTN / NTP).
+constexpr int kMaxOperands = 9;
+
+/// An inclusive range of constant values.
+struct ValueRange {
+  int32_t lo, hi;
+};
+
+/// Operand position: which syntactic forms and areas are accepted.
+struct OperandSpec {
+  const char *role;    ///< shown in diagnostics ("destination", "preset"...)
+  AreaMask areas;      ///< registers (or bit addresses) allowed; L / S for labels, subroutines
+  bool isBit;          ///< a bit address `A12.3` (contacts, coils)
+  bool constOk;        ///< a decimal/hex constant is accepted
+  int64_t cmin, cmax;  ///< constant range (inclusive)
+  bool writes;         ///< the instruction writes this operand (areas must be writable)
+  bool wordOk = false; ///< isBit positions only: a whole register is accepted too (ZRST)
+  /// Register operands: consecutive elements the operand touches (a P parameter block, a byte
+  /// pair); the verifier checks the last one exists, the generator keeps room for them.
+  uint8_t span = 1;
+  /// Constants: when not empty, the only values accepted (cmin..cmax has gaps).
+  std::span<const ValueRange> values = {};
+};
+
+/// Whether constant `v` is one of `spec`'s values (always, when the spec has no value set).
+inline bool inValueSet(const OperandSpec &spec, int64_t v) {
+  if (spec.values.empty()) return true;
+  for (const ValueRange &r : spec.values)
+    if (v >= r.lo && v <= r.hi) return true;
+  return false;
+}
+
+/// One row of the instruction table.
+struct InstrInfo {
+  Op op;
+  const char *name; ///< the semantic name (the enumerator), for dumps and messages
+  Family family;    ///< which part of the engines implements it
+  StackRule stack;
+  InputRule input;
+  uint8_t inputs; ///< ST entries a block consumes (1, or 2/4 for counters)
+  OutputRule output;
+  StateKind state;
+  uint8_t operandCount;
+  OperandSpec operands[kMaxOperands];
+  const char *summary;
+};
+
+/// The row of `op`.
+const InstrInfo &instrInfo(Op op);
+
+/// All rows, in Op order.
+std::span<const InstrInfo> instrTable();
+
+/// Family of `op` (the row's column).
+inline Family opFamily(Op op) { return instrInfo(op).family; }
+
+/// Whether `op` is a contact (a basic push or combine of one bit operand, edge contacts
+/// included): the instructions an online-monitor force applies to (hnc8-core.md 6.1 RESOLUTION
+/// (a), Stmt::force).
+inline bool isContact(Op op) {
+  const InstrInfo &r = instrInfo(op);
+  return r.family == Family::Core &&
+         (r.stack == StackRule::Push || r.stack == StackRule::Combine) && r.operandCount == 1 &&
+         r.operands[0].isBit;
+}
+
+// Area groups used by the table and by tests.
+constexpr AreaMask kContactAreas =
+    areas(Area::Input, Area::Output, Area::NcStatus, Area::NcControl, Area::Relay, Area::Word,
+          Area::DWord, Area::Retained, Area::Param, Area::Timer, Area::Counter);
+constexpr AreaMask kCoilAreas =
+    areas(Area::Output, Area::NcControl, Area::Relay, Area::Word, Area::DWord, Area::Retained);
+constexpr AreaMask kSrcAreas =
+    areas(Area::Input, Area::Output, Area::NcStatus, Area::NcControl, Area::Relay, Area::Word,
+          Area::DWord, Area::Retained, Area::Param);
+constexpr AreaMask kDstAreas = kCoilAreas;
+
+} // namespace lj

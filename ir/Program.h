@@ -1,0 +1,120 @@
+// The program model handed between stages (STYLE.md 5): source -> ParsedProgram ->
+// VerifiedProgram. Checkers observe, lowerers transform; these types carry no behaviour.
+#pragma once
+
+#include "ir/Area.h"
+#include "ir/OpTable.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lj {
+
+/// A position in the source text (1-based line and column).
+struct SourceLoc {
+  int32_t line = 0;
+  int32_t col = 0;
+};
+
+/// One operand as written: a constant, a register `D5`, a bit `X1.0`, a label `L3`, a
+/// subroutine `S7`. Constants keep their value in `value`; registers their index.
+struct Operand {
+  enum class Kind : uint8_t { None, Const, Reg, Bit } kind = Kind::None;
+  Area area = Area::None; ///< for Reg/Bit (L and S operands are Reg in area L / S)
+  int32_t index = 0;      ///< element number (Reg/Bit)
+  int8_t bit = -1;        ///< bit number (Bit)
+  int32_t value = 0;      ///< constant value (Const)
+  SourceLoc loc;
+};
+
+/// One STL statement.
+struct Stmt {
+  Op op = Op::LoadTrue;
+  uint8_t operandCount = 0;
+  std::array<Operand, kMaxOperands> ops{};
+  SourceLoc loc;
+  /// Online-monitor force of a contact (LD..ORF, hnc8-core.md 6.1 RESOLUTION (a)): -1 none,
+  /// 0/1 = the contact conducts that constant (NO/NC and edge ignored; an edge contact still
+  /// updates its memory with the real bit). Set only by `ladderjit serve` (docs/serve.md).
+  int8_t force = -1;
+};
+
+/// How the core words an operation or an operand in a message: in the dialect the program was
+/// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
+struct DialectText {
+  const char *name;                              ///< "hnc8"
+  const char *(*spell)(Op);                      ///< the mnemonic of an operation
+  std::string (*formatOperand)(const Operand &); ///< an operand as source text
+};
+
+/// The mnemonic of `op` in `d`, or its semantic name without a dialect.
+inline const char *spelling(const DialectText *d, Op op) {
+  return d ? d->spell(op) : instrInfo(op).name;
+}
+
+/// A line the parser dropped although its mnemonic was known (bad operands or count). The
+/// verifier applies its stack effect, silently, so one bad operand causes no follow-on errors.
+struct DroppedStmt {
+  int32_t before = 0; ///< index in ParsedProgram::stmts of the next kept statement
+  Op op = Op::LoadTrue;
+};
+
+/// What the parser produces: statements in source order (markers included).
+struct ParsedProgram {
+  std::string file;                     ///< name used in diagnostics
+  const DialectText *dialect = nullptr; ///< the front end that read it
+  std::vector<Stmt> stmts;
+  std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
+};
+
+/// A half-open range of statement indices [begin, end).
+struct StmtRange {
+  int32_t begin = 0;
+  int32_t end = 0;
+  bool empty() const { return begin >= end; }
+};
+
+/// Facts the verifier computes for one statement.
+struct StmtInfo {
+  int32_t depth = 0;     ///< ST depth before the statement (statically known)
+  int32_t msDepth = 0;   ///< MS depth before the statement
+  int32_t target = -1;   ///< JMP: index of its LBL; LOOP: index of its NEXT; NEXT: its LOOP;
+                         ///< CALL: index into VerifiedProgram::subs
+  int32_t slot = -1;     ///< edge slot (LDP..ORF, CTR, EVENT, SAVEDATA), timer/counter slot
+                         ///< (lj_tc_slot), PLS/PLF/ALT number, or first inst_word (Words)
+  bool hasInput = false; ///< a block reads ST0 (false: ST empty, input is 1)
+  bool backward = false; ///< JMP whose label comes before it (counts a watchdog step)
+};
+
+/// A subroutine `SP Sn ... SPE`: body = statements strictly between SP and SPE.
+struct Subroutine {
+  int32_t number = 0;
+  int32_t spIndex = 0;
+  StmtRange body;
+};
+
+/// A verified program: every fact the engines need, computed once by the front end.
+struct VerifiedProgram {
+  std::string file;
+  const DialectText *dialect = nullptr; ///< copied from ParsedProgram
+  std::vector<Stmt> stmts;
+  std::vector<StmtInfo> info; ///< parallel to stmts
+  StmtRange init;             ///< statements of the init part (markers excluded)
+  StmtRange plc1;
+  StmtRange plc2;
+  std::vector<Subroutine> subs;
+  std::array<int16_t, 512> subByNumber; ///< S number -> index into subs, -1 if undefined
+  /// PLC2 slices, in order; at least one (possibly empty). Their union is `plc2`.
+  std::vector<StmtRange> slices;
+  /// ST depth at the start of each slice (entries left by the previous slice are dead).
+  std::vector<int32_t> sliceDepth;
+  int32_t edgeSlots = 0;    ///< edge slots used (<= LJ_EDGE_SLOTS)
+  int32_t wordSlots = 0;    ///< inst_word entries used (<= LJ_INST_WORDS)
+  int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
+  int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)
+  int32_t maxMsDepth = 0;
+};
+
+} // namespace lj

@@ -1,0 +1,103 @@
+// PLC2 slice planning (DIALECT.md 4, dialect-notes "PLC2 slicing"): a slice ends at the first
+// rung boundary after at least plc2_nvalue statements. A rung boundary before statement i: MS
+// empty, no ST entry present there read later (before the next stack reset), not inside a loop
+// body, not between a JMP and its label.
+#include "verify/VerifierInternal.h"
+
+#include <climits>
+
+namespace lj::verifier {
+
+namespace {
+
+/// How many ST entries (from the top) statement `s` reads, given the depth before it.
+/// MRD/MPP overwrite ST0 without reading it; pushes read nothing.
+int32_t reads(const Stmt &s, int32_t depth) {
+  const InstrInfo &ii = instrInfo(s.op);
+  switch (ii.stack) {
+  case StackRule::Push:
+  case StackRule::MsRead:
+  case StackRule::MsPop:
+  case StackRule::Structural:
+    return 0;
+  case StackRule::Combine:
+  case StackRule::MpsPush:
+  case StackRule::Coil:
+    return 1;
+  case StackRule::BlockPop:
+    return 2;
+  case StackRule::Block:
+    return std::min<int32_t>(ii.inputs, depth);
+  }
+  return 0;
+}
+
+} // namespace
+
+void planSlices(Context &cx) {
+  VerifiedProgram &p = cx.prog;
+  const StmtRange r = p.plc2;
+  p.slices.clear();
+  p.sliceDepth.clear();
+  if (r.empty() || cx.opts.plc2Nvalue <= 0) {
+    p.slices.push_back(r);
+    p.sliceDepth.push_back(0);
+    return;
+  }
+  auto len = static_cast<size_t>(r.end - r.begin);
+  auto rel = [&](int32_t i) { return static_cast<size_t>(i - r.begin); };
+
+  // lowest[i]: the lowest ST position (from the bottom) read by statement i or any later one
+  // before the next stack reset. The first statement to touch an entry present before i is
+  // always the one reading the top entry (deeper ones can only be reached by popping, which
+  // reads), so the entries before i are all dead exactly when lowest[i] >= depth(i).
+  std::vector<int32_t> lowest(len + 1, INT32_MAX);
+  for (int32_t i = r.end - 1; i >= r.begin; --i) {
+    const Stmt &s = cx.stmt(i);
+    int32_t d = p.info[static_cast<size_t>(i)].depth;
+    if (instrInfo(s.op).stack == StackRule::Structural) {
+      lowest[rel(i)] = INT32_MAX;
+      continue;
+    }
+    int32_t k = reads(s, d);
+    int32_t lo = k > 0 ? d - k : INT32_MAX;
+    lowest[rel(i)] = std::min(lo, lowest[rel(i) + 1]);
+  }
+
+  // Positions covered by a loop body or a JMP..LBL span: cover[i] > 0 forbids a boundary
+  // before i. A body covers (LOOP, NEXT]; a jump span covers (min, max].
+  std::vector<int32_t> cover(len + 1, 0);
+  auto span = [&](int32_t a, int32_t b) {
+    if (b < r.begin || a >= r.end) return;
+    a = std::max(a, r.begin - 1);
+    b = std::min(b, r.end - 1);
+    ++cover[rel(a + 1)];
+    --cover[rel(b + 1)];
+  };
+  for (const auto &[a, b] : cx.jumpSpans) span(a, b);
+  for (int32_t i = r.begin; i < r.end; ++i)
+    if (cx.stmt(i).op == Op::LoopBegin && p.info[static_cast<size_t>(i)].target > i)
+      span(i, p.info[static_cast<size_t>(i)].target);
+  for (size_t i = 1; i <= len; ++i) cover[i] += cover[i - 1];
+
+  auto boundary = [&](int32_t i) {
+    const StmtInfo &in = p.info[static_cast<size_t>(i)];
+    return in.msDepth == 0 && cover[rel(i)] == 0 && lowest[rel(i)] >= in.depth;
+  };
+
+  const int64_t n = cx.opts.plc2Nvalue;
+  int32_t start = r.begin;
+  int32_t i = r.begin;
+  while (true) {
+    i = static_cast<int32_t>(std::min<int64_t>(std::max<int64_t>(i, start + n), r.end));
+    while (i < r.end && !boundary(i)) ++i;
+    if (i >= r.end) break;
+    p.slices.push_back({start, i});
+    p.sliceDepth.push_back(p.info[static_cast<size_t>(start)].depth);
+    start = i;
+  }
+  p.slices.push_back({start, r.end});
+  p.sliceDepth.push_back(p.info[static_cast<size_t>(start)].depth);
+}
+
+} // namespace lj::verifier

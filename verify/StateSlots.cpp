@@ -1,0 +1,136 @@
+// State slots of instruction instances: edge bits (LDP..ORF, CTR) numbered in statement order,
+// timer/counter slots (lj_tc_slot) with the one-kind-per-number rule, and PLS/PLF/ALT block
+// numbers (DIALECT.md 3, 6; dialect-notes "Function blocks").
+#include "verify/VerifierInternal.h"
+
+#include "ir/Profile.h"
+
+#include "ladderjit/abi.h"
+
+#include <array>
+#include <span>
+#include <string>
+
+namespace lj::verifier {
+
+namespace {
+
+/// First user of each slot of one family (timers, counters, or one block mnemonic).
+class SlotUsers {
+public:
+  SlotUsers() { first_.fill(-1); }
+  int32_t &operator[](size_t slot) { return first_[slot]; }
+
+private:
+  std::array<int32_t, LJ_BLOCK_SLOTS> first_{};
+};
+
+std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
+
+/// Timers (TMRB/STMR) and counters (CTRC/CTUD): T/C numbers, one instruction kind per number.
+void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, Area area) {
+  const Stmt &s = cx.stmt(i);
+  int32_t n = s.ops[0].value;
+  int slot = lj_tc_slot(n);
+  const char letter = areaInfo(area).letter;
+  std::string name = std::string(1, letter) + std::to_string(n);
+  if (slot < 0) {
+    // The number spaces of the profile, e.g. "T0..T127, T300..T427".
+    const TargetProfile &tp = targetProfile();
+    std::string spaces;
+    for (const NumberRange &r : area == Area::Timer ? tp.timerNumbers : tp.counterNumbers)
+      spaces += (spaces.empty() ? "" : ", ") + std::string(1, letter) + std::to_string(r.lo) +
+                ".." + letter + std::to_string(r.hi);
+    cx.error(s.ops[0].loc, std::string(family) + " number " + std::to_string(n) +
+                               " is not valid (" + spaces + ")");
+    return;
+  }
+  cx.info(i).slot = slot;
+  int32_t &first = users[static_cast<size_t>(slot)];
+  if (first < 0) {
+    first = i;
+    return;
+  }
+  const Stmt &f = cx.stmt(first);
+  if (f.op != s.op) {
+    cx.error(s.ops[0].loc, std::string(family) + " " + name + " is used by both " + cx.spell(f.op) +
+                               " (" + lineText(f) + ") and " + cx.spell(s.op));
+    cx.note(f.ops[0].loc, name + " is first used here");
+  } else {
+    cx.warning(s.ops[0].loc, std::string(family) + " " + name + " is also used on " + lineText(f) +
+                                 "; both instructions share its state");
+  }
+}
+
+/// The operations that own an edge bit, as the error about running out of them names them.
+constexpr Op kEdgeOps[] = {Op::LoadRise, Op::LoadFall, Op::AndRise,        Op::AndFall,
+                           Op::OrRise,   Op::OrFall,   Op::RegisterCounter};
+
+std::string spellAll(const Context &cx, std::span<const Op> ops) {
+  std::string out;
+  for (Op op : ops) out += (out.empty() ? "" : "/") + std::string(cx.spell(op));
+  return out;
+}
+
+} // namespace
+
+void assignSlots(Context &cx) {
+  // Edge memory per instruction instance is the one policy the engines implement (HNC-8); a
+  // per-object policy (IEC IL) would key the edge slots by address here.
+  if (targetProfile().edgePolicy != EdgePolicy::PerInstance) {
+    cx.error({}, std::string("target ") + targetProfile().name +
+                     ": edge memory per object is not implemented");
+    return;
+  }
+  SlotUsers timers, counters, pls, plf, alt;
+  int32_t edges = 0, words = 0;
+  auto n = static_cast<int32_t>(cx.prog.stmts.size());
+  for (int32_t i = 0; i < n; ++i) {
+    const Stmt &s = cx.stmt(i);
+    const InstrInfo &ii = instrInfo(s.op);
+    switch (ii.state) {
+    case StateKind::None:
+      break;
+    case StateKind::Edge:
+      // One edge bit per instruction instance, in statement order.
+      cx.info(i).slot = edges++;
+      if (edges == LJ_EDGE_SLOTS + 1)
+        cx.error(s.loc, "too many edge instructions (more than " + std::to_string(LJ_EDGE_SLOTS) +
+                            " " + spellAll(cx, kEdgeOps) + ")");
+      break;
+    case StateKind::Timer:
+      timerCounter(cx, i, timers, "timer", Area::Timer);
+      break;
+    case StateKind::Counter:
+      timerCounter(cx, i, counters, "counter", Area::Counter);
+      break;
+    case StateKind::Words:
+      // Two per-instance words (lj_state.inst_word), in statement order.
+      cx.info(i).slot = words;
+      words += 2;
+      if (words > LJ_INST_WORDS && words <= LJ_INST_WORDS + 2)
+        cx.error(s.loc, "too many stateful CNC blocks (more than " +
+                            std::to_string(LJ_INST_WORDS / 2) + " " + cx.spell(Op::ToolLife) + ")");
+      break;
+    case StateKind::Pls:
+    case StateKind::Plf:
+    case StateKind::Alt: {
+      SlotUsers &users = ii.state == StateKind::Pls ? pls : ii.state == StateKind::Plf ? plf : alt;
+      auto num = static_cast<size_t>(s.ops[0].value); // 0..511, checked by the parser
+      cx.info(i).slot = s.ops[0].value;
+      if (users[num] < 0) {
+        users[num] = i;
+      } else {
+        cx.warning(s.ops[0].loc, std::string(cx.spell(ii.op)) + " block " + std::to_string(num) +
+                                     " is also used on " + lineText(cx.stmt(users[num])) +
+                                     "; both instructions share its state");
+      }
+      break;
+    }
+    }
+  }
+  cx.prog.edgeSlots = edges;
+  cx.prog.wordSlots = words;
+}
+
+} // namespace lj::verifier
