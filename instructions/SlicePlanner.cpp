@@ -2,37 +2,12 @@
 // rung boundary after at least plc2_nvalue statements. A rung boundary before statement i: MS
 // empty, no ST entry present there read later (before the next stack reset), not inside a loop
 // body, not between a JMP and its label.
+#include "instructions/StackEffect.h"
 #include "instructions/VerifierInternal.h"
 
 #include <climits>
 
 namespace lj::verifier {
-
-namespace {
-
-/// How many ST entries (from the top) statement `s` reads, given the depth before it.
-/// MRD/MPP overwrite ST0 without reading it; pushes read nothing.
-int32_t reads(const Stmt &s, int32_t depth) {
-  const InstrInfo &ii = instrInfo(s.op);
-  switch (ii.stack) {
-  case StackRule::Push:
-  case StackRule::MsRead:
-  case StackRule::MsPop:
-  case StackRule::Structural:
-    return 0;
-  case StackRule::Combine:
-  case StackRule::MpsPush:
-  case StackRule::Coil:
-    return 1;
-  case StackRule::BlockPop:
-    return 2;
-  case StackRule::Block:
-    return std::min<int32_t>(ii.inputs, depth);
-  }
-  return 0;
-}
-
-} // namespace
 
 void planSlices(Context &cx) {
   VerifiedProgram &p = cx.prog;
@@ -59,7 +34,7 @@ void planSlices(Context &cx) {
       lowest[rel(i)] = INT32_MAX;
       continue;
     }
-    int32_t k = reads(s, d);
+    int32_t k = stackEffect(instrInfo(s.op), d).reads;
     int32_t lo = k > 0 ? d - k : INT32_MAX;
     lowest[rel(i)] = std::min(lo, lowest[rel(i) + 1]);
   }

@@ -185,6 +185,9 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   verifier::checkCallGraph(cx);
   if (diags.errorCount() > errorsBefore) return std::nullopt;
   verifier::planSlices(cx);
+  verifier::planRungs(cx);
+  prog.comments = parsed.comments;
+  prog.symbols = parsed.symbols;
   return prog;
 }
 
