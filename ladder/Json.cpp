@@ -11,7 +11,7 @@ namespace lj::ladder {
 
 namespace {
 
-using nlohmann::json;
+using json = nlohmann::ordered_json; // members in the order written: "type" first
 
 const char *const kContact[] = {"no", "nc", "rise", "fall", "true"};
 const char *const kEntry[] = {"auto", "direct", "mps", "mrd", "mpp"};
@@ -36,6 +36,10 @@ json elemJson(const Element &e, bool withInstr) {
 
 json nodeJson(const Node &n) {
   json j;
+  auto withElem = [&](const char *type, const Element &e, bool instr) {
+    j["type"] = type;
+    for (auto &[k, v] : elemJson(e, instr).items()) j[k] = v;
+  };
   switch (n.kind) {
   case NodeKind::Series:
   case NodeKind::Parallel: {
@@ -56,17 +60,15 @@ json nodeJson(const Node &n) {
     break;
   }
   case NodeKind::Contact:
-    j = elemJson(n.elem, false);
     j["type"] = "contact";
     j["contact"] = kContact[static_cast<int>(n.contact)];
+    for (auto &[k, v] : elemJson(n.elem, false).items()) j[k] = v;
     break;
   case NodeKind::Coil:
-    j = elemJson(n.elem, true);
-    j["type"] = "coil";
+    withElem("coil", n.elem, true);
     break;
   case NodeKind::Box: {
-    j = elemJson(n.elem, true);
-    j["type"] = "box";
+    withElem("box", n.elem, true);
     if (n.rail) j["rail"] = true;
     if (!n.children.empty()) {
       json c = json::array();

@@ -13,9 +13,16 @@ bool isLeaf(const Node &n) {
          (n.kind == NodeKind::Box && n.children.empty());
 }
 
+/// The symbol table of the networks being rendered (renderText), to name operands written as
+/// plain addresses.
+thread_local const std::vector<Symbol> *gSymbols = nullptr;
+
 std::string operandText(const Element &e, size_t k) {
   std::string t = e.operands[k];
-  if (k < e.symbols.size() && !e.symbols[k].empty()) t += "<" + e.symbols[k] + ">";
+  if (k < e.symbols.size() && !e.symbols[k].empty()) return t + "<" + e.symbols[k] + ">";
+  if (gSymbols)
+    for (const Symbol &s : *gSymbols)
+      if (s.address == t) return t + "<" + s.name + ">";
   return t;
 }
 
@@ -133,6 +140,7 @@ std::string stmtText(const Element &e) {
 
 std::string renderText(const Networks &nets) {
   std::string out;
+  gSymbols = &nets.symbols;
   for (const Part &p : nets.parts) {
     out += "=== " + p.name + " ===\n";
     for (size_t r = 0; r < p.rungs.size(); ++r) {
@@ -156,6 +164,7 @@ std::string renderText(const Networks &nets) {
     }
   }
   for (const std::string &c : nets.trailingComments) out += "; " + c + "\n";
+  gSymbols = nullptr;
   return out;
 }
 

@@ -1,54 +1,12 @@
 // Where a long body may be cut into separate LLVM functions (compile time stays linear in the
-// program size). A cut needs no live ST entry, an empty MS, and no loop or jump across it; the
-// entries still on ST there are dead and the next function starts them as 0.
+// program size). A cut needs a rung boundary (VerifiedProgram::rungs: no live ST entry, an empty
+// MS) and no loop or jump across it; the entries still on ST there are dead and the next
+// function starts them as 0.
 #include "lowering/FunctionEmitter.h"
 
 #include <algorithm>
-#include <set>
 
 namespace lj::lower {
-
-namespace {
-
-// Backward liveness of ST positions (0 = bottom): which entries present before statement i are
-// read by a later statement before being overwritten or reset.
-void liveTransfer(const Stmt &s, int32_t d, std::set<int32_t> &live) {
-  const InstrInfo &row = instrInfo(s.op);
-  switch (row.stack) {
-  case StackRule::Push:
-    live.erase(d);
-    break;
-  case StackRule::Combine:
-  case StackRule::MpsPush:
-  case StackRule::Coil:
-    live.insert(d - 1);
-    break;
-  case StackRule::BlockPop:
-    live.insert(d - 1);
-    live.insert(d - 2);
-    break;
-  case StackRule::MsRead:
-  case StackRule::MsPop:
-    live.erase(d - 1);
-    break;
-  case StackRule::Structural:
-    live.clear();
-    break;
-  case StackRule::Block: {
-    const int32_t k = row.inputs;
-    const bool writes = row.output != OutputRule::None;
-    if (d >= k && d > 0) {
-      if (writes) live.erase(d - k);
-      for (int32_t p = d - k; p < d; ++p) live.insert(p);
-    } else if (writes) {
-      live.erase(d);
-    }
-    break;
-  }
-  }
-}
-
-} // namespace
 
 std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target) {
   const int32_t n = r.end - r.begin;
@@ -76,11 +34,13 @@ std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t
     open += spans[j];
     if (open > 0) ok[j] = 0;
   }
-  std::set<int32_t> live;
-  for (int32_t i = r.end - 1; i >= r.begin; --i) {
-    liveTransfer(p.stmts[i], p.info[i].depth, live);
-    if (!live.empty()) ok[i - r.begin] = 0;
-  }
+  // Only at a rung start (VerifiedProgram::rungs): MS empty, every ST entry present dead.
+  std::vector<char> rungStart(static_cast<size_t>(n), 0);
+  for (const RungRange &rr : p.rungs)
+    if (rr.range.begin >= r.begin && rr.range.begin < r.end)
+      rungStart[rr.range.begin - r.begin] = 1;
+  for (int32_t j = 0; j < n; ++j)
+    if (!rungStart[j]) ok[j] = 0;
   std::vector<StmtRange> out;
   int32_t start = r.begin;
   for (int32_t i = r.begin + 1; i < r.end; ++i) {
