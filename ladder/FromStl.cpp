@@ -5,9 +5,13 @@
 
 #include "instructions/FrontEnd.h"
 
+#include <algorithm>
+
 namespace lj::ladder {
 
 namespace {
+
+constexpr int kMaxNetworkDepth = 1000; ///< the JSON reader accepts 2000
 
 ContactKind contactKind(Op op) {
   switch (op) {
@@ -77,7 +81,7 @@ public:
       out = series({zeroNode_});
       return true;
     }
-    if (st_.size() != 1) return false;
+    if (st_.size() != 1 || depth(st_[0].net) > kMaxNetworkDepth) return false;
     out = std::move(st_[0].net);
     simplify(out);
     return true;
@@ -265,6 +269,19 @@ private:
     b.join = Join::Inline;
     open(st_.back().net, hops).children.push_back(std::move(b));
     return true;
+  }
+
+  /// Nesting depth of a network (deeper ones stay STL rungs; the JSON reader has a limit).
+  static int depth(const Node &n) {
+    int d = 0;
+    std::vector<std::pair<const Node *, int>> todo{{&n, 1}};
+    while (!todo.empty()) {
+      auto [x, k] = todo.back();
+      todo.pop_back();
+      d = std::max(d, k);
+      for (const Node &c : x->children) todo.push_back({&c, k + 1});
+    }
+    return d;
   }
 
   /// Drops the empty continuation a last output leaves, and a fan-out left with one direct
