@@ -38,7 +38,8 @@ json nodeJson(const Node &n) {
   json j;
   auto withElem = [&](const char *type, const Element &e, bool instr) {
     j["type"] = type;
-    for (auto &[k, v] : elemJson(e, instr).items()) j[k] = v;
+    json fields = elemJson(e, instr); // named: items() of a temporary would dangle
+    for (auto &[k, v] : fields.items()) j[k] = v;
   };
   switch (n.kind) {
   case NodeKind::Series:
@@ -62,7 +63,10 @@ json nodeJson(const Node &n) {
   case NodeKind::Contact:
     j["type"] = "contact";
     j["contact"] = kContact[static_cast<int>(n.contact)];
-    for (auto &[k, v] : elemJson(n.elem, false).items()) j[k] = v;
+    {
+      json fields = elemJson(n.elem, false);
+      for (auto &[k, v] : fields.items()) j[k] = v;
+    }
     break;
   case NodeKind::Coil:
     withElem("coil", n.elem, true);
