@@ -2,6 +2,7 @@
 // valid program and stimulus, interpreter and JIT in lock step; mismatches minimized and printed.
 #include "fuzz/Fuzz.h"
 #include "fuzz/Differential.h"
+#include "fuzz/RoundTrip.h"
 
 #include "bench/Rng.h"
 
@@ -125,6 +126,15 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
 }
 
 uint64_t run(const FuzzOptions &opts, std::ostream &out) {
+  if (opts.roundTrip) {
+    out << "round trip: interpreter on each program against the interpreter on its ladder "
+           "round trip (STL -> networks -> JSON -> networks -> STL)\n";
+    auto counts = std::make_shared<ladder::RungCounts>();
+    FuzzStats st = runWith(opts, out, roundTripFactory(counts));
+    out << "round trip rungs: ladder " << counts->ladder << ", stl " << counts->stl << ", marker "
+        << counts->marker << "\n";
+    return st.failures();
+  }
   if (!haveJit()) {
     out << "error: ladderjit fuzz needs the JIT, but this build has no ladderjit_jit target; "
            "rebuild with the jit/ library to run the differential fuzzer\n";

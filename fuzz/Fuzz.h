@@ -28,6 +28,9 @@ struct FuzzOptions {
   bool minimize = true;             ///< delta-debug mismatches before printing them
   uint32_t minimizeBudget = 1500;   ///< engine runs per minimization
   uint32_t maxReports = 3;          ///< mismatches printed in full; later ones are only counted
+  /// Engine under test: the interpreter on the program's ladder round trip instead of the JIT
+  /// (fuzz/RoundTrip.h).
+  bool roundTrip = false;
 };
 
 /// Campaign counters, also printed as the summary.

@@ -5,6 +5,7 @@
 #include "io/AotLoader.h"
 #include "io/InputFiles.h"
 #include "ir/Diagnostics.h"
+#include "ladder/Json.h"
 
 namespace lj::io {
 
@@ -33,6 +34,16 @@ bool readProgramFile(const std::string &path, ProgramSource &src, std::string &e
   std::string text;
   if (!readFile(path, text, error)) return false;
   src.fileHash = sha256Hash(text);
+  if (path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0) {
+    auto lad = std::make_shared<ladder::StlFromJson>();
+    if (!ladder::stlFromJson(text, *lad, error)) {
+      error = path + ": " + error;
+      return false;
+    }
+    src.text = lad->text;
+    src.ladder = std::move(lad);
+    return true;
+  }
   bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
   if (!looksLikeDit(text) && !named) {
     src.text = std::move(text);
@@ -54,9 +65,14 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
   Diagnostics diags(src.path);
   VerifyOptions opts;
   opts.plc2Nvalue = plc2Nvalue;
-  const SymbolTable *symbols = src.dit ? &src.dit->symbols : nullptr;
+  const SymbolTable *symbols = src.dit      ? &src.dit->symbols
+                               : src.ladder ? &src.ladder->symbols
+                                            : nullptr;
   std::optional<VerifiedProgram> prog = compileFrontEnd(src.text, src.path, opts, diags, symbols);
-  diagnostics = capLines(diags.render(), kMaxDiagnosticLines, src.path);
+  diagnostics =
+      capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
+               kMaxDiagnosticLines, src.path);
+  if (prog && src.ladder) ladder::applyOrigins(*prog, *src.ladder);
   if (prog && !diags.hasErrors()) return prog;
   if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
     diagnostics += src.path + ": error: program rejected without a diagnostic\n";
@@ -64,6 +80,12 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
 }
 
 std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {
+  if (src.ladder) { // the names in the generated STL stand for what the JSON's table says
+    std::string text = src.text;
+    for (const Symbol &s : src.ladder->symbols.symbols())
+      text += "\n;symbol " + s.name + " " + s.address;
+    return programHash(text, nullptr, plc2Nvalue);
+  }
   return programHash(src.text, src.dit ? &*src.dit : nullptr, plc2Nvalue);
 }
 

@@ -7,8 +7,13 @@
 #include "ir/Program.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+
+namespace lj::ladder {
+struct StlFromJson;
+}
 
 namespace lj::io {
 
@@ -18,10 +23,14 @@ struct ProgramSource {
   std::string text;           ///< what the STL parser reads (container: padded program)
   std::optional<DitFile> dit; ///< the container, when PROGRAM is one
   std::string fileHash;       ///< "sha256:..." of the file's bytes (serve's program identity)
+  /// A `.json` PROGRAM (ladder networks, docs/ladder-json.md): its symbols and line map; `text`
+  /// is the STL made from it.
+  std::shared_ptr<const ladder::StlFromJson> ladder;
 };
 
-/// Read PROGRAM into `src`. False (with `error`) for an unreadable file or a damaged container;
-/// a `.dit` name without the magic line is a damaged container, not STL.
+/// Read PROGRAM into `src` (a `.json` name: ladder network JSON). False (with `error`) for an
+/// unreadable file or a damaged container; a `.dit` name without the magic line is a damaged
+/// container, not STL.
 bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error);
 
 /// The PLC2 nvalue to plan with: the option when given, else the container's, else `option`.

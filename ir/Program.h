@@ -5,6 +5,8 @@
 #include "ir/Area.h"
 #include "ir/OpTable.h"
 
+#include "frontends/hnc8/Symbols.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -25,9 +27,14 @@ struct Operand {
   Area area = Area::None; ///< for Reg/Bit (L and S operands are Reg in area L / S)
   int32_t index = 0;      ///< element number (Reg/Bit)
   int8_t bit = -1;        ///< bit number (Bit)
+  int16_t symbol = -1;    ///< written as a symbol: index into the program's `symbols`
   int32_t value = 0;      ///< constant value (Const)
   SourceLoc loc;
 };
+
+/// Stable id of a statement within one program (its ordinal in source order for STL; carried
+/// through the ladder JSON and back, docs/ladder-json.md).
+using StmtId = int32_t;
 
 /// One STL statement.
 struct Stmt {
@@ -39,6 +46,17 @@ struct Stmt {
   /// 0/1 = the contact conducts that constant (NO/NC and edge ignored; an edge contact still
   /// updates its memory with the real bit). Set only by `ladderjit serve` (docs/serve.md).
   int8_t force = -1;
+  StmtId id = -1;
+};
+
+/// A comment as written (`;` or `//` to the end of the line; text after the marker, trailing
+/// blanks dropped). A comment on a line of its own belongs to the next statement (`stmt` is that
+/// statement's index, or the statement count at the end); a trailing one to its line's statement.
+struct Comment {
+  int32_t line = 0;
+  int32_t stmt = 0;
+  bool trailing = false;
+  std::string text;
 };
 
 /// How the core words an operation or an operand in a message: in the dialect the program was
@@ -67,6 +85,8 @@ struct ParsedProgram {
   const DialectText *dialect = nullptr; ///< the front end that read it
   std::vector<Stmt> stmts;
   std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
+  std::vector<Comment> comments;    ///< in source order
+  std::vector<Symbol> symbols;      ///< the symbol table the program was parsed with
 };
 
 /// A half-open range of statement indices [begin, end).
@@ -74,6 +94,14 @@ struct StmtRange {
   int32_t begin = 0;
   int32_t end = 0;
   bool empty() const { return begin >= end; }
+};
+
+/// A rung: a run of statements with no ST entry live across its start and MS empty there
+/// (verify/Rungs.cpp). Markers (IEND, 1END, 2END, SP, SPE, LBL, LOOP, NEXT) are rungs of
+/// their own. The ladder stage (ladder/) gives each logic rung its network.
+struct RungRange {
+  enum class Kind : uint8_t { Logic, Marker } kind = Kind::Logic;
+  StmtRange range;
 };
 
 /// Facts the verifier computes for one statement.
@@ -115,6 +143,11 @@ struct VerifiedProgram {
   int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
   int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)
   int32_t maxMsDepth = 0;
+  std::vector<Comment> comments; ///< as parsed
+  std::vector<Symbol> symbols;   ///< as parsed (Operand::symbol indexes it)
+  /// Every statement in exactly one rung, in order (Rungs.cpp). A slice boundary is always a
+  /// rung boundary.
+  std::vector<RungRange> rungs;
 };
 
 } // namespace lj

@@ -32,8 +32,9 @@ constexpr std::string_view kMagic = "LJOBJC1\n";
 constexpr size_t kMemoryLimit = size_t{64} << 20; ///< in-memory bytes before evicting the oldest
 
 // A new field in these types must be added to programDigest (else two programs differing only
-// in it would share cached code). The sizes are the reminder.
-static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 232 && sizeof(StmtInfo) == 20 &&
+// in it would share cached code). The sizes are the reminder. (Operand::symbol and Stmt::id
+// name what was written; they do not change the code.)
+static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 236 && sizeof(StmtInfo) == 20 &&
                   sizeof(Subroutine) == 16 && sizeof(StmtRange) == 8,
               "program model changed: update programDigest()");
 

@@ -1,54 +1,16 @@
 // Where a long body may be cut into separate LLVM functions (compile time stays linear in the
 // program size). No loop (one that stays inline) and no JMP..LBL span may cross a cut. A clean
-// cut has no live ST entry and an empty MS: the entries still on ST there are dead and the next
-// function starts them as 0. Where a body has no clean cut for long (one long rung, a deep MS),
-// a carried cut hands the live entries to the next function through the body's carry buffer.
+// cut is at a rung start (VerifiedProgram::rungs: no live ST entry, an empty MS): the entries
+// still on ST there are dead and the next function starts them as 0. Where a body has no rung
+// start for long (one long rung, a deep MS), a carried cut hands the live entries to the next
+// function through the body's carry buffer.
 #include "lowering/FunctionEmitter.h"
 
 #include <algorithm>
-#include <set>
 
 namespace lj::lower {
 
 namespace {
-
-// Backward liveness of ST positions (0 = bottom): which entries present before statement i are
-// read by a later statement before being overwritten or reset.
-void liveTransfer(const Stmt &s, int32_t d, std::set<int32_t> &live) {
-  const InstrInfo &row = instrInfo(s.op);
-  switch (row.stack) {
-  case StackRule::Push:
-    live.erase(d);
-    break;
-  case StackRule::Combine:
-  case StackRule::MpsPush:
-  case StackRule::Coil:
-    live.insert(d - 1);
-    break;
-  case StackRule::BlockPop:
-    live.insert(d - 1);
-    live.insert(d - 2);
-    break;
-  case StackRule::MsRead:
-  case StackRule::MsPop:
-    live.erase(d - 1);
-    break;
-  case StackRule::Structural:
-    live.clear();
-    break;
-  case StackRule::Block: {
-    const int32_t k = row.inputs;
-    const bool writes = row.output != OutputRule::None;
-    if (d >= k && d > 0) {
-      if (writes) live.erase(d - k);
-      for (int32_t p = d - k; p < d; ++p) live.insert(p);
-    } else if (writes) {
-      live.erase(d);
-    }
-    break;
-  }
-  }
-}
 
 // Lowest ST (ms = false) or MS position statement i may read, replace or pop (its depth when
 // it touches none). Structural statements are handled by the caller.
@@ -191,7 +153,6 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
     const Stmt &s = p.stmts[i];
     const StmtInfo &info = p.info[i];
     if (nest > 0) inLoop[i - r.begin] = 1;
-    if (info.msDepth != 0) carried[i - r.begin] = 1;
     if (s.op == Op::LoopBegin) ++nest;
     if (s.op == Op::LoopEnd) --nest;
     if (s.op == Op::Jump && info.target >= r.begin && info.target < r.end) {
@@ -207,11 +168,12 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
     open += spans[j];
     if (open > 0) inSpan[j] = 1;
   }
-  std::set<int32_t> live;
-  for (int32_t i = r.end - 1; i >= r.begin; --i) {
-    liveTransfer(p.stmts[i], p.info[i].depth, live);
-    if (!live.empty()) carried[i - r.begin] = 1;
-  }
+  // A cut anywhere but at a rung start (VerifiedProgram::rungs) carries the live entries.
+  std::fill(carried.begin(), carried.end(), 1);
+  for (const RungRange &rr : p.rungs)
+    if (rr.range.begin >= r.begin && rr.range.begin < r.end) carried[rr.range.begin - r.begin] = 0;
+  for (int32_t i = r.begin; i < r.end; ++i)
+    if (p.info[i].msDepth != 0) carried[i - r.begin] = 1;
   // Greedy: a clean cut once the chunk weighs `target` (statements of ordinary size); at twice
   // that without one, a carried cut, and at three times a cut inside JMP spans (rung-structured
   // code never needs either). A cut inside spans makes every jumped-to label (outside loops)

@@ -1,38 +1,10 @@
 // PLC2 slice planning (DIALECT.md 4, dialect-notes "PLC2 slicing"): a slice ends at the first
-// rung boundary after at least plc2_nvalue statements. A rung boundary before statement i: MS
-// empty, no ST entry present there read later (before the next stack reset), not inside a loop
-// body, not between a JMP and its label.
+// rung boundary after at least plc2_nvalue statements that is not inside a loop body nor between
+// a JMP and its label. Rung boundaries (MS empty, no ST entry present read later before the next
+// stack reset) come from VerifiedProgram::rungs (Rungs.cpp).
 #include "verify/VerifierInternal.h"
 
-#include <climits>
-
 namespace lj::verifier {
-
-namespace {
-
-/// How many ST entries (from the top) statement `s` reads, given the depth before it.
-/// MRD/MPP overwrite ST0 without reading it; pushes read nothing.
-int32_t reads(const Stmt &s, int32_t depth) {
-  const InstrInfo &ii = instrInfo(s.op);
-  switch (ii.stack) {
-  case StackRule::Push:
-  case StackRule::MsRead:
-  case StackRule::MsPop:
-  case StackRule::Structural:
-    return 0;
-  case StackRule::Combine:
-  case StackRule::MpsPush:
-  case StackRule::Coil:
-    return 1;
-  case StackRule::BlockPop:
-    return 2;
-  case StackRule::Block:
-    return std::min<int32_t>(ii.inputs, depth);
-  }
-  return 0;
-}
-
-} // namespace
 
 void planSlices(Context &cx) {
   VerifiedProgram &p = cx.prog;
@@ -47,22 +19,10 @@ void planSlices(Context &cx) {
   auto len = static_cast<size_t>(r.end - r.begin);
   auto rel = [&](int32_t i) { return static_cast<size_t>(i - r.begin); };
 
-  // lowest[i]: the lowest ST position (from the bottom) read by statement i or any later one
-  // before the next stack reset. The first statement to touch an entry present before i is
-  // always the one reading the top entry (deeper ones can only be reached by popping, which
-  // reads), so the entries before i are all dead exactly when lowest[i] >= depth(i).
-  std::vector<int32_t> lowest(len + 1, INT32_MAX);
-  for (int32_t i = r.end - 1; i >= r.begin; --i) {
-    const Stmt &s = cx.stmt(i);
-    int32_t d = p.info[static_cast<size_t>(i)].depth;
-    if (instrInfo(s.op).stack == StackRule::Structural) {
-      lowest[rel(i)] = INT32_MAX;
-      continue;
-    }
-    int32_t k = reads(s, d);
-    int32_t lo = k > 0 ? d - k : INT32_MAX;
-    lowest[rel(i)] = std::min(lo, lowest[rel(i) + 1]);
-  }
+  // Rung starts (Rungs.cpp, planned before this): MS empty and every ST entry present dead.
+  std::vector<char> rungStart(len + 1, 0);
+  for (const RungRange &rr : p.rungs)
+    if (rr.range.begin >= r.begin && rr.range.begin < r.end) rungStart[rel(rr.range.begin)] = 1;
 
   // Positions covered by a loop body or a JMP..LBL span: cover[i] > 0 forbids a boundary
   // before i. A body covers (LOOP, NEXT]; a jump span covers (min, max].
@@ -80,10 +40,7 @@ void planSlices(Context &cx) {
       span(i, p.info[static_cast<size_t>(i)].target);
   for (size_t i = 1; i <= len; ++i) cover[i] += cover[i - 1];
 
-  auto boundary = [&](int32_t i) {
-    const StmtInfo &in = p.info[static_cast<size_t>(i)];
-    return in.msDepth == 0 && cover[rel(i)] == 0 && lowest[rel(i)] >= in.depth;
-  };
+  auto boundary = [&](int32_t i) { return rungStart[rel(i)] && cover[rel(i)] == 0; };
 
   const int64_t n = cx.opts.plc2Nvalue;
   int32_t start = r.begin;

@@ -201,7 +201,10 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   verifier::checkCnc(cx);
   verifier::checkCallGraph(cx);
   if (diags.errorCount() > errorsBefore) return std::nullopt;
+  verifier::planRungs(cx);
   verifier::planSlices(cx);
+  prog.comments = parsed.comments;
+  prog.symbols = parsed.symbols;
   return prog;
 }
 

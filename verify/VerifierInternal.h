@@ -66,6 +66,9 @@ void checkCallGraph(Context &cx);
 /// PLC2 slices per dialect-notes "PLC2 slicing" (SlicePlanner.cpp).
 void planSlices(Context &cx);
 
+/// Rung boundaries (Rungs.cpp): fills prog.rungs.
+void planRungs(Context &cx);
+
 /// Family checks of data operations: constant ranges inside their area, FMOV/ZRST bounds
 /// (VerifyData.cpp).
 void checkData(Context &cx);

@@ -136,6 +136,7 @@ private:
   bool lex(const Token &t, RawOperand &raw) {
     std::string_view s = t.text;
     symbol_ = nullptr;
+    symbolIndex_ = -1;
     if (symbols_ && SymbolTable::isNameShaped(s)) {
       const Symbol *sym = symbols_->find(s);
       if (!sym) {
@@ -143,6 +144,7 @@ private:
         return false;
       }
       symbol_ = sym;
+      symbolIndex_ = static_cast<int16_t>(sym - symbols_->symbols().data());
       // The table holds canonical addresses, so this lexes; the checks that follow are exactly
       // those of the address written out.
       return lexAddress({sym->address, t.col}, raw);
@@ -252,6 +254,7 @@ private:
     RawOperand r;
     if (!lex(t, r)) return false;
     out.loc = {line_, t.col};
+    out.symbol = symbolIndex_;
     std::string what = std::string(hnc8::mnemonicOf(info.op)) + " expects ";
     bool isConst = r.shape == RawOperand::Shape::Const;
     if (spec.isBit && spec.wordOk && !isConst && r.bit < 0) {
@@ -321,15 +324,24 @@ private:
   int32_t line_;
   const SymbolTable *symbols_;
   const Symbol *symbol_ = nullptr; ///< the symbol of the operand being checked, if any
+  int16_t symbolIndex_ = -1;       ///< its position in the table
 };
 
-/// Splits one line (without its newline) into tokens, dropping `;` and `//` comments.
-void tokenize(std::string_view line, std::vector<Token> &toks) {
+/// Splits one line (without its newline) into tokens; a `;` or `//` comment goes to `comment`
+/// (text after the marker, blanks around it dropped; `hasComment` tells an empty one apart).
+void tokenize(std::string_view line, std::vector<Token> &toks, std::string_view &comment,
+              bool &hasComment) {
   toks.clear();
+  hasComment = false;
+  comment = {};
   size_t end = line.size();
   for (size_t i = 0; i < line.size(); ++i) {
     if (line[i] == ';' || (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/')) {
       end = i;
+      hasComment = true;
+      comment = line.substr(i + (line[i] == ';' ? 1 : 2));
+      while (!comment.empty() && isSpace(comment.front())) comment.remove_prefix(1);
+      while (!comment.empty() && isSpace(comment.back())) comment.remove_suffix(1);
       break;
     }
   }
@@ -379,7 +391,10 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
   prog.dialect = &hnc8::dialectText();
   // A UTF-8 byte-order mark from a Windows editor is not part of the first statement.
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  if (symbols) prog.symbols = symbols->symbols();
   std::vector<Token> toks;
+  std::string_view comment;
+  bool hasComment = false;
   int32_t line = 0;
   size_t pos = 0;
   std::vector<std::pair<int32_t, Token>> leading; // lines before the first mnemonic
@@ -389,9 +404,13 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     size_t nl = text.find('\n', pos);
     if (nl == std::string_view::npos) nl = text.size();
     if (line < INT32_MAX) ++line;
-    tokenize(text.substr(pos, nl - pos), toks);
+    tokenize(text.substr(pos, nl - pos), toks, comment, hasComment);
     pos = nl + 1;
-    if (toks.empty()) continue;
+    auto next = static_cast<int32_t>(prog.stmts.size());
+    if (toks.empty()) {
+      if (hasComment) prog.comments.push_back({line, next, false, std::string(comment)});
+      continue;
+    }
     Op known;
     bool mnemonic = hnc8::lookupMnemonic(toks[0].text, known);
     if (!sawMnemonic && !mnemonic) {
@@ -413,9 +432,11 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     }
     Stmt stmt;
     LineParser lp(diags, line, symbols);
-    if (lp.parse(toks, stmt))
+    if (lp.parse(toks, stmt)) {
+      stmt.id = next;
       prog.stmts.push_back(stmt);
-    else if (mnemonic)
+      if (hasComment) prog.comments.push_back({line, next, true, std::string(comment)});
+    } else if (mnemonic)
       prog.dropped.push_back({static_cast<int32_t>(prog.stmts.size()), known});
     if (prog.stmts.size() > limit) {
       diags.error(prog.stmts.back().loc, "program has more than " + std::to_string(limit) +

@@ -7,7 +7,7 @@ import lit.formats
 config.name = "ladderjit"
 config.test_format = lit.formats.ShTest(execute_external=True)
 config.suffixes = [".stl"]
-config.excludes = ["lit.cfg.py", "lit.site.cfg.py", "CMakeLists.txt"]
+config.excludes = ["lit.cfg.py", "lit.site.cfg.py", "CMakeLists.txt", "Inputs"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = getattr(config, "ladderjit_obj_root", config.test_source_root)
 

@@ -108,8 +108,19 @@ struct FuzzArgs {
   uint64_t seed = 1;
   uint64_t programs = 1000;
   uint32_t ticks = 50;
+  bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
 };
 int runFuzz(const FuzzArgs &a);
+
+struct LadderArgs {
+  std::string program;
+  std::string format = "text"; ///< text | json (svg | html: not built yet)
+  std::string output;          ///< empty or "-": stdout
+  int32_t plc2Nvalue = 200;
+  bool plc2NvalueGiven = false;
+};
+/// `ladderjit ladder`: the program as networks (docs/ladder-json.md).
+int runLadder(const LadderArgs &a);
 
 struct ServeArgs {
   std::string program;

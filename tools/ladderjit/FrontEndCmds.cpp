@@ -92,6 +92,7 @@ int runFuzz(const FuzzArgs &a) {
   opts.seed = a.seed;
   opts.programs = a.programs;
   opts.ticks = a.ticks;
+  opts.roundTrip = a.roundTrip;
   uint64_t mismatches = fuzz::run(opts, std::cout);
   std::cout << std::flush;
   return mismatches == 0 ? kOk : kProgramErrors;

@@ -39,7 +39,7 @@ CLI::Option *lastWins(CLI::Option *o) {
   return o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
-const char *const kProgramHelp = "STL file or plc.dit container";
+const char *const kProgramHelp = "STL file, plc.dit container or ladder JSON (.json)";
 
 int mainImpl(int argc, char **argv) {
   CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "
@@ -114,6 +114,18 @@ int mainImpl(int argc, char **argv) {
                ->check(kUnsigned));
   lastWins(
       cFuzz->add_option("--ticks", fz.ticks, "ticks per program (default 50)")->check(kUnsigned));
+  cFuzz->add_flag("--round-trip", fz.roundTrip,
+                  "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
+                  "on the interpreter");
+
+  LadderArgs lad;
+  CLI::App *cLadder = app.add_subcommand("ladder", "the program as ladder networks (text, json)");
+  cLadder->add_option("PROGRAM", lad.program, kProgramHelp)->required();
+  lastWins(cLadder->add_option("--format", lad.format, "text | json (default text)"));
+  lastWins(cLadder->add_option("-o,--output", lad.output, "file to write (default stdout)"));
+  CLI::Option *ladNvalue = lastWins(
+      cLadder->add_option("--plc2-nvalue", lad.plc2Nvalue, "PLC2 statements per tick (0 = all)")
+          ->check(kUnsigned));
 
   CompileArgs comp;
   CLI::App *cCompile =
@@ -223,6 +235,7 @@ int mainImpl(int argc, char **argv) {
   run.plc2NvalueGiven = runNvalue->count() > 0;
   emit.plc2NvalueGiven = emitNvalue->count() > 0;
   comp.plc2NvalueGiven = compNvalue->count() > 0;
+  lad.plc2NvalueGiven = ladNvalue->count() > 0;
 
   if (cCheck->parsed()) return runCheck(check);
   if (cDit->parsed()) return runDit(dit);
@@ -231,6 +244,7 @@ int mainImpl(int argc, char **argv) {
   if (cFuzz->parsed()) return runFuzz(fz);
   if (cCompile->parsed()) return runCompile(comp);
   if (cKeygen->parsed()) return runKeygen(keygen);
+  if (cLadder->parsed()) return runLadder(lad);
   if (cServe->parsed()) {
     serve.periodMsGiven = servePeriod->count() > 0;
     serve.plc2NvalueGiven = serveNvalue->count() > 0;

@@ -1,0 +1,60 @@
+// The round-trip engine of `ladderjit fuzz --round-trip`: the program turned into networks, JSON
+// text, networks again, STL, verified anew and run on the interpreter, as the engine under test
+// against the interpreter on the original.
+#include "fuzz/RoundTrip.h"
+
+#include "frontends/hnc8/FrontEnd.h"
+#include "ladder/Json.h"
+
+namespace lj::fuzz {
+
+namespace {
+
+/// An interpreter that owns the program it runs (the round-tripped twin).
+class OwningEngine : public Engine {
+public:
+  OwningEngine(std::unique_ptr<VerifiedProgram> prog) : prog_(std::move(prog)) {
+    inner_ = makeInterpreterEngine(*prog_);
+  }
+  const lj_entries &entries() const override { return inner_->entries(); }
+  const char *name() const override { return "roundtrip"; }
+
+private:
+  std::unique_ptr<VerifiedProgram> prog_;
+  std::unique_ptr<Engine> inner_;
+};
+
+} // namespace
+
+EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
+  return
+      [counts](const VerifiedProgram &prog, bool, std::string &error) -> std::unique_ptr<Engine> {
+        ladder::Networks nets = ladder::fromProgram(prog);
+        if (counts) {
+          ladder::RungCounts c = ladder::countRungs(nets);
+          counts->ladder += c.ladder;
+          counts->stl += c.stl;
+          counts->marker += c.marker;
+        }
+        std::string json = ladder::writeJson(nets);
+        ladder::StlFromJson src;
+        if (!ladder::stlFromJson(json, src, error)) {
+          error = "round trip: " + error;
+          return nullptr;
+        }
+        Diagnostics diags("roundtrip.json");
+        VerifyOptions vo;
+        vo.plc2Nvalue = prog.plc2Nvalue;
+        std::optional<VerifiedProgram> twin =
+            compileFrontEnd(src.text, "roundtrip.json", vo, diags, &src.symbols);
+        if (!twin) {
+          error = "round trip: the regenerated STL does not verify:\n" +
+                  ladder::renderDiagnostics(diags, src) + "--- regenerated STL ---\n" + src.text;
+          return nullptr;
+        }
+        ladder::applyOrigins(*twin, src);
+        return std::make_unique<OwningEngine>(std::make_unique<VerifiedProgram>(std::move(*twin)));
+      };
+}
+
+} // namespace lj::fuzz

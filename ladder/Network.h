@@ -1,0 +1,103 @@
+// Rungs as networks (docs/ladder-json.md): a series/parallel tree per rung whose leaves are
+// contacts, coils and function boxes, each keeping its statement id and source location. Built
+// from a verified program (FromStl.cpp), turned back into statements (ToStl.cpp), written and
+// read as JSON (Json.cpp) and shown as text (Text.cpp). Depends on the IR only.
+#pragma once
+
+#include "ir/Program.h"
+
+#include <string>
+#include <vector>
+
+namespace lj::ladder {
+
+/// One statement as a network shows it: the instruction, its operands as text (with the symbol
+/// each was written as), its id, where it was written and the comments written with it.
+struct Element {
+  StmtId id = -1;
+  SourceLoc loc;
+  Op op = Op::LoadTrue;
+  std::vector<std::string> operands; ///< address or constant text (`X1.0`, `D5`, `-3`)
+  std::vector<std::string> symbols;  ///< parallel to operands: symbol name, or empty
+  std::vector<std::string> before;   ///< comment lines just before it (not the rung comment)
+  std::string comment;               ///< trailing comment on its line
+  bool hasComment = false;
+};
+
+enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };
+
+/// How a contact behaves: normally open, normally closed, rising or falling edge, always true.
+enum class ContactKind : uint8_t { NO, NC, Rise, Fall, True };
+
+/// How a child after the first of a Series/Parallel was joined in the STL: Inline = AND/OR form
+/// of a contact, Block = its own LD chain then ANB/ORB. Auto = whatever is canonical.
+enum class Join : uint8_t { Auto, Inline, Block };
+
+/// How a fan-out branch is entered: None = directly (outputs then continuation), Mps/Mrd/Mpp
+/// = through the MS stack. Auto = canonical (direct when every earlier branch is outputs only).
+enum class Entry : uint8_t { Auto, None, Mps, Mrd, Mpp };
+
+/// A network node. Series/Parallel/FanOut have children (a FanOut's children are Series
+/// branches from one junction); Contact, Coil and Box are leaves holding `elem`. A Box with
+/// `inputs` takes one sub-network per ST entry it consumes; a Box without them takes the series
+/// to its left (or the rail when `rail`).
+struct Node {
+  NodeKind kind = NodeKind::Series;
+  Join join = Join::Auto;    ///< as a child of Series/Parallel
+  Entry entry = Entry::Auto; ///< as a branch of a FanOut
+  ContactKind contact = ContactKind::NO;
+  bool rail = false;
+  Element elem;
+  /// The statement that joined this node (ANB/ORB for a Block child, MPS/MRD/MPP for a fan-out
+  /// branch): its id, location and comments; `op` is implied by the place.
+  Element link;
+  std::vector<Node> children; ///< Series/Parallel/FanOut children; Box inputs
+};
+
+/// A rung: a drawable network, statements with no drawable form, or a marker.
+struct Rung {
+  enum class Kind : uint8_t { Ladder, Stl, Marker } kind = Kind::Ladder;
+  std::vector<std::string> comment; ///< the comment block before the rung
+  Node network;                     ///< Ladder: a Series
+  std::vector<Element> stmts;       ///< Stl and Marker: the statements verbatim
+};
+
+/// A program part: "init", "PLC1", "PLC2" or a subroutine "S<n>".
+struct Part {
+  std::string name;
+  std::vector<Rung> rungs;
+};
+
+/// A whole program as networks; the parts in order hold every statement once, in order.
+struct Networks {
+  std::string dialect = "hnc8";
+  std::string file;
+  std::vector<Part> parts;
+  std::vector<Symbol> symbols;
+  std::vector<std::string> trailingComments; ///< comment lines after the last statement
+};
+
+/// Networks of a verified program: every logic rung that has a network whose canonical STL
+/// (with the recorded join/entry hints) is exactly its statements becomes Ladder, the others Stl.
+Networks fromProgram(const VerifiedProgram &prog);
+
+/// The statements of the networks in order (contacts get the LD/AND/OR form of their place;
+/// a rung comment goes to its first statement's `before`). False with `error` naming the rung
+/// and element when a network has no STL form. `where`, if given, gets one "PART rung R element
+/// E" per statement.
+bool toStatements(const Networks &nets, std::vector<Element> &out, std::string &error,
+                  std::vector<std::string> *where = nullptr);
+
+/// Statements of one ladder rung (see toStatements); false with `error` (element path).
+bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error);
+
+/// The mnemonic of `op` (table row).
+const char *mnemonic(Op op);
+
+/// Counts for reports: ladder / stl / marker rungs.
+struct RungCounts {
+  int64_t ladder = 0, stl = 0, marker = 0;
+};
+RungCounts countRungs(const Networks &nets);
+
+} // namespace lj::ladder

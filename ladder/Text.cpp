@@ -1,0 +1,171 @@
+// The text form of `ladderjit ladder --format text`: per part and rung, the rung comment and the
+// network as an indented series/parallel drawing (docs/ladder-json.md "Text form").
+#include "ladder/Text.h"
+
+#include <vector>
+
+namespace lj::ladder {
+
+namespace {
+
+bool isLeaf(const Node &n) {
+  return n.kind == NodeKind::Contact || n.kind == NodeKind::Coil ||
+         (n.kind == NodeKind::Box && n.children.empty());
+}
+
+/// The symbol table of the networks being rendered (renderText), to name operands written as
+/// plain addresses.
+thread_local const std::vector<Symbol> *gSymbols = nullptr;
+
+std::string operandText(const Element &e, size_t k) {
+  std::string t = e.operands[k];
+  if (k < e.symbols.size() && !e.symbols[k].empty()) return t + "<" + e.symbols[k] + ">";
+  if (gSymbols)
+    for (const Symbol &s : *gSymbols)
+      if (s.address == t) return t + "<" + s.name + ">";
+  return t;
+}
+
+std::string leafText(const Node &n) {
+  const Element &e = n.elem;
+  std::string t;
+  if (n.kind == NodeKind::Contact) {
+    static const char *const kGlyph[] = {"-[ ]-", "-[/]-", "-[P]-", "-[N]-", "-[T]-"};
+    t = kGlyph[static_cast<int>(n.contact)];
+    if (!e.operands.empty()) t += " " + operandText(e, 0);
+  } else if (n.kind == NodeKind::Coil) {
+    switch (e.op) {
+    case Op::Set:
+      t = "-(S)-";
+      break;
+    case Op::Reset:
+      t = "-(R)-";
+      break;
+    case Op::CoilNot:
+      t = "-(/)-";
+      break;
+    default:
+      t = "-( )-";
+    }
+    if (!e.operands.empty()) t += " " + operandText(e, 0);
+  } else {
+    t = std::string("[") + mnemonic(e.op);
+    for (size_t k = 0; k < e.operands.size(); ++k) t += " " + operandText(e, k);
+    t += "]";
+    if (n.rail) t = "|rail| " + t;
+  }
+  if (e.hasComment) t += "  ; " + e.comment;
+  return t;
+}
+
+using Lines = std::vector<std::string>;
+
+/// The lines of a node. A series stacks its children (runs of leaves on one line, joined by
+/// "--"); a parallel starts each branch with "|-", a fan-out with "o-"; box inputs with ":".
+Lines render(const Node &n);
+
+void indent(Lines &out, const Lines &in, const std::string &first, const std::string &rest) {
+  if (in.empty()) {
+    out.push_back(first + "(empty)");
+    return;
+  }
+  for (size_t i = 0; i < in.size(); ++i) out.push_back((i == 0 ? first : rest) + in[i]);
+}
+
+Lines series(const Node &s) {
+  Lines out;
+  std::string run;
+  auto flush = [&] {
+    if (!run.empty()) out.push_back(run);
+    run.clear();
+  };
+  for (const Node &c : s.children) {
+    for (const std::string &b : c.elem.before) {
+      flush();
+      out.push_back("; " + b);
+    }
+    if (isLeaf(c)) {
+      run += (run.empty() ? "" : " -- ") + leafText(c);
+      if (c.elem.hasComment) flush(); // the comment ends the line
+      continue;
+    }
+    flush();
+    Lines sub = render(c);
+    out.insert(out.end(), sub.begin(), sub.end());
+  }
+  flush();
+  return out;
+}
+
+Lines render(const Node &n) {
+  Lines out;
+  switch (n.kind) {
+  case NodeKind::Series:
+    return series(n);
+  case NodeKind::Parallel:
+    out.push_back("parallel");
+    for (const Node &b : n.children) indent(out, render(b), "|- ", "|  ");
+    return out;
+  case NodeKind::FanOut:
+    out.push_back("fan-out");
+    for (const Node &b : n.children) {
+      static const char *const kEntry[] = {"", "", "(MPS) ", "(MRD) ", "(MPP) "};
+      Lines br = render(b);
+      if (br.empty()) br.push_back("(empty)");
+      br[0] = kEntry[static_cast<int>(b.entry)] + br[0];
+      indent(out, br, "o- ", "   ");
+    }
+    return out;
+  case NodeKind::Box:
+    out.push_back(leafText(n));
+    for (size_t i = 0; i < n.children.size(); ++i) {
+      out.push_back("  input " + std::to_string(i + 1) + ":");
+      indent(out, render(n.children[i]), "  : ", "  : ");
+    }
+    return out;
+  default:
+    out.push_back(leafText(n));
+    return out;
+  }
+}
+
+std::string stmtText(const Element &e) {
+  std::string t = mnemonic(e.op);
+  for (size_t k = 0; k < e.operands.size(); ++k) t += " " + operandText(e, k);
+  if (e.hasComment) t += "  ; " + e.comment;
+  return t;
+}
+
+} // namespace
+
+std::string renderText(const Networks &nets) {
+  std::string out;
+  gSymbols = &nets.symbols;
+  for (const Part &p : nets.parts) {
+    out += "=== " + p.name + " ===\n";
+    for (size_t r = 0; r < p.rungs.size(); ++r) {
+      const Rung &rung = p.rungs[r];
+      if (rung.kind == Rung::Kind::Marker) {
+        for (const std::string &c : rung.comment) out += "; " + c + "\n";
+        for (const Element &e : rung.stmts) out += "--- " + stmtText(e) + " ---\n";
+        continue;
+      }
+      out +=
+          "rung " + std::to_string(r + 1) + (rung.kind == Rung::Kind::Stl ? " (STL)" : "") + "\n";
+      for (const std::string &c : rung.comment) out += "  ; " + c + "\n";
+      if (rung.kind == Rung::Kind::Ladder) {
+        for (const std::string &l : render(rung.network)) out += "  " + l + "\n";
+      } else {
+        for (const Element &e : rung.stmts) {
+          for (const std::string &b : e.before) out += "  ; " + b + "\n";
+          out += "  | " + stmtText(e) + "\n";
+        }
+      }
+    }
+  }
+  for (const std::string &c : nets.trailingComments) out += "; " + c + "\n";
+  gSymbols = nullptr;
+  return out;
+}
+
+} // namespace lj::ladder

@@ -1,0 +1,39 @@
+// `ladderjit ladder`: PROGRAM as ladder networks (docs/ladder-json.md), as readable text or as the
+// network JSON that every command accepts back as PROGRAM.
+#include "tools/ladderjit/Commands.h"
+
+#include "ladder/Json.h"
+#include "ladder/Text.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace lj::cli {
+
+int runLadder(const LadderArgs &a) {
+  if (a.format != "text" && a.format != "json") {
+    if (a.format == "svg" || a.format == "html")
+      return usageError("ladder --format " + a.format + " is not built yet (use text or json)");
+    return usageError("ladder --format must be text or json, got '" + a.format + "'");
+  }
+  int code = kOk;
+  ProgramSource src;
+  if (!readProgram(a.program, src, code)) return code;
+  std::optional<VerifiedProgram> prog =
+      loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
+  if (!prog) return code;
+  ladder::Networks nets = ladder::fromProgram(*prog);
+  std::string out = a.format == "json" ? ladder::writeJson(nets) : ladder::renderText(nets);
+  if (a.output.empty() || a.output == "-") {
+    std::cout << out << std::flush;
+    return kOk;
+  }
+  std::ofstream f(a.output, std::ios::binary | std::ios::trunc);
+  f << out;
+  f.close();
+  if (!f) return usageError("cannot write '" + a.output + "'");
+  return kOk;
+}
+
+} // namespace lj::cli
