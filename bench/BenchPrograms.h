@@ -2,7 +2,7 @@
 // (fixed seeds, so runs compare), verified once and cached, plus explicit per-statement counters.
 #pragma once
 
-#include "bench/ProgramGenerator.h"
+#include "gen/ProgramGenerator.h"
 #include "instructions/FrontEnd.h"
 
 #include <benchmark/benchmark.h>

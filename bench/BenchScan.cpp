@@ -6,7 +6,7 @@
 #include "instructions/Engine.h"
 
 #ifdef LADDERJIT_HAVE_JIT
-#include "io/AotLoader.h"
+#include "engines/AotLoader.h"
 #include "jit/Aot.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"

@@ -1,7 +1,9 @@
 // The AOT loader: read the file once, verify the integrity trailer and the ELF headers, then
 // dlopen a private copy of exactly those bytes. A damaged file never reaches the dynamic
 // loader, which may crash on bad ELF.
-#include "io/AotLoader.h"
+#include "engines/AotLoader.h"
+
+#include "formats/PlcDit.h" // sha256Hash
 
 #include "ladderjit/program.h"
 
@@ -141,19 +143,6 @@ template <typename Fn> Fn symbol(void *handle, const char *name, std::string &mi
 }
 
 } // namespace
-
-std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nvalue) {
-  if (dit && dit->plc2Nvalue == plc2Nvalue) return dit->hash;
-  std::string canon = "ladderjit-program 1\nplc2_nvalue = " + std::to_string(plc2Nvalue) + "\n";
-  if (dit) return sha256Hash(canon + "container = " + dit->hash + "\n");
-  canon += "[program]\n";
-  for (size_t i = 0; i < stl.size(); ++i) {
-    if (stl[i] == '\r' && i + 1 < stl.size() && stl[i + 1] == '\n') continue;
-    canon += stl[i];
-  }
-  if (!stl.empty() && canon.back() != '\n') canon += '\n';
-  return sha256Hash(canon);
-}
 
 std::unique_ptr<Engine> loadAot(const std::string &path, const std::string &expectedHash,
                                 std::string &error) {

@@ -1,5 +1,5 @@
 // Command-line address and value parsing, and element/bit access to an lj_state by address.
-#include "io/Address.h"
+#include "formats/Address.h"
 
 #include <cctype>
 #include <cstring>

@@ -1,5 +1,5 @@
 // Stimulus and parameter file parsers: line-oriented, located errors, no exceptions.
-#include "io/InputFiles.h"
+#include "formats/InputFiles.h"
 
 #include <cerrno>
 #include <cstring>

@@ -2,8 +2,8 @@
 // parameter files (`P12=345`). Errors are `file:line: problem`, never exceptions.
 #pragma once
 
-#include "io/Address.h"
-#include "io/SimNcCommand.h"
+#include "formats/Address.h"
+#include "formats/NcCommand.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,6 @@
 // Parser of the stimulus file's NC commands (`@TICK nc.mcode ch=0 m=3`): one command per line,
 // keys checked against the command, values range-checked (grammar: docs/simulated-nc.md).
-#include "io/SimNcCommand.h"
+#include "formats/NcCommand.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,6 +1,6 @@
 // plc.dit reader and writer (docs/plc-dit.md): line-oriented, one located error, no exceptions;
 // the content hash is SHA-256 (OpenSSL EVP) over a canonical serialization.
-#include "io/PlcDit.h"
+#include "formats/PlcDit.h"
 
 #include <openssl/evp.h>
 

@@ -3,8 +3,8 @@
 // every problem is one `file:line: problem` message.
 #pragma once
 
+#include "formats/Address.h"
 #include "instructions/Symbols.h"
-#include "io/Address.h"
 
 #include <cstdint>
 #include <optional>

@@ -1,10 +1,9 @@
-// Reading and verifying PROGRAM (io/ProgramFile.h).
-#include "io/ProgramFile.h"
+// Reading and verifying PROGRAM (formats/ProgramFile.h).
+#include "formats/ProgramFile.h"
 
+#include "formats/InputFiles.h"
 #include "instructions/Diagnostics.h"
 #include "instructions/FrontEnd.h"
-#include "io/AotLoader.h"
-#include "io/InputFiles.h"
 
 namespace lj::io {
 
@@ -41,6 +40,19 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
   if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
     diagnostics += src.path + ": error: program rejected without a diagnostic\n";
   return std::nullopt;
+}
+
+std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nvalue) {
+  if (dit && dit->plc2Nvalue == plc2Nvalue) return dit->hash;
+  std::string canon = "ladderjit-program 1\nplc2_nvalue = " + std::to_string(plc2Nvalue) + "\n";
+  if (dit) return sha256Hash(canon + "container = " + dit->hash + "\n");
+  canon += "[program]\n";
+  for (size_t i = 0; i < stl.size(); ++i) {
+    if (stl[i] == '\r' && i + 1 < stl.size() && stl[i + 1] == '\n') continue;
+    canon += stl[i];
+  }
+  if (!stl.empty() && canon.back() != '\n') canon += '\n';
+  return sha256Hash(canon);
 }
 
 std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {

@@ -3,12 +3,13 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
+#include "formats/PlcDit.h"
 #include "instructions/Program.h"
-#include "io/PlcDit.h"
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace lj::io {
 
@@ -33,7 +34,14 @@ int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiv
 std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                              std::string &diagnostics);
 
-/// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (io/AotLoader.h).
+/// The program hash a .so carries (docs/aot.md "Program hash"). For a plc.dit built with its
+/// own plc2_nvalue: the container's hash line. Otherwise SHA-256 over
+/// `ladderjit-program 1\nplc2_nvalue = N\n` followed by `container = <dit hash>\n` (a container
+/// with another nvalue) or `[program]\n` and the STL text with CR before LF dropped and a final
+/// LF added (an STL file). `stl` is the STL file's text; ignored when `dit` is given.
+std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nvalue);
+
+/// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (programHash).
 std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue);
 
 } // namespace lj::io

@@ -1,5 +1,5 @@
 // JSON dump of an lj_state; the field list mirrors runtime_abi/include/ladderjit/abi.h.
-#include "io/StateJson.h"
+#include "formats/StateJson.h"
 
 #include <iterator>
 

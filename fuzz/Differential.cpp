@@ -2,8 +2,8 @@
 // the first field of lj_state where they part.
 #include "fuzz/Differential.h"
 
+#include "hosts/TestHost.h"
 #include "instructions/FrontEnd.h"
-#include "tests/support/TestHost.h"
 
 #include <cstring>
 #include <memory>

@@ -3,7 +3,7 @@
 #include "fuzz/Fuzz.h"
 #include "fuzz/Differential.h"
 
-#include "bench/Rng.h"
+#include "gen/Rng.h"
 
 #include <chrono>
 #include <iomanip>

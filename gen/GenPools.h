@@ -3,7 +3,7 @@
 // each area now and then (range edges).
 #pragma once
 
-#include "bench/Rng.h"
+#include "gen/Rng.h"
 #include "instructions/Area.h"
 
 #include <cstdint>

@@ -1,9 +1,9 @@
-// Internal to the random program generator (bench/RandomProgram.cpp, bench/RandomOperands.cpp):
+// Internal to the random program generator (gen/RandomProgram.cpp, gen/RandomOperands.cpp):
 // the generator class and the long-range constants both halves use.
 #pragma once
 
-#include "bench/ProgramGenerator.h"
-#include "bench/Rng.h"
+#include "gen/ProgramGenerator.h"
+#include "gen/Rng.h"
 #include "instructions/InstrTable.h"
 
 #include <array>

@@ -2,8 +2,8 @@
 // pools, constants, and the catalogue constraints the OperandSpecs cannot express (ranges that
 // must fit their area, long ranges for the lowering's loops, ZRST zones, XMOV/XCH indirection,
 // runtime-checked indices loaded with their edge values; hnc8-functions-2.md 0.5/0.6).
-#include "bench/GenPools.h"
-#include "bench/RandomGen.h"
+#include "gen/GenPools.h"
+#include "gen/RandomGen.h"
 
 #include <algorithm>
 #include <cassert>

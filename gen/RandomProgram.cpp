@@ -1,9 +1,9 @@
 // Random valid STL programs for differential fuzzing, driven by the instruction table: every row
 // that is not a flow instruction is chosen and given operands from its OperandSpecs, stack rule
 // and input count alone; a structural planner places parts, jumps, loops and subroutines.
-#include "bench/GenPools.h"
-#include "bench/ProgramGenerator.h"
-#include "bench/RandomGen.h"
+#include "gen/GenPools.h"
+#include "gen/ProgramGenerator.h"
+#include "gen/RandomGen.h"
 #include "instructions/InstrTable.h"
 
 #include <array>
@@ -27,7 +27,7 @@ bool isPlanned(const InstrInfo &in) {
   return in.op == Op::RETN; // only valid inside a subroutine
 }
 
-/// The per-program stack mixes (Profile, bench/RandomGen.h).
+/// The per-program stack mixes (Profile, gen/RandomGen.h).
 constexpr Profile kProfiles[] = {
     // Push Combine BlockPop MpsPush MsRead MsPop Coil Structural Block
     {{6, 5, 6, 2, 1, 2, 4, 0, 8}, 16}, // deep ANB/ORB nesting

@@ -1,8 +1,8 @@
 // The benchmark program generator: rungs as a machine builder writes them (interlocks, self
 // holding coils, MPS output branches, timers, counters, compares, math, moves), laid out as
 // init / PLC1 / PLC2 / subroutines, with an exact statement count.
-#include "bench/ProgramGenerator.h"
-#include "bench/Rng.h"
+#include "gen/ProgramGenerator.h"
+#include "gen/Rng.h"
 
 #include <array>
 #include <string>

@@ -1,7 +1,7 @@
 // Random host stimulus (X/F writes, now_ms stream, retain store and parameters) and its
 // rendering in the CLI stimulus-file format (CLI.md `--stimulus`).
-#include "bench/GenPools.h"
-#include "bench/ProgramGenerator.h"
+#include "gen/GenPools.h"
+#include "gen/ProgramGenerator.h"
 
 #include <cstring>
 #include <iterator>

@@ -1,7 +1,7 @@
 // The simulated NC's channel model and tick protocol: M/T/S handshakes, reset handshake, mode
 // switching, cycle start / feed hold, e-stop, overrides, part count, alarm/event/prompt diffs
 // (hnc8-cnc-interface.md 1.3-1.6 and 3.2; docs/simulated-nc.md).
-#include "io/SimNcModel.h"
+#include "hosts/SimNcModel.h"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 // every lj_host callback (hnc8-cnc-interface.md sections 1 and 3; docs/simulated-nc.md).
 #pragma once
 
-#include "io/SimNcCommand.h"
+#include "formats/NcCommand.h"
 #include "ladderjit/abi.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -176,7 +176,7 @@ public:
   /// Same model state and the same logs.
   bool operator==(const SimNc &o) const;
 
-  /// The model state (channels, axes, spindles, tools, ...), defined in io/SimNcModel.h.
+  /// The model state (channels, axes, spindles, tools, ...), defined in hosts/SimNcModel.h.
   struct Model;
 
 private:

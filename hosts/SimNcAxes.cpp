@@ -1,7 +1,7 @@
 // The simulated NC's axis and spindle model: enable/servo delays, lock, limits, jog and
 // increment moves, homing state machine, PMC moves, control mode, spindle ramp and orientation
 // (hnc8-cnc-interface.md 1.1/1.2 and 3.2; docs/simulated-nc.md "Axes").
-#include "io/SimNcModel.h"
+#include "hosts/SimNcModel.h"
 
 #include <algorithm>
 

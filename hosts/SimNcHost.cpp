@@ -1,6 +1,6 @@
 // The simulated NC's lj_host callbacks (abi.h), its CNC variable store with the VARGET/VARSET
 // scaling rules (hnc8-functions-2.md 2.22, 2.23, 3), and the call log every callback appends to.
-#include "io/SimNcModel.h"
+#include "hosts/SimNcModel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The simulated NC as JSON (the "nc" object of `ladderjit run --dump`), its digest and equality
 // (two NCs fed identically by equal engines end equal: the differential fuzzer's check).
-#include "io/SimNcModel.h"
+#include "hosts/SimNcModel.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
-// Internal state of the simulated NC (io/SimNc.h) shared by its source files: per-channel,
+// Internal state of the simulated NC (hosts/SimNc.h) shared by its source files: per-channel,
 // per-axis and system model, word offsets of the F/G map, and the helpers that touch words.
 #pragma once
 
-#include "io/SimNc.h"
+#include "hosts/SimNc.h"
 
 #include <array>
 #include <cstdint>

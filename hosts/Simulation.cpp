@@ -1,5 +1,5 @@
 // The simulation loop of `ladderjit run` (DIALECT.md 4: inputs between ticks, now_ms per tick).
-#include "io/Simulation.h"
+#include "hosts/Simulation.h"
 
 namespace lj::io {
 

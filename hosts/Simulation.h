@@ -3,9 +3,9 @@
 // lj_entries of an Engine (interpreter, JIT or AOT).
 #pragma once
 
-#include "io/Address.h"
-#include "io/InputFiles.h"
-#include "io/SimNc.h"
+#include "formats/Address.h"
+#include "formats/InputFiles.h"
+#include "hosts/SimNc.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>

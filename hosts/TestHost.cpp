@@ -1,6 +1,6 @@
 // The recording test host: lj_host trampolines into TestHost, its variable store with the
 // VARGET/VARSET scaling of hnc8-functions-2.md 2.22, 2.23 and section 3, and the call log.
-#include "tests/support/TestHost.h"
+#include "hosts/TestHost.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -47,7 +47,7 @@ std::string formatAssignment(const io::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
-// A write or lock item: parsed and checked for writability (io/Address.h).
+// A write or lock item: parsed and checked for writability (formats/Address.h).
 std::optional<io::Assignment> writable(const std::string &item, std::string &err) {
   std::optional<io::Assignment> a = io::parseAssignment(item, err);
   if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;

@@ -4,9 +4,9 @@
 // swaps the program at a tick boundary (docs/serve.md).
 #pragma once
 
+#include "formats/Address.h"
 #include "instructions/Engine.h"
 #include "instructions/Program.h"
-#include "io/Address.h"
 #include "ladderjit/abi.h"
 #include "runtime/Exchange.h"
 #include "runtime/Stats.h"

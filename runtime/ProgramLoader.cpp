@@ -2,8 +2,8 @@
 // version, so each online change is a new JITDylib, STYLE.md 10; or an AOT .so, docs/aot.md).
 #include "runtime/ProgramLoader.h"
 
-#include "io/AotLoader.h"
-#include "io/ProgramFile.h"
+#include "engines/AotLoader.h"
+#include "formats/ProgramFile.h"
 #include "jit/Jit.h"
 
 namespace lj::rt {

@@ -4,7 +4,7 @@
 // the scan thread.
 #pragma once
 
-#include "io/PlcDit.h"
+#include "formats/PlcDit.h"
 #include "runtime/Executive.h"
 
 #include <cstdint>

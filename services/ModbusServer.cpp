@@ -1,6 +1,6 @@
 // Modbus TCP server: the register map (docs/modbus-map.md), request validation with Modbus
 // exceptions, libmodbus framing and replies, one thread per client.
-#include "io/ModbusServer.h"
+#include "services/ModbusServer.h"
 
 #include <algorithm>
 #include <arpa/inet.h>

@@ -2,7 +2,7 @@
 // over the process image, one thread per client, writes applied at tick boundaries.
 #pragma once
 
-#include "io/Address.h"
+#include "formats/Address.h"
 #include "ladderjit/abi.h"
 
 #include <atomic>

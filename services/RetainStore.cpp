@@ -1,8 +1,8 @@
 // The retentive store: end-of-tick capture (triple buffer), the background writer (temp file,
 // fsync, rename, directory fsync, FILE.prev rotation), group commit and restore with fallback.
-#include "io/RetainStore.h"
+#include "services/RetainStore.h"
 
-#include "io/PlcDit.h"
+#include "formats/PlcDit.h"
 
 #include <algorithm>
 #include <bit>

@@ -2,9 +2,9 @@
 // damaged, truncated, foreign and mismatched files (issue 5: "a clear error, never a crash").
 #include "tests/aot/AotTestUtil.h"
 
+#include "engines/AotLoader.h"
+#include "formats/PlcDit.h"
 #include "instructions/Engine.h"
-#include "io/AotLoader.h"
-#include "io/PlcDit.h"
 #include "ladderjit/program.h"
 #include "tests/support/Machine.h"
 #include "tests/support/StateDiff.h"

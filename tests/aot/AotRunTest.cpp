@@ -2,9 +2,9 @@
 // a differential fuzzing batch, and the acceptance command on every example.
 #include "tests/aot/AotTestUtil.h"
 
+#include "engines/AotLoader.h"
 #include "fuzz/Fuzz.h"
 #include "instructions/Engine.h"
-#include "io/AotLoader.h"
 
 #include <gtest/gtest.h>
 

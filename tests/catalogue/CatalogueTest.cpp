@@ -2,7 +2,7 @@
 // (manual-mnemonics.txt) is in the instruction table, has interpreter semantics, has a lowering,
 // can be emitted by the fuzzer's generator and has an entry in docs/instructions.md; and every
 // table row is a mnemonic of the manual.
-#include "bench/ProgramGenerator.h"
+#include "gen/ProgramGenerator.h"
 #include "instructions/FrontEnd.h"
 #include "instructions/InstrDocs.h"
 #include "instructions/InstrTable.h"

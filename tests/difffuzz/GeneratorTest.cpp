@@ -1,7 +1,7 @@
 // The program generators: every generated program verifies, a batch of random programs uses
 // every row of the instruction table, generation is deterministic, the realistic mix matches its
 // description, and the stimulus applies and prints in the CLI format.
-#include "bench/ProgramGenerator.h"
+#include "gen/ProgramGenerator.h"
 #include "instructions/FrontEnd.h"
 #include "instructions/InstrTable.h"
 

@@ -1,7 +1,7 @@
 // The one place where engines are registered for the execution tests.
 #include "tests/support/EngineRegistry.h"
 
-#include "io/AotLoader.h"
+#include "engines/AotLoader.h"
 #include "jit/Aot.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"

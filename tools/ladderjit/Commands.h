@@ -2,9 +2,9 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
+#include "formats/ProgramFile.h"
 #include "instructions/Engine.h"
 #include "instructions/Program.h"
-#include "io/ProgramFile.h"
 
 #include <cstdint>
 #include <memory>
@@ -20,7 +20,7 @@ enum Exit : int { kOk = 0, kProgramErrors = 1, kUsage = 2 };
 /// Print `ladderjit: error: <msg>` to stderr and return kUsage.
 int usageError(const std::string &msg);
 
-/// PROGRAM as read: an STL file, or a plc.dit container (io/ProgramFile.h).
+/// PROGRAM as read: an STL file, or a plc.dit container (formats/ProgramFile.h).
 using io::effectiveNvalue;
 using io::programHashOf;
 using io::ProgramSource;

@@ -2,7 +2,7 @@
 // engine of `run --engine aot:PATH` (load the .so, check it was built from PROGRAM).
 #include "tools/ladderjit/Commands.h"
 
-#include "io/AotLoader.h"
+#include "engines/AotLoader.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Aot.h"

@@ -3,7 +3,7 @@
 // problem (bad arguments, no server, a refused request) exits 2 with a message.
 #include "tools/ladderjit/Commands.h"
 
-#include "io/Address.h"
+#include "formats/Address.h"
 #include "runtime/ControlSocket.h"
 
 #include <glob.h>

@@ -3,9 +3,9 @@
 // optionally dump the final state.
 #include "tools/ladderjit/Commands.h"
 
+#include "formats/StateJson.h"
+#include "hosts/Simulation.h"
 #include "instructions/Engine.h"
-#include "io/Simulation.h"
-#include "io/StateJson.h"
 
 #ifdef LADDERJIT_HAVE_JIT
 #include "jit/Jit.h"

@@ -4,16 +4,16 @@
 // SIGTERM, `monitor stop` or --duration, watching the PROGRAM file for online change.
 #include "tools/ladderjit/Commands.h"
 
-#include "io/InputFiles.h"
-#include "io/ModbusServer.h"
-#include "io/RetainStore.h"
-#include "io/SimNc.h"
+#include "formats/InputFiles.h"
+#include "hosts/SimNc.h"
 #include "runtime/ControlSocket.h"
 #include "runtime/Controller.h"
 #include "runtime/Exchange.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 #include "runtime/ShmImage.h"
+#include "services/ModbusServer.h"
+#include "services/RetainStore.h"
 
 #include <signal.h>
 #include <time.h>
