@@ -125,11 +125,6 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
 }
 
 uint64_t run(const FuzzOptions &opts, std::ostream &out) {
-  if (!haveJit()) {
-    out << "error: ladderjit fuzz needs the JIT, but this build has no ladderjit_jit target; "
-           "rebuild with the jit/ library to run the differential fuzzer\n";
-    return opts.programs ? opts.programs : 1;
-  }
   FuzzStats st = runWith(opts, out, jitFactory());
   return st.failures();
 }

@@ -23,8 +23,8 @@ struct EngineFactory {
   MakeEngineFn make;
 };
 
-/// Every registered engine, the reference interpreter first. To add an engine, add ONE line to
-/// the list in EngineRegistry.cpp (and link its library in tests/support/CMakeLists.txt).
+/// Every registered engine, the reference interpreter first. To add an engine, give it an
+/// EngineKind in engines/EngineSpec.h and add ONE line to the list in EngineRegistry.cpp.
 const std::vector<EngineFactory> &registeredEngines();
 
 /// GoogleTest prints parameters with this.

@@ -89,11 +89,6 @@ struct CompileArgs {
 /// `ladderjit compile`: build PROGRAM into a shared object with the C ABI (docs/aot.md).
 int runCompile(const CompileArgs &a);
 
-/// `--engine aot:PATH`: load the .so and check it was built from `src` with `plc2Nvalue`. Null
-/// with `error` set on any problem (docs/aot.md "Loading").
-std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
-                                      int32_t plc2Nvalue, std::string &error);
-
 struct FuzzArgs {
   uint64_t seed = 1;
   uint64_t programs = 1000;
@@ -133,9 +128,5 @@ struct MonitorArgs {
 };
 /// `ladderjit monitor`: client of a running serve (docs/serve.md "Control").
 int runMonitor(const MonitorArgs &a);
-
-/// Whether this build contains the JIT / the fuzzer (their libraries may land later).
-bool haveJit();
-bool haveFuzz();
 
 } // namespace lj::cli

@@ -4,7 +4,9 @@
 // SIGTERM, `monitor stop` or --duration, watching the PROGRAM file for online change.
 #include "tools/ladderjit/Commands.h"
 
+#include "engines/EngineSpec.h"
 #include "formats/InputFiles.h"
+#include "hosts/HostChain.h"
 #include "hosts/SimNc.h"
 #include "runtime/ControlSocket.h"
 #include "runtime/Controller.h"
@@ -68,30 +70,18 @@ bool splitHostPort(const std::string &text, std::string &host, int &port, std::s
   return true;
 }
 
-// HOOK(retain): SAVEDATA (lj_host.save_data) asks the retentive store for a save. Runs after
-// the simulated NC's binding, wrapping the table it installed (whose own save_data still runs).
-io::RetainStore *gSaveStore = nullptr;
-const lj_host *gSaveBase = nullptr;
-void retainSaveData(void *ctx) {
-  if (gSaveBase && gSaveBase->save_data) gSaveBase->save_data(ctx);
-  if (gSaveStore) gSaveStore->requestSave();
-}
+// SAVEDATA (lj_host.save_data) asks the retentive store for a save. Runs after the simulated
+// NC's binding and layers over the table it installed (whose own save_data still runs first).
 class RetainSaveBinding : public rt::IoBinding {
 public:
   io::RetainStore *store = nullptr;
-  void beforeTick(lj_state &s, uint64_t) override {
-    if (s.host != &table_) {
-      gSaveBase = s.host;
-      gSaveStore = store;
-      table_ = s.host ? *s.host : lj_host{};
-      table_.save_data = &retainSaveData;
-      s.host = &table_;
-    }
-  }
+  void beforeTick(lj_state &s, uint64_t) override { chain_.bindOver(s); }
   void afterTick(lj_state &, uint64_t) override {}
 
 private:
-  lj_host table_{};
+  hosts::HostChain chain_{[this] {
+    if (store) store->requestSave();
+  }};
 };
 
 // HOOK(modbus): the Modbus server's view of the exchange. A write is acknowledged once the tick
@@ -125,11 +115,10 @@ int runServe(const ServeArgs &a) {
   if (a.periodMs == 0 || a.periodMs > 1000)
     return usageError("--period-ms: expected 1..1000, got " + std::to_string(a.periodMs));
   // The engine syntax of `run` (CLI.md): jit, interp or aot:PATH.so.
-  const bool aot = a.engine.rfind("aot:", 0) == 0;
-  if (a.engine != "jit" && a.engine != "interp" && !aot)
-    return usageError("--engine: expected jit, interp or aot:PATH.so, got '" + a.engine + "'");
-  if (aot && a.engine.size() == 4) return usageError("--engine aot: needs a path (aot:PATH.so)");
-  const std::string so = aot ? a.engine.substr(4) : std::string();
+  Result<engines::EngineSpec> spec = engines::parseEngineSpec(a.engine);
+  if (!spec) return usageError(spec.status().message());
+  const bool aot = spec->kind == engines::EngineKind::Aot;
+  const std::string so = spec->soPath;
   if (a.io != "simnc" && a.io != "shm")
     return usageError("--io: expected simnc or shm, got '" + a.io + "'");
   if (a.io == "shm" && a.shm.empty()) return usageError("--io shm needs --shm NAME");
@@ -160,7 +149,8 @@ int runServe(const ServeArgs &a) {
       a.control.empty() ? "/tmp/ladderjit-" + std::to_string(::getpid()) + ".sock" : a.control;
 
   // ---- the program ----
-  rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1);
+  rt::ProgramLoader loader(engines::engineKindName(spec->kind),
+                           a.plc2NvalueGiven ? a.plc2Nvalue : -1);
   std::optional<io::DitFile> dit;
   std::shared_ptr<rt::ProgramVersion> first = loader.load(a.program, {}, error, &dit, so);
   if (!first) {
