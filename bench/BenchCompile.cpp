@@ -1,10 +1,10 @@
 // JIT compile latency per program size and tier, with the lower / optimize / codegen phase
 // times (targets: optimizing < 1 s, fast < 150 ms for 10k statements), and compiles served by
 // the object cache (in memory, and from disk as in a new `ladderjit run` process), and the
-// worst-case program of every instruction (bench/WorstPrograms.h) at two sizes, whose ratio
+// worst-case program of every instruction (gen/WorstPrograms.h) at two sizes, whose ratio
 // shows the compile time is linear for every mix (BM_CompileWorst/<row>/<statements>).
 #include "bench/BenchPrograms.h"
-#include "bench/WorstPrograms.h"
+#include "gen/WorstPrograms.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"
 

@@ -2,8 +2,8 @@
 // (fixed seeds, so runs compare), verified once and cached, plus explicit per-statement counters.
 #pragma once
 
-#include "bench/ProgramGenerator.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "gen/ProgramGenerator.h"
 
 #include <benchmark/benchmark.h>
 

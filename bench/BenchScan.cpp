@@ -3,16 +3,8 @@
 // (targets: JIT full scan of 10k < 10 us and >= 30x the interpreter), and AOT shared objects
 // (`ladderjit compile`) against the optimizing JIT in the same run.
 #include "bench/BenchPrograms.h"
+#include "engines/EngineSpec.h"
 #include "ir/Engine.h"
-
-#ifdef LADDERJIT_HAVE_JIT
-#include "io/AotLoader.h"
-#include "jit/Aot.h"
-#include "jit/Jit.h"
-#include "jit/ObjectCache.h"
-
-#include <unistd.h>
-#endif
 
 namespace lj::bench {
 namespace {
@@ -27,42 +19,20 @@ const Engine &engineFor(int n, Kind k) {
   auto it = cache.find(key);
   if (it != cache.end()) return *it->second;
   const VerifiedProgram &p = verifiedProgram(n);
-  std::unique_ptr<Engine> e;
-  if (k == Kind::Interp) {
-    e = makeInterpreterEngine(p);
-  } else if (k == Kind::Aot) {
-#ifdef LADDERJIT_HAVE_JIT
-    // `ladderjit compile` (host CPU) into a temp .so, loaded like `run --engine aot:` does.
-    std::string so = "/tmp/ladderjit-bench-" + std::to_string(getpid()) + "-" + std::to_string(n) +
-                     ".so",
-                err;
-    io::SigningKey key; // a throwaway key pair: only this process signs and trusts it
-    io::TrustedKeys trust;
-    jit::AotOptions o;
-    o.output = so;
-    o.programHash = "sha256:" + jit::programDigest(p);
-    o.signingKey = &key;
-    if (key.generate(err)) trust.addRaw(key.publicRaw());
-    if (jit::compileSharedObject(p, o, err)) e = io::loadAot(so, {o.programHash}, trust, err);
-    std::remove(so.c_str());
-    if (!e) {
-      std::fprintf(stderr, "AOT build of the %d-statement program failed: %s\n", n, err.c_str());
-      std::abort();
-    }
-#endif
-  } else {
-#ifdef LADDERJIT_HAVE_JIT
-    jit::JitOptions o;
-    o.tier = k == Kind::JitFast ? jit::Tier::Fast : jit::Tier::Optimizing;
-    std::string err;
-    e = jit::compile(p, o, err);
-    if (!e) {
-      std::fprintf(stderr, "JIT compile of the %d-statement program failed: %s\n", n, err.c_str());
-      std::abort();
-    }
-#endif
+  // AOT: `ladderjit compile` (host CPU) into a temp .so, loaded like `run --engine aot:` does.
+  engines::EngineSpec spec{k == Kind::Interp ? engines::EngineKind::Interp
+                           : k == Kind::Aot  ? engines::EngineKind::Aot
+                                             : engines::EngineKind::Jit,
+                           {}};
+  engines::EngineOptions o;
+  o.fastTier = k == Kind::JitFast;
+  Result<std::unique_ptr<Engine>> e = engines::makeEngine(spec, p, o);
+  if (!e) {
+    std::fprintf(stderr, "%s build of the %d-statement program failed: %s\n",
+                 engines::engineKindName(spec.kind), n, e.status().message().c_str());
+    std::abort();
   }
-  return *cache.emplace(key, std::move(e)).first->second;
+  return *cache.emplace(key, std::move(e).value()).first->second;
 }
 
 /// A state after init, with a fixed input pattern.
@@ -104,7 +74,6 @@ BENCHMARK_CAPTURE(BM_Scan, interp, Kind::Interp)
     ->Apply(programSizes)
     ->Unit(benchmark::kMicrosecond);
 
-#ifdef LADDERJIT_HAVE_JIT
 BENCHMARK_CAPTURE(BM_Scan, jit_fast, Kind::JitFast)
     ->Apply(programSizes)
     ->Unit(benchmark::kMicrosecond);
@@ -185,7 +154,6 @@ BENCHMARK_CAPTURE(BM_ScanRatio, jit_fast, Kind::JitFast)
 BENCHMARK_CAPTURE(BM_ScanRatio, jit_opt, Kind::JitOpt)
     ->Apply(programSizes)
     ->Unit(benchmark::kMicrosecond);
-#endif
 
 } // namespace
 } // namespace lj::bench

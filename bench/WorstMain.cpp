@@ -1,6 +1,6 @@
-// gen_worst: writes the worst-case compile programs of bench/WorstPrograms.h as STL files, for
+// gen_worst: writes the worst-case compile programs of gen/WorstPrograms.h as STL files, for
 // timing them with the ladderjit driver (docs/BENCHMARKS.md "Compile time is linear").
-#include "bench/WorstPrograms.h"
+#include "gen/WorstPrograms.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -3,7 +3,7 @@
 #include "fuzz/Differential.h"
 
 #include "frontends/hnc8/FrontEnd.h"
-#include "tests/support/TestHost.h"
+#include "hosts/TestHost.h"
 
 #include <cstring>
 #include <memory>

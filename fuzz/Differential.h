@@ -3,11 +3,11 @@
 // tests.
 #pragma once
 
-#include "bench/ProgramGenerator.h"
 #include "fuzz/Fuzz.h"
+#include "gen/ProgramGenerator.h"
+#include "hosts/TestHost.h"
 #include "ir/Engine.h"
 #include "ladderjit/abi.h"
-#include "tests/support/TestHost.h"
 
 #include <cstdint>
 #include <ostream>
@@ -22,7 +22,7 @@ struct Case {
   int32_t plc2Nvalue = 200;
   gen::Stimulus stim;
   bool fastTier = true;
-  /// Content seed of the recording NC host (tests/support/TestHost.h) each engine gets a copy
+  /// Content seed of the recording NC host (hosts/TestHost.h) each engine gets a copy
   /// of; 0 = empty content.
   uint64_t hostSeed = 0;
 };

@@ -4,7 +4,7 @@
 #include "fuzz/Differential.h"
 #include "fuzz/RoundTrip.h"
 
-#include "bench/Rng.h"
+#include "gen/Rng.h"
 
 #include <chrono>
 #include <iomanip>
@@ -134,11 +134,6 @@ uint64_t run(const FuzzOptions &opts, std::ostream &out) {
     out << "round trip rungs: ladder " << counts->ladder << ", stl " << counts->stl << ", marker "
         << counts->marker << "\n";
     return st.failures();
-  }
-  if (!haveJit()) {
-    out << "error: ladderjit fuzz needs the JIT, but this build has no ladderjit_jit target; "
-           "rebuild with the jit/ library to run the differential fuzzer\n";
-    return opts.programs ? opts.programs : 1;
   }
   FuzzStats st = runWith(opts, out, jitFactory());
   return st.failures();

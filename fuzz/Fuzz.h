@@ -55,16 +55,12 @@ struct FuzzStats {
 using EngineFactory = std::function<std::unique_ptr<Engine>(const VerifiedProgram &, bool fastTier,
                                                             std::string &error)>;
 
-/// Whether this build links the JIT (target ladderjit_jit existed at configure time).
-bool haveJit();
-
-/// The JIT as the engine under test; without the JIT it always fails with a clear message.
+/// The JIT as the engine under test.
 EngineFactory jitFactory();
 
 /// Run the campaign, printing a summary (and any minimized mismatch) to `out`.
 /// Returns the number of mismatching programs (0 = pass); programs that did not verify and
-/// engine build failures count as mismatches here. Without the JIT it prints an error and
-/// returns a non-zero count.
+/// engine build failures count as mismatches here.
 uint64_t run(const FuzzOptions &opts, std::ostream &out);
 
 /// The campaign against any engine (tests inject faulty engines to check the harness).

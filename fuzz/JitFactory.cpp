@@ -1,38 +1,22 @@
-// The JIT as the fuzzer's engine under test. Compiled with LADDERJIT_HAVE_JIT only when the
-// ladderjit_jit target exists, so the fuzz library (and the CLI) build before the JIT lands.
+// The JIT as the fuzzer's engine under test, built by the one engine factory (engines/).
 #include "fuzz/Fuzz.h"
 
-#include "ir/Engine.h"
-
-#ifdef LADDERJIT_HAVE_JIT
-#include "jit/Jit.h"
-#endif
+#include "engines/EngineSpec.h"
 
 namespace lj::fuzz {
 
-#ifdef LADDERJIT_HAVE_JIT
-
-bool haveJit() { return true; }
-
 EngineFactory jitFactory() {
   return [](const VerifiedProgram &prog, bool fastTier, std::string &error) {
-    jit::JitOptions o;
-    o.tier = fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
-    return jit::compile(prog, o, error);
+    engines::EngineOptions o;
+    o.fastTier = fastTier;
+    Result<std::unique_ptr<Engine>> e =
+        engines::makeEngine({engines::EngineKind::Jit, {}}, prog, o);
+    if (!e) {
+      error = e.status().message();
+      return std::unique_ptr<Engine>();
+    }
+    return std::move(e).value();
   };
 }
-
-#else
-
-bool haveJit() { return false; }
-
-EngineFactory jitFactory() {
-  return [](const VerifiedProgram &, bool, std::string &error) -> std::unique_ptr<Engine> {
-    error = "this build has no JIT (target ladderjit_jit was missing at configure time)";
-    return nullptr;
-  };
-}
-
-#endif
 
 } // namespace lj::fuzz

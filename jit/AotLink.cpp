@@ -3,7 +3,7 @@
 // no shell), append the signed trailer and rename the result into place.
 #include "jit/AotInternal.h"
 
-#include "io/AotSigned.h"
+#include "engines/AotSigned.h"
 #include "jit/AotSources.inc" // generated: kAbiH, kProgramH, kTickC, kShimC
 #include "ladderjit/program.h"
 

@@ -1,7 +1,7 @@
 // Unix-socket JSON-lines server and client for the serve control interface.
 #include "runtime/ControlSocket.h"
 
-#include "io/StateJson.h"
+#include "formats/StateJson.h"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -2,8 +2,8 @@
 // "ok" and either the result or "error" (docs/serve.md "Control").
 #include "runtime/Controller.h"
 
-#include "io/InputFiles.h"
-#include "io/PlcDit.h"
+#include "formats/InputFiles.h"
+#include "formats/PlcDit.h"
 
 #include <sys/stat.h>
 #include <time.h>
@@ -131,7 +131,7 @@ std::string formatAssignment(const io::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
-// A write or lock item: parsed and checked for writability (io/Address.h).
+// A write or lock item: parsed and checked for writability (formats/Address.h).
 std::optional<io::Assignment> writable(const std::string &item, std::string &err) {
   std::optional<io::Assignment> a = io::parseAssignment(item, err);
   if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;

@@ -2,7 +2,7 @@
 // consistent snapshots of the state, writes applied at tick boundaries, and the lock list.
 #pragma once
 
-#include "io/Address.h"
+#include "formats/Address.h"
 #include "ladderjit/abi.h"
 
 #include <array>

@@ -4,7 +4,7 @@
 // swaps the program at a tick boundary (docs/serve.md).
 #pragma once
 
-#include "io/Address.h"
+#include "formats/Address.h"
 #include "ir/Engine.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"

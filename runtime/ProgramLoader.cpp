@@ -2,8 +2,8 @@
 // version, so each online change is a new JITDylib, STYLE.md 10; or an AOT .so, docs/aot.md).
 #include "runtime/ProgramLoader.h"
 
-#include "io/AotLoader.h"
-#include "io/ProgramFile.h"
+#include "engines/EngineSpec.h"
+#include "formats/ProgramFile.h"
 #include "jit/Jit.h"
 
 namespace lj::rt {
@@ -66,31 +66,37 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
   v->prog = std::make_unique<VerifiedProgram>(std::move(*prog));
   if (!applyForces(*v->prog, forces, error)) return nullptr;
   v->forces = forces;
-  if (engine_ == "interp") {
-    v->engine = makeInterpreterEngine(*v->prog);
-  } else if (aot()) {
-    // loadAot checks the signer, ABI, state size, ELF and that `so` was built from this program
-    // with this nvalue; a mismatch leaves the running version alone (the caller reports it).
-    v->engine = io::loadAot(so, io::aotExpectOf(src, nvalue), aotTrust_, error);
-    if (!v->engine) {
-      error = "aot: " + error;
-      return nullptr;
-    }
-    v->so = so;
-  } else {
-    std::lock_guard<std::mutex> g(mu_);
+  engines::EngineSpec spec{engine_ == "interp" ? engines::EngineKind::Interp
+                           : aot()             ? engines::EngineKind::Aot
+                                               : engines::EngineKind::Jit,
+                           so};
+  engines::EngineOptions eo;
+  std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
+  if (spec.kind == engines::EngineKind::Jit) {
+    // One session for every version (a JITDylib each). No object cache: each version is
+    // compiled once, and a forced copy differs anyway.
+    jitLock.lock();
     if (!session_) {
       session_ = jit::Session::create(jit::Tier::Optimizing, error);
       if (!session_) return nullptr;
     }
-    // No object cache: each version is compiled once, and a forced copy differs anyway.
-    jit::JitOptions jo;
-    v->engine = session_->compile(*v->prog, jo, error);
-    if (!v->engine) {
-      error = "jit: " + error;
-      return nullptr;
-    }
+    eo.session = session_.get();
   }
+  // AOT: the loader checks the signer, ABI, state size, ELF and that `so` was built from this
+  // program with this nvalue; a mismatch leaves the running version alone (the caller reports it).
+  if (aot()) {
+    eo.aotExpect = io::aotExpectOf(src, nvalue);
+    eo.aotTrust = &aotTrust_;
+  }
+  Result<std::unique_ptr<Engine>> made = engines::makeEngine(spec, *v->prog, eo);
+  if (!made) {
+    if (spec.kind != engines::EngineKind::Interp)
+      error = std::string(engines::engineKindName(spec.kind)) + ": " + made.status().message();
+    return nullptr;
+  }
+  v->engine = std::move(made).value();
+  if (aot()) v->so = so;
+  if (jitLock.owns_lock()) jitLock.unlock();
   {
     std::lock_guard<std::mutex> g(mu_);
     v->id = nextId_++;

@@ -4,8 +4,8 @@
 // the scan thread.
 #pragma once
 
-#include "io/AotTrust.h"
-#include "io/PlcDit.h"
+#include "engines/AotTrust.h"
+#include "formats/PlcDit.h"
 #include "runtime/Executive.h"
 
 #include <cstdint>

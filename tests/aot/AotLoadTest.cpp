@@ -3,9 +3,9 @@
 // Signer trust and attacks on it: tests/security/AotTrustTest.cpp.
 #include "tests/aot/AotTestUtil.h"
 
-#include "io/AotLoader.h"
-#include "io/AotSigned.h"
-#include "io/PlcDit.h"
+#include "engines/AotLoader.h"
+#include "engines/AotSigned.h"
+#include "formats/PlcDit.h"
 #include "ir/Engine.h"
 #include "ladderjit/program.h"
 #include "tests/support/EngineRegistry.h"

@@ -2,8 +2,8 @@
 // a differential fuzzing batch, and the acceptance command on every example.
 #include "tests/aot/AotTestUtil.h"
 
+#include "engines/AotLoader.h"
 #include "fuzz/Fuzz.h"
-#include "io/AotLoader.h"
 #include "ir/Engine.h"
 #include "tests/support/EngineRegistry.h"
 

@@ -3,9 +3,9 @@
 // file kinds; the CLI attacks (constructor marker) are tests/aot/aot_attacks.py.
 #include "tests/aot/AotTestUtil.h"
 
-#include "io/AotLoader.h"
-#include "io/AotSigned.h"
-#include "io/AotTrust.h"
+#include "engines/AotLoader.h"
+#include "engines/AotSigned.h"
+#include "engines/AotTrust.h"
 #include "ladderjit/program.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"

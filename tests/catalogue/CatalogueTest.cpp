@@ -2,10 +2,10 @@
 // (manual-mnemonics.txt) is in the instruction table, has interpreter semantics, has a lowering,
 // can be emitted by the fuzzer's generator and has an entry in docs/instructions.md; and every
 // table row is a mnemonic of the manual.
-#include "bench/ProgramGenerator.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/InstrDocs.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "gen/ProgramGenerator.h"
 #include "interp/Interpreter.h"
 #include "ir/OpTable.h"
 #include "jit/Jit.h"

@@ -285,27 +285,19 @@ TEST(Run, StimulusBeyondTheLastTickIsAWarning) {
   EXPECT_NE(r.err.find("late.stim:2: tick 10 is never reached"), std::string::npos) << r.err;
 }
 
-TEST(JitCommands, EmitLlvmAndFuzzRunOrSayNotBuilt) {
+TEST(JitCommands, EmitLlvmAndFuzzRun) {
   std::string prog = writeScratch("emit.stl", kFollow);
   CliResult r = runCli({"emit-llvm", prog, "-O1"});
-  if (r.exitCode == 2) {
-    EXPECT_NE(r.err.find("not built yet"), std::string::npos) << r.err;
-  } else {
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("define "), std::string::npos) << "LLVM IR with a function";
-  }
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("define "), std::string::npos) << "LLVM IR with a function";
   r = runCli({"emit-llvm", prog, "-O5"}); // CLI.md: -O0..-O3 only
   EXPECT_EQ(r.exitCode, 2);
   r = runCli({"emit-llvm", writeScratch("emit-bad.stl", "FOO\n")});
-  EXPECT_EQ(r.exitCode == 1 || r.err.find("not built yet") != std::string::npos, true) << r.err;
+  EXPECT_EQ(r.exitCode, 1) << r.err;
 
   r = runCli({"fuzz", "--seed", "7", "--programs", "3", "--ticks", "5"});
-  if (r.exitCode == 2) {
-    EXPECT_NE(r.err.find("not built yet"), std::string::npos) << r.err;
-  } else {
-    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_FALSE(r.out.empty()) << "a summary";
-  }
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  EXPECT_FALSE(r.out.empty()) << "a summary";
 }
 
 } // namespace

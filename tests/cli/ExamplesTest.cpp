@@ -282,16 +282,11 @@ TEST(Examples, JsonlMatchesCsv) {
   EXPECT_EQ(csvValue(csv.out, 85, "G2622.0"), 1);
 }
 
-// The JIT must print exactly what the interpreter prints (STYLE.md 8/12). Before the JIT
-// library is built into the driver, `--engine jit` must say so and exit 2.
-TEST(Examples, JitMatchesInterpreterOrSaysNotBuilt) {
+// The JIT must print exactly what the interpreter prints (STYLE.md 8/12).
+TEST(Examples, JitMatchesInterpreter) {
   for (auto args : {lathe(), coolant(), parts()}) {
     CliResult interp = runCli(withEngine(args, "interp"));
     CliResult jit = runCli(withEngine(args, "jit"));
-    if (jit.exitCode == 2) {
-      EXPECT_NE(jit.err.find("not built yet"), std::string::npos) << jit.err;
-      continue;
-    }
     EXPECT_EQ(jit.exitCode, 0) << jit.err;
     EXPECT_EQ(jit.out, interp.out) << args[1];
   }

@@ -1,6 +1,6 @@
 // Unit tests of command-line addresses and values (CLI.md "Addresses on the command line";
 // widths, signedness and ranges from DIALECT.md 1; number syntax from docs/dialect-notes.md).
-#include "io/Address.h"
+#include "formats/Address.h"
 
 #include <gtest/gtest.h>
 

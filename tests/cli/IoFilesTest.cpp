@@ -1,7 +1,7 @@
 // Unit tests of the stimulus and parameter file parsers and of the JSON state dump
 // (formats: CLI.md `--stimulus`, `--params`, `--dump`; ordering rules: README "Stimulus files").
-#include "io/InputFiles.h"
-#include "io/StateJson.h"
+#include "formats/InputFiles.h"
+#include "formats/StateJson.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Unit tests of the simulation driver with a hand-written engine (plain C entry functions), so
 // the order of power-up, init, stimulus, now_ms and watch rows is checked without any real
 // engine (CLI.md `run` options; DIALECT.md 4 scan model; README "Simulation order").
-#include "io/Simulation.h"
+#include "hosts/Simulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The program generators: every generated program verifies, a batch of random programs uses
 // every row of the instruction table, generation is deterministic, the realistic mix matches its
 // description, and the stimulus applies and prints in the CLI format.
-#include "bench/ProgramGenerator.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "gen/ProgramGenerator.h"
 #include "ir/OpTable.h"
 
 #include <gtest/gtest.h>

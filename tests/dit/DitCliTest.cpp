@@ -2,7 +2,7 @@
 // a container runs exactly like its STL file with the same options, its parameters are defaults
 // that options override, and a damaged container is a clear input error (exit 2).
 #include "CliRunner.h"
-#include "io/PlcDit.h"
+#include "formats/PlcDit.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // docs/plc-dit.md "Errors". Expected texts come from that document.
 #include "DitTestUtil.h"
 
-#include "io/InputFiles.h"
+#include "formats/InputFiles.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Helpers shared by the plc.dit unit tests: a small valid container and hash-correct variants.
 #pragma once
 
-#include "io/PlcDit.h"
+#include "formats/PlcDit.h"
 
 #include <string>
 

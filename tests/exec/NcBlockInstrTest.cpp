@@ -1,8 +1,8 @@
 // Family Nc, chapter-6 blocks on every engine (hnc8-cnc-interface.md section 2: TOOLSET TOOLCLR
 // NIXIE TOOLUSE TOOLLIFE TOOL SPDA SUBAXEN MPGSET ROT EVENT SAVEDATA), with the decisions of
 // docs/dialect-notes.md "NC services" and TestHost's documented behaviour.
+#include "hosts/TestHost.h"
 #include "tests/exec/ExecTest.h"
-#include "tests/support/TestHost.h"
 
 namespace lj::test {
 namespace {

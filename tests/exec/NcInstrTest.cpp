@@ -2,8 +2,8 @@
 // TGET TACK RTOMPG TEMPSEN), hnc8-functions-2.md 2.19-2.23 (PARTCNT PARTCLR HEADSEN VARGET
 // VARSET), hnc8-cnc-interface.md section 2 (the chapter-6 host blocks, ROT #59) and the
 // decisions of docs/dialect-notes.md "NC services", with TestHost recording the host calls.
+#include "hosts/TestHost.h"
 #include "tests/exec/ExecTest.h"
-#include "tests/support/TestHost.h"
 
 namespace lj::test {
 namespace {

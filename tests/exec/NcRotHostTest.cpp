@@ -2,8 +2,8 @@
 // documented defaults without an NC host (abi.h lj_host, docs/dialect-notes.md "NC services")
 // on every engine, and one program of every Nc mnemonic whose states AND host call logs must
 // be equal on all engines.
+#include "hosts/TestHost.h"
 #include "tests/exec/ExecTest.h"
-#include "tests/support/TestHost.h"
 
 #include <cstring>
 

@@ -1,9 +1,9 @@
 // Compile time stays linear in the program size for every instruction mix (issue 11 finding 5),
 // checked without timing: for the worst-case program of every table row and flow shape
-// (bench/WorstPrograms.h) the largest lowered function has a bounded IR size that does not grow
+// (gen/WorstPrograms.h) the largest lowered function has a bounded IR size that does not grow
 // with the program, and the IR per statement stays constant. The same programs, cut into many
 // carried chunks and outlined loop bodies, still run exactly as the interpreter does.
-#include "bench/WorstPrograms.h"
+#include "gen/WorstPrograms.h"
 #include "lowering/Lower.h"
 #include "tests/jit/JitHarness.h"
 

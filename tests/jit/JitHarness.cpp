@@ -1,7 +1,7 @@
 // JIT engines with explicit options, checked against the interpreter by tests/support.
 #include "tests/jit/JitHarness.h"
 
-#include "bench/ProgramGenerator.h"
+#include "gen/ProgramGenerator.h"
 
 #include <memory>
 #include <vector>

@@ -35,7 +35,7 @@ using StateCheck = std::function<void(uint32_t tick, const lj_state &ref, uint32
                                                  int32_t chunkStatements = 150);
 
 /// The differential fuzzer's random program for `seed` of about `statements` statements
-/// (bench/ProgramGenerator.h: every table row, deep ANB/ORB and MPS nesting, loops, jumps,
+/// (gen/ProgramGenerator.h: every table row, deep ANB/ORB and MPS nesting, loops, jumps,
 /// nested calls, RETN, faults), verified with `plc2Nvalue` or, when negative, with the slicing
 /// parameter it was generated for. `text`, when given, receives the program.
 std::optional<VerifiedProgram> randomProgramOrFail(uint64_t seed, int32_t statements,

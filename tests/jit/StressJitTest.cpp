@@ -1,4 +1,4 @@
-// The differential fuzzer's random programs (bench/ProgramGenerator.h: every instruction of the
+// The differential fuzzer's random programs (gen/ProgramGenerator.h: every instruction of the
 // table) on both tiers, with and without cutting bodies into small functions: the JIT's state
 // must equal the interpreter's after init and after every tick, whatever the inputs, faults and
 // slice plan. Also checks that the seeds used here and in PartitionJitTest cover every row.

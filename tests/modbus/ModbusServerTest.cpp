@@ -1,6 +1,6 @@
 // ModbusServer: the documented map (docs/modbus-map.md), Modbus exceptions (Modbus Application
 // Protocol V1.1b3, 7) and many clients, against an in-memory backend through libmodbus clients.
-#include "io/ModbusServer.h"
+#include "services/ModbusServer.h"
 
 #include <gtest/gtest.h>
 

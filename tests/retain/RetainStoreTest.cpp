@@ -1,6 +1,6 @@
 // RetainStore: what is retained (DIALECT.md 1: B, T300..T427, C300..C427), the file's crash
 // safety and fallbacks, group commit and rate limiting (docs/retain.md).
-#include "io/RetainStore.h"
+#include "services/RetainStore.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // ControlSocket::answer and io::dumpJson / isUtf8: every answer is one valid JSON line, whatever
 // the request bytes, the handler or the strings in the result (issue 11 finding 3).
 #include "runtime/ControlSocket.h"
-#include "io/StateJson.h"
+#include "formats/StateJson.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
-// Writes the benchmark program of docs/BENCHMARKS.md "Inputs" (bench/ProgramGenerator.h
+// Writes the benchmark program of docs/BENCHMARKS.md "Inputs" (gen/ProgramGenerator.h
 // generateRealistic, seed 20240000 + size) to a file, for the serve evidence runs
 // (docs/BENCHMARKS.md "serve"): `serve_bench_program SIZE OUT.stl [SEED]`.
-#include "bench/ProgramGenerator.h"
+#include "gen/ProgramGenerator.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -2,7 +2,7 @@
 // by writing G words between beforeTick and afterTick (the scan's place in the tick protocol).
 #pragma once
 
-#include "io/SimNc.h"
+#include "hosts/SimNc.h"
 
 #include <memory>
 

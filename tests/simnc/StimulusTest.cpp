@@ -1,8 +1,8 @@
 // The stimulus file's NC commands (`@TICK nc.NAME key=value ...`, docs/simulated-nc.md
 // "Stimulus commands"): parsing, defaults, and `FILE:LINE: problem` errors; plus the order of a
 // tick in the simulation driver (assignments, NC commands, beforeTick, scan, afterTick).
-#include "io/InputFiles.h"
-#include "io/Simulation.h"
+#include "formats/InputFiles.h"
+#include "hosts/Simulation.h"
 
 #include <gtest/gtest.h>
 

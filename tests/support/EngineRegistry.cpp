@@ -1,35 +1,31 @@
-// The one place where engines are registered for the execution tests.
+// The one place where engines are registered for the execution tests; each is built by the
+// engine factory (engines/EngineSpec.h) exactly as the CLI builds it.
 #include "tests/support/EngineRegistry.h"
 
-#include "io/AotLoader.h"
-#include "io/AotTrust.h"
-#include "jit/Aot.h"
-#include "jit/Jit.h"
-#include "jit/ObjectCache.h"
+#include "engines/AotTrust.h"
+#include "engines/EngineSpec.h"
 
-#include <atomic>
-#include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 
 namespace lj::test {
 
 namespace {
 
-// AOT through the whole path of `ladderjit compile` + `run --engine aot:`: a shared object in
-// the temp directory, loaded (checks included) and unlinked at once (the mapping stays valid).
-std::unique_ptr<Engine> makeAotEngine(const VerifiedProgram &p, std::string &error) {
-  static std::atomic<uint64_t> counter{0};
-  const char *tmp = std::getenv("TMPDIR");
-  jit::AotOptions o;
-  o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-test-" +
-             std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
-  o.programHash = "sha256:" + jit::programDigest(p);
-  o.signingKey = &testSigningKey();
-  if (!jit::compileSharedObject(p, o, error)) return nullptr;
-  std::unique_ptr<Engine> e = io::loadAot(o.output, {o.programHash}, testTrust(), error);
-  std::remove(o.output.c_str());
-  return e;
+MakeEngineFn fromFactory(engines::EngineSpec spec, bool signWithTestKey = false) {
+  return [spec, signWithTestKey](const VerifiedProgram &p,
+                                 std::string &error) -> std::unique_ptr<Engine> {
+    engines::EngineOptions o;
+    if (signWithTestKey) {
+      o.aotSigningKey = &testSigningKey();
+      o.aotTrust = &testTrust();
+    }
+    Result<std::unique_ptr<Engine>> e = engines::makeEngine(spec, p, o);
+    if (!e) {
+      error = e.status().message();
+      return nullptr;
+    }
+    return std::move(e).value();
+  };
 }
 
 } // namespace
@@ -57,11 +53,12 @@ const std::vector<EngineFactory> &registeredEngines() {
   static const std::vector<EngineFactory> kEngines = {
       // The reference interpreter (the oracle); keep it first: cross-engine checks compare every
       // other engine against entry 0.
-      {"interp", [](const VerifiedProgram &p, std::string &) { return makeInterpreterEngine(p); }},
-      // REGISTRATION POINT: add one line per engine, e.g. (with #include "jit/Jit.h")
-      // {"jit", [](const VerifiedProgram &p, std::string &e) { return jit::compile(p, {}, e); }},
-      {"jit", [](const VerifiedProgram &p, std::string &e) { return jit::compile(p, {}, e); }},
-      {"aot", makeAotEngine},
+      {"interp", fromFactory({engines::EngineKind::Interp, {}})},
+      {"jit", fromFactory({engines::EngineKind::Jit, {}})},
+      // AOT through the whole path of `ladderjit compile` + `run --engine aot:`: a shared object
+      // in the temp directory, signed with the test key, loaded (checks included) and unlinked
+      // at once.
+      {"aot", fromFactory({engines::EngineKind::Aot, {}}, true)},
   };
   return kEngines;
 }

@@ -28,8 +28,8 @@ struct EngineFactory {
   MakeEngineFn make;
 };
 
-/// Every registered engine, the reference interpreter first. To add an engine, add ONE line to
-/// the list in EngineRegistry.cpp (and link its library in tests/support/CMakeLists.txt).
+/// Every registered engine, the reference interpreter first. To add an engine, give it an
+/// EngineKind in engines/EngineSpec.h and add ONE line to the list in EngineRegistry.cpp.
 const std::vector<EngineFactory> &registeredEngines();
 
 /// The key pair of the "aot" engine: an in-memory Ed25519 key made once per test process, and

@@ -2,7 +2,7 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "io/ProgramFile.h"
+#include "formats/ProgramFile.h"
 #include "ir/Engine.h"
 #include "ir/Program.h"
 
@@ -20,7 +20,7 @@ enum Exit : int { kOk = 0, kProgramErrors = 1, kUsage = 2 };
 /// Print `ladderjit: error: <msg>` to stderr and return kUsage.
 int usageError(const std::string &msg);
 
-/// PROGRAM as read: an STL file, or a plc.dit container (io/ProgramFile.h).
+/// PROGRAM as read: an STL file, or a plc.dit container (formats/ProgramFile.h).
 using io::effectiveNvalue;
 using io::programHashOf;
 using io::ProgramSource;
@@ -162,9 +162,5 @@ struct MonitorArgs {
 };
 /// `ladderjit monitor`: client of a running serve (docs/serve.md "Control").
 int runMonitor(const MonitorArgs &a);
-
-/// Whether this build contains the JIT / the fuzzer (their libraries may land later).
-bool haveJit();
-bool haveFuzz();
 
 } // namespace lj::cli

@@ -3,14 +3,9 @@
 // PROGRAM).
 #include "tools/ladderjit/Commands.h"
 
-#include "io/AotLoader.h"
-#include "io/AotTrust.h"
-
-#include <cstdio>
-
-#ifdef LADDERJIT_HAVE_JIT
+#include "engines/AotLoader.h"
+#include "engines/AotTrust.h"
 #include "jit/Aot.h"
-#endif
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -54,7 +49,6 @@ bool outputReplaceable(const std::string &out, std::string &error) {
 } // namespace
 
 int runCompile(const CompileArgs &a) {
-#ifdef LADDERJIT_HAVE_JIT
   if (a.cpu != "host" && a.cpu != "generic")
     return usageError("--cpu: expected host or generic, got '" + a.cpu + "'");
   int code = kOk;
@@ -105,10 +99,6 @@ int runCompile(const CompileArgs &a) {
     return usageError("compile: " + error);
   }
   return kOk;
-#else
-  (void)a;
-  return usageError("compile is not built yet (this build has no JIT library)");
-#endif
 }
 
 } // namespace lj::cli

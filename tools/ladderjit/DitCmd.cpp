@@ -2,8 +2,8 @@
 // The program is verified (with its symbols) first, so a container never holds a broken one.
 #include "tools/ladderjit/Commands.h"
 
+#include "formats/InputFiles.h"
 #include "frontends/hnc8/FrontEnd.h"
-#include "io/InputFiles.h"
 
 #include <cstdio>
 #include <fstream>

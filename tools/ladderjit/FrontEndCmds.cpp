@@ -1,16 +1,11 @@
 // `check`, `emit-llvm` and `fuzz`: the commands that load a program (STL or plc.dit) without
-// simulating it (or, for fuzz, generate their own). JIT and fuzzer paths compile only when those
-// libraries exist.
+// simulating it (or, for fuzz, generate their own).
 #include "tools/ladderjit/Commands.h"
 
 #include "frontends/hnc8/FrontEnd.h"
 
-#ifdef LADDERJIT_HAVE_JIT
-#include "jit/Jit.h"
-#endif
-#ifdef LADDERJIT_HAVE_FUZZ
 #include "fuzz/Fuzz.h"
-#endif
+#include "jit/Jit.h"
 
 #include <cstdio>
 #include <iostream>
@@ -20,22 +15,6 @@ namespace lj::cli {
 int usageError(const std::string &msg) {
   std::fprintf(stderr, "ladderjit: error: %s\n", msg.c_str());
   return kUsage;
-}
-
-bool haveJit() {
-#ifdef LADDERJIT_HAVE_JIT
-  return true;
-#else
-  return false;
-#endif
-}
-
-bool haveFuzz() {
-#ifdef LADDERJIT_HAVE_FUZZ
-  return true;
-#else
-  return false;
-#endif
 }
 
 bool readProgram(const std::string &path, ProgramSource &src, int &exitCode) {
@@ -69,7 +48,6 @@ int runCheck(const CheckArgs &a) {
 }
 
 int runEmitLlvm(const EmitArgs &a) {
-#ifdef LADDERJIT_HAVE_JIT
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code)) return code;
@@ -80,14 +58,9 @@ int runEmitLlvm(const EmitArgs &a) {
   if (!jit::emitLlvm(*prog, a.optLevel, ir, error)) return usageError("emit-llvm failed: " + error);
   std::cout << ir << std::flush;
   return kOk;
-#else
-  (void)a;
-  return usageError("emit-llvm is not built yet (this build has no JIT library)");
-#endif
 }
 
 int runFuzz(const FuzzArgs &a) {
-#ifdef LADDERJIT_HAVE_FUZZ
   fuzz::FuzzOptions opts;
   opts.seed = a.seed;
   opts.programs = a.programs;
@@ -96,10 +69,6 @@ int runFuzz(const FuzzArgs &a) {
   uint64_t mismatches = fuzz::run(opts, std::cout);
   std::cout << std::flush;
   return mismatches == 0 ? kOk : kProgramErrors;
-#else
-  (void)a;
-  return usageError("fuzz is not built yet (this build has no fuzzer library)");
-#endif
 }
 
 } // namespace lj::cli

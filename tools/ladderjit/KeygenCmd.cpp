@@ -2,7 +2,7 @@
 // "Trust"): NAME.key (private, mode 0600) for `compile --sign-key`, NAME.pub for `--trust-key`.
 #include "tools/ladderjit/Commands.h"
 
-#include "io/AotTrust.h"
+#include "engines/AotTrust.h"
 
 #include <cstdio>
 

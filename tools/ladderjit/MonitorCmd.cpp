@@ -3,8 +3,8 @@
 // problem (bad arguments, no server, a refused request) exits 2 with a message.
 #include "tools/ladderjit/Commands.h"
 
-#include "io/Address.h"
-#include "io/StateJson.h"
+#include "formats/Address.h"
+#include "formats/StateJson.h"
 #include "runtime/ControlPath.h"
 #include "runtime/ControlSocket.h"
 

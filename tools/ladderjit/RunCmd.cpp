@@ -3,14 +3,11 @@
 // optionally dump the final state.
 #include "tools/ladderjit/Commands.h"
 
-#include "io/Simulation.h"
-#include "io/StateJson.h"
+#include "engines/EngineSpec.h"
+#include "formats/StateJson.h"
+#include "hosts/Simulation.h"
 #include "ir/Engine.h"
-
-#ifdef LADDERJIT_HAVE_JIT
-#include "jit/Jit.h"
 #include "jit/ObjectCache.h"
-#endif
 
 #include <charconv>
 #include <cstdio>
@@ -155,10 +152,8 @@ private:
 int runRun(const RunArgs &a) {
   if (a.format != "csv" && a.format != "jsonl")
     return usageError("--format: expected csv or jsonl, got '" + a.format + "'");
-  bool aot = a.engine.rfind("aot:", 0) == 0;
-  if (a.engine != "interp" && a.engine != "jit" && !aot)
-    return usageError("--engine: expected interp, jit or aot:PATH.so, got '" + a.engine + "'");
-  if (aot && a.engine.size() == 4) return usageError("--engine aot: needs a path (aot:PATH.so)");
+  Result<engines::EngineSpec> spec = engines::parseEngineSpec(a.engine);
+  if (!spec) return usageError(spec.status().message());
   if (a.periodMs > (uint64_t{1} << 40))
     return usageError("--period-ms: too large (at most 2^40 ms)");
 
@@ -179,23 +174,22 @@ int runRun(const RunArgs &a) {
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
 
-  std::unique_ptr<Engine> engine;
-  if (a.engine == "interp") {
-    engine = makeInterpreterEngine(*prog);
-  } else if (a.engine == "jit") {
-#ifdef LADDERJIT_HAVE_JIT
-    jit::JitOptions jo;
-    jo.cache = jit::ObjectCache::fromEnvironment(); // docs/aot.md "Object cache"
-    engine = jit::compile(*prog, jo, error);
-    if (!engine) return usageError("jit: " + error);
-#else
-    return usageError("--engine jit is not built yet (this build has no JIT library); "
-                      "use --engine interp");
-#endif
-  } else {
-    engine = loadAotEngine(a.engine.substr(4), src, nvalue, a.trustKeys, error);
-    if (!engine) return usageError("--engine aot: " + error);
+  engines::EngineOptions eo;
+  io::TrustedKeys trust;
+  if (spec->kind == engines::EngineKind::Jit)
+    eo.cache = jit::ObjectCache::fromEnvironment(); // docs/aot.md "Object cache"
+  if (spec->kind == engines::EngineKind::Aot) {
+    // The signers `--trust-key` names (none: the default public key), docs/aot.md "Trust".
+    if (!io::loadTrustedKeys(a.trustKeys, trust, error))
+      return usageError("--engine aot: " + error);
+    eo.aotExpect = io::aotExpectOf(src, nvalue);
+    eo.aotTrust = &trust;
   }
+  Result<std::unique_ptr<Engine>> made = engines::makeEngine(*spec, *prog, eo);
+  if (!made)
+    return usageError((spec->kind == engines::EngineKind::Aot ? "--engine aot: " : "jit: ") +
+                      made.status().message());
+  std::unique_ptr<Engine> engine = std::move(made).value();
 
   DumpTarget dump; // opened only once the program is known to run
   if (!dump.open(a.dump, error)) return usageError(error);

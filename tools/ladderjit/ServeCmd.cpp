@@ -4,11 +4,11 @@
 // SIGTERM, `monitor stop` or --duration (with --watch-file, watching PROGRAM for online change).
 #include "tools/ladderjit/Commands.h"
 
-#include "io/InputFiles.h"
-#include "io/ModbusServer.h"
-#include "io/RetainStore.h"
-#include "io/SimNc.h"
-#include "io/StateJson.h"
+#include "engines/EngineSpec.h"
+#include "formats/InputFiles.h"
+#include "formats/StateJson.h"
+#include "hosts/HostChain.h"
+#include "hosts/SimNc.h"
 #include "runtime/ControlPath.h"
 #include "runtime/ControlSocket.h"
 #include "runtime/Controller.h"
@@ -16,6 +16,8 @@
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 #include "runtime/ShmImage.h"
+#include "services/ModbusServer.h"
+#include "services/RetainStore.h"
 
 #include <signal.h>
 #include <sys/stat.h>
@@ -75,30 +77,18 @@ bool splitHostPort(const std::string &text, std::string &host, int &port, std::s
   return true;
 }
 
-// HOOK(retain): SAVEDATA (lj_host.save_data) asks the retentive store for a save. Runs after
-// the simulated NC's binding, wrapping the table it installed (whose own save_data still runs).
-io::RetainStore *gSaveStore = nullptr;
-const lj_host *gSaveBase = nullptr;
-void retainSaveData(void *ctx) {
-  if (gSaveBase && gSaveBase->save_data) gSaveBase->save_data(ctx);
-  if (gSaveStore) gSaveStore->requestSave();
-}
+// SAVEDATA (lj_host.save_data) asks the retentive store for a save. Runs after the simulated
+// NC's binding and layers over the table it installed (whose own save_data still runs first).
 class RetainSaveBinding : public rt::IoBinding {
 public:
   io::RetainStore *store = nullptr;
-  void beforeTick(lj_state &s, uint64_t) override {
-    if (s.host != &table_) {
-      gSaveBase = s.host;
-      gSaveStore = store;
-      table_ = s.host ? *s.host : lj_host{};
-      table_.save_data = &retainSaveData;
-      s.host = &table_;
-    }
-  }
+  void beforeTick(lj_state &s, uint64_t) override { chain_.bindOver(s); }
   void afterTick(lj_state &, uint64_t) override {}
 
 private:
-  lj_host table_{};
+  hosts::HostChain chain_{[this] {
+    if (store) store->requestSave();
+  }};
 };
 
 // HOOK(modbus): the Modbus server's view of the exchange. A write is acknowledged once the tick
@@ -185,11 +175,10 @@ int runServe(const ServeArgs &a) {
   if (a.periodMs == 0 || a.periodMs > 1000)
     return usageError("--period-ms: expected 1..1000, got " + std::to_string(a.periodMs));
   // The engine syntax of `run` (CLI.md): jit, interp or aot:PATH.so.
-  const bool aot = a.engine.rfind("aot:", 0) == 0;
-  if (a.engine != "jit" && a.engine != "interp" && !aot)
-    return usageError("--engine: expected jit, interp or aot:PATH.so, got '" + a.engine + "'");
-  if (aot && a.engine.size() == 4) return usageError("--engine aot: needs a path (aot:PATH.so)");
-  const std::string so = aot ? a.engine.substr(4) : std::string();
+  Result<engines::EngineSpec> spec = engines::parseEngineSpec(a.engine);
+  if (!spec) return usageError(spec.status().message());
+  const bool aot = spec->kind == engines::EngineKind::Aot;
+  const std::string so = spec->soPath;
   if (a.io != "simnc" && a.io != "shm")
     return usageError("--io: expected simnc or shm, got '" + a.io + "'");
   if (a.io == "shm" && a.shm.empty()) return usageError("--io shm needs --shm NAME");

@@ -1,0 +1,108 @@
+// The one engine factory (engines/EngineSpec.h): the interpreter, the JIT (own or shared
+// session) and AOT shared objects (loaded, or built into a temp file and loaded).
+#include "engines/AotLoader.h"
+#include "engines/EngineSpec.h"
+
+#include "jit/Aot.h"
+#include "jit/Jit.h"
+#include "jit/ObjectCache.h"
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace lj::engines {
+
+namespace {
+
+Status engineFailed(std::string message) {
+  return Status::error(ErrorCode::EngineFailed, std::move(message));
+}
+
+/// `ladderjit compile` into the temp directory, then load it like `run --engine aot:` does; the
+/// file is unlinked at once (the mapping stays valid).
+Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
+                                                const EngineOptions &opts) {
+  static std::atomic<uint64_t> counter{0};
+  const char *tmp = std::getenv("TMPDIR");
+  jit::AotOptions o;
+  o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-aot-" +
+             std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
+  o.programHash = "sha256:" + jit::programDigest(prog);
+  std::string error;
+  io::SigningKey ownKey;
+  io::TrustedKeys ownTrust;
+  const io::TrustedKeys *trust = opts.aotTrust;
+  o.signingKey = opts.aotSigningKey;
+  if (!o.signingKey || !trust) {
+    if (!ownKey.generate(error)) return engineFailed(error);
+    ownTrust.addRaw(ownKey.publicRaw());
+    o.signingKey = &ownKey;
+    trust = &ownTrust;
+  }
+  if (!jit::compileSharedObject(prog, o, error)) return engineFailed(error);
+  std::unique_ptr<Engine> e = io::loadAot(o.output, {o.programHash}, *trust, error);
+  std::remove(o.output.c_str());
+  if (!e) return engineFailed(error);
+  return e;
+}
+
+} // namespace
+
+const char *engineKindName(EngineKind kind) {
+  switch (kind) {
+  case EngineKind::Interp:
+    return "interp";
+  case EngineKind::Jit:
+    return "jit";
+  case EngineKind::Aot:
+    return "aot";
+  }
+  return "interp";
+}
+
+Result<EngineSpec> parseEngineSpec(std::string_view text) {
+  if (text == "interp") return EngineSpec{EngineKind::Interp, {}};
+  if (text == "jit") return EngineSpec{EngineKind::Jit, {}};
+  if (text.substr(0, 4) == "aot:") {
+    if (text.size() == 4)
+      return Status::error(ErrorCode::InvalidArgument, "--engine aot: needs a path (aot:PATH.so)");
+    return EngineSpec{EngineKind::Aot, std::string(text.substr(4))};
+  }
+  return Status::error(ErrorCode::InvalidArgument,
+                       "--engine: expected interp, jit or aot:PATH.so, got '" + std::string(text) +
+                           "'");
+}
+
+Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const VerifiedProgram &prog,
+                                           const EngineOptions &opts) {
+  std::string error;
+  std::unique_ptr<Engine> e;
+  switch (spec.kind) {
+  case EngineKind::Interp:
+    return makeInterpreterEngine(prog);
+  case EngineKind::Jit: {
+    jit::JitOptions jo;
+    jo.tier = opts.fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
+    if (opts.session) {
+      e = opts.session->compile(prog, jo, error);
+    } else {
+      jo.cache = opts.cache;
+      e = jit::compile(prog, jo, error);
+    }
+    break;
+  }
+  case EngineKind::Aot:
+    if (spec.soPath.empty()) return buildAndLoadAot(prog, opts);
+    if (!opts.aotExpect || !opts.aotTrust)
+      return engineFailed("aot: loading " + spec.soPath +
+                          " needs the expected program and the trusted keys");
+    e = io::loadAot(spec.soPath, *opts.aotExpect, *opts.aotTrust, error);
+    break;
+  }
+  if (!e) return engineFailed(error);
+  return e;
+}
+
+} // namespace lj::engines

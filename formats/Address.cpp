@@ -1,0 +1,193 @@
+// Command-line address and value parsing, and element/bit access to an lj_state by address.
+#include "formats/Address.h"
+
+#include <cctype>
+#include <cstring>
+
+namespace lj::io {
+
+namespace {
+
+constexpr int64_t kValueMin = INT32_MIN;
+constexpr int64_t kValueMax = UINT32_MAX; // 0xFFFFFFFF: the 32-bit pattern of -1
+
+bool isDigits(std::string_view s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
+// Decimal digits to a number, saturating far above any valid index so "X99999999999" is a
+// range error rather than an overflow.
+int64_t digitsValue(std::string_view s) {
+  int64_t v = 0;
+  for (char c : s) {
+    v = v * 10 + (c - '0');
+    if (v > (int64_t{1} << 40)) return int64_t{1} << 40;
+  }
+  return v;
+}
+
+// Raw little-endian element storage of (area, index) and its width in bytes.
+struct Cell {
+  const void *ptr;
+  int bytes;
+  bool isSigned;
+};
+
+Cell cellOf(const lj_state &s, Area a, int32_t n) {
+  const AreaInfo &info = areaInfo(a);
+  if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
+  const auto *base = reinterpret_cast<const unsigned char *>(&s) + stateOffset(a);
+  return {base + static_cast<size_t>(n) * info.bytes, info.bytes, info.isSigned};
+}
+
+// The element's bits as an unsigned pattern (zero-extended to 32 bits).
+uint32_t rawBits(const Cell &c) {
+  uint32_t v = 0;
+  std::memcpy(&v, c.ptr, static_cast<size_t>(c.bytes)); // little-endian host, like the ABI
+  return v;
+}
+
+int64_t readElement(const Cell &c) {
+  uint32_t raw = rawBits(c);
+  if (!c.isSigned) return raw;
+  if (c.bytes == 2) return static_cast<int16_t>(raw);
+  return static_cast<int32_t>(raw);
+}
+
+} // namespace
+
+std::optional<CliAddress> parseAddress(std::string_view text, std::string &error) {
+  auto fail = [&](const std::string &why) -> std::optional<CliAddress> {
+    error = "bad address '" + std::string(text) + "': " + why;
+    return std::nullopt;
+  };
+  if (text.empty()) return fail("empty");
+  std::optional<Area> area = areaFromLetter(text[0]);
+  if (!area || *area == Area::Label || *area == Area::Subroutine || *area == Area::None)
+    return fail("unknown area (expected one of X Y F G R W D B P T C)");
+  std::string_view rest = text.substr(1);
+  std::string_view indexPart = rest, bitPart;
+  bool hasBit = false;
+  if (size_t dot = rest.find('.'); dot != std::string_view::npos) {
+    indexPart = rest.substr(0, dot);
+    bitPart = rest.substr(dot + 1);
+    hasBit = true;
+  }
+  if (!isDigits(indexPart)) return fail("expected an element number after the area letter");
+  if (hasBit && !isDigits(bitPart)) return fail("expected a bit number after '.'");
+  int64_t index = digitsValue(indexPart);
+  if (!validIndex(*area, index)) {
+    if (*area == Area::Timer || *area == Area::Counter)
+      return fail("number out of range (0..127 or 300..427)");
+    return fail("element out of range (0.." + std::to_string(areaInfo(*area).count - 1) + ")");
+  }
+  CliAddress a;
+  a.area = *area;
+  a.index = static_cast<int32_t>(index);
+  a.text = std::string(text);
+  if (hasBit) {
+    int64_t b = digitsValue(bitPart);
+    int width = bitWidth(*area);
+    if (b >= width) {
+      if (*area == Area::Timer || *area == Area::Counter)
+        return fail("the only bit of a timer/counter is .0");
+      return fail("bit out of range (0.." + std::to_string(width - 1) + ")");
+    }
+    a.bit = static_cast<int8_t>(b);
+  }
+  return a;
+}
+
+std::optional<int64_t> parseValue(std::string_view text, std::string &error) {
+  auto fail = [&](const char *why) -> std::optional<int64_t> {
+    error = "bad value '" + std::string(text) + "': " + why;
+    return std::nullopt;
+  };
+  std::string_view s = text;
+  bool neg = false;
+  if (!s.empty() && (s[0] == '+' || s[0] == '-')) {
+    neg = s[0] == '-';
+    s.remove_prefix(1);
+  }
+  if (s.empty()) return fail("expected a number");
+  int64_t v = 0;
+  if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
+    s.remove_prefix(2);
+    for (char c : s) {
+      if (!std::isxdigit(static_cast<unsigned char>(c))) return fail("bad hex digit");
+      int d = std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : std::tolower(c) - 'a' + 10;
+      v = v * 16 + d;
+      if (v > kValueMax + 1) return fail("out of range (-2147483648..0xFFFFFFFF)");
+    }
+  } else {
+    if (!isDigits(s)) return fail("expected a decimal number or 0x hex");
+    v = digitsValue(s);
+  }
+  if (neg) v = -v;
+  if (v < kValueMin || v > kValueMax) return fail("out of range (-2147483648..0xFFFFFFFF)");
+  return v;
+}
+
+bool checkWritable(const CliAddress &addr, int64_t value, std::string &error) {
+  if (addr.area == Area::Timer) {
+    error = "cannot write timer '" + addr.text + "': its state follows from its input and now_ms";
+    return false;
+  }
+  if (addr.isBit() && value != 0 && value != 1) {
+    error = "bad value " + std::to_string(value) + " for bit '" + addr.text + "': expected 0 or 1";
+    return false;
+  }
+  return true;
+}
+
+int64_t readAddress(const lj_state &s, const CliAddress &addr) {
+  if (addr.area == Area::Timer || addr.area == Area::Counter) {
+    int slot = lj_tc_slot(addr.index);
+    if (addr.area == Area::Timer) return addr.isBit() ? s.T[slot].out : s.T[slot].elapsed_ms;
+    return addr.isBit() ? s.C[slot].out : s.C[slot].value;
+  }
+  Cell c = cellOf(s, addr.area, addr.index);
+  if (addr.isBit()) return (rawBits(c) >> addr.bit) & 1u;
+  return readElement(c);
+}
+
+void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
+  if (addr.area == Area::Counter) {
+    lj_counter &k = s.C[lj_tc_slot(addr.index)];
+    if (addr.isBit())
+      k.out = static_cast<uint8_t>(value & 1);
+    else
+      k.value = static_cast<int32_t>(static_cast<uint32_t>(value));
+    return;
+  }
+  if (addr.area == Area::Timer) return; // rejected by checkWritable
+  Cell c = cellOf(s, addr.area, addr.index);
+  void *ptr = const_cast<void *>(c.ptr);
+  uint32_t raw = rawBits(c);
+  if (addr.isBit()) {
+    uint32_t mask = 1u << addr.bit;
+    raw = (value & 1) ? (raw | mask) : (raw & ~mask);
+  } else {
+    raw = static_cast<uint32_t>(value); // low 32 bits; memcpy keeps the low 8/16 of those
+  }
+  std::memcpy(ptr, &raw, static_cast<size_t>(c.bytes));
+}
+
+std::optional<Assignment> parseAssignment(std::string_view item, std::string &error) {
+  size_t eq = item.find('=');
+  if (eq == std::string_view::npos) {
+    error = "bad assignment '" + std::string(item) + "': expected ADDR=VALUE";
+    return std::nullopt;
+  }
+  std::optional<CliAddress> addr = parseAddress(item.substr(0, eq), error);
+  if (!addr) return std::nullopt;
+  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
+  if (!value) return std::nullopt;
+  if (!checkWritable(*addr, *value, error)) return std::nullopt;
+  return Assignment{std::move(*addr), *value};
+}
+
+} // namespace lj::io

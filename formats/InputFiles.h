@@ -1,0 +1,55 @@
+// Parsers of the run inputs a user writes by hand: stimulus files (`@TICK ADDR=VALUE ...`) and
+// parameter files (`P12=345`). Errors are `file:line: problem`, never exceptions.
+#pragma once
+
+#include "formats/Address.h"
+#include "formats/NcCommand.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lj::io {
+
+/// The assignments of one stimulus line, applied before the scan of `tick`, or (a line
+/// `@TICK nc.COMMAND key=value ...`) one command of the simulated NC (docs/simulated-nc.md).
+struct StimulusEvent {
+  uint64_t tick = 0;
+  int32_t line = 0; ///< source line, for messages
+  std::vector<Assignment> sets;
+  std::vector<NcCommand> nc; ///< at most one; applied after all assignments of the tick
+};
+
+/// A whole stimulus file: events in file order, ticks non-decreasing.
+struct Stimulus {
+  std::vector<StimulusEvent> events;
+};
+
+/// Parse stimulus text. Rules (CLI.md `--stimulus`, decisions in README "Stimulus files"):
+/// one event per line `@TICK ADDR=VALUE [ADDR=VALUE ...]`, items separated by spaces/tabs;
+/// `#` starts a comment; blank lines are ignored; TICK is a decimal >= 0 and must not be
+/// smaller than the previous line's (equal ticks are applied in file order); a line needs at
+/// least one assignment, or exactly one NC command `nc.NAME key=value ...` instead
+/// (docs/simulated-nc.md). `file` names the source in errors (`file:line: ...`).
+std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
+                                      std::string &error);
+
+/// Parse a parameter file: one `Pn=VALUE` per line (spaces around `=` allowed), `#` comments,
+/// blank lines ignored; only whole P elements. Later lines win for the same Pn.
+std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
+                                                   std::string &error);
+
+/// Size limit of every file a user hands to ladderjit (PROGRAM, plc.dit, stimulus, params,
+/// symbols): a 10,000-statement program is about 1 MiB.
+inline constexpr size_t kMaxInputFileBytes = size_t{16} << 20;
+
+/// Read a whole file into `out`; false (with `error` naming the file and the reason) if it
+/// cannot be read. The one bounded reader of every input: regular files only (a FIFO or device
+/// is refused without blocking), at most `maxBytes` (never more is read, whatever the file
+/// claims), read errors reported (/proc/self/mem is an error, not an empty file).
+bool readFile(const std::string &path, std::string &out, std::string &error,
+              size_t maxBytes = kMaxInputFileBytes);
+
+} // namespace lj::io

@@ -1,0 +1,105 @@
+// Reading and verifying PROGRAM (formats/ProgramFile.h).
+#include "formats/ProgramFile.h"
+
+#include "engines/AotLoader.h"
+#include "formats/InputFiles.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "ir/Diagnostics.h"
+#include "ladder/Json.h"
+
+namespace lj::io {
+
+namespace {
+
+// At most this many diagnostic lines reach a user (the verifier can report one per statement).
+constexpr size_t kMaxDiagnosticLines = 200;
+
+std::string capLines(std::string text, size_t max, const std::string &file) {
+  size_t pos = 0, lines = 0;
+  while (lines < max && (pos = text.find('\n', pos)) != std::string::npos) {
+    ++pos;
+    ++lines;
+  }
+  if (lines < max || pos >= text.size()) return text;
+  size_t rest = 0;
+  for (size_t i = pos; i < text.size(); ++i) rest += text[i] == '\n';
+  text.resize(pos);
+  return text + file + ": note: " + std::to_string(rest) + " more diagnostic lines not shown\n";
+}
+
+} // namespace
+
+bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error) {
+  src.path = path;
+  std::string text;
+  if (!readFile(path, text, error)) return false;
+  src.fileHash = sha256Hash(text);
+  if (path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0) {
+    auto lad = std::make_shared<ladder::StlFromJson>();
+    if (!ladder::stlFromJson(text, *lad, error)) {
+      error = path + ": " + error;
+      return false;
+    }
+    src.text = lad->text;
+    src.ladder = std::move(lad);
+    return true;
+  }
+  bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
+  if (!looksLikeDit(text) && !named) {
+    src.text = std::move(text);
+    return true;
+  }
+  src.dit = parseDit(text, path, error);
+  if (!src.dit) return false;
+  src.text = programForParser(*src.dit);
+  return true;
+}
+
+int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven) {
+  if (optionGiven || !src.dit) return option;
+  return src.dit->plc2Nvalue;
+}
+
+std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t plc2Nvalue,
+                                             std::string &diagnostics) {
+  Diagnostics diags(src.path);
+  VerifyOptions opts;
+  opts.plc2Nvalue = plc2Nvalue;
+  const SymbolTable *symbols = src.dit      ? &src.dit->symbols
+                               : src.ladder ? &src.ladder->symbols
+                                            : nullptr;
+  std::optional<VerifiedProgram> prog = compileFrontEnd(src.text, src.path, opts, diags, symbols);
+  diagnostics =
+      capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
+               kMaxDiagnosticLines, src.path);
+  if (prog && src.ladder) ladder::applyOrigins(*prog, *src.ladder);
+  if (prog && !diags.hasErrors()) return prog;
+  if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
+    diagnostics += src.path + ": error: program rejected without a diagnostic\n";
+  return std::nullopt;
+}
+
+std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nvalue) {
+  if (dit && dit->plc2Nvalue == plc2Nvalue) return dit->hash;
+  std::string canon = "ladderjit-program 1\nplc2_nvalue = " + std::to_string(plc2Nvalue) + "\n";
+  if (dit) return sha256Hash(canon + "container = " + dit->hash + "\n");
+  canon += "[program]\n";
+  for (size_t i = 0; i < stl.size(); ++i) {
+    if (stl[i] == '\r' && i + 1 < stl.size() && stl[i + 1] == '\n') continue;
+    canon += stl[i];
+  }
+  if (!stl.empty() && canon.back() != '\n') canon += '\n';
+  return sha256Hash(canon);
+}
+
+std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {
+  if (src.ladder) { // the names in the generated STL stand for what the JSON's table says
+    std::string text = src.text;
+    for (const Symbol &s : src.ladder->symbols.symbols())
+      text += "\n;symbol " + s.name + " " + s.address;
+    return programHash(text, nullptr, plc2Nvalue);
+  }
+  return programHash(src.text, src.dit ? &*src.dit : nullptr, plc2Nvalue);
+}
+
+} // namespace lj::io

@@ -1,0 +1,555 @@
+// The retentive store: end-of-tick capture (triple buffer), the background writer (temp file,
+// fsync, rename, directory fsync, FILE.prev rotation), group commit and restore with fallback.
+#include "services/RetainStore.h"
+
+#include "formats/PlcDit.h"
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <openssl/evp.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+namespace lj::io {
+namespace {
+
+// The file stores integers in host order; the format is defined little-endian (docs/retain.md).
+static_assert(std::endian::native == std::endian::little, "retain file format is little-endian");
+
+constexpr char kMagic[8] = {'L', 'J', 'R', 'E', 'T', 'A', 'I', 'N'};
+constexpr uint32_t kFormatVersion = 1;
+constexpr int kHashField = 72; // "sha256:" + 64 hex digits + NUL
+constexpr size_t kDigestBytes = 32;
+constexpr int kFresh = 4; // middle_ flag: the middle slot holds a capture the writer has not seen
+// Writer poll interval: flags set on the scan thread (which never notifies) are seen this late.
+constexpr auto kPoll = std::chrono::milliseconds(2);
+
+/// The fixed file header (docs/retain.md "File format").
+struct FileHeader {
+  char magic[8];
+  uint32_t formatVersion;
+  uint32_t headerBytes;
+  uint32_t abiVersion;
+  uint32_t bCount;
+  uint32_t tcFirst; // first retained timer/counter number (300)
+  uint32_t tcCount;
+  uint32_t timerBytes;
+  uint32_t counterBytes;
+  uint32_t payloadBytes;
+  uint32_t reserved;
+  uint64_t saveSeq;
+  uint64_t tick;
+  uint64_t nowMs;
+  char programHash[kHashField];
+};
+static_assert(sizeof(FileHeader) == 144, "retain file header layout");
+
+constexpr uint32_t kPayloadBytes = sizeof(int32_t) * LJ_B_COUNT +
+                                   sizeof(lj_timer) * kRetainedTcCount +
+                                   sizeof(lj_counter) * kRetainedTcCount;
+
+FileHeader expectedHeader() {
+  FileHeader h{};
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.formatVersion = kFormatVersion;
+  h.headerBytes = sizeof(FileHeader);
+  h.abiVersion = LJ_ABI_VERSION;
+  h.bCount = LJ_B_COUNT;
+  h.tcFirst = 300;
+  h.tcCount = kRetainedTcCount;
+  h.timerBytes = sizeof(lj_timer);
+  h.counterBytes = sizeof(lj_counter);
+  h.payloadBytes = kPayloadBytes;
+  return h;
+}
+
+std::array<unsigned char, kDigestBytes> sha256(const unsigned char *data, size_t n) {
+  std::array<unsigned char, kDigestBytes> out{};
+  unsigned int len = 0;
+  EVP_Digest(data, n, out.data(), &len, EVP_sha256(), nullptr);
+  return out;
+}
+
+std::string errnoText(const char *what, const std::string &path) {
+  return std::string(what) + " " + path + ": " + std::strerror(errno);
+}
+
+bool writeAll(int fd, const unsigned char *p, size_t n) {
+  while (n > 0) {
+    ssize_t w = ::write(fd, p, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    p += w;
+    n -= static_cast<size_t>(w);
+  }
+  return true;
+}
+
+std::string dirOf(const std::string &path) {
+  size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+bool sameLayout(const FileHeader &h, std::string &why) {
+  FileHeader e = expectedHeader();
+  auto item = [](const char *name, uint32_t v) {
+    return std::string(name) + " " + std::to_string(v);
+  };
+  std::string saved = item("ABI", h.abiVersion) + ", " + item("B", h.bCount) + ", " +
+                      item("T/C from", h.tcFirst) + " x" + std::to_string(h.tcCount) + ", " +
+                      item("timer bytes", h.timerBytes) + ", " +
+                      item("counter bytes", h.counterBytes);
+  std::string ours = item("ABI", e.abiVersion) + ", " + item("B", e.bCount) + ", " +
+                     item("T/C from", e.tcFirst) + " x" + std::to_string(e.tcCount) + ", " +
+                     item("timer bytes", e.timerBytes) + ", " +
+                     item("counter bytes", e.counterBytes);
+  if (saved == ours && h.payloadBytes == e.payloadBytes) return true;
+  why = "saved with another layout (" + saved + "; this build: " + ours + ")";
+  return false;
+}
+
+} // namespace
+
+void copyRetained(const lj_state &from, lj_state &to) {
+  std::memcpy(to.img.B, from.img.B, sizeof to.img.B);
+  std::memcpy(&to.T[kRetainedTcFirstSlot], &from.T[kRetainedTcFirstSlot],
+              sizeof(lj_timer) * kRetainedTcCount);
+  std::memcpy(&to.C[kRetainedTcFirstSlot], &from.C[kRetainedTcFirstSlot],
+              sizeof(lj_counter) * kRetainedTcCount);
+}
+
+RetainStore::RetainStore(RetainConfig config) : cfg_(std::move(config)) {}
+
+RetainStore::~RetainStore() {
+  {
+    std::lock_guard lk(mu_);
+    stopping_ = true;
+  }
+  writerCv_.notify_all();
+  if (writer_.joinable()) writer_.join();
+  if (lockFd_ >= 0) ::close(lockFd_);
+}
+
+bool RetainStore::prepare(std::string &error) {
+  const std::string dir = dirOf(cfg_.path);
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) {
+    error = "the directory '" + dir + "' of " + cfg_.path + " does not exist";
+    return false;
+  }
+  for (const std::string &p : {cfg_.path, cfg_.path + ".prev"}) {
+    if (::lstat(p.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+      error = p + " is not a regular file (" +
+              (S_ISLNK(st.st_mode)    ? "a symbolic link"
+               : S_ISFIFO(st.st_mode) ? "a FIFO"
+               : S_ISDIR(st.st_mode)  ? "a directory"
+                                      : "a device or socket") +
+              "); the retain file must be one";
+      return false;
+    }
+  }
+  const std::string lock = cfg_.path + ".lock";
+  int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0600);
+  if (fd < 0 || ::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    error =
+        fd < 0 ? errnoText("cannot create the lock file", lock) : lock + " is not a regular file";
+    if (fd >= 0) ::close(fd);
+    return false;
+  }
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    error = cfg_.path + " is in use by another process (" + lock +
+            " is locked): two servers must not share a retain file";
+    ::close(fd);
+    return false;
+  }
+  lockFd_ = fd;
+  // Temp files of a save that a crash interrupted (FILE.tmp.XXXXXX, ours: we hold the lock).
+  const std::string base = cfg_.path.substr(cfg_.path.rfind('/') + 1) + ".tmp.";
+  std::error_code ec;
+  for (const auto &e : std::filesystem::directory_iterator(dir, ec)) {
+    std::string name = e.path().filename().string();
+    if (name.size() == base.size() + 6 && name.compare(0, base.size(), base) == 0 &&
+        e.is_regular_file(ec) && !e.is_symlink(ec))
+      ::unlink(e.path().c_str());
+  }
+  return true;
+}
+
+void RetainStore::logLine(const std::string &line) const {
+  if (cfg_.log)
+    cfg_.log(line);
+  else
+    std::fprintf(stderr, "%s\n", line.c_str());
+}
+
+RetainStore::ReadResult RetainStore::readFile(const std::string &path, RetainImage &out,
+                                              uint64_t &saveSeq, std::string &savedHash,
+                                              std::string &error) {
+  // O_NONBLOCK: a FIFO in the file's place never blocks the start (it is refused below).
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    bool missing = errno == ENOENT;
+    error = errnoText("cannot open", path);
+    return missing ? ReadResult::Missing : ReadResult::Corrupt;
+  }
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    error = path + ": not a regular file";
+    ::close(fd);
+    return ReadResult::Corrupt;
+  }
+  // Read at most one byte more than a valid file so trailing garbage is detected.
+  const size_t want = sizeof(FileHeader) + kPayloadBytes + kDigestBytes;
+  std::vector<unsigned char> buf(want + 1);
+  size_t got = 0;
+  while (got < buf.size()) {
+    ssize_t r = ::read(fd, buf.data() + got, buf.size() - got);
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) {
+      error = errnoText("cannot read", path);
+      ::close(fd);
+      return ReadResult::Corrupt;
+    }
+    if (r == 0) break;
+    got += static_cast<size_t>(r);
+  }
+  ::close(fd);
+  if (got < sizeof(FileHeader) + kDigestBytes) {
+    error = path + ": truncated (" + std::to_string(got) + " bytes, a retain file has " +
+            std::to_string(want) + ")";
+    return ReadResult::Corrupt;
+  }
+  if (std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0) {
+    error = path + ": not a ladderjit retain file (bad magic)";
+    return ReadResult::Corrupt;
+  }
+  // The digest covers everything before it, whatever the layout, so damage is told apart from
+  // a file of another version or layout.
+  auto digest = sha256(buf.data(), got - kDigestBytes);
+  if (std::memcmp(digest.data(), buf.data() + got - kDigestBytes, kDigestBytes) != 0) {
+    error = path + (got == want ? ": checksum mismatch (corrupted)"
+                                : ": truncated or corrupted (" + std::to_string(got) +
+                                      " bytes, checksum mismatch)");
+    return ReadResult::Corrupt;
+  }
+  FileHeader h;
+  std::memcpy(&h, buf.data(), sizeof h);
+  if (h.formatVersion != kFormatVersion || h.headerBytes != sizeof(FileHeader)) {
+    error = path + ": retain file format " + std::to_string(h.formatVersion) +
+            ", this build reads format " + std::to_string(kFormatVersion);
+    return ReadResult::Layout;
+  }
+  std::string why;
+  if (!sameLayout(h, why) || got != want) {
+    error = path + ": " + (why.empty() ? "unexpected size " + std::to_string(got) : why);
+    return ReadResult::Layout;
+  }
+  const unsigned char *p = buf.data() + sizeof(FileHeader);
+  std::memcpy(out.B, p, sizeof out.B);
+  p += sizeof out.B;
+  std::memcpy(out.T, p, sizeof out.T);
+  p += sizeof out.T;
+  std::memcpy(out.C, p, sizeof out.C);
+  out.tick = h.tick;
+  out.nowMs = h.nowMs;
+  out.index = 0;
+  saveSeq = h.saveSeq;
+  h.programHash[kHashField - 1] = '\0';
+  savedHash = h.programHash;
+  return ReadResult::Ok;
+}
+
+RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
+  RestoreReport rep;
+  const std::string prev = cfg_.path + ".prev";
+  RetainImage img;
+  uint64_t seq = 0;
+  std::string savedHash, errMain, errPrev;
+  ReadResult rMain = readFile(cfg_.path, img, seq, savedHash, errMain);
+  ReadResult rPrev = ReadResult::Missing;
+  std::string loadedFrom;
+  if (rMain == ReadResult::Ok) {
+    loadedFrom = cfg_.path;
+    rep.status = RestoreStatus::Restored;
+  } else if (rMain != ReadResult::Layout) {
+    rPrev = readFile(prev, img, seq, savedHash, errPrev);
+    if (rPrev == ReadResult::Ok) {
+      loadedFrom = prev;
+      rep.status = RestoreStatus::RestoredPrev;
+      // Never rotate the damaged (or missing) main file over the good previous copy.
+      mainIsGood_ = false;
+    }
+  }
+  if (rMain == ReadResult::Layout || rPrev == ReadResult::Layout) {
+    const std::string &why = rMain == ReadResult::Layout ? errMain : errPrev;
+    if (!cfg_.force) {
+      refused_ = true;
+      rep.status = RestoreStatus::LayoutMismatch;
+      rep.message = "retain: " + why +
+                    ": refusing to load it or overwrite it; start with "
+                    "--retain-force to begin with zeros (the old files are "
+                    "kept as FILE.rejected)";
+      logLine(rep.message);
+      return rep;
+    }
+    // Keep the foreign files for inspection; the store starts empty.
+    std::rename(cfg_.path.c_str(), (cfg_.path + ".rejected").c_str());
+    std::rename(prev.c_str(), (prev + ".rejected").c_str());
+    rep.status = RestoreStatus::LayoutForced;
+    rep.message = "retain: " + why + "; --retain-force: starting with zeros, old files renamed " +
+                  "to *.rejected";
+    logLine(rep.message);
+    return rep;
+  }
+  if (loadedFrom.empty()) {
+    if (rMain == ReadResult::Missing && rPrev == ReadResult::Missing) {
+      rep.status = RestoreStatus::NoFile;
+      rep.message = "retain: " + cfg_.path + " does not exist yet: starting with zeros";
+    } else {
+      rep.status = RestoreStatus::BothBad;
+      mainIsGood_ = false;
+      rep.message = "retain: ERROR: no usable retain file (" + errMain + "; " + errPrev +
+                    "): starting with zeros";
+    }
+    logLine(rep.message);
+    return rep;
+  }
+  std::memcpy(s.img.B, img.B, sizeof img.B);
+  // A retained timer keeps the age it had when saved: time while the controller was off does
+  // not count (docs/retain.md "Timers").
+  for (int i = 0; i < kRetainedTcCount; ++i) {
+    lj_timer t = img.T[i];
+    int64_t age = static_cast<int64_t>(img.nowMs) - t.start_ms;
+    t.start_ms = static_cast<int64_t>(nowMs) - age;
+    s.T[kRetainedTcFirstSlot + i] = t;
+    s.C[kRetainedTcFirstSlot + i] = img.C[i];
+  }
+  saveSeq_ = seq;
+  rep.saveSeq = seq;
+  std::string line = rep.status == RestoreStatus::RestoredPrev
+                         ? "retain: WARNING: " + errMain + "; falling back to " + prev + ": "
+                         : "retain: ";
+  line += "restored " + loadedFrom + " (save #" + std::to_string(seq) + ", tick " +
+          std::to_string(img.tick) + ")";
+  if (!cfg_.programHash.empty() && !savedHash.empty() && savedHash != cfg_.programHash)
+    line += "; note: saved by program " + savedHash + ", now running " + cfg_.programHash;
+  rep.message = line;
+  logLine(line);
+  return rep;
+}
+
+void RetainStore::start() {
+  std::lock_guard lk(mu_);
+  if (started_ || refused_) return;
+  started_ = true;
+  writer_ = std::thread([this] { writerLoop(); });
+}
+
+void RetainStore::afterTick(const lj_state &s, uint64_t tick) {
+  bool force = forceCapture_.exchange(false, std::memory_order_acq_rel);
+  const lj_timer *t = &s.T[kRetainedTcFirstSlot];
+  const lj_counter *c = &s.C[kRetainedTcFirstSlot];
+  if (!force && haveLast_ && std::memcmp(last_.B, s.img.B, sizeof last_.B) == 0 &&
+      std::memcmp(last_.T, t, sizeof last_.T) == 0 && std::memcmp(last_.C, c, sizeof last_.C) == 0)
+    return;
+  RetainImage &dst = slots_[back_];
+  std::memcpy(dst.B, s.img.B, sizeof dst.B);
+  std::memcpy(dst.T, t, sizeof dst.T);
+  std::memcpy(dst.C, c, sizeof dst.C);
+  dst.tick = tick;
+  dst.nowMs = s.now_ms;
+  dst.index = captures_.load(std::memory_order_relaxed) + 1;
+  std::memcpy(&last_, &dst, sizeof last_);
+  haveLast_ = true;
+  back_ = middle_.exchange(back_ | kFresh, std::memory_order_acq_rel) & ~kFresh;
+  // Published after the slot: a commit() that reads this count knows the capture is taken.
+  captures_.store(dst.index, std::memory_order_release);
+}
+
+void RetainStore::requestSave() {
+  uint64_t want = captures_.load(std::memory_order_acquire) + 1;
+  forceCapture_.store(true, std::memory_order_release);
+  uint64_t cur = wantIndex_.load(std::memory_order_relaxed);
+  while (cur < want && !wantIndex_.compare_exchange_weak(cur, want)) {
+  }
+}
+
+bool RetainStore::commit(std::chrono::milliseconds timeout) {
+  if (refused_) return false;
+  // Every write applied before this call is in the state at the end of the current tick at the
+  // latest; the capture of that tick (forced) has index > the count read here.
+  uint64_t want = captures_.load(std::memory_order_acquire) + 1;
+  requestSave();
+  std::unique_lock lk(mu_);
+  writerCv_.notify_all();
+  return doneCv_.wait_for(lk, timeout, [&] { return durableIndex_ >= want; });
+}
+
+bool RetainStore::takeLatest() {
+  if (!(middle_.load(std::memory_order_acquire) & kFresh)) return false;
+  front_ = middle_.exchange(front_, std::memory_order_acq_rel) & ~kFresh;
+  return true;
+}
+
+void RetainStore::writerLoop() {
+  auto lastWrite = std::chrono::steady_clock::now() - cfg_.period;
+  uint64_t written = 0; // capture index of the newest file this thread wrote (or tried)
+  for (;;) {
+    bool stopNow;
+    {
+      std::unique_lock lk(mu_);
+      writerCv_.wait_for(lk, kPoll, [&] {
+        return stopping_ || wantIndex_.load(std::memory_order_acquire) > durableIndex_;
+      });
+      stopNow = stopping_;
+    }
+    takeLatest();
+    const RetainImage &img = slots_[front_];
+    uint64_t want = wantIndex_.load(std::memory_order_acquire);
+    auto now = std::chrono::steady_clock::now();
+    // A commit waits for a capture taken after its request: writing an older one would only
+    // cost a second save.
+    bool urgent = stopNow || (want > written && img.index >= want);
+    bool due = img.index > written && (urgent || now - lastWrite >= cfg_.period);
+    if (due) {
+      std::string err;
+      bool ok = writeFile(img, err);
+      lastWrite = now;
+      {
+        std::lock_guard lk(mu_);
+        if (ok) {
+          written = img.index;
+          durableIndex_ = img.index;
+          ++stats_.saves;
+          stats_.lastSaveSeq = saveSeq_;
+        } else {
+          ++stats_.failures;
+        }
+      }
+      doneCv_.notify_all();
+      if (!ok) {
+        logLine("retain: ERROR: save failed: " + err);
+        // Do not spin on a full disk; commit() callers time out and report the failure.
+        if (!stopNow) std::this_thread::sleep_for(cfg_.period);
+      }
+    }
+    if (stopNow) return;
+    // Waiting for the scan thread's next capture: do not spin on the predicate meanwhile.
+    if (!due && want > written) std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
+  FileHeader h = expectedHeader();
+  h.saveSeq = saveSeq_ + 1;
+  h.tick = img.tick;
+  h.nowMs = img.nowMs;
+  std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
+  std::vector<unsigned char> buf(sizeof h + kPayloadBytes + kDigestBytes);
+  unsigned char *p = buf.data();
+  std::memcpy(p, &h, sizeof h);
+  p += sizeof h;
+  std::memcpy(p, img.B, sizeof img.B);
+  p += sizeof img.B;
+  std::memcpy(p, img.T, sizeof img.T);
+  p += sizeof img.T;
+  std::memcpy(p, img.C, sizeof img.C);
+  p += sizeof img.C;
+  auto digest = sha256(buf.data(), static_cast<size_t>(p - buf.data()));
+  std::memcpy(p, digest.data(), kDigestBytes);
+
+  // A new file with a random name (O_CREAT | O_EXCL, mode 0600): a symlink or file planted
+  // under any predictable name is never followed or written.
+  std::string tmpl = cfg_.path + ".tmp.XXXXXX";
+  const std::string prev = cfg_.path + ".prev";
+  int fd = ::mkostemp(tmpl.data(), O_CLOEXEC);
+  const std::string tmp = tmpl;
+  if (fd < 0) {
+    error = errnoText("cannot create", tmp);
+    return false;
+  }
+  if (!writeAll(fd, buf.data(), buf.size()) || ::fsync(fd) != 0) {
+    error = errnoText("cannot write", tmp);
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  ::close(fd);
+  // FILE.prev becomes the current FILE through a hard link renamed into place, so FILE and
+  // FILE.prev both exist at every instant (after the first two saves).
+  if (mainIsGood_ && ::access(cfg_.path.c_str(), F_OK) == 0) {
+    const std::string link = prev + ".tmp";
+    ::unlink(link.c_str());
+    if (::link(cfg_.path.c_str(), link.c_str()) != 0 || ::rename(link.c_str(), prev.c_str()) != 0) {
+      error = errnoText("cannot keep the previous copy as", prev);
+      ::unlink(tmp.c_str());
+      return false;
+    }
+  }
+  if (::rename(tmp.c_str(), cfg_.path.c_str()) != 0) {
+    error = errnoText("cannot rename into", cfg_.path);
+    ::unlink(tmp.c_str());
+    return false;
+  }
+  // The renames are durable only once the directory is synced; acknowledge after that.
+  std::string dir = dirOf(cfg_.path);
+  int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd < 0 || ::fsync(dfd) != 0) {
+    error = errnoText("cannot sync directory", dir);
+    if (dfd >= 0) ::close(dfd);
+    return false;
+  }
+  ::close(dfd);
+  mainIsGood_ = true;
+  saveSeq_ = h.saveSeq;
+  return true;
+}
+
+void RetainStore::stop(const lj_state &finalState, uint64_t tick) {
+  if (refused_) return;
+  forceCapture_.store(true);
+  afterTick(finalState, tick);
+  uint64_t want = captures_.load();
+  uint64_t cur = wantIndex_.load();
+  while (cur < want && !wantIndex_.compare_exchange_weak(cur, want)) {
+  }
+  bool threaded;
+  {
+    std::lock_guard lk(mu_);
+    threaded = started_;
+    stopping_ = true;
+  }
+  writerCv_.notify_all();
+  if (threaded) {
+    if (writer_.joinable()) writer_.join();
+    return;
+  }
+  takeLatest();
+  std::string err;
+  std::lock_guard lk(mu_);
+  if (writeFile(slots_[front_], err)) {
+    durableIndex_ = slots_[front_].index;
+    ++stats_.saves;
+    stats_.lastSaveSeq = saveSeq_;
+  } else {
+    ++stats_.failures;
+    logLine("retain: ERROR: save failed: " + err);
+  }
+}
+
+RetainStats RetainStore::stats() const {
+  std::lock_guard lk(mu_);
+  RetainStats s = stats_;
+  s.captures = captures_.load();
+  return s;
+}
+
+} // namespace lj::io
