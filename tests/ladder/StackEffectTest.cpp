@@ -2,6 +2,7 @@
 // hnc8-core.md 4.2, and against the verifier's own depth walk on whole programs.
 #include "ir/StackEffect.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/hnc8/Mnemonics.h"
 
 #include <gtest/gtest.h>
 
@@ -27,8 +28,8 @@ TEST(StackEffect, ContactsAndBlocks) {
 TEST(StackEffect, CoilsLeaveSt) {
   // OUT leaves ST0 in place (hnc8-core.md 4.10 MPS-1: "OUT leaves ST0").
   for (Op op : {Op::Coil, Op::CoilNot, Op::Set, Op::Reset}) {
-    EXPECT_EQ(at(op, 1).reads, 1) << instrInfo(op).mnemonic;
-    EXPECT_EQ(at(op, 1).after(1), 1) << instrInfo(op).mnemonic;
+    EXPECT_EQ(at(op, 1).reads, 1) << hnc8::mnemonicOf(op);
+    EXPECT_EQ(at(op, 1).after(1), 1) << hnc8::mnemonicOf(op);
     EXPECT_EQ(at(op, 1).msDelta, 0);
   }
 }
@@ -46,8 +47,9 @@ TEST(StackEffect, MultiOutputStack) {
 }
 
 TEST(StackEffect, StructuralResets) {
-  for (Op op : {Op::EndInit, Op::EndCyclic, Op::EndSliced, Op::SubBegin, Op::SubEnd, Op::Label, Op::LoopBegin, Op::LoopEnd}) {
-    EXPECT_TRUE(at(op, 5).resets) << instrInfo(op).mnemonic;
+  for (Op op : {Op::EndInit, Op::EndCyclic, Op::EndSliced, Op::SubBegin, Op::SubEnd, Op::Label,
+                Op::LoopBegin, Op::LoopEnd}) {
+    EXPECT_TRUE(at(op, 5).resets) << hnc8::mnemonicOf(op);
     EXPECT_EQ(at(op, 5).after(5), 0);
   }
 }
@@ -80,7 +82,7 @@ void expectWalkAgrees(const std::string &text) {
     if (instrInfo(p->stmts[i + 1].op).stack == StackRule::Structural) continue;
     StackEffect e = stackEffect(ii, p->info[i].depth);
     EXPECT_EQ(e.after(p->info[i].depth), p->info[i + 1].depth)
-        << "after " << ii.mnemonic << " (statement " << i << ")";
+        << "after " << hnc8::mnemonicOf(ii.op) << " (statement " << i << ")";
     if (!e.resets) EXPECT_EQ(p->info[i].msDepth + e.msDelta, p->info[i + 1].msDepth);
   }
 }
