@@ -82,7 +82,7 @@ void expectWalkAgrees(const std::string &text) {
     if (instrInfo(p->stmts[i + 1].op).stack == StackRule::Structural) continue;
     StackEffect e = stackEffect(ii, p->info[i].depth);
     EXPECT_EQ(e.after(p->info[i].depth), p->info[i + 1].depth)
-        << "after " << hnc8::mnemonicOf(p->stmts[i].op) << " (statement " << i << ")";
+        << "after " << hnc8::mnemonicOf(ii.op) << " (statement " << i << ")";
     if (!e.resets) {
       EXPECT_EQ(p->info[i].msDepth + e.msDelta, p->info[i + 1].msDepth);
     }
