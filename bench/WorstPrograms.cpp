@@ -13,7 +13,8 @@ namespace {
 
 /// Rows that cannot repeat inside one body: the part markers and the subroutine brackets.
 bool unrepeatable(Op op) {
-  return op == Op::EndInit || op == Op::EndCyclic || op == Op::EndSliced || op == Op::SubBegin || op == Op::SubEnd;
+  return op == Op::EndInit || op == Op::EndCyclic || op == Op::EndSliced || op == Op::SubBegin ||
+         op == Op::SubEnd;
 }
 
 /// The row's statement in its snippet: the snippet is the feed (LDTs, an MPS) then the row.
