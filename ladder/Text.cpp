@@ -2,6 +2,8 @@
 // network as an indented series/parallel drawing (docs/ladder-json.md "Text form").
 #include "ladder/Text.h"
 
+#include "frontends/hnc8/Mnemonics.h"
+
 #include <vector>
 
 namespace lj::ladder {
@@ -109,7 +111,11 @@ Lines render(const Node &n) {
   case NodeKind::FanOut:
     out.push_back("fan-out");
     for (const Node &b : n.children) {
-      static const char *const kEntry[] = {"", "", "(MPS) ", "(MRD) ", "(MPP) "};
+      // The branch entries are drawn with the dialect's spelling of the push/read/pop.
+      const std::string kEntry[] = {"", "",
+                                    std::string("(") + hnc8::mnemonicOf(Op::BranchPush) + ") ",
+                                    std::string("(") + hnc8::mnemonicOf(Op::BranchRead) + ") ",
+                                    std::string("(") + hnc8::mnemonicOf(Op::BranchPop) + ") "};
       Lines br = render(b);
       if (br.empty()) br.push_back("(empty)");
       br[0] = kEntry[static_cast<int>(b.entry)] + br[0];

@@ -155,7 +155,7 @@ private:
         return fail(at, "a branch entered directly must hold outputs only, unless it is last");
       if (e == Entry::Mps) ms_.push_back(0);
       if (e == Entry::Mrd || e == Entry::Mpp) {
-        if (ms_.empty()) return fail(at, "MRD/MPP branch without an MPS branch before it");
+        if (ms_.empty()) return fail(at, "a branch read/pop without a branch push before it");
         if (e == Entry::Mpp) ms_.pop_back();
       }
       if (e == Entry::Mps || e == Entry::Mrd || e == Entry::Mpp)
@@ -182,7 +182,7 @@ bool rungStatements(const Node &network, std::vector<Element> &out, std::string 
   Emitter em(out, error);
   if (!em.series(network, true, "")) return false;
   if (!em.balanced()) {
-    error = "network: an MPS branch has no MPP branch after it";
+    error = "network: a branch push has no branch pop after it";
     return false;
   }
   return true;

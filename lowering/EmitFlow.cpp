@@ -71,7 +71,8 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
                          std::to_string(ms_.size()) + " differs from the verifier's " +
                          std::to_string(info.depth) + "/" + std::to_string(info.msDepth));
     if (prog_.stmts[i].op == Op::LoopBegin && outlines(i)) {
-      if (info.target < i || info.target >= r.end) return fail(i, "LOOP without NEXT in this body");
+      if (info.target < i || info.target >= r.end)
+        return fail(i, "a loop begin without its loop end in this body");
       emitOutlinedLoop(i);
       i = info.target; // the body and its NEXT are lowered in the loop's own function
       continue;

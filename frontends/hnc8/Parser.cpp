@@ -439,8 +439,20 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     } else if (mnemonic)
       prog.dropped.push_back({static_cast<int32_t>(prog.stmts.size()), known});
     if (prog.stmts.size() > limit) {
-      diags.error(prog.stmts.back().loc, "program has more than " + std::to_string(limit) +
-                                             " statements, the limit; the rest is not read");
+      // Stop building statements here (memory stays bounded), but count the rest so the
+      // message says how large the program is, as the verifier's limit check does.
+      size_t total = prog.stmts.size();
+      while (pos < text.size()) {
+        size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        tokenize(text.substr(pos, end - pos), toks, comment, hasComment);
+        pos = end + 1;
+        Op op;
+        if (!toks.empty() && hnc8::lookupMnemonic(toks[0].text, op)) ++total;
+      }
+      diags.error(prog.stmts.back().loc, "program has " + std::to_string(total) +
+                                             " statements, more than the limit of " +
+                                             std::to_string(limit));
       break;
     }
     if (diags.errorCount() >= kMaxErrors) {

@@ -15,7 +15,7 @@ import re
 import sys
 
 AREA_LETTERS = set("XYFGRWDBPTCLS")
-CORE_DIRS = ["ir", "verify", "interp", "lowering", "jit"]
+CORE_DIRS = ["ir", "verify", "interp", "ladder", "lowering", "jit"]
 # The program generators (bench/Random*, gen/ once moved) write HNC-8 STL text for the fuzzer
 # and the benchmarks, so they spell the dialect like a front end would; gen/ is scanned only for
 # files that are not STL writers.
