@@ -49,7 +49,7 @@ def main():
     many = os.path.join(tmp, "many.stl")
     write(many, "LDT\n" + "OUT Y0.0\nLDT\n" * 150000 + "2END\n")
     rc, err, rss = lj("check", many, timeout=30)
-    check(rc == 1 and "more than 10000 statements" in err,
+    check(rc == 1 and "statements, more than the limit of 10000" in err,
           "300,001 statements: exit 1 at the limit: " + err[-200:])
     check(err.count("\n") < 50, f"and parsing stopped there ({err.count(chr(10))} lines of output)")
     check(rss < 130, f"memory stays small while refusing it ({rss:.0f} MiB max RSS, bound 130)")
