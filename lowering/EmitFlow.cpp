@@ -202,7 +202,7 @@ void FunctionEmitter::emitLabel(int32_t i) {
   ms_.clear();
 }
 
-void FunctionEmitter::emitLoop(int32_t i) {
+FunctionEmitter::Loop FunctionEmitter::openLoop(int32_t i) {
   // The count is read once on entry; each iteration (the first included) is one watchdog step
   // taken before its body; a count <= 0 skips the body.
   llvm::Value *count = readInt(prog_.stmts[i].ops[0]);
@@ -224,7 +224,11 @@ void FunctionEmitter::emitLoop(int32_t i) {
   b_.SetInsertPoint(check);
   watchdogStep(body);
   b_.SetInsertPoint(body);
-  loops_.push_back({i, header, remaining, exit});
+  return {i, header, remaining, exit};
+}
+
+void FunctionEmitter::emitLoop(int32_t i) {
+  loops_.push_back(openLoop(i));
   st_.clear();
   ms_.clear();
 }
@@ -245,32 +249,16 @@ void FunctionEmitter::emitOutlinedLoop(int32_t i) {
   bodyFn->addFnAttr(llvm::Attribute::NoInline); // the point is a separate, small function
   mc_.pendingLoops.push_back({bodyFn, {i + 1, next}});
 
-  llvm::Value *count = readInt(prog_.stmts[i].ops[0]);
-  cache_.flush();
-  llvm::BasicBlock *pre = b_.GetInsertBlock();
-  llvm::BasicBlock *header = newBlock("loop");
-  llvm::BasicBlock *check = newBlock("loop.step");
-  llvm::BasicBlock *body = newBlock("loop.body");
+  Loop l = openLoop(i);
   llvm::BasicBlock *stop = newBlock("loop.stop");
-  llvm::BasicBlock *exit = newBlock("loop.end");
-  b_.CreateBr(header);
-  b_.SetInsertPoint(header);
-  llvm::PHINode *remaining = b_.CreatePHI(b_.getInt32Ty(), 2, "remaining");
-  remaining->addIncoming(count, pre);
-  llvm::Value *more =
-      b_.Insert(new llvm::ICmpInst(llvm::ICmpInst::ICMP_SGT, remaining, b_.getInt32(0)));
-  b_.CreateCondBr(more, check, exit);
-  b_.SetInsertPoint(check);
-  watchdogStep(body);
-  b_.SetInsertPoint(body);
   llvm::Value *status = b_.CreateCall(bodyFn, {state_}, "status");
-  remaining->addIncoming(b_.Insert(llvm::BinaryOperator::CreateSub(remaining, b_.getInt32(1))),
-                         body);
-  b_.CreateCondBr(b_.CreateICmpNE(status, b_.getInt32(LJ_FAULT_NONE)), stop, header);
+  l.remaining->addIncoming(b_.Insert(llvm::BinaryOperator::CreateSub(l.remaining, b_.getInt32(1))),
+                           b_.GetInsertBlock());
+  b_.CreateCondBr(b_.CreateICmpNE(status, b_.getInt32(LJ_FAULT_NONE)), stop, l.header);
   b_.SetInsertPoint(stop);
   llvm::Value *isRetn = b_.CreateICmpEQ(status, b_.getInt32(kStatusReturn));
   b_.CreateRet(b_.CreateSelect(isRetn, b_.getInt32(retnStatus_), status));
-  b_.SetInsertPoint(exit);
+  b_.SetInsertPoint(l.exit);
   st_.clear();
   ms_.clear();
 }

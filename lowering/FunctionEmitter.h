@@ -233,6 +233,9 @@ private:
     llvm::PHINode *remaining;
     llvm::BasicBlock *exit;
   };
+  /// The head both loop forms share (EmitFlow.cpp): read the count once, then per iteration a
+  /// `remaining > 0` test and one watchdog step; leaves the insert point in the body block.
+  Loop openLoop(int32_t i);
   std::vector<Loop> loops_;
   llvm::BasicBlock *abort_ = nullptr; ///< `ret LJ_FAULT_WATCHDOG`, created on first use
   const ChunkPlan *chunk_ = nullptr;  ///< set for a chunk with carried entries
