@@ -3,6 +3,7 @@
 // linker half (AotLink.cpp). Every symbol of the object is hidden: only the shim exports.
 #include "jit/Aot.h"
 #include "jit/AotInternal.h"
+#include "jit/Jit.h"
 #include "jit/Pipeline.h"
 #include "lowering/Lower.h"
 
@@ -56,6 +57,8 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
     error = "cannot create the target machine: " + llvm::toString(tm.takeError());
     return false;
   }
+  CompileTimes t;
+  double t0 = nowUs();
   llvm::LLVMContext ctx;
   ctx.setDiscardValueNames(true);
   lower::LowerOptions lo;
@@ -72,15 +75,25 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
   for (llvm::GlobalValue &g : (*mod)->global_values())
     if (!g.isDeclaration() && g.hasExternalLinkage())
       g.setVisibility(llvm::GlobalValue::HiddenVisibility);
+  double t1 = nowUs();
+  t.lowerUs = t1 - t0;
   optimizeModule(**mod, 2, tm->get());
+  double t2 = nowUs();
+  t.optimizeUs = t2 - t1;
   llvm::orc::SimpleCompiler compiler(**tm);
   auto obj = compiler(**mod);
   if (!obj) {
     error = "code generation failed: " + llvm::toString(obj.takeError());
     return false;
   }
+  double t3 = nowUs();
+  t.codegenUs = t3 - t2;
+  t.objectBytes = (*obj)->getBufferSize();
   uint32_t slices = prog.slices.empty() ? 1u : static_cast<uint32_t>(prog.slices.size());
-  return detail::linkSharedObject((*obj)->getBuffer(), opts, slices, error);
+  bool ok = detail::linkSharedObject((*obj)->getBuffer(), opts, slices, error);
+  t.linkUs = nowUs() - t3;
+  if (opts.times) *opts.times = t;
+  return ok;
 }
 
 } // namespace lj::jit

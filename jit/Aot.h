@@ -14,6 +14,8 @@ class SigningKey;
 
 namespace lj::jit {
 
+struct CompileTimes; // jit/Jit.h
+
 struct AotOptions {
   std::string output;      ///< path of the .so to write (replaced atomically)
   std::string programHash; ///< what ljprog_hash() returns: "sha256:" + 64 lowercase hex digits
@@ -25,6 +27,9 @@ struct AotOptions {
   /// baseline of the architecture (x86-64 without extensions).
   bool genericCpu = false;
   int32_t chunkStatements = 150; ///< as JitOptions::chunkStatements
+  /// When given, receives the phase times (codegen = the object; link = the C compiler's link,
+  /// signing and the atomic rename) and the object's size. Not owned.
+  CompileTimes *times = nullptr;
 };
 
 /// Compile `prog` into a shared object at `opts.output`. On failure returns false, sets `error`

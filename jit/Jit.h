@@ -36,9 +36,14 @@ struct JitOptions {
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,
-/// lower/optimize are the slowest thread's, codegen runs to the end of linking.
+/// lower/optimize are the slowest thread's, codegen runs to the end of linking (so it includes
+/// linkUs and cacheUs). For `ladderjit bench` (docs/bench.md).
 struct CompileTimes {
   double lowerUs = 0, optimizeUs = 0, codegenUs = 0;
+  double linkUs = 0;        ///< JITLink (adding the objects, resolving the entries); AOT: cc
+  double cacheUs = 0;       ///< object cache lookup + store (0 without a cache)
+  uint64_t objectBytes = 0; ///< size of the object file(s) linked
+  bool cacheHit = false;    ///< the objects came from the cache (lower/optimize are then 0)
 };
 
 /// Compile `prog` (which must outlive the engine) into an Engine. On failure returns null and

@@ -184,7 +184,9 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   // The object cache is consulted before any IR is built (docs/aot.md "Object cache").
   std::string cacheKey;
   std::vector<std::string> cached;
+  double cacheUs = 0;
   if (opts.cache) {
+    const double tc = nowUs();
     CacheKeyInputs in{
         im.jtmb->getTargetTriple().str(), im.jtmb->getCPU(),    im.jtmb->getFeatures().getString(),
         static_cast<int>(im.tier),        opts.chunkStatements, parts};
@@ -192,6 +194,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     if (opts.cache->lookup(cacheKey, cached) && cached.size() != parts) cached.clear();
     for (uint32_t p = 0; p < parts && !cached.empty(); ++p)
       res[p].obj = llvm::MemoryBuffer::getMemBufferCopy(cached[p], "cached#" + std::to_string(p));
+    cacheUs += nowUs() - tc;
   }
   if (!res[0].obj) {
     // Partition 0 on this thread, the others on their own; every partition has its own
@@ -214,13 +217,19 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     }
     t.lowerUs = std::max(t.lowerUs, r.lowerUs);
     t.optimizeUs = std::max(t.optimizeUs, r.optimizeUs);
+    t.objectBytes += r.obj->getBufferSize();
   }
+  t.cacheHit = !cached.empty();
   if (opts.cache && cached.empty()) {
+    const double tc = nowUs();
     std::vector<std::string_view> objs;
     for (const PartResult &r : res)
       objs.emplace_back(r.obj->getBufferStart(), r.obj->getBufferSize());
     opts.cache->store(cacheKey, objs);
+    cacheUs += nowUs() - tc;
   }
+  t.cacheUs = cacheUs;
+  const double tLink = nowUs();
   std::string name;
   {
     std::lock_guard<std::mutex> lock(im.mu);
@@ -252,7 +261,9 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   entries.plc1 = *plc1;
   entries.plc2_slice = *plc2;
   entries.plc2_slice_count = prog.slices.empty() ? 1u : static_cast<uint32_t>(prog.slices.size());
-  t.codegenUs = nowUs() - t0 - t.lowerUs - t.optimizeUs;
+  const double tEnd = nowUs();
+  t.linkUs = tEnd - tLink;
+  t.codegenUs = tEnd - t0 - t.lowerUs - t.optimizeUs;
   if (times) *times = t;
   return std::make_unique<JitEngine>(shared_from_this(), impl_.get(), &*jd, entries);
 }
