@@ -26,6 +26,10 @@ struct RealisticOptions {
   uint64_t seed = 1;
   int32_t statements = 1000; ///< exact statement count, markers and SP/SPE included
   int32_t subroutines = 4;
+  /// Only what the C baseline of `ladderjit bench --c-baseline` expresses (gen/CTranslate.h):
+  /// the same bit-logic rungs, ~20% compare / math / move rungs, no subroutines, jumps, timers,
+  /// counters or PLS/PLF/ALT. Off (the default) leaves the generated programs unchanged.
+  bool coreSubset = false;
 };
 
 /// A program as a machine builder would write it: ~70% bit-logic rungs (contacts, ANB/ORB

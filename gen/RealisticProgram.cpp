@@ -181,7 +181,11 @@ Lines RealisticGen::blockRung(int &fb) {
     int32_t k = tmrb_++ % 208;
     return std::to_string(k < 128 ? k : k - 128 + 300);
   };
-  switch (rng_.weighted(std::array<int, 8>{8, 3, 6, 4, 20, 30, 16, 10})) {
+  const int kind =
+      o_.coreSubset
+          ? 4 + static_cast<int>(rng_.weighted(std::array<int, 3>{20, 30, 16}))
+          : static_cast<int>(rng_.weighted(std::array<int, 8>{8, 3, 6, 4, 20, 30, 16, 10}));
+  switch (kind) {
   case 0:
     l = {"LD " + input(), "AND " + input(), "TMRB " + tmrbNo() + " 0 " + len(), "OUT " + coil()};
     break;
@@ -268,18 +272,19 @@ void RealisticGen::part(int32_t budget, int sub) {
     int fb = 0;
     int callee = sub == -2 ? static_cast<int>(rng_.below(std::max(subs_, 1)))
                            : (sub >= 0 && sub + 1 < subs_ ? sub + 1 : -1);
+    const bool flow = !o_.coreSubset;
     if (callee >= 0 && subs_ > 0 && rng_.chance(sub == -2 ? 1 : 3)) {
       l = {"LD " + input(), "CALL S" + std::to_string(10 + callee)};
       fb = 1;
     } else if (sub >= 0 && rng_.chance(2)) {
       l = {"LD " + input(), "RETN"};
       fb = 1;
-    } else if (jumpEnd < 0 && left > 30 && rng_.chance(2)) {
+    } else if (flow && jumpEnd < 0 && left > 30 && rng_.chance(2)) {
       jumpLabel = label_++;
       jumpEnd = static_cast<int32_t>(out_.size()) + static_cast<int32_t>(rng_.range(6, 25));
       l = {"LD " + input(), "JMP L" + std::to_string(jumpLabel)};
       fb = 1;
-    } else if (fbLines_ * 10 < allLines_ * 3) {
+    } else if (fbLines_ * 10 < allLines_ * (o_.coreSubset ? 2 : 3)) {
       l = blockRung(fb);
     } else {
       l = bitRung();
@@ -299,7 +304,7 @@ void RealisticGen::part(int32_t budget, int sub) {
 
 GenProgram RealisticGen::run() {
   const int32_t n = std::max<int32_t>(o_.statements, 40);
-  subs_ = std::max<int32_t>(0, std::min<int32_t>(o_.subroutines, n / 100));
+  subs_ = o_.coreSubset ? 0 : std::max<int32_t>(0, std::min<int32_t>(o_.subroutines, n / 100));
   int32_t body = n - 3 - 2 * subs_;
   int32_t init = std::max<int32_t>(3, body / 50);
   int32_t subSize = subs_ ? std::max<int32_t>(4, body * 3 / 200) : 0;

@@ -1,0 +1,302 @@
+// Straight C for the subset of gen/CTranslate.h, statement by statement, with the semantics of
+// the reference interpreter (interp/InterpFlow.cpp, interp/InterpBlocks.cpp): operands by byte
+// offset inside lj_state (ir/Area.h stateOffset), ST and MS entries as local arrays indexed by the
+// verifier's static depths (compilers keep them in registers), int32 arithmetic wrapping.
+#include "gen/CTranslate.h"
+
+#include "ladderjit/abi.h"
+
+#include <cstddef>
+#include <sstream>
+
+namespace lj::gen {
+namespace {
+
+bool supported(Op op) {
+  switch (op) {
+  case Op::Load:
+  case Op::LoadNot:
+  case Op::LoadTrue:
+  case Op::LoadRise:
+  case Op::LoadFall:
+  case Op::And:
+  case Op::AndNot:
+  case Op::Or:
+  case Op::OrNot:
+  case Op::AndRise:
+  case Op::AndFall:
+  case Op::OrRise:
+  case Op::OrFall:
+  case Op::AndBlock:
+  case Op::OrBlock:
+  case Op::BranchPush:
+  case Op::BranchRead:
+  case Op::BranchPop:
+  case Op::Coil:
+  case Op::CoilNot:
+  case Op::Set:
+  case Op::Reset:
+  case Op::EndInit:
+  case Op::EndCyclic:
+  case Op::EndSliced:
+  case Op::Add:
+  case Op::Subtract:
+  case Op::Multiply:
+  case Op::Divide:
+  case Op::BitAnd:
+  case Op::BitOr:
+  case Op::BitXor:
+  case Op::Increment:
+  case Op::Decrement:
+  case Op::Negate:
+  case Op::Move:
+  case Op::CompareLe:
+  case Op::CompareLt:
+  case Op::CompareEq:
+  case Op::CompareRange:
+    return true;
+  default:
+    return false;
+  }
+}
+
+/// Byte offset and mask of a bit operand (as interp decode()).
+void bitRef(const Operand &o, uint32_t &off, unsigned &mask) {
+  if (o.area == Area::Timer || o.area == Area::Counter) {
+    int slot = lj_tc_slot(o.index);
+    off = o.area == Area::Timer
+              ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
+                                      offsetof(lj_timer, out))
+              : static_cast<uint32_t>(offsetof(lj_state, C) + slot * sizeof(lj_counter) +
+                                      offsetof(lj_counter, out));
+    mask = 1;
+    return;
+  }
+  off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
+        static_cast<uint32_t>(o.bit / 8);
+  mask = 1u << (o.bit % 8);
+}
+
+std::string bitRead(const Operand &o) {
+  uint32_t off;
+  unsigned mask;
+  bitRef(o, off, mask);
+  return "((B(" + std::to_string(off) + ") & " + std::to_string(mask) + "u) != 0)";
+}
+
+std::string bitWrite(const Operand &o, const std::string &v) {
+  uint32_t off;
+  unsigned mask;
+  bitRef(o, off, mask);
+  std::string b = "B(" + std::to_string(off) + ")", m = std::to_string(mask) + "u";
+  return b + " = (unsigned char)((" + v + ") ? (" + b + " | " + m + ") : (" + b + " & ~" + m +
+         "));";
+}
+
+std::string valueRead(const Operand &o) {
+  if (o.kind == Operand::Kind::Const)
+    return o.value == INT32_MIN ? "(-2147483647 - 1)" : "(" + std::to_string(o.value) + ")";
+  if (o.kind == Operand::Kind::Bit) return "(int32_t)" + bitRead(o);
+  uint32_t bytes = areaInfo(o.area).bytes;
+  std::string off = std::to_string(stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+  if (bytes == 1) return "(int32_t)B(" + off + ")";
+  if (bytes == 2) return "(int32_t)I16(" + off + ")";
+  return "I32(" + off + ")";
+}
+
+std::string valueWrite(const Operand &o, const std::string &v) {
+  uint32_t bytes = areaInfo(o.area).bytes;
+  std::string off = std::to_string(stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+  if (bytes == 1) return "B(" + off + ") = (unsigned char)(uint32_t)(" + v + ");";
+  if (bytes == 2) return "I16(" + off + ") = (int16_t)(uint16_t)(uint32_t)(" + v + ");";
+  return "I32(" + off + ") = (" + v + ");";
+}
+
+std::string edgeSample(int32_t slot, const Operand &o, bool rising) {
+  std::string e = "B(" + std::to_string(offsetof(lj_state, edge) + static_cast<size_t>(slot)) + ")";
+  return "{ unsigned char c = " + bitRead(o) + ", m = " + e + "; " + e +
+         " = c; ev = " + (rising ? "c && !m" : "!c && m") + "; }";
+}
+
+void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
+  const Stmt &st = p.stmts[static_cast<size_t>(pc)];
+  const StmtInfo &in = p.info[static_cast<size_t>(pc)];
+  const int d = in.depth, m = in.msDepth;
+  auto S = [](int i) { return "st[" + std::to_string(i) + "]"; };
+  auto M = [](int i) { return "ms[" + std::to_string(i) + "]"; };
+  const Operand &a = st.ops[0], &b = st.ops[1], &x = st.ops[2];
+  const std::string en = d > 0 ? S(d - 1) : "1";
+  auto out = [&](const std::string &v) { return (d > 0 ? S(d - 1) : S(d)) + " = (" + v + ");"; };
+  c << "  ";
+  switch (st.op) {
+  case Op::Load:
+    c << S(d) << " = " << bitRead(a) << ";";
+    break;
+  case Op::LoadNot:
+    c << S(d) << " = !" << bitRead(a) << ";";
+    break;
+  case Op::LoadTrue:
+    c << S(d) << " = 1;";
+    break;
+  case Op::LoadRise:
+  case Op::LoadFall:
+    c << edgeSample(in.slot, a, st.op == Op::LoadRise) << " " << S(d) << " = ev;";
+    break;
+  case Op::And:
+    c << S(d - 1) << " &= " << bitRead(a) << ";";
+    break;
+  case Op::AndNot:
+    c << S(d - 1) << " &= !" << bitRead(a) << ";";
+    break;
+  case Op::Or:
+    c << S(d - 1) << " |= " << bitRead(a) << ";";
+    break;
+  case Op::OrNot:
+    c << S(d - 1) << " |= !" << bitRead(a) << ";";
+    break;
+  case Op::AndRise:
+  case Op::AndFall:
+    c << edgeSample(in.slot, a, st.op == Op::AndRise) << " " << S(d - 1) << " &= ev;";
+    break;
+  case Op::OrRise:
+  case Op::OrFall:
+    c << edgeSample(in.slot, a, st.op == Op::OrRise) << " " << S(d - 1) << " |= ev;";
+    break;
+  case Op::AndBlock:
+    c << S(d - 2) << " &= " << S(d - 1) << ";";
+    break;
+  case Op::OrBlock:
+    c << S(d - 2) << " |= " << S(d - 1) << ";";
+    break;
+  case Op::BranchPush:
+    c << M(m) << " = " << S(d - 1) << ";";
+    break;
+  case Op::BranchRead:
+  case Op::BranchPop:
+    c << S(d - 1) << " = " << M(m - 1) << ";";
+    break;
+  case Op::Coil:
+    c << bitWrite(a, S(d - 1));
+    break;
+  case Op::CoilNot:
+    c << bitWrite(a, "!" + S(d - 1));
+    break;
+  case Op::Set:
+    c << "if (" << S(d - 1) << ") " << bitWrite(a, "1");
+    break;
+  case Op::Reset:
+    c << "if (" << S(d - 1) << ") " << bitWrite(a, "0");
+    break;
+  case Op::EndInit:
+  case Op::EndCyclic:
+  case Op::EndSliced:
+    c << "/* end of part */";
+    break;
+  case Op::Add:
+  case Op::Subtract:
+  case Op::Multiply:
+  case Op::BitAnd:
+  case Op::BitOr:
+  case Op::BitXor: {
+    const char *o = st.op == Op::Add        ? "+"
+                    : st.op == Op::Subtract ? "-"
+                    : st.op == Op::Multiply ? "*"
+                    : st.op == Op::BitAnd   ? "&"
+                    : st.op == Op::BitOr    ? "|"
+                                            : "^";
+    c << "if (" << en << ") { uint32_t va = (uint32_t)" << valueRead(a) << ", vb = (uint32_t)"
+      << valueRead(b) << "; " << valueWrite(x, std::string("(int32_t)(va ") + o + " vb)") << " } "
+      << out(en);
+    break;
+  }
+  case Op::Divide:
+    c << "{ unsigned char o = " << en << "; if (o) { int32_t va = " << valueRead(a)
+      << ", vb = " << valueRead(b) << "; if (vb == 0) { ++U32(" << offsetof(lj_state, fault_divzero)
+      << "); o = 0; } else { "
+      << valueWrite(x, "(va == (-2147483647 - 1) && vb == -1) ? va : va / vb") << " } } "
+      << out("o") << " }";
+    break;
+  case Op::Increment:
+  case Op::Decrement:
+  case Op::Negate: {
+    std::string r = st.op == Op::Increment   ? "(int32_t)((uint32_t)" + valueRead(a) + " + 1u)"
+                    : st.op == Op::Decrement ? "(int32_t)((uint32_t)" + valueRead(a) + " - 1u)"
+                                             : "(int32_t)(0u - (uint32_t)" + valueRead(a) + ")";
+    c << "if (" << en << ") { " << valueWrite(a, r) << " } " << out(en);
+    break;
+  }
+  case Op::Move:
+    c << "if (" << en << ") { " << valueWrite(b, valueRead(a)) << " } " << out(en);
+    break;
+  case Op::CompareLe:
+    c << out(en + " && " + valueRead(a) + " <= " + valueRead(b));
+    break;
+  case Op::CompareLt:
+    c << out(en + " && " + valueRead(a) + " < " + valueRead(b));
+    break;
+  case Op::CompareEq:
+    c << out(en + " && " + valueRead(a) + " == " + valueRead(b));
+    break;
+  case Op::CompareRange:
+    c << "{ int32_t lo = " << valueRead(a) << ", hi = " << valueRead(b) << ", v = " << valueRead(x)
+      << "; " << out(en + " && lo < v && v < hi") << " }";
+    break;
+  default:
+    c << "#error unsupported statement";
+    break;
+  }
+  c << "\n";
+}
+
+void emitPart(std::ostringstream &c, const VerifiedProgram &p, const std::string &name,
+              StmtRange r) {
+  c << "static uint32_t " << name << "(lj_state *s) {\n  unsigned char st[" << p.maxDepth + 2
+    << "] = {0}, ms[" << p.maxMsDepth + 2 << "] = {0}, ev = 0;\n  (void)ms; (void)ev;\n";
+  for (int32_t pc = r.begin; pc < r.end; ++pc) emitStmt(c, p, pc);
+  c << "  return 0;\n}\n\n";
+}
+
+} // namespace
+
+bool cTranslatable(const VerifiedProgram &prog, std::string &error) {
+  if (!prog.subs.empty()) {
+    error = "subroutines (SP " + std::to_string(prog.subs.front().number) +
+            ") are outside the C baseline's subset";
+    return false;
+  }
+  for (size_t i = 0; i < prog.stmts.size(); ++i) {
+    const Stmt &s = prog.stmts[i];
+    if (supported(s.op) && s.force < 0) continue;
+    error = prog.file + ":" + std::to_string(s.loc.line) + ": '" + spelling(prog.dialect, s.op) +
+            "' is outside the C baseline's subset (bit logic, MOV, math, compares)";
+    return false;
+  }
+  return true;
+}
+
+std::string translateToC(const VerifiedProgram &p) {
+  std::ostringstream c;
+  c << "/* C baseline of " << p.file << " (ladderjit bench --c-baseline) */\n"
+    << "#include <stdint.h>\n"
+    << "typedef struct lj_state lj_state;\n"
+    << "#define B(o) (((unsigned char *)s)[o])\n"
+    << "#define I16(o) (*(int16_t *)((unsigned char *)s + (o)))\n"
+    << "#define I32(o) (*(int32_t *)((unsigned char *)s + (o)))\n"
+    << "#define U32(o) (*(uint32_t *)((unsigned char *)s + (o)))\n\n";
+  emitPart(c, p, "part_init", p.init);
+  emitPart(c, p, "part_plc1", p.plc1);
+  std::vector<StmtRange> slices = p.slices;
+  if (slices.empty()) slices.push_back(p.plc2);
+  for (size_t k = 0; k < slices.size(); ++k)
+    emitPart(c, p, "slice_" + std::to_string(k), slices[k]);
+  c << "uint32_t ljc_init(void *ctx, lj_state *s) { (void)ctx; return part_init(s); }\n"
+    << "uint32_t ljc_plc1(void *ctx, lj_state *s) { (void)ctx; return part_plc1(s); }\n"
+    << "uint32_t ljc_plc2_slice(void *ctx, lj_state *s, uint32_t k) {\n  (void)ctx;\n"
+    << "  switch (k) {\n";
+  for (size_t k = 0; k < slices.size(); ++k)
+    c << "  case " << k << ": return slice_" << k << "(s);\n";
+  c << "  default: return 0;\n  }\n}\n";
+  return c.str();
+}
+
+} // namespace lj::gen
