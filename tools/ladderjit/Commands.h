@@ -112,6 +112,24 @@ struct FuzzArgs {
 };
 int runFuzz(const FuzzArgs &a);
 
+struct BenchArgs {
+  std::string program;
+  std::string engine = "all";  ///< interp | jit | aot | all
+  std::string tier = "both";   ///< fast | opt | both (JIT; AOT is always the optimizing tier)
+  uint64_t scans = 2000;       ///< timed full scans per engine
+  std::string stimulus;        ///< file of '@TICK ADDR=VALUE' lines; empty = pseudo-random inputs
+  std::string format = "text"; ///< text | json
+  uint64_t seed = 1;           ///< pseudo-random inputs
+  bool cache = false;          ///< compile through the object cache (default: cache off)
+  bool cBaseline = false;      ///< also translate to C and build with gcc / clang
+  uint32_t cTimeoutS = 300;    ///< time bound of one C compile
+  int32_t plc2Nvalue = 200;
+  bool plc2NvalueGiven = false;
+};
+/// `ladderjit bench`: compile phases and scan times of PROGRAM per engine and tier
+/// (docs/bench.md).
+int runBench(const BenchArgs &a);
+
 struct LadderArgs {
   std::string program;
   std::string format = "text"; ///< text | json (svg | html: not built yet)

@@ -118,6 +118,33 @@ int mainImpl(int argc, char **argv) {
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
                   "on the interpreter");
 
+  BenchArgs bn;
+  CLI::App *cBench = app.add_subcommand(
+      "bench", "compile phases and scan times of PROGRAM per engine and tier (docs/bench.md)");
+  cBench->add_option("PROGRAM", bn.program, kProgramHelp)->required();
+  lastWins(cBench->add_option("--engine", bn.engine, "interp | jit | aot | all (default all)"));
+  lastWins(cBench->add_option("--tier", bn.tier, "fast | opt | both (default both)"));
+  lastWins(cBench->add_option("--scans", bn.scans, "timed full scans per engine (default 2000)")
+               ->check(kUnsigned));
+  lastWins(cBench->add_option("--stimulus", bn.stimulus,
+                              "inputs from a file of '@TICK ADDR=VALUE ...' lines (default: "
+                              "pseudo-random X bits and F words)"));
+  lastWins(cBench->add_option("--format", bn.format, "text | json (default text)"));
+  lastWins(cBench->add_option("--seed", bn.seed, "seed of the pseudo-random inputs (default 1)")
+               ->check(kUnsigned));
+  cBench->add_flag("--cache", bn.cache, "compile through the object cache (default: off)");
+  cBench->add_flag("--c-baseline", bn.cBaseline,
+                   "also translate PROGRAM to C and build it with gcc and clang at -O1/-O2");
+  lastWins(
+      cBench
+          ->add_option("--c-timeout", bn.cTimeoutS, "seconds one C compile may take (default 300)")
+          ->check(kUnsigned));
+  CLI::Option *benchNvalue =
+      lastWins(cBench
+                   ->add_option("--plc2-nvalue", bn.plc2Nvalue,
+                                "PLC2 statements per tick (default: the plc.dit's, else 200)")
+                   ->check(kUnsigned));
+
   LadderArgs lad;
   CLI::App *cLadder = app.add_subcommand("ladder", "the program as ladder networks (text, json)");
   cLadder->add_option("PROGRAM", lad.program, kProgramHelp)->required();
@@ -236,6 +263,7 @@ int mainImpl(int argc, char **argv) {
   emit.plc2NvalueGiven = emitNvalue->count() > 0;
   comp.plc2NvalueGiven = compNvalue->count() > 0;
   lad.plc2NvalueGiven = ladNvalue->count() > 0;
+  bn.plc2NvalueGiven = benchNvalue->count() > 0;
 
   if (cCheck->parsed()) return runCheck(check);
   if (cDit->parsed()) return runDit(dit);
@@ -245,6 +273,7 @@ int mainImpl(int argc, char **argv) {
   if (cCompile->parsed()) return runCompile(comp);
   if (cKeygen->parsed()) return runKeygen(keygen);
   if (cLadder->parsed()) return runLadder(lad);
+  if (cBench->parsed()) return runBench(bn);
   if (cServe->parsed()) {
     serve.periodMsGiven = servePeriod->count() > 0;
     serve.plc2NvalueGiven = serveNvalue->count() > 0;

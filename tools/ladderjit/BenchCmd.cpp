@@ -1,0 +1,571 @@
+// `ladderjit bench PROGRAM` (docs/bench.md): the compile phases of the user's own program and its
+// full-scan time on every engine and tier, all in one run so the ratios compare like with like.
+// Every lane runs the same inputs; at the end every final state must equal the interpreter's.
+#include "tools/ladderjit/BenchCmd.h"
+#include "tools/ladderjit/Commands.h"
+
+#include "engines/AotLoader.h"
+#include "engines/AotTrust.h"
+#include "formats/Address.h"
+#include "formats/InputFiles.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "gen/Rng.h"
+#include "jit/Aot.h"
+#include "jit/ObjectCache.h"
+#include "ladder/Json.h"
+
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+namespace lj::cli {
+namespace bench {
+
+Progress::Progress() : tty_(::isatty(STDERR_FILENO) == 1) {}
+
+void Progress::show(const std::string &line) {
+  if (!tty_) return;
+  std::string out = "\r" + line;
+  if (line.size() < lastLen_) out += std::string(lastLen_ - line.size(), ' ');
+  lastLen_ = line.size();
+  std::fputs(out.c_str(), stderr);
+  std::fflush(stderr);
+}
+
+void Progress::clear() {
+  if (!tty_ || lastLen_ == 0) return;
+  std::fprintf(stderr, "\r%s\r", std::string(lastLen_, ' ').c_str());
+  std::fflush(stderr);
+  lastLen_ = 0;
+}
+
+} // namespace bench
+
+namespace {
+
+using bench::Lane;
+using bench::Phases;
+using Clock = std::chrono::steady_clock;
+
+double usSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+}
+
+inline double monoNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e9 + static_cast<double>(ts.tv_nsec);
+}
+
+/// The inputs of one scan: every X byte (pseudo-random mode) or the stimulus writes of that tick.
+struct ScanInputs {
+  bool random = true;
+  uint64_t seed = 1;
+  const io::Stimulus *stimulus = nullptr;
+  size_t nextEvent = 0;
+};
+
+/// Random mode: X (all 513 bytes) and 16 F words get new values each scan, from the seed and the
+/// scan number, so every lane sees the same inputs.
+void applyInputs(lj_state &s, const ScanInputs &in, uint64_t scan,
+                 const std::vector<const io::StimulusEvent *> &events) {
+  if (in.random) {
+    gen::Rng rng(in.seed * 0x9E3779B97F4A7C15ull + scan);
+    for (size_t i = 0; i < LJ_X_COUNT; i += 8) {
+      uint64_t v = rng.next();
+      size_t n = std::min<size_t>(8, LJ_X_COUNT - i);
+      std::memcpy(&s.img.X[i], &v, n);
+    }
+    for (int k = 0; k < 16; ++k) {
+      uint64_t v = rng.next();
+      s.img.F[v % LJ_F_COUNT] = static_cast<int16_t>(v >> 32);
+    }
+    return;
+  }
+  for (const io::StimulusEvent *ev : events)
+    for (const io::Assignment &a : ev->sets) io::writeAddress(s, a.addr, a.value);
+}
+
+/// One full scan as docs/BENCHMARKS.md defines it: PLC1, then every PLC2 slice (a PLC1 fault
+/// skips the slices, as lj_tick does).
+inline uint32_t fullScan(const lj_entries &e, lj_state *s) {
+  s->steps = 0;
+  uint32_t f = e.plc1(e.ctx, s);
+  if (f != LJ_FAULT_NONE) return f;
+  for (uint32_t k = 0; k < e.plc2_slice_count; ++k)
+    if (uint32_t g = e.plc2_slice(e.ctx, s, k); g != LJ_FAULT_NONE) return g;
+  return LJ_FAULT_NONE;
+}
+
+struct Stats {
+  double minNs = 0, medianNs = 0, p99Ns = 0, meanNs = 0;
+};
+
+Stats statsOf(std::vector<double> v) {
+  Stats st;
+  if (v.empty()) return st;
+  std::sort(v.begin(), v.end());
+  st.minNs = v.front();
+  st.medianNs = v[v.size() / 2];
+  st.p99Ns = v[std::min(v.size() - 1, static_cast<size_t>(static_cast<double>(v.size()) * 0.99))];
+  double sum = 0;
+  for (double x : v) sum += x;
+  st.meanNs = sum / static_cast<double>(v.size());
+  return st;
+}
+
+/// A private 0700 directory for the AOT .so and the C baseline, removed at exit.
+struct TempDir {
+  std::string path;
+  ~TempDir() {
+    if (path.empty()) return;
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  bool make(std::string &error) {
+    const char *tmp = std::getenv("TMPDIR");
+    std::string t = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-bench-XXXXXX";
+    if (!::mkdtemp(t.data())) {
+      error = "cannot create a temporary directory: " + std::string(std::strerror(errno));
+      return false;
+    }
+    path = t;
+    return true;
+  }
+};
+
+Phases phasesOf(const jit::CompileTimes &t, double totalUs) {
+  Phases p;
+  p.lowerUs = t.lowerUs;
+  p.optimizeUs = t.optimizeUs;
+  p.linkUs = t.linkUs;
+  p.cacheUs = t.cacheUs;
+  p.codegenUs = std::max(0.0, t.codegenUs - t.linkUs - t.cacheUs);
+  p.codeBytes = t.objectBytes;
+  p.cacheHit = t.cacheHit;
+  p.totalUs = totalUs;
+  return p;
+}
+
+bool addJitLane(const VerifiedProgram &prog, bool fast, bool useCache, std::vector<Lane> &lanes,
+                std::string &error) {
+  jit::JitOptions o;
+  o.tier = fast ? jit::Tier::Fast : jit::Tier::Optimizing;
+  if (useCache) o.cache = jit::ObjectCache::fromEnvironment();
+  jit::CompileTimes t;
+  auto t0 = Clock::now();
+  std::unique_ptr<Engine> e = jit::compile(prog, o, error, &t);
+  if (!e) return false;
+  Lane l;
+  l.name = fast ? "jit-fast" : "jit-opt";
+  l.engine = "jit";
+  l.tier = fast ? "fast" : "opt";
+  l.phases = phasesOf(t, usSince(t0));
+  l.entries = e->entries();
+  l.engine_ = std::move(e);
+  lanes.push_back(std::move(l));
+  return true;
+}
+
+/// `ladderjit compile` into the private directory, signed with the default key, then loaded by
+/// the trusted loader with the default trust (as `run --engine aot:` would).
+bool addAotLane(const VerifiedProgram &prog, const ProgramSource &src, int32_t nvalue,
+                const std::string &dir, std::vector<Lane> &lanes, std::string &error) {
+  io::SigningKey key;
+  std::string keyPath;
+  bool created = false;
+  if (!io::defaultSigningKey(key, keyPath, created, error)) {
+    error = "signing key: " + error;
+    return false;
+  }
+  if (created)
+    std::fprintf(stderr,
+                 "ladderjit: created the AOT signing key pair '%s' (private) and its .pub\n",
+                 keyPath.c_str());
+  io::AotExpect id = io::aotExpectOf(src, nvalue);
+  jit::AotOptions o;
+  o.output = dir + "/program.so";
+  o.programHash = id.program;
+  o.sourceHash = id.source;
+  o.plc2Nvalue = nvalue;
+  o.signingKey = &key;
+  jit::CompileTimes t;
+  o.times = &t;
+  auto t0 = Clock::now();
+  if (!jit::compileSharedObject(prog, o, error)) return false;
+  struct stat st {};
+  uint64_t soBytes = ::stat(o.output.c_str(), &st) == 0 ? static_cast<uint64_t>(st.st_size) : 0;
+  auto tl = Clock::now();
+  std::unique_ptr<Engine> e = loadAotEngine(o.output, src, nvalue, {}, error);
+  if (!e) return false;
+  Lane l;
+  l.name = "aot";
+  l.engine = "aot";
+  l.tier = "opt";
+  l.phases = phasesOf(t, usSince(t0));
+  l.phases.codegenUs = t.codegenUs; // no cache, link measured apart
+  l.phases.loadUs = usSince(tl);
+  l.phases.codeBytes = soBytes;
+  l.entries = e->entries();
+  l.engine_ = std::move(e);
+  lanes.push_back(std::move(l));
+  return true;
+}
+
+std::string fmtUs(double us) {
+  char b[32];
+  if (us >= 100000)
+    std::snprintf(b, sizeof b, "%.0f ms", us / 1000);
+  else if (us >= 1000)
+    std::snprintf(b, sizeof b, "%.1f ms", us / 1000);
+  else
+    std::snprintf(b, sizeof b, "%.3f ms", us / 1000);
+  return b;
+}
+
+std::string fmtNs(double ns) {
+  char b[32];
+  if (ns >= 100000)
+    std::snprintf(b, sizeof b, "%.0f us", ns / 1000);
+  else
+    std::snprintf(b, sizeof b, "%.3f us", ns / 1000);
+  return b;
+}
+
+struct Ratio {
+  std::string name;
+  double value;
+};
+
+std::vector<Ratio> ratiosOf(const std::vector<Lane> &lanes, const std::vector<Stats> &st) {
+  auto find = [&](const std::string &n) -> int {
+    for (size_t i = 0; i < lanes.size(); ++i)
+      if (lanes[i].name == n) return static_cast<int>(i);
+    return -1;
+  };
+  std::vector<Ratio> r;
+  auto add = [&](const std::string &a, const std::string &b) {
+    int i = find(a), j = find(b);
+    if (i < 0 || j < 0 || st[static_cast<size_t>(j)].medianNs <= 0) return;
+    r.push_back(
+        {a + "/" + b, st[static_cast<size_t>(i)].medianNs / st[static_cast<size_t>(j)].medianNs});
+  };
+  add("jit-fast", "interp");
+  add("jit-opt", "interp");
+  add("aot", "interp");
+  add("jit-opt", "jit-fast");
+  add("aot", "jit-opt");
+  for (const Lane &l : lanes)
+    if (l.engine == "c") add("jit-opt", l.name), add("aot", l.name);
+  return r;
+}
+
+nlohmann::json phasesJson(const Phases &p) {
+  nlohmann::json j;
+  j["lower_us"] = p.lowerUs;
+  j["optimize_us"] = p.optimizeUs;
+  j["codegen_us"] = p.codegenUs;
+  j["link_us"] = p.linkUs;
+  j["cache_us"] = p.cacheUs;
+  j["load_us"] = p.loadUs;
+  j["total_us"] = p.totalUs;
+  j["code_bytes"] = p.codeBytes;
+  j["cache_hit"] = p.cacheHit;
+  return j;
+}
+
+struct FrontTimes {
+  double readUs = 0, parseUs = 0, verifyUs = 0;
+};
+
+void printText(const BenchArgs &a, const VerifiedProgram &prog, const FrontTimes &ft,
+               const std::vector<Lane> &lanes, const std::vector<Stats> &st,
+               const std::vector<Ratio> &ratios, const std::vector<std::string> &notes) {
+  std::ostringstream o;
+  o << "program " << a.program << ": " << prog.stmts.size() << " statements, " << prog.slices.size()
+    << " PLC2 slices; " << a.scans << " full scans per engine, inputs "
+    << (a.stimulus.empty() ? "pseudo-random (seed " + std::to_string(a.seed) + ")"
+                           : "from " + a.stimulus)
+    << "\n\nfront end: read " << fmtUs(ft.readUs) << ", parse " << fmtUs(ft.parseUs) << ", verify "
+    << fmtUs(ft.verifyUs) << "\n\ncompile (wall)\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-10s %10s %10s %10s %10s %10s %10s %10s %12s\n", "engine",
+                "lower", "optimize", "codegen", "link", "cache", "load", "total", "code bytes");
+  o << line;
+  for (const Lane &l : lanes) {
+    if (l.engine == "interp") continue;
+    const Phases &p = l.phases;
+    std::snprintf(line, sizeof line, "  %-10s %10s %10s %10s %10s %10s %10s %10s %12llu%s\n",
+                  l.name.c_str(), fmtUs(p.lowerUs).c_str(), fmtUs(p.optimizeUs).c_str(),
+                  fmtUs(p.codegenUs).c_str(), fmtUs(p.linkUs).c_str(), fmtUs(p.cacheUs).c_str(),
+                  fmtUs(p.loadUs).c_str(), fmtUs(p.totalUs).c_str(),
+                  static_cast<unsigned long long>(p.codeBytes), p.cacheHit ? " (cache hit)" : "");
+    o << line;
+  }
+  o << "\nfull scan (PLC1 + every PLC2 slice)\n";
+  std::snprintf(line, sizeof line, "  %-10s %12s %12s %12s %12s %8s\n", "engine", "min", "median",
+                "p99", "ns/stmt", "faults");
+  o << line;
+  const double stmts =
+      static_cast<double>((prog.plc1.end - prog.plc1.begin) + (prog.plc2.end - prog.plc2.begin));
+  for (size_t i = 0; i < lanes.size(); ++i) {
+    std::snprintf(line, sizeof line, "  %-10s %12s %12s %12s %12.3f %8llu\n", lanes[i].name.c_str(),
+                  fmtNs(st[i].minNs).c_str(), fmtNs(st[i].medianNs).c_str(),
+                  fmtNs(st[i].p99Ns).c_str(), stmts > 0 ? st[i].medianNs / stmts : 0.0,
+                  static_cast<unsigned long long>(lanes[i].faults));
+    o << line;
+  }
+  o << "\nratios of median scan times (same run)\n";
+  for (const Ratio &r : ratios) {
+    std::snprintf(line, sizeof line, "  %-18s %8.3f\n", r.name.c_str(), r.value);
+    o << line;
+  }
+  o << "\nfinal states: every engine equals the interpreter after " << a.scans << " scans\n";
+  for (const std::string &n : notes) o << "note: " << n << "\n";
+  std::cout << o.str();
+}
+
+void printJson(const BenchArgs &a, const VerifiedProgram &prog, const FrontTimes &ft,
+               const std::vector<Lane> &lanes, const std::vector<Stats> &st,
+               const std::vector<Ratio> &ratios, const std::vector<std::string> &notes) {
+  nlohmann::json j;
+  j["schema"] = "ladderjit-bench 1";
+  j["program"] = a.program;
+  j["statements"] = prog.stmts.size();
+  j["scan_statements"] = (prog.plc1.end - prog.plc1.begin) + (prog.plc2.end - prog.plc2.begin);
+  j["plc2_slices"] = prog.slices.size();
+  j["scans"] = a.scans;
+  j["inputs"] = a.stimulus.empty() ? "random" : "stimulus";
+  j["seed"] = a.seed;
+  j["front_end"] = {{"read_us", ft.readUs}, {"parse_us", ft.parseUs}, {"verify_us", ft.verifyUs}};
+  j["engines"] = nlohmann::json::array();
+  for (size_t i = 0; i < lanes.size(); ++i) {
+    nlohmann::json e;
+    e["name"] = lanes[i].name;
+    e["engine"] = lanes[i].engine;
+    e["tier"] = lanes[i].tier;
+    if (lanes[i].engine != "interp") e["compile"] = phasesJson(lanes[i].phases);
+    e["scan_ns"] = {{"min", st[i].minNs},
+                    {"median", st[i].medianNs},
+                    {"p99", st[i].p99Ns},
+                    {"mean", st[i].meanNs}};
+    e["faults"] = lanes[i].faults;
+    e["state_matches_interp"] = true;
+    j["engines"].push_back(e);
+  }
+  j["ratios"] = nlohmann::json::object();
+  for (const Ratio &r : ratios) j["ratios"][r.name] = r.value;
+  j["notes"] = notes;
+  std::cout << j.dump(2) << "\n";
+}
+
+/// The lanes' scans, interleaved in blocks of 64 so machine noise hits every engine alike.
+void runScans(std::vector<Lane> &lanes, const BenchArgs &a, const ScanInputs &in,
+              bench::Progress &progress) {
+  constexpr uint64_t kBlock = 64;
+  std::vector<std::vector<const io::StimulusEvent *>> events(kBlock);
+  size_t nextEvent = 0;
+  auto t0 = Clock::now();
+  auto lastShow = t0;
+  for (Lane &l : lanes) l.scanNs.reserve(a.scans);
+  for (uint64_t b = 0; b < a.scans; b += kBlock) {
+    const uint64_t n = std::min(kBlock, a.scans - b);
+    for (uint64_t k = 0; k < n; ++k) {
+      events[k].clear();
+      while (in.stimulus && nextEvent < in.stimulus->events.size() &&
+             in.stimulus->events[nextEvent].tick == b + k)
+        events[k].push_back(&in.stimulus->events[nextEvent++]);
+      while (in.stimulus && nextEvent < in.stimulus->events.size() &&
+             in.stimulus->events[nextEvent].tick < b + k)
+        ++nextEvent; // not reachable: ticks are sorted
+    }
+    for (Lane &l : lanes) {
+      lj_state *s = l.state.get();
+      for (uint64_t k = 0; k < n; ++k) {
+        applyInputs(*s, in, b + k, events[k]);
+        s->now_ms = b + k + 1;
+        double t = monoNs();
+        uint32_t f = fullScan(l.entries, s);
+        l.scanNs.push_back(monoNs() - t);
+        l.faults += f != LJ_FAULT_NONE;
+      }
+    }
+    if (progress.enabled() &&
+        std::chrono::duration<double>(Clock::now() - lastShow).count() > 0.25) {
+      lastShow = Clock::now();
+      double el = std::chrono::duration<double>(lastShow - t0).count();
+      double done = static_cast<double>(b + n) / static_cast<double>(a.scans);
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "bench: scans %llu/%llu, %.1f s left",
+                    static_cast<unsigned long long>(b + n),
+                    static_cast<unsigned long long>(a.scans), done > 0 ? el / done - el : 0.0);
+      progress.show(buf);
+    }
+  }
+}
+
+} // namespace
+
+int runBench(const BenchArgs &a) {
+  const bool wantInterp = a.engine == "interp" || a.engine == "all";
+  const bool wantJit = a.engine == "jit" || a.engine == "all";
+  const bool wantAot = a.engine == "aot" || a.engine == "all";
+  if (!wantInterp && !wantJit && !wantAot)
+    return usageError("--engine: expected interp, jit, aot or all, got '" + a.engine + "'");
+  if (a.tier != "fast" && a.tier != "opt" && a.tier != "both")
+    return usageError("--tier: expected fast, opt or both, got '" + a.tier + "'");
+  if (a.format != "text" && a.format != "json")
+    return usageError("--format: expected text or json, got '" + a.format + "'");
+  if (a.scans < 1 || a.scans > 10000000)
+    return usageError("--scans: expected 1..10000000, got " + std::to_string(a.scans));
+  if (a.engine == "aot" && a.tier == "fast")
+    return usageError("--tier fast: aot has only the optimizing tier (use --tier opt or both)");
+  if (a.cTimeoutS < 1 || a.cTimeoutS > 3600)
+    return usageError("--c-timeout: expected 1..3600 seconds");
+
+  std::string error;
+  io::Stimulus stim;
+  ScanInputs in;
+  in.seed = a.seed;
+  if (!a.stimulus.empty()) {
+    std::string text;
+    if (!io::readFile(a.stimulus, text, error)) return usageError(error);
+    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error);
+    if (!st) return usageError(error);
+    stim = std::move(*st);
+    in.random = false;
+    in.stimulus = &stim;
+  }
+
+  bench::Progress progress;
+  int code = kOk;
+  ProgramSource src;
+  auto tr = Clock::now();
+  if (!readProgram(a.program, src, code)) return code;
+  FrontTimes ft;
+  ft.readUs = usSince(tr);
+  const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
+  std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
+  if (!prog) return code;
+  {
+    // Parse and verify apart (the program above came from the same two steps in one call).
+    const SymbolTable *symbols = src.dit      ? &src.dit->symbols
+                                 : src.ladder ? &src.ladder->symbols
+                                              : nullptr;
+    Diagnostics d(src.path);
+    auto t0 = Clock::now();
+    ParsedProgram parsed = parseStl(src.text, src.path, d, symbols);
+    ft.parseUs = usSince(t0);
+    VerifyOptions vo;
+    vo.plc2Nvalue = nvalue;
+    auto t1 = Clock::now();
+    std::optional<VerifiedProgram> again = verify(parsed, vo, d);
+    ft.verifyUs = usSince(t1);
+  }
+
+  std::vector<std::string> notes;
+  std::vector<Lane> lanes;
+  {
+    Lane l;
+    l.name = "interp";
+    l.engine = "interp";
+    l.tier = "-";
+    l.engine_ = makeInterpreterEngine(*prog);
+    l.entries = l.engine_->entries();
+    lanes.push_back(std::move(l));
+  }
+  if (!wantInterp)
+    notes.push_back("the interpreter always runs: it is the reference every final "
+                    "state is checked against");
+  TempDir dir;
+  const bool fast = a.tier != "opt", opt = a.tier != "fast";
+  if (wantJit && fast) {
+    progress.show("bench: compiling jit-fast ...");
+    if (!addJitLane(*prog, true, a.cache, lanes, error)) return usageError("jit: " + error);
+  }
+  if (wantJit && opt) {
+    progress.show("bench: compiling jit-opt ...");
+    if (!addJitLane(*prog, false, a.cache, lanes, error)) return usageError("jit: " + error);
+  }
+  if ((wantAot && opt) || a.cBaseline)
+    if (!dir.make(error)) return usageError(error);
+  if (wantAot && opt) {
+    progress.show("bench: building aot ...");
+    if (!addAotLane(*prog, src, nvalue, dir.path, lanes, error)) return usageError("aot: " + error);
+  } else if (wantAot) {
+    notes.push_back("aot skipped: it has only the optimizing tier");
+  }
+  if (a.cBaseline) {
+    if (!bench::cBaselineSupports(*prog, error)) return usageError("--c-baseline: " + error);
+    for (const char *cc : {"gcc", "clang-19", "clang"}) {
+      std::string path;
+      for (std::string_view d : {"/usr/bin/", "/usr/local/bin/", "/bin/"}) {
+        std::string p = std::string(d) + cc;
+        if (::access(p.c_str(), X_OK) == 0) {
+          path = p;
+          break;
+        }
+      }
+      if (path.empty()) {
+        notes.push_back(std::string(cc) + " not installed");
+        continue;
+      }
+      if (std::string(cc) == "clang") {
+        bool have19 = false;
+        for (const Lane &l : lanes) have19 |= l.name.rfind("clang-19", 0) == 0;
+        if (have19) continue; // clang is clang-19 on this machine or an older one: one is enough
+      }
+      for (const char *lvl : {"-O1", "-O2"}) {
+        progress.show(std::string("bench: C baseline ") + cc + " " + lvl + " ...");
+        Lane l;
+        if (!bench::buildCBaseline(*prog, {path, lvl}, dir.path, a.cTimeoutS, l, error)) {
+          notes.push_back(std::string(cc) + " " + lvl + ": " + error);
+          continue;
+        }
+        lanes.push_back(std::move(l));
+      }
+    }
+  }
+
+  for (Lane &l : lanes) {
+    l.state = std::make_unique<lj_state>();
+    lj_state_reset(l.state.get());
+    if (src.dit)
+      for (const io::Assignment &p : src.dit->params) io::writeAddress(*l.state, p.addr, p.value);
+    lj_run_init(l.state.get(), &l.entries);
+  }
+  runScans(lanes, a, in, progress);
+  progress.clear();
+
+  for (size_t i = 1; i < lanes.size(); ++i)
+    if (std::memcmp(lanes[i].state.get(), lanes[0].state.get(), LJ_STATE_COMPARED_BYTES) != 0 ||
+        lanes[i].faults != lanes[0].faults) {
+      std::fprintf(stderr,
+                   "ladderjit: error: bench: the final state of %s differs from the interpreter's "
+                   "after %llu scans (a miscompile: please report it with the program)\n",
+                   lanes[i].name.c_str(), static_cast<unsigned long long>(a.scans));
+      return kProgramErrors;
+    }
+
+  std::vector<Stats> st;
+  for (const Lane &l : lanes) st.push_back(statsOf(l.scanNs));
+  std::vector<Ratio> ratios = ratiosOf(lanes, st);
+  notes.push_back("scan times include one clock read (about 20-40 ns)");
+  if (a.format == "json")
+    printJson(a, *prog, ft, lanes, st, ratios, notes);
+  else
+    printText(a, *prog, ft, lanes, st, ratios, notes);
+  return kOk;
+}
+
+} // namespace lj::cli
