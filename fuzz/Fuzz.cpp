@@ -87,10 +87,14 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     st.multiSlice += o.slices > 1;
     st.ticks += o.kind == Outcome::Kind::Same ? c.stim.ticks()
                                               : (o.tick == Outcome::kInitTick ? 0 : o.tick + 1);
-    if (o.kind == Outcome::Kind::Same) continue;
     if (o.kind == Outcome::Kind::NotVerified) ++st.notVerified;
     if (o.kind == Outcome::Kind::Mismatch) ++st.mismatches;
     if (o.kind == Outcome::Kind::EngineError) ++st.engineErrors;
+    if (opts.progress) {
+      st.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      opts.progress(st, i + 1);
+    }
+    if (o.kind == Outcome::Kind::Same) continue;
     if (reported >= opts.maxReports) continue;
     ++reported;
     out << kindName(o.kind) << ": program " << i << " of seed " << opts.seed << " (program seed "
@@ -110,6 +114,7 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     }
   }
   st.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (opts.progress) opts.progress(st, 0);
 
   out << "fuzz summary: seed " << opts.seed << ", programs " << st.programs << ", ticks/program "
       << opts.ticks << ", tiers " << modeName(opts.tiers) << " (fast " << st.fastPrograms

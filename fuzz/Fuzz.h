@@ -18,6 +18,8 @@ namespace lj::fuzz {
 /// Which JIT tier each program is compiled with.
 enum class TierMode : uint8_t { Mixed, Fast, Optimizing };
 
+struct FuzzStats;
+
 struct FuzzOptions {
   uint64_t seed = 1;
   uint64_t programs = 1000;
@@ -31,6 +33,9 @@ struct FuzzOptions {
   /// Engine under test: the interpreter on the program's ladder round trip instead of the JIT
   /// (fuzz/RoundTrip.h).
   bool roundTrip = false;
+  /// Called after every program with the counters so far and the programs done, and once more
+  /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
+  std::function<void(const FuzzStats &, uint64_t done)> progress;
 };
 
 /// Campaign counters, also printed as the summary.

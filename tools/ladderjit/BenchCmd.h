@@ -1,5 +1,5 @@
-// Pieces of `ladderjit bench` (docs/bench.md) shared by its files: one measured engine ("lane"),
-// the progress line, and the C baseline (BenchCBaseline.cpp).
+// Pieces of `ladderjit bench` (docs/bench.md) shared by its files: one measured engine ("lane")
+// and the C baseline (BenchCBaseline.cpp).
 #pragma once
 
 #include "ir/Engine.h"
@@ -48,18 +48,5 @@ bool buildCBaseline(const VerifiedProgram &prog, const CBuild &b, const std::str
 /// Whether `prog` can be translated (every statement in the C baseline's subset); else `error`
 /// names the first statement that cannot.
 bool cBaselineSupports(const VerifiedProgram &prog, std::string &error);
-
-/// A `\r`-rewritten status line on stderr, only when stderr is a terminal.
-class Progress {
-public:
-  Progress();
-  bool enabled() const { return tty_; }
-  void show(const std::string &line);
-  void clear();
-
-private:
-  bool tty_ = false;
-  size_t lastLen_ = 0;
-};
 
 } // namespace lj::cli::bench

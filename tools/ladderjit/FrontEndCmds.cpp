@@ -1,6 +1,7 @@
 // `check`, `emit-llvm` and `fuzz`: the commands that load a program (STL or plc.dit) without
 // simulating it (or, for fuzz, generate their own).
 #include "tools/ladderjit/Commands.h"
+#include "tools/ladderjit/Progress.h"
 
 #include "frontends/hnc8/FrontEnd.h"
 
@@ -66,6 +67,26 @@ int runFuzz(const FuzzArgs &a) {
   opts.programs = a.programs;
   opts.ticks = a.ticks;
   opts.roundTrip = a.roundTrip;
+  // Programs done, rate, mismatches so far and time left, once the campaign has run a second;
+  // only on a terminal (CLI.md: nothing extra on a redirected stderr).
+  Progress progress;
+  if (progress.enabled()) {
+    double lastShown = 0;
+    opts.progress = [&progress, &lastShown, total = a.programs](const fuzz::FuzzStats &st,
+                                                                uint64_t done) {
+      if (done == 0) return progress.clear();
+      if (st.seconds < 1.0 || st.seconds - lastShown < 0.25) return;
+      lastShown = st.seconds;
+      double rate = static_cast<double>(done) / st.seconds;
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "fuzz: programs %llu/%llu, %.0f/s, mismatches %llu, %.0f s left",
+                    static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
+                    rate, static_cast<unsigned long long>(st.failures()),
+                    rate > 0 ? static_cast<double>(total - done) / rate : 0.0);
+      progress.show(line);
+    };
+  }
   uint64_t mismatches = fuzz::run(opts, std::cout);
   std::cout << std::flush;
   return mismatches == 0 ? kOk : kProgramErrors;
