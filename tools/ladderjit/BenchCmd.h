@@ -5,6 +5,7 @@
 #include "ir/Engine.h"
 #include "ir/Program.h"
 #include "jit/Jit.h"
+#include "tools/ladderjit/Commands.h"
 
 #include <cstdint>
 #include <memory>
@@ -33,6 +34,32 @@ struct Lane {
   std::vector<double> scanNs;
   uint64_t faults = 0;
 };
+
+/// Scan-time statistics of one lane, ns.
+struct Stats {
+  double minNs = 0, medianNs = 0, p99Ns = 0, meanNs = 0;
+};
+Stats statsOf(std::vector<double> v);
+
+/// Median scan time of lane A over lane B, named "A/B".
+struct Ratio {
+  std::string name;
+  double value;
+};
+/// The ratios docs/bench.md lists, for the lanes present.
+std::vector<Ratio> ratiosOf(const std::vector<Lane> &lanes, const std::vector<Stats> &st);
+
+struct FrontTimes {
+  double readUs = 0, parseUs = 0, verifyUs = 0;
+};
+
+/// The report on stdout, text or JSON; `notes` are printed as they are.
+void printText(const BenchArgs &a, const VerifiedProgram &prog, const FrontTimes &ft,
+               const std::vector<Lane> &lanes, const std::vector<Stats> &st,
+               const std::vector<Ratio> &ratios, const std::vector<std::string> &notes);
+void printJson(const BenchArgs &a, double overheadNs, const VerifiedProgram &prog,
+               const FrontTimes &ft, const std::vector<Lane> &lanes, const std::vector<Stats> &st,
+               const std::vector<Ratio> &ratios, const std::vector<std::string> &notes);
 
 /// A C baseline build: one compiler at one -O level.
 struct CBuild {
