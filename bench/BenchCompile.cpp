@@ -109,16 +109,25 @@ void BM_CompileWorst(benchmark::State &state, const std::string &name) {
     return;
   }
   jit::JitOptions o;
+  jit::CompileTimes sum;
   Stopwatch sw(CLOCK_PROCESS_CPUTIME_ID);
   for (auto _ : state) {
     std::string err;
-    std::unique_ptr<Engine> e = jit::compile(*p, o, err);
+    jit::CompileTimes t;
+    std::unique_ptr<Engine> e = jit::compile(*p, o, err, &t);
     if (!e) {
       state.SkipWithError(("JIT compile failed: " + err).c_str());
       break;
     }
     benchmark::DoNotOptimize(e.get());
+    sum.lowerUs += t.lowerUs;
+    sum.optimizeUs += t.optimizeUs;
+    sum.codegenUs += t.codegenUs;
   }
+  const double it = static_cast<double>(std::max<int64_t>(state.iterations(), 1));
+  state.counters["lower_ms"] = sum.lowerUs / it / 1000;
+  state.counters["optimize_ms"] = sum.optimizeUs / it / 1000;
+  state.counters["codegen_ms"] = sum.codegenUs / it / 1000;
   setStatementCounters(state, static_cast<int64_t>(p->stmts.size()), sw.ns());
 }
 
@@ -130,7 +139,9 @@ int main(int argc, char **argv) {
     benchmark::RegisterBenchmark(("BM_CompileWorst/" + name).c_str(), lj::bench::BM_CompileWorst,
                                  name)
         ->Arg(1000)
+        ->Arg(2000)
         ->Arg(4000)
+        ->Arg(8000)
         ->Iterations(1)
         ->MeasureProcessCPUTime()
         ->UseRealTime()

@@ -139,56 +139,81 @@ int64_t bodyWeight(const VerifiedProgram &p, StmtRange r) {
   return w;
 }
 
-std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target) {
+std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target,
+                                          const std::vector<int64_t> *weightBefore) {
+  std::vector<int64_t> own;
+  if (!weightBefore) { // prefix sums of the whole program (callers outside the lowering)
+    own.push_back(0);
+    for (int32_t i = 0; i < static_cast<int32_t>(p.stmts.size()); ++i)
+      own.push_back(own.back() + stmtWeight(p.stmts[i]));
+    weightBefore = &own;
+  }
+  const std::vector<int64_t> &w = *weightBefore;
   const int32_t n = r.end - r.begin;
-  if (target <= 0 || n <= 1 || bodyWeight(p, r) <= target) return {ChunkPlan{r}};
-  // Per cut position j (before statement r.begin + j): inLoop (inside an inline loop: never),
-  // inSpan (between a JMP and its LBL), carried (an ST entry is live or MS is not empty).
-  std::vector<char> inLoop(static_cast<size_t>(n), 0), inSpan(static_cast<size_t>(n), 0),
-      carried(static_cast<size_t>(n), 0);
-  std::vector<int32_t> spans(static_cast<size_t>(n) + 1, 0); // difference array of JMP spans
-  std::vector<int32_t> labels;                               // jump targets outside loops
-  int32_t nest = 0;
+  if (target <= 0 || n <= 1 || w[r.end] - w[r.begin] <= target) return {ChunkPlan{r}};
+  // Only the statements of this body's own level are cut positions: a cut never falls inside a
+  // loop (inline or outlined), and JMP/LBL never cross a loop body (DIALECT.md), so a nested
+  // loop is skipped whole. The work is linear in the statements of this level, not in the body:
+  // a nest of n outlined loops plans each of them once (O(n), not O(n^2) in all).
+  std::vector<int32_t> pos; // statements at this level, ascending (a LOOP stands for its body)
+  std::vector<std::pair<int32_t, int32_t>> pairs; // (JMP, LBL) pairs at this level
+  std::vector<int32_t> labels;                    // jump targets at this level
   for (int32_t i = r.begin; i < r.end; ++i) {
+    pos.push_back(i);
     const Stmt &s = p.stmts[i];
     const StmtInfo &info = p.info[i];
-    if (nest > 0) inLoop[i - r.begin] = 1;
-    if (s.op == Op::LoopBegin) ++nest;
-    if (s.op == Op::LoopEnd) --nest;
+    if (s.op == Op::LoopBegin && info.target > i && info.target < r.end) {
+      i = info.target; // the body and its NEXT: no cut before any of them
+      continue;
+    }
     if (s.op == Op::Jump && info.target >= r.begin && info.target < r.end) {
-      // Cuts before statements lo+1 .. hi would separate the JMP from its label.
-      int32_t lo = std::min(i, info.target), hi = std::max(i, info.target);
-      spans[lo + 1 - r.begin] += 1;
-      spans[hi + 1 - r.begin] -= 1;
-      if (nest == 0) labels.push_back(info.target);
+      pairs.emplace_back(i, info.target);
+      labels.push_back(info.target);
     }
   }
-  int32_t open = 0;
-  for (int32_t j = 0; j < n; ++j) {
-    open += spans[j];
-    if (open > 0) inSpan[j] = 1;
+  const size_t m = pos.size();
+  auto at = [&](int32_t stmt) {
+    return static_cast<size_t>(std::lower_bound(pos.begin(), pos.end(), stmt) - pos.begin());
+  };
+  // Per position k (a cut before statement pos[k]): inSpan (between a JMP and its LBL), carried
+  // (an ST entry is live or MS is not empty).
+  std::vector<char> inSpan(m, 0), carried(m, 1);
+  std::vector<int32_t> spans(m + 1, 0); // difference array of JMP spans
+  for (auto [from, to] : pairs) {
+    // Cuts before statements lo+1 .. hi would separate the JMP from its label.
+    const size_t lo = at(std::min(from, to)), hi = at(std::max(from, to));
+    spans[lo + 1] += 1;
+    spans[hi + 1] -= 1;
   }
-  // A cut anywhere but at a rung start (VerifiedProgram::rungs) carries the live entries.
-  std::fill(carried.begin(), carried.end(), 1);
-  for (const RungRange &rr : p.rungs)
-    if (rr.range.begin >= r.begin && rr.range.begin < r.end) carried[rr.range.begin - r.begin] = 0;
-  for (int32_t i = r.begin; i < r.end; ++i)
-    if (p.info[i].msDepth != 0) carried[i - r.begin] = 1;
+  int32_t open = 0;
+  for (size_t k = 0; k < m; ++k) {
+    open += spans[k];
+    if (open > 0) inSpan[k] = 1;
+  }
+  // A cut anywhere but at a rung start (VerifiedProgram::rungs, in program order) carries the
+  // live entries.
+  auto rung = std::lower_bound(p.rungs.begin(), p.rungs.end(), r.begin,
+                               [](const RungRange &rr, int32_t i) { return rr.range.begin < i; });
+  for (size_t k = 0; k < m; ++k) {
+    while (rung != p.rungs.end() && rung->range.begin < pos[k]) ++rung;
+    if (rung != p.rungs.end() && rung->range.begin == pos[k]) carried[k] = 0;
+    if (p.info[pos[k]].msDepth != 0) carried[k] = 1;
+  }
   // Greedy: a clean cut once the chunk weighs `target` (statements of ordinary size); at twice
   // that without one, a carried cut, and at three times a cut inside JMP spans (rung-structured
-  // code never needs either). A cut inside spans makes every jumped-to label (outside loops)
+  // code never needs either). A cut inside spans makes every jumped-to label (at this level)
   // start a chunk, so a JMP to another chunk returns kStatusJump + that chunk to the body.
   std::vector<int32_t> cuts;
+  std::vector<char> cutCarried;
   bool jumps = false;
   int64_t weight = 0;
-  for (int32_t i = r.begin + 1; i < r.end; ++i) {
-    const size_t j = static_cast<size_t>(i - r.begin);
-    weight += stmtWeight(p.stmts[i - 1]);
-    if (inLoop[j] || weight < target) continue;
-    const bool ok = inSpan[j] ? weight >= 3 * target : !carried[j] || weight >= 2 * target;
+  for (size_t k = 1; k < m; ++k) {
+    weight += w[pos[k]] - w[pos[k - 1]];
+    if (weight < target) continue;
+    const bool ok = inSpan[k] ? weight >= 3 * target : !carried[k] || weight >= 2 * target;
     if (ok) {
-      jumps = jumps || inSpan[j];
-      cuts.push_back(i);
+      jumps = jumps || inSpan[k];
+      cuts.push_back(pos[k]);
       weight = 0;
     }
   }
@@ -198,12 +223,14 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
     if (!cuts.empty() && cuts.front() == r.begin) cuts.erase(cuts.begin());
   }
+  for (int32_t cut : cuts) cutCarried.push_back(carried[at(cut)]);
   std::vector<ChunkPlan> out;
   int32_t start = r.begin;
   bool carriedIn = false;
   cuts.push_back(r.end);
-  for (int32_t cut : cuts) {
-    const bool carriedOut = cut < r.end && carried[cut - r.begin];
+  for (size_t k = 0; k < cuts.size(); ++k) {
+    const int32_t cut = cuts[k];
+    const bool carriedOut = cut < r.end && cutCarried[k];
     out.push_back(ChunkPlan{{start, cut}, carriedIn, carriedOut});
     out.back().jumps = jumps;
     start = cut;
@@ -215,7 +242,7 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
 
 std::vector<StmtRange> planChunks(const VerifiedProgram &p, StmtRange r, int32_t target) {
   std::vector<StmtRange> out;
-  for (const ChunkPlan &c : planChunkFunctions(p, r, target)) out.push_back(c.r);
+  for (const ChunkPlan &c : planChunkFunctions(p, r, target, nullptr)) out.push_back(c.r);
   return out;
 }
 

@@ -244,8 +244,12 @@ void FunctionEmitter::emitOutlinedLoop(int32_t i) {
   // the body a call. The body function returns 0, a fault (watchdog) that ends the tick, or
   // kStatusReturn for a RETN taken inside it, which returns from this function as a RETN here.
   const int32_t next = prog_.info[i].target;
-  llvm::Function *bodyFn =
-      makeBodyFunction(mc_, fn_->getName().str() + ".loop" + std::to_string(i), false);
+  // Named after the top-level body and the LOOP's statement index (unique in the program), not
+  // after the enclosing function: a nest of n outlined loops would otherwise have names of
+  // O(n) characters each, O(n^2) in all for the symbol tables, the linker and the hashing.
+  llvm::StringRef owner = fn_->getName();
+  owner = owner.take_front(std::min(owner.find(".loop"), owner.find(".c")));
+  llvm::Function *bodyFn = makeBodyFunction(mc_, owner.str() + ".loop" + std::to_string(i), false);
   bodyFn->addFnAttr(llvm::Attribute::NoInline); // the point is a separate, small function
   mc_.pendingLoops.push_back({bodyFn, {i + 1, next}});
 

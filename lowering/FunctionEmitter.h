@@ -248,7 +248,10 @@ private:
 /// empty, and no loop body or JMP..LBL span crosses the cut.
 /// Where no such cut comes for 2 * `target` statements, a carried cut (ChunkPlan) is placed at
 /// the next statement outside loops and JMP spans, so a function's length stays bounded.
-std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target);
+/// `weightBefore`: the prefix sums of ModuleContext::weightBefore (nullptr: computed here). The
+/// work is linear in the statements of r outside its loops.
+std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r, int32_t target,
+                                          const std::vector<int64_t> *weightBefore = nullptr);
 /// Estimated size of the lowering of [r.begin, r.end), in the units of `target` (ordinary
 /// statements weigh 1, rows whose lowering is long more).
 int64_t bodyWeight(const VerifiedProgram &p, StmtRange r);

@@ -72,7 +72,8 @@ llvm::Value *stateArg(llvm::Function *fn) { return fn->getArg(fn->arg_size() == 
 // subroutine (`isSub`) a RETN returns kStatusReturn, which becomes `retnStatus` here.
 llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
                       bool isSub, uint32_t retnStatus = LJ_FAULT_NONE) {
-  std::vector<ChunkPlan> chunks = planChunkFunctions(mc.prog, r, mc.opts.chunkStatements);
+  std::vector<ChunkPlan> chunks =
+      planChunkFunctions(mc.prog, r, mc.opts.chunkStatements, &mc.weightBefore);
   if (chunks.size() <= 1) {
     FunctionEmitter fe(mc, fn, stateArg(fn), retnStatus);
     if (llvm::Error e = fe.emitRange(r, deadDepth)) return e;

@@ -20,8 +20,11 @@ const char *kDataLayout = "e-m:e-p270:32:32-p271:32:32-p272:64:64-i64:64-i128:12
 /// optimizer work per function, and both are super-linear in a function's size), and the total.
 /// A body cut into chunks has a driver (`f` calling `f.c0`, `f.c1`...): a few instructions per
 /// chunk, counted apart as `driverPerChunk`.
+/// `longestName`: the longest function name; names that grew with the nesting (an outlined
+/// loop named after all its enclosing ones) made a nest of n loops cost O(n^2) in the symbol
+/// tables, the object file and the linker.
 struct LoweredSize {
-  size_t largest = 0, total = 0;
+  size_t largest = 0, total = 0, longestName = 0;
   double driverPerChunk = 0;
 };
 
@@ -36,6 +39,7 @@ LoweredSize loweredSize(const VerifiedProgram &p) {
   for (const llvm::Function &f : **m) {
     const size_t n = f.getInstructionCount();
     s.total += n;
+    s.longestName = std::max(s.longestName, f.getName().size());
     size_t chunks = 0;
     while ((*m)->getFunction((f.getName() + ".c" + std::to_string(chunks)).str())) ++chunks;
     if (chunks == 0)
@@ -67,6 +71,8 @@ TEST_P(CompileBound, LargestFunctionDoesNotGrowWithTheProgram) {
   EXPECT_LE(at[1].largest, at[0].largest + 64) << "the largest function grows with the program";
   // A driver calls and dispatches: a few instructions per chunk, whatever the program.
   EXPECT_LE(at[1].driverPerChunk, 8.0);
+  // Symbol names of bounded length: the body's name, a statement index and a chunk number.
+  EXPECT_LE(at[1].longestName, 40u) << "2,000 statements: " << at[0].longestName;
   // Linear total: twice the statements, about twice the IR.
   EXPECT_LE(at[1].total, 2 * at[0].total + at[0].total / 5 + 500);
 }
