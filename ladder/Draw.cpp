@@ -104,6 +104,8 @@ public:
       out += "<rect class=\"box\" x=\"" + n(x + 6) + "\" y=\"" + n(bt) + "\" width=\"" + n(w - 12) +
              "\" height=\"" + n(bh) + "\"/>";
       line(x, y, x + 6, y, "w");
+      for (int pr : c.pins)
+        if (pr > 0) line(x, y + pr * kRH, x + 6, y + pr * kRH, "w");
       line(x + w - 6, y, x + w, y, "w");
       text(mx, bt + 14, c.text, "mn");
       for (size_t k = 0; k < c.operands.size(); ++k)
@@ -205,6 +207,7 @@ std::string layoutJson(const Layout &l) {
         if (!c.text.empty()) jc["text"] = c.text;
         if (!c.symbol.empty()) jc["symbol"] = c.symbol;
         if (!c.operands.empty()) jc["operands"] = c.operands;
+        if (!c.pins.empty()) jc["pins"] = c.pins;
         if (!c.comment.empty()) jc["comment"] = c.comment;
         if (c.stmt >= 0) jc["stmt"] = c.stmt;
         cells.push_back(jc);

@@ -51,9 +51,12 @@ public:
         int from = o.pins.empty() ? o.col : o.pinCols[i];
         if (from < at) wire(rows[i], from, at - from);
       }
-      if (o.node->kind == NodeKind::Box)
-        add(boxCell(*o.node, o.row, at, boxHeight(*o.node, static_cast<int>(rows.size()))));
-      else
+      if (o.node->kind == NodeKind::Box) {
+        Cell b = boxCell(*o.node, o.row, at, boxHeight(*o.node, static_cast<int>(rows.size())));
+        for (int pr : o.pins) b.pins.push_back(pr - o.row);
+        b.height = std::max(b.height, o.pins.empty() ? 1 : o.pins.back() - o.row + 1);
+        add(b);
+      } else
         add(coilCell(*o.node, o.row, at));
     }
     for (const Cell &c : out_.cells) out_.rows = std::max(out_.rows, c.row + c.height);
@@ -225,7 +228,9 @@ private:
     }
     for (auto [br, w] : bands)
       if (w < inW) wire(br, col + w, inW - w);
-    add(boxCell(n, row, col + inW, std::max(h, boxHeight(n, pins))));
+    Cell b = boxCell(n, row, col + inW, std::max(h, boxHeight(n, pins)));
+    for (auto [br, w] : bands) b.pins.push_back(br - row);
+    add(b);
     return {inW + kBoxWidth, h};
   }
 

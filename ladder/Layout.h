@@ -23,6 +23,7 @@ struct Cell {
   std::string text;                  ///< address (contact/coil), mnemonic (box), statement (stl)
   std::string symbol;                ///< symbol name of the address, or empty
   std::vector<std::string> operands; ///< box: operand texts (symbol appended as "<name>")
+  std::vector<int> pins;             ///< box with inputs: each input pin's row, from `row`
   std::string comment;               ///< the element's trailing comment
   StmtId stmt = -1;
 };
