@@ -14,6 +14,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+constexpr int kStlRH = 20; ///< one statement line of an STL rung
 constexpr int kCW = 90, kRH = 60, kLM = 56, kRM = 16, kCommentH = 16, kGap = 18, kTitleH = 28;
 
 std::string esc(const std::string &s) {
@@ -110,10 +111,12 @@ public:
       text(mx, bt + 14, c.text, "mn");
       for (size_t k = 0; k < c.operands.size(); ++k)
         text(mx, bt + 28 + 14 * static_cast<int>(k), c.operands[k], "op");
-    } else if (c.kind == "stl") {
-      out += "<rect class=\"stl\" x=\"" + n(x + 6) + "\" y=\"" + n(y - 12) + "\" width=\"" +
-             n(w - 12) + "\" height=\"24\"/>";
-      text(x + 14, y + 5, c.text + (c.comment.empty() ? "" : "  ; " + c.comment), "code", "start");
+    } else if (c.kind == "stl") { // compact lines, one boxed listing
+      int ly = top + 4 + c.row * kStlRH;
+      out += "<rect class=\"stl\" x=\"" + n(x + 6) + "\" y=\"" + n(ly) + "\" width=\"" + n(w - 12) +
+             "\" height=\"" + n(kStlRH) + "\"/>";
+      text(x + 14, ly + 14, c.text + (c.comment.empty() ? "" : "  ; " + c.comment), "code",
+           "start");
     } else if (c.kind == "marker") {
       text(x + w / 2, y + 5, c.text, "mn");
     }
@@ -134,14 +137,14 @@ public:
         y += kCommentH;
         text(kLM + 4, y - 3, "; " + c, "cm", "start");
       }
-      int h = std::max(1, r.rows) * kRH;
-      text(kLM - 10, y + kRH / 2 + 5, n(r.number), "num", "end");
+      int h = r.kind == "stl" ? std::max(1, r.rows) * kStlRH + 8 : std::max(1, r.rows) * kRH;
+      text(kLM - 10, r.kind == "stl" ? y + 18 : y + kRH / 2 + 5, n(r.number), "num", "end");
       if (r.kind == "ladder") {
         line(kLM, y + 4, kLM, y + h - 4, "rail");
         int rx = kLM + r.cols * kCW;
         line(rx, y + 4, rx, y + h - 4, "rail");
       } else if (r.kind == "stl") {
-        text(kLM + r.cols * kCW, y + 12, "STL", "tag", "end");
+        text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end");
       }
       for (const Cell &c : r.cells) cell(c, y);
       out += "</g>";
@@ -172,7 +175,7 @@ const char *kStyle =
     ".lad line.w,.lad path.sym,.lad line.sym{stroke:#222;stroke-width:1.6;fill:none}"
     ".lad line.rail{stroke:#000;stroke-width:3}"
     ".lad rect.box{fill:#fffbe8;stroke:#222;stroke-width:1.6}"
-    ".lad rect.stl{fill:#f1f1f1;stroke:#999}"
+    ".lad rect.stl{fill:#f1f1f1;stroke:#f1f1f1}"
     ".lad text{font-family:'DejaVu Sans','WenQuanYi Zen Hei',sans-serif;font-size:12px;fill:#111}"
     ".lad text.addr{font-weight:bold}.lad text.symb{fill:#2a5db0;font-size:11px}"
     ".lad text.mark{font-weight:bold;font-size:13px}.lad text.mn{font-weight:bold}"

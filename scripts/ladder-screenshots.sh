@@ -11,7 +11,7 @@ shot() { # html png width height [fragment]
   chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size="$3,$4" \
     --screenshot="$2" "file://$1${5:-}" >/dev/null 2>&1
 }
-for f in orb anb mps1 mps2 mps3 boxes; do
+for f in orb anb mps1 mps2 mps3 boxes stl-rung; do
   "$exe" ladder "$out/ladder-src/$f.stl" --format html -o "$tmp/$f.html"
   shot "$tmp/$f.html" "$out/ladder-$f.png" 900 "$([[ $f == boxes ]] && echo 1150 || echo 520)"
 done

@@ -139,5 +139,23 @@ TEST(LadderLayout, BoxSpansRowsAndHtmlCarriesStatementIds) {
   EXPECT_EQ(box->width, 2);
 }
 
+TEST(LadderLayout, StlRungIsAnStlBoxKeepingEveryStatement) {
+  // hnc8-core.md 4.2: OR after OUT has no drawing (a path back through the coil): STL box.
+  RungLayout r = one("LD X0.0\nOUT Y0.0\nOR X0.1\nOUT Y0.1\n");
+  EXPECT_EQ(r.kind, "stl");
+  EXPECT_EQ(shape(r), sorted({"stl 0 0 LD X0.0 0", "stl 1 0 OUT Y0.0 1", "stl 2 0 OR X0.1 2",
+                              "stl 3 0 OUT Y0.1 3"}));
+  Diagnostics d("t.stl");
+  std::optional<VerifiedProgram> p =
+      compileFrontEnd("LD X0.0\nOUT Y0.0\nOR X0.1\nOUT Y0.1\n", "t.stl", VerifyOptions{}, d);
+  ASSERT_TRUE(p);
+  std::string html = renderHtml(layout(fromProgram(*p)));
+  EXPECT_NE(html.find("class=\"el stl off\" data-stmt=\"2\""), std::string::npos);
+  const std::string ns = "http://www.w3.org/2000/svg"; // the SVG namespace: no network URL
+  for (size_t k; (k = html.find(ns)) != std::string::npos;) html.erase(k, ns.size());
+  EXPECT_EQ(html.find("http"), std::string::npos);
+  EXPECT_EQ(html.find("src="), std::string::npos);
+}
+
 } // namespace
 } // namespace lj::ladder
