@@ -82,11 +82,11 @@ public:
       line(mx - 10, y - 12, mx - 10, y + 12, "sym");
       line(mx + 10, y - 12, mx + 10, y + 12, "sym");
       if (c.kind == "contact-nc") line(mx - 14, y + 12, mx + 14, y - 12, "sym");
-      const char *mark = c.kind == "contact-rise"   ? "P"
-                         : c.kind == "contact-fall" ? "N"
-                         : c.kind == "contact-true" ? "T"
-                                                    : nullptr;
-      if (mark) text(mx, y + 5, mark, "mark");
+      // the glyph inside the contact (a drawing mark, not an address area): edge P/N, LDT T
+      const char *mark = markOf(
+          c.kind,
+          {{"contact-rise", "P-edge"}, {"contact-fall", "N-edge"}, {"contact-true", "T-true"}});
+      if (mark) text(mx, y + 5, std::string(1, *mark), "mark");
       labels(c, mx, y);
     } else if (c.kind == "coil" || c.kind == "coil-not" || c.kind == "set" || c.kind == "rst") {
       line(x, y, mx - 12, y, "w");
@@ -94,11 +94,9 @@ public:
       out += "<path class=\"sym\" d=\"M" + n(mx - 6) + "," + n(y - 13) + " Q" + n(mx - 16) + "," +
              n(y) + " " + n(mx - 6) + "," + n(y + 13) + " M" + n(mx + 6) + "," + n(y - 13) + " Q" +
              n(mx + 16) + "," + n(y) + " " + n(mx + 6) + "," + n(y + 13) + "\"/>";
-      const char *mark = c.kind == "set"        ? "S"
-                         : c.kind == "rst"      ? "R"
-                         : c.kind == "coil-not" ? "/"
-                                                : nullptr;
-      if (mark) text(mx, y + 5, mark, "mark");
+      const char *mark =
+          markOf(c.kind, {{"set", "S-set"}, {"rst", "R-reset"}, {"coil-not", "/-negated"}});
+      if (mark) text(mx, y + 5, std::string(1, *mark), "mark");
       labels(c, mx, y);
     } else if (c.kind == "box") {
       int bt = top + c.row * kRH + 4, bh = c.height * kRH - 8;
@@ -143,10 +141,9 @@ public:
         line(kLM, y + 4, kLM, y + h - 4, "rail");
         int rx = kLM + r.cols * kCW;
         line(rx, y + 4, rx, y + h - 4, "rail");
-      } else if (r.kind == "stl") {
-        text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end");
       }
       for (const Cell &c : r.cells) cell(c, y);
+      if (r.kind == "stl") text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end"); // on top
       out += "</g>";
       width = std::max(width, kLM + r.cols * kCW + kRM);
       y += h + kGap;
@@ -155,6 +152,13 @@ public:
   }
 
 private:
+  /// The mark drawn inside an element of `kind`: the first letter of its table entry.
+  static const char *markOf(const std::string &kind,
+                            std::initializer_list<std::pair<const char *, const char *>> table) {
+    for (const auto &[k, m] : table)
+      if (kind == k) return m;
+    return nullptr;
+  }
   static std::string stmtAttr(const Cell &c) {
     return c.stmt >= 0 ? " data-stmt=\"" + n(c.stmt) + "\"" : std::string();
   }
