@@ -132,7 +132,7 @@ int runBench(const BenchArgs &a);
 
 struct LadderArgs {
   std::string program;
-  std::string format = "text"; ///< text | json (svg | html: not built yet)
+  std::string format = "text"; ///< text | json | svg | html | layout
   std::string output;          ///< empty or "-": stdout
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;

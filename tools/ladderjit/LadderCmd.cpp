@@ -3,6 +3,7 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "ladder/Json.h"
+#include "ladder/Layout.h"
 #include "ladder/Text.h"
 
 #include <cstdio>
@@ -12,11 +13,10 @@
 namespace lj::cli {
 
 int runLadder(const LadderArgs &a) {
-  if (a.format != "text" && a.format != "json") {
-    if (a.format == "svg" || a.format == "html")
-      return usageError("ladder --format " + a.format + " is not built yet (use text or json)");
-    return usageError("ladder --format must be text or json, got '" + a.format + "'");
-  }
+  if (a.format != "text" && a.format != "json" && a.format != "svg" && a.format != "html" &&
+      a.format != "layout")
+    return usageError("ladder --format must be text, json, svg, html or layout, got '" + a.format +
+                      "'");
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code)) return code;
@@ -24,7 +24,17 @@ int runLadder(const LadderArgs &a) {
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
   ladder::Networks nets = ladder::fromProgram(*prog);
-  std::string out = a.format == "json" ? ladder::writeJson(nets) : ladder::renderText(nets);
+  std::string out;
+  if (a.format == "json")
+    out = ladder::writeJson(nets);
+  else if (a.format == "text")
+    out = ladder::renderText(nets);
+  else {
+    ladder::Layout l = ladder::layout(nets);
+    out = a.format == "svg"    ? ladder::renderSvg(l)
+          : a.format == "html" ? ladder::renderHtml(l)
+                               : ladder::layoutJson(l);
+  }
   if (a.output.empty() || a.output == "-") {
     std::cout << out << std::flush;
     return kOk;

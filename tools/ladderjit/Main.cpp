@@ -146,9 +146,11 @@ int mainImpl(int argc, char **argv) {
                    ->check(kUnsigned));
 
   LadderArgs lad;
-  CLI::App *cLadder = app.add_subcommand("ladder", "the program as ladder networks (text, json)");
+  CLI::App *cLadder = app.add_subcommand(
+      "ladder", "the program as ladder networks (text, json) or drawn (svg, html, layout json)");
   cLadder->add_option("PROGRAM", lad.program, kProgramHelp)->required();
-  lastWins(cLadder->add_option("--format", lad.format, "text | json (default text)"));
+  lastWins(cLadder->add_option("--format", lad.format,
+                               "text | json | svg | html | layout (default text)"));
   lastWins(cLadder->add_option("-o,--output", lad.output, "file to write (default stdout)"));
   CLI::Option *ladNvalue = lastWins(
       cLadder->add_option("--plc2-nvalue", lad.plc2Nvalue, "PLC2 statements per tick (0 = all)")

@@ -1,0 +1,292 @@
+// The grid layout of rungs (Layout.h, docs/ladder-view.md "Layout rules"; research 1.9):
+// series = left to right, parallel / fan-out = branches stacked downward from one column with a
+// vertical link, outputs deferred and right-justified at the right rail, box inputs on row bands.
+#include "ladder/Layout.h"
+
+#include <algorithm>
+
+namespace lj::ladder {
+
+namespace {
+
+constexpr int kBoxWidth = 2;
+
+class Placer {
+public:
+  Placer(RungLayout &out, const std::vector<Symbol> &symbols) : out_(out), symbols_(symbols) {}
+
+  /// Lays `n` out with its top-left at (row, col); returns {width, height} of its inputs part
+  /// (deferred outputs add no width). `last` = it ends its series (a box there is an output).
+  std::pair<int, int> place(const Node &n, int row, int col, bool last) {
+    switch (n.kind) {
+    case NodeKind::Series:
+      return series(n, row, col);
+    case NodeKind::Parallel:
+    case NodeKind::FanOut:
+      return branches(n, row, col);
+    case NodeKind::Contact:
+      add(contactCell(n, row, col));
+      return {1, 1};
+    case NodeKind::Coil:
+      outputs_.push_back({&n, row, col, {}, {}});
+      return {0, 1};
+    case NodeKind::Box:
+      return box(n, row, col, last);
+    }
+    return {0, 1};
+  }
+
+  void finish() {
+    int outW = 0;
+    for (const Output &o : outputs_)
+      outW = std::max(outW, o.node->kind == NodeKind::Box ? kBoxWidth : 1);
+    int inputs = std::max(kMinInputCols, maxCol_);
+    for (const Output &o : outputs_) inputs = std::max(inputs, o.col);
+    out_.cols = inputs + outW;
+    for (const Output &o : outputs_) {
+      int w = o.node->kind == NodeKind::Box ? kBoxWidth : 1;
+      int at = out_.cols - w;
+      std::vector<int> rows = o.pins.empty() ? std::vector<int>{o.row} : o.pins;
+      for (size_t i = 0; i < rows.size(); ++i) {
+        int from = o.pins.empty() ? o.col : o.pinCols[i];
+        if (from < at) wire(rows[i], from, at - from);
+      }
+      if (o.node->kind == NodeKind::Box) {
+        Cell b = boxCell(*o.node, o.row, at, boxHeight(*o.node, static_cast<int>(rows.size())));
+        for (int pr : o.pins) b.pins.push_back(pr - o.row);
+        b.height = std::max(b.height, o.pins.empty() ? 1 : o.pins.back() - o.row + 1);
+        add(b);
+      } else
+        add(coilCell(*o.node, o.row, at));
+    }
+    for (const Cell &c : out_.cells) out_.rows = std::max(out_.rows, c.row + c.height);
+    std::stable_sort(out_.cells.begin(), out_.cells.end(), [](const Cell &a, const Cell &b) {
+      return a.row != b.row ? a.row < b.row : a.col < b.col;
+    });
+  }
+
+private:
+  struct Output {
+    const Node *node;
+    int row, col;
+    std::vector<int> pins, pinCols; ///< box inputs: each pin's row and where its band ends
+  };
+
+  void add(Cell c) {
+    maxCol_ = std::max(maxCol_, c.kind == "vlink" || c.kind == "join" ? c.col : c.col + c.width);
+    out_.cells.push_back(std::move(c));
+  }
+
+  void wire(int row, int col, int width) {
+    Cell c;
+    c.kind = "wire";
+    c.row = row;
+    c.col = col;
+    c.width = width;
+    out_.cells.push_back(c); // wires do not widen the inputs part
+    maxCol_ = std::max(maxCol_, col + width);
+  }
+
+  void vlink(int row, int col, int height, StmtId stmt) {
+    Cell c;
+    c.kind = "vlink";
+    c.row = row;
+    c.col = col;
+    c.height = height;
+    c.stmt = stmt;
+    add(c);
+  }
+
+  std::string symbolOf(const Element &e, size_t k) const {
+    if (k < e.symbols.size() && !e.symbols[k].empty()) return e.symbols[k];
+    if (k < e.operands.size())
+      for (const Symbol &s : symbols_)
+        if (s.address == e.operands[k]) return s.name;
+    return {};
+  }
+
+  Cell elemCell(const Element &e, const char *kind, int row, int col) const {
+    Cell c;
+    c.kind = kind;
+    c.row = row;
+    c.col = col;
+    c.stmt = e.id;
+    c.comment = e.hasComment ? e.comment : std::string();
+    if (!e.operands.empty()) {
+      c.text = e.operands[0];
+      c.symbol = symbolOf(e, 0);
+    }
+    return c;
+  }
+
+  Cell contactCell(const Node &n, int row, int col) const {
+    static const char *const kKind[] = {"contact-no", "contact-nc", "contact-rise", "contact-fall",
+                                        "contact-true"};
+    return elemCell(n.elem, kKind[static_cast<int>(n.contact)], row, col);
+  }
+
+  Cell coilCell(const Node &n, int row, int col) const {
+    const char *kind = n.elem.op == Op::Set       ? "set"
+                       : n.elem.op == Op::Reset   ? "rst"
+                       : n.elem.op == Op::CoilNot ? "coil-not"
+                                                  : "coil";
+    return elemCell(n.elem, kind, row, col);
+  }
+
+  static int boxHeight(const Node &n, int pins) {
+    int lines = 1 + static_cast<int>(n.elem.operands.size()); // mnemonic + one line per operand
+    return std::max({1, pins, (lines + 2) / 3});
+  }
+
+  Cell boxCell(const Node &n, int row, int col, int height) const {
+    Cell c = elemCell(n.elem, "box", row, col);
+    c.text = mnemonic(n.elem.op);
+    c.symbol.clear();
+    for (size_t k = 0; k < n.elem.operands.size(); ++k) {
+      std::string s = symbolOf(n.elem, k);
+      c.operands.push_back(n.elem.operands[k] + (s.empty() ? "" : "<" + s + ">"));
+    }
+    c.width = kBoxWidth;
+    c.height = height;
+    return c;
+  }
+
+  std::pair<int, int> series(const Node &s, int row, int col) {
+    int c = col, h = 1;
+    for (size_t i = 0; i < s.children.size(); ++i) {
+      const Node &k = s.children[i];
+      if (k.join == Join::Block && k.link.id >= 0) { // the ANB that joined this block
+        Cell j;
+        j.kind = "join";
+        j.text = mnemonic(Op::AndBlock);
+        j.row = row;
+        j.col = c;
+        j.width = 0;
+        j.stmt = k.link.id;
+        add(j);
+      }
+      auto [w, hh] = place(k, row, c, i + 1 == s.children.size());
+      c += w;
+      h = std::max(h, hh);
+    }
+    return {c - col, h};
+  }
+
+  /// Parallel (OR: joined again on the right) or fan-out (each branch ends at the rail).
+  std::pair<int, int> branches(const Node &p, int row, int col) {
+    bool join = p.kind == NodeKind::Parallel;
+    std::vector<std::pair<int, int>> at; // {row, width}
+    int r = row, width = 0;
+    for (const Node &b : p.children) {
+      auto [w, h] = place(b, r, col, true);
+      at.push_back({r, w});
+      width = std::max(width, w);
+      r += std::max(h, 1);
+    }
+    if (!p.children.empty() && p.children[0].link.id >= 0) { // the MPS at the junction
+      Cell c;
+      c.kind = "join";
+      c.text = mnemonic(Op::BranchPush);
+      c.row = row;
+      c.col = col;
+      c.width = 0;
+      c.stmt = p.children[0].link.id;
+      add(c);
+    }
+    for (size_t i = 1; i < at.size(); ++i) {
+      // the segment down to branch i carries its link: ORB (block join) or MRD/MPP (entry)
+      int h = at[i].first - at[i - 1].first;
+      vlink(at[i - 1].first, col, h, p.children[i].link.id);
+      if (join) vlink(at[i - 1].first, col + width, h, -1);
+    }
+    if (join)
+      for (auto [br, w] : at)
+        if (w < width) wire(br, col + w, width - w);
+    return {width, r - row};
+  }
+
+  std::pair<int, int> box(const Node &n, int row, int col, bool last) {
+    Output o{&n, row, col, {}, {}};
+    int r = row, inW = 0;
+    std::vector<std::pair<int, int>> bands;
+    for (const Node &in : n.children) {
+      auto [w, h] = place(in, r, col, false);
+      bands.push_back({r, w});
+      inW = std::max(inW, w);
+      r += std::max(h, 1);
+    }
+    for (auto [br, w] : bands) {
+      o.pins.push_back(br);
+      o.pinCols.push_back(col + w);
+    }
+    int pins = static_cast<int>(bands.size());
+    int h = std::max(r - row, boxHeight(n, pins));
+    bool output = last && instrInfo(n.elem.op).stack != StackRule::Push;
+    if (output) {
+      outputs_.push_back(o);
+      return {inW, h};
+    }
+    for (auto [br, w] : bands)
+      if (w < inW) wire(br, col + w, inW - w);
+    Cell b = boxCell(n, row, col + inW, std::max(h, boxHeight(n, pins)));
+    for (auto [br, w] : bands) b.pins.push_back(br - row);
+    add(b);
+    return {inW + kBoxWidth, h};
+  }
+
+  RungLayout &out_;
+  const std::vector<Symbol> &symbols_;
+  std::vector<Output> outputs_;
+  int maxCol_ = 0;
+};
+
+std::string stmtLine(const Element &e) {
+  std::string t = mnemonic(e.op);
+  for (size_t k = 0; k < e.operands.size(); ++k)
+    t += " " + (k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k] : e.operands[k]);
+  return t;
+}
+
+} // namespace
+
+RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &symbols) {
+  RungLayout r;
+  r.number = number;
+  r.comment = rung.comment;
+  if (rung.kind == Rung::Kind::Ladder) {
+    r.kind = "ladder";
+    Placer p(r, symbols);
+    p.place(rung.network, 0, 0, true);
+    p.finish();
+    return r;
+  }
+  r.kind = rung.kind == Rung::Kind::Stl ? "stl" : "marker";
+  r.cols = kMinInputCols + 1;
+  for (size_t i = 0; i < rung.stmts.size(); ++i) {
+    Cell c;
+    c.kind = r.kind;
+    c.row = static_cast<int>(i);
+    c.width = r.cols;
+    c.text = stmtLine(rung.stmts[i]);
+    c.comment = rung.stmts[i].hasComment ? rung.stmts[i].comment : std::string();
+    c.stmt = rung.stmts[i].id;
+    r.cells.push_back(c);
+  }
+  r.rows = static_cast<int>(rung.stmts.size());
+  return r;
+}
+
+Layout layout(const Networks &nets) {
+  Layout l;
+  l.file = nets.file;
+  for (const Part &p : nets.parts) {
+    PartLayout pl;
+    pl.name = p.name;
+    for (size_t i = 0; i < p.rungs.size(); ++i)
+      pl.rungs.push_back(layoutRung(p.rungs[i], static_cast<int>(i + 1), nets.symbols));
+    l.parts.push_back(std::move(pl));
+  }
+  return l;
+}
+
+} // namespace lj::ladder

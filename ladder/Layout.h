@@ -1,0 +1,63 @@
+// Rungs on a grid as the HNC-8 ladder editor draws them (docs/ladder-view.md "Layout rules"):
+// left and right power rails, contacts in series left to right, parallel branches below with
+// vertical links, outputs right-justified at the right rail, function boxes spanning cells.
+// Every drawn element keeps its statement id. Built from networks (Network.h); depends on them
+// and the IR only. The SVG/HTML writers (Draw.cpp) and the layout JSON walk these cells.
+#pragma once
+
+#include "ladder/Network.h"
+
+#include <string>
+#include <vector>
+
+namespace lj::ladder {
+
+/// One placed thing. Grid units: `col`/`row` of the top-left cell, `width`/`height` in cells.
+/// Kinds: contact-no|nc|rise|fall|true, coil, coil-not, set, rst, box, wire (horizontal, from
+/// `col` over `width` cells on `row`), vlink (vertical line on the boundary left of `col`, from
+/// the middle of `row` down `height` rows), join (an ANB: no drawing of its own), stl (one
+/// statement of a rung with no drawable form), marker (END1, SUB, RET...).
+struct Cell {
+  int row = 0, col = 0, width = 1, height = 1;
+  std::string kind;
+  std::string text;                  ///< address (contact/coil), mnemonic (box), statement (stl)
+  std::string symbol;                ///< symbol name of the address, or empty
+  std::vector<std::string> operands; ///< box: operand texts (symbol appended as "<name>")
+  std::vector<int> pins;             ///< box with inputs: each input pin's row, from `row`
+  std::string comment;               ///< the element's trailing comment
+  StmtId stmt = -1;
+};
+
+struct RungLayout {
+  int number = 0;                   ///< 1-based within the part
+  std::string kind;                 ///< ladder | stl | marker
+  std::vector<std::string> comment; ///< the rung comment block
+  int cols = 0, rows = 0;           ///< grid size between the rails
+  std::vector<Cell> cells;
+};
+
+struct PartLayout {
+  std::string name;
+  std::vector<RungLayout> rungs;
+};
+
+struct Layout {
+  std::string file;
+  std::vector<PartLayout> parts;
+};
+
+/// Columns left for inputs before the output column(s), at least (the editor's fixed grid).
+constexpr int kMinInputCols = 7;
+
+Layout layout(const Networks &nets);
+RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &symbols);
+
+/// The layout JSON (docs/ladder-view.md "Layout JSON"): per part and rung, the cells.
+std::string layoutJson(const Layout &l);
+
+/// One self-contained SVG of every part, stacked (docs/ladder-view.md).
+std::string renderSvg(const Layout &l);
+/// One self-contained HTML page: a tab per part, inline CSS/JS/SVG, the layout JSON embedded.
+std::string renderHtml(const Layout &l);
+
+} // namespace lj::ladder
