@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The HTML drawing in a real browser (headless Chromium from scripts/setup-test.sh): the page's
 # script ran (the first tab is selected), every rung of the layout is in the DOM with its
-# data-stmt elements, and a screenshot is kept in OUT. Exit 77 (skipped) without Chromium.
+# data-stmt elements, and a screenshot is kept in OUT. Fails without Chromium: the test command installs it.
 set -euo pipefail
 exe=$1 program=$2 out=$3
-command -v chromium >/dev/null 2>&1 || { echo "chromium not installed (scripts/setup-test.sh)"; exit 77; }
+command -v chromium >/dev/null 2>&1 || { echo "chromium not installed: run scripts/setup-test.sh" >&2; exit 1; }
 mkdir -p "$out"
 "$exe" ladder "$program" --format html -o "$out/page.html"
 want=$("$exe" ladder "$program" --format layout | python3 -c \
