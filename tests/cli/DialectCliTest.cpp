@@ -25,7 +25,7 @@ TEST(Dialect, EveryProgramCommandRefusesAnUnavailableDialect) {
       {"compile", stl, "-o", so},
       {"ladder", stl},
       {"dit", stl, "-o", "-"},
-      {"serve", stl, "--duration", "0.1"},
+      {"serve", stl, "--duration", "1"},
       {"fuzz", "--programs", "1"},
   };
   for (std::vector<std::string> args : commands) {
