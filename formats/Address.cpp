@@ -1,5 +1,6 @@
 // Command-line address and value parsing, and element/bit access to an lj_state by address.
 #include "formats/Address.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cctype>
 #include <cstring>
@@ -37,9 +38,9 @@ struct Cell {
 };
 
 Cell cellOf(const lj_state &s, Area a, int32_t n) {
-  const AreaInfo &info = areaInfo(a);
+  const AreaInfo &info = hnc8::profile().area(a);
   if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
-  const auto *base = reinterpret_cast<const unsigned char *>(&s) + stateOffset(a);
+  const auto *base = reinterpret_cast<const unsigned char *>(&s) + hnc8::profile().stateOffset(a);
   return {base + static_cast<size_t>(n) * info.bytes, info.bytes, info.isSigned};
 }
 
@@ -65,7 +66,7 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
     return std::nullopt;
   };
   if (text.empty()) return fail("empty");
-  std::optional<Area> area = areaFromLetter(text[0]);
+  std::optional<Area> area = hnc8::profile().areaFromLetter(text[0]);
   if (!area || *area == Area::Label || *area == Area::Subroutine || *area == Area::None)
     return fail("unknown area (expected one of X Y F G R W D B P T C)");
   std::string_view rest = text.substr(1);
@@ -79,10 +80,11 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
   if (!isDigits(indexPart)) return fail("expected an element number after the area letter");
   if (hasBit && !isDigits(bitPart)) return fail("expected a bit number after '.'");
   int64_t index = digitsValue(indexPart);
-  if (!validIndex(*area, index)) {
+  if (!hnc8::profile().validIndex(*area, index)) {
     if (*area == Area::Timer || *area == Area::Counter)
       return fail("number out of range (0..127 or 300..427)");
-    return fail("element out of range (0.." + std::to_string(areaInfo(*area).count - 1) + ")");
+    return fail("element out of range (0.." +
+                std::to_string(hnc8::profile().area(*area).count - 1) + ")");
   }
   CliAddress a;
   a.area = *area;
@@ -90,7 +92,7 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
   a.text = std::string(text);
   if (hasBit) {
     int64_t b = digitsValue(bitPart);
-    int width = bitWidth(*area);
+    int width = hnc8::profile().bitWidth(*area);
     if (b >= width) {
       if (*area == Area::Timer || *area == Area::Counter)
         return fail("the only bit of a timer/counter is .0");
@@ -188,6 +190,13 @@ std::optional<Assignment> parseAssignment(std::string_view item, std::string &er
   if (!value) return std::nullopt;
   if (!checkWritable(*addr, *value, error)) return std::nullopt;
   return Assignment{std::move(*addr), *value};
+}
+
+std::string formatAddress(const CliAddress &addr) {
+  std::string s(1, hnc8::profile().area(addr.area).letter);
+  s += std::to_string(addr.index);
+  if (addr.isBit()) s += "." + std::to_string(addr.bit);
+  return s;
 }
 
 } // namespace lj::io

@@ -28,6 +28,9 @@ struct CliAddress {
 /// On failure returns nothing and sets `error` to a message naming the address.
 std::optional<CliAddress> parseAddress(std::string_view text, std::string &error);
 
+/// `addr` as the HNC-8 dialect writes it (`X1.0`, `D5`): area letter, index, `.bit` for a bit.
+std::string formatAddress(const CliAddress &addr);
+
 /// Parse a value: decimal with optional sign, or `0x` hex (docs/dialect-notes.md "Text"), in
 /// the range INT32_MIN..UINT32_MAX so `0xFFFFFFFF` is the bit pattern -1 of a 32-bit element.
 std::optional<int64_t> parseValue(std::string_view text, std::string &error);

@@ -3,7 +3,6 @@
 
 #include "engines/AotLoader.h"
 #include "formats/InputFiles.h"
-#include "frontends/hnc8/FrontEnd.h"
 #include "ir/Diagnostics.h"
 #include "ladder/Json.h"
 
@@ -29,12 +28,29 @@ std::string capLines(std::string text, size_t max, const std::string &file) {
 
 } // namespace
 
-bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error) {
+bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error,
+                     std::string_view dialect) {
   src.path = path;
+  const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+  const Dialect *d = !dialect.empty() ? dialectForOption(dialect, error)
+                     : json           ? &defaultDialect()
+                                      : dialectForPath(path, error);
+  if (!d) return false;
+  src.dialect = d;
   std::string text;
   if (!readFile(path, text, error)) return false;
   src.fileHash = sha256Hash(text);
-  if (path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0) {
+  if (json) {
+    const Dialect *named = dialectOfJson(text, error);
+    if (!named) {
+      error = path + ": " + error;
+      return false;
+    }
+    if (!dialect.empty() && named != d) {
+      error = path + ": the ladder JSON is dialect '" + named->name + "', not '" + d->name + "'";
+      return false;
+    }
+    src.dialect = named;
     auto lad = std::make_shared<ladder::StlFromJson>();
     if (!ladder::stlFromJson(text, *lad, error)) {
       error = path + ": " + error;
@@ -68,7 +84,8 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
   const SymbolTable *symbols = src.dit      ? &src.dit->symbols
                                : src.ladder ? &src.ladder->symbols
                                             : nullptr;
-  std::optional<VerifiedProgram> prog = compileFrontEnd(src.text, src.path, opts, diags, symbols);
+  std::optional<VerifiedProgram> prog =
+      src.dialect->compile(src.text, src.path, opts, diags, symbols);
   diagnostics =
       capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
                kMaxDiagnosticLines, src.path);

@@ -3,6 +3,7 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
+#include "formats/Dialects.h"
 #include "formats/PlcDit.h"
 #include "ir/Program.h"
 
@@ -27,12 +28,17 @@ struct ProgramSource {
   /// A `.json` PROGRAM (ladder networks, docs/ladder-json.md): its symbols and line map; `text`
   /// is the STL made from it.
   std::shared_ptr<const ladder::StlFromJson> ladder;
+  /// The dialect it is written in (formats/Dialects.h): --dialect, else the extension, else
+  /// the JSON's "dialect" member, else HNC-8.
+  const Dialect *dialect = &defaultDialect();
 };
 
-/// Read PROGRAM into `src` (a `.json` name: ladder network JSON). False (with `error`) for an
-/// unreadable file or a damaged container; a `.dit` name without the magic line is a damaged
-/// container, not STL.
-bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error);
+/// Read PROGRAM into `src` (a `.json` name: ladder network JSON). `dialect`: the --dialect
+/// option (empty: chosen by the file name, dialectForPath). False (with `error`) for an unknown
+/// or unavailable dialect, an unreadable file or a damaged container; a `.dit` name without the
+/// magic line is a damaged container, not STL.
+bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error,
+                     std::string_view dialect = {});
 
 /// The PLC2 nvalue to plan with: the option when given, else the container's, else `option`.
 int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven);

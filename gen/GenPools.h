@@ -5,6 +5,7 @@
 
 #include "gen/Rng.h"
 #include "ir/Area.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cstdint>
 
@@ -43,7 +44,7 @@ constexpr int32_t faWord(int32_t axis, int32_t k) { return 80 * axis + k; }
 /// A hot element of `a`, or (rarely) its last valid element. T and C numbers come from
 /// tcNumber().
 inline int32_t pickIndex(Rng &rng, Area a) {
-  if (rng.chance(4)) return areaInfo(a).count - 1;
+  if (rng.chance(4)) return hnc8::profile().area(a).count - 1;
   return static_cast<int32_t>(rng.below(static_cast<uint64_t>(poolSize(a))));
 }
 

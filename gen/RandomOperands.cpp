@@ -4,6 +4,7 @@
 // runtime-checked indices loaded with their edge values; hnc8-functions-2.md 0.5/0.6).
 #include "gen/GenPools.h"
 #include "gen/RandomGen.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <algorithm>
 #include <cassert>
@@ -19,7 +20,7 @@ int32_t spanOf(Op op, int i) { return instrInfo(op).operands[i].span; }
 
 /// Elements a written range may use: D88.. are the planner's guards.
 int32_t rangeLimit(Area a, bool writes) {
-  return writes && a == Area::DWord ? kGuardFirst : areaInfo(a).count;
+  return writes && a == Area::DWord ? kGuardFirst : hnc8::profile().area(a).count;
 }
 
 } // namespace
@@ -117,7 +118,7 @@ std::string RandomGen::regAddress(AreaMask mask, bool writes) {
   Area a = pickArea(mask);
   int32_t idx = pickIndex(rng_, a);
   if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
-  return std::string(1, areaInfo(a).letter) + std::to_string(idx);
+  return std::string(1, hnc8::profile().area(a).letter) + std::to_string(idx);
 }
 
 std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
@@ -128,11 +129,11 @@ std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
   std::array<int, 11> w{};
   for (int i = 0; i < 11; ++i) w[i] = hasArea(mask, kBits[i]) ? kWeight[i] : 0;
   Area a = kBits[rng_.weighted(w)];
-  std::string s(1, areaInfo(a).letter);
+  std::string s(1, hnc8::profile().area(a).letter);
   if (a == Area::Timer || a == Area::Counter) return s + std::to_string(tcNumber(rng_)) + ".0";
   int32_t idx = pickIndex(rng_, a);
   if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
-  int bitNo = static_cast<int>(rng_.below(static_cast<uint64_t>(bitWidth(a))));
+  int bitNo = static_cast<int>(rng_.below(static_cast<uint64_t>(hnc8::profile().bitWidth(a))));
   return s + std::to_string(idx) + "." + std::to_string(bitNo);
 }
 
@@ -227,7 +228,7 @@ std::string RandomGen::range(AreaMask mask, bool writes, int32_t n) {
   int32_t limit = rangeLimit(a, writes);
   int32_t idx = pickIndex(rng_, a);
   if (idx + n > limit) idx = limit - n;
-  return std::string(1, areaInfo(a).letter) + std::to_string(idx);
+  return std::string(1, hnc8::profile().area(a).letter) + std::to_string(idx);
 }
 
 /// Operands of a long BMOV (functions-2 2.3, memmove semantics): mostly source and destination
@@ -248,7 +249,7 @@ std::string RandomGen::longBmov(const InstrInfo &in) {
                        : rng_.chance(70) ? std::min<int32_t>(pickIndex(rng_, a) % poolSize(a), room)
                                          : static_cast<int32_t>(rng_.range(0, room));
     const bool up = rng_.chance(50);
-    const std::string l(1, areaInfo(a).letter);
+    const std::string l(1, hnc8::profile().area(a).letter);
     return l + std::to_string(up ? lo : lo + shift) + " " + l +
            std::to_string(up ? lo + shift : lo) + " " + std::to_string(n);
   }
@@ -261,13 +262,13 @@ std::string RandomGen::longBmov(const InstrInfo &in) {
 std::string RandomGen::longZone(bool bits) {
   Area a = pickFitting(kDstAreas, true, bits ? 35 : 33);
   const int32_t limit = rangeLimit(a, true);
-  const std::string l(1, areaInfo(a).letter);
+  const std::string l(1, hnc8::profile().area(a).letter);
   if (!bits) {
     const int32_t n = longCount(limit);
     const int32_t idx = rng_.chance(60) ? 0 : static_cast<int32_t>(rng_.range(0, limit - n));
     return l + std::to_string(idx) + " " + l + std::to_string(idx + n - 1);
   }
-  const int32_t n = longCount(limit - 2), w = bitWidth(a);
+  const int32_t n = longCount(limit - 2), w = hnc8::profile().bitWidth(a);
   const int32_t first = rng_.chance(60) ? 0 : static_cast<int32_t>(rng_.range(0, limit - n - 2));
   const int32_t last = first + n + 1;
   const auto b0 = rng_.below(static_cast<uint64_t>(w)), b1 = rng_.below(static_cast<uint64_t>(w));
@@ -281,14 +282,14 @@ std::string RandomGen::zone() {
   if (longRange()) return longZone(rng_.chance(50));
   Area a = pickArea(kDstAreas);
   int32_t limit = rangeLimit(a, true);
-  std::string l(1, areaInfo(a).letter);
+  std::string l(1, hnc8::profile().area(a).letter);
   if (rng_.chance(50)) {
     int32_t n = static_cast<int32_t>(rng_.range(1, 4));
     int32_t idx = pickIndex(rng_, a);
     if (idx + n > limit) idx = limit - n;
     return l + std::to_string(idx) + " " + l + std::to_string(idx + n - 1);
   }
-  const int32_t w = bitWidth(a);
+  const int32_t w = hnc8::profile().bitWidth(a);
   int32_t first =
       pickIndex(rng_, a) * w + static_cast<int32_t>(rng_.below(static_cast<uint64_t>(w)));
   int32_t last =
@@ -369,7 +370,7 @@ bool RandomGen::specialOperands(const InstrInfo &in, std::string &s) {
     int32_t n = small(8);
     int32_t idx = pickIndex(rng_, a);
     if (idx + n > limit) idx = limit - n;
-    std::string l(1, areaInfo(a).letter);
+    std::string l(1, hnc8::profile().area(a).letter);
     s += " " + l + std::to_string(idx) + " " + l + std::to_string(idx + n - 1) + " " +
          operand(in, 2);
     return true;

@@ -6,6 +6,7 @@
 #include "gen/ProgramGenerator.h"
 #include "gen/RandomGen.h"
 #include "ir/OpTable.h"
+#include "ir/StackEffect.h"
 
 #include <array>
 #include <cassert>
@@ -111,28 +112,10 @@ void RandomGen::emitGeneric(const InstrInfo &in) {
   if (!specialOperands(in, s))
     for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
   emit(std::move(s));
-  switch (in.stack) {
-  case StackRule::Push:
-    ++depth_;
-    break;
-  case StackRule::BlockPop:
-    --depth_;
-    break;
-  case StackRule::MpsPush:
-    ++ms_;
-    break;
-  case StackRule::MsPop:
-    --ms_;
-    break;
-  case StackRule::Block:
-    // dialect-notes "Stacks and blocks": pop the inputs, push the output; a single-input block
-    // with an empty ST pushes its output.
-    if (in.output == OutputRule::None) break;
-    depth_ = depth_ == 0 ? 1 : depth_ - in.inputs + 1;
-    break;
-  default:
-    break;
-  }
+  // The stacks move as ir/StackEffect.h says (the verifier reads the same function).
+  const StackEffect e = stackEffect(in, depth_);
+  depth_ = e.after(depth_);
+  ms_ += e.msDelta;
 }
 
 void RandomGen::closeMs() {

@@ -2,6 +2,7 @@
 // rendering in the CLI stimulus-file format (CLI.md `--stimulus`).
 #include "gen/GenPools.h"
 #include "gen/ProgramGenerator.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cstring>
 #include <iterator>
@@ -65,7 +66,7 @@ HostWrite randomInput(Rng &rng) {
   w.area = rng.chance(60) ? Area::Input : Area::NcStatus;
   w.index = pickIndex(rng, w.area);
   if (rng.chance(50)) {
-    w.bit = static_cast<int8_t>(rng.below(static_cast<uint64_t>(bitWidth(w.area))));
+    w.bit = static_cast<int8_t>(rng.below(static_cast<uint64_t>(hnc8::profile().bitWidth(w.area))));
     w.value = static_cast<int32_t>(rng.below(2));
   } else if (w.area == Area::Input) {
     w.value = static_cast<int32_t>(rng.below(256));
@@ -184,7 +185,7 @@ void applyWrites(lj_state &s, const std::vector<HostWrite> &writes) {
 }
 
 std::string formatAddress(const HostWrite &w) {
-  std::string s(1, areaInfo(w.area).letter);
+  std::string s(1, hnc8::profile().area(w.area).letter);
   s += std::to_string(w.index);
   if (w.bit >= 0) s += "." + std::to_string(w.bit);
   return s;

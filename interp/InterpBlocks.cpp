@@ -34,8 +34,8 @@ bool countStep(bool cnt, bool s1, bool dn, bool rst, int32_t pv, int32_t &cv, bo
 }
 
 /// Timer preset in ms, 64-bit; a negative preset counts as 0 (dialect-notes "Timers").
-int64_t presetMs(int32_t unit, int32_t len) {
-  int64_t p = int64_t(len) * targetProfile().timerUnitMs[unit & 3];
+int64_t presetMs(const TargetProfile &tp, int32_t unit, int32_t len) {
+  int64_t p = int64_t(len) * tp.timerUnitMs[unit & 3];
   return p < 0 ? 0 : p;
 }
 
@@ -163,7 +163,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   // Timers (dialect-notes "Timers"); state in T[slot], time from now_ms.
   case Op::OnDelayTimer: {
     lj_timer &t = s->T[c.slot];
-    int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
+    int64_t preset = presetMs(*prog.profile, readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
       if (!t.running) {
         t.running = 1;
@@ -182,7 +182,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   }
   case Op::OffDelayTimer: {
     lj_timer &t = s->T[c.slot];
-    int64_t preset = presetMs(readValue(s, c.b), readValue(s, c.c));
+    int64_t preset = presetMs(*prog.profile, readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
       t.out = 1;
       t.running = 0;

@@ -1,8 +1,9 @@
 // Interpreter semantics of family Cnc: chapter-6 CNC blocks on F/G words
-// (hnc8-cnc-interface.md 2 and 3.1), by reading the CNC table (CncTable.h) at run time. Written
-// plainly, word by word, as the oracle the lowering is checked against.
+// (hnc8-cnc-interface.md 2 and 3.1), by reading the program's profile's CNC table
+// (TargetProfile::cncRows, ir/CncTable.h) at run time. Written plainly, word by word, as the
+// oracle the lowering is checked against.
 #include "interp/InterpreterInternal.h"
-#include "profiles/hnc8/CncTable.h"
+#include "ir/CncTable.h"
 
 #include <cstdint>
 
@@ -72,7 +73,8 @@ bool spindleCommand(const BlockCall &b, const Action &a, int32_t sWord, int32_t 
 } // namespace
 
 bool runCnc(const BlockCall &b) {
-  const cnc::CncRow *row = cnc::cncRow(b.c.op);
+  const cnc::CncRow *row = b.tp.cncRow(b.c.op);
+  const CncLayout &lay = b.tp.cnc;
   if (!row) return false;
   lj_state *s = b.s;
   const Stmt &st = b.stmt;
@@ -83,10 +85,10 @@ bool runCnc(const BlockCall &b) {
   bool valid = true;
   if (row->base == cnc::Base::Axis) {
     int32_t axis = readValue(s, b.ops[row->where]);
-    valid = axis >= 0 && axis < cnc::kAxes;
-    base = valid ? axis * cnc::kBlockWords : 0;
+    valid = axis >= 0 && axis < lay.axes;
+    base = valid ? axis * lay.blockWords : 0;
   } else if (row->base == cnc::Base::Channel) {
-    base = cnc::kChannelBase + st.ops[row->where].value * cnc::kBlockWords;
+    base = lay.channelBase + st.ops[row->where].value * lay.blockWords;
   }
 
   if (info.stack == StackRule::Push) { // AXRDY: a status source pushed like a contact
@@ -154,7 +156,7 @@ bool runCnc(const BlockCall &b) {
                  (static_cast<uint16_t>(s->img.G[hot]) & ~0x7Fu) | static_cast<uint32_t>(v));
         setGWord(s, w,
                  (static_cast<uint16_t>(s->img.G[w]) & ~0xFu) |
-                     static_cast<uint32_t>(cnc::kModeCode[k]));
+                     static_cast<uint32_t>(b.tp.modeCode[k]));
       }
       break; // 0, several bits or > 64: no request (docs/cnc-blocks.md)
     }
@@ -163,7 +165,7 @@ bool runCnc(const BlockCall &b) {
       const int32_t code = static_cast<uint16_t>(s->img.F[w]) & 0xF;
       int32_t v = 0;
       for (int k = 0; k < 7; ++k)
-        if (cnc::kModeCode[k] == code) v = 1 << k;
+        if (b.tp.modeCode[k] == code) v = 1 << k;
       writeValue(s, b.ops[a.srcOp], v);
       break;
     }

@@ -13,35 +13,39 @@ namespace lj::interp {
 namespace {
 
 /// Element `index` of area `a` as an operand reference (read rule and width of the area).
-Ref element(Area a, int32_t index) {
+Ref element(const TargetProfile &tp, Area a, int32_t index) {
   Operand o;
   o.kind = Operand::Kind::Reg;
   o.area = a;
   o.index = index;
-  return decode(o);
+  return decode(tp, o);
 }
 
-int32_t readAt(lj_state *s, Area a, int32_t index) { return readValue(s, element(a, index)); }
-void writeAt(lj_state *s, Area a, int32_t index, int32_t v) { writeValue(s, element(a, index), v); }
+int32_t readAt(const BlockCall &b, Area a, int32_t index) {
+  return readValue(b.s, element(b.tp, a, index));
+}
+void writeAt(const BlockCall &b, Area a, int32_t index, int32_t v) {
+  writeValue(b.s, element(b.tp, a, index), v);
+}
 
 /// The raw bit pattern of an element, zero-extended (ASSEM/DISAS, functions-2 0.2).
-uint32_t rawAt(lj_state *s, Area a, int32_t index) {
-  uint32_t v = static_cast<uint32_t>(readAt(s, a, index));
-  int w = bitWidth(a);
+uint32_t rawAt(const BlockCall &b, Area a, int32_t index) {
+  uint32_t v = static_cast<uint32_t>(readAt(b, a, index));
+  int w = b.tp.bitWidth(a);
   return w == 32 ? v : v & ((1u << w) - 1u);
 }
 
 /// Effective operand of XMOV/XCH (functions-2 0.6): format 0 is the register itself, 1 is
 /// B[value of the register], 2 is P[value of the register]. False when the index is out of range.
-bool resolve(lj_state *s, const Operand &format, const Operand &addr, Ref &out) {
+bool resolve(const BlockCall &b, const Operand &format, const Operand &addr, Ref &out) {
   if (format.value == 0) {
-    out = element(addr.area, addr.index);
+    out = element(b.tp, addr.area, addr.index);
     return true;
   }
   Area target = format.value == 1 ? Area::Retained : Area::Param;
-  int32_t k = readAt(s, addr.area, addr.index);
-  if (!validIndex(target, k)) return false;
-  out = element(target, k);
+  int32_t k = readAt(b, addr.area, addr.index);
+  if (!b.tp.validIndex(target, k)) return false;
+  out = element(b.tp, target, k);
   return true;
 }
 
@@ -57,7 +61,7 @@ void xmov(const BlockCall &b) {
   bool en = b.f.input(), ok = true;
   if (en) {
     Ref src, dst;
-    ok = resolve(b.s, o[0], o[1], src) && resolve(b.s, o[2], o[3], dst);
+    ok = resolve(b, o[0], o[1], src) && resolve(b, o[2], o[3], dst);
     if (ok)
       writeValue(b.s, dst, readValue(b.s, src));
     else
@@ -72,7 +76,7 @@ void xch(const BlockCall &b) {
   // Both operands are resolved before anything is written (an index register may be the other
   // operand); then both are read, then operand 1 and operand 2 are written in that order.
   Ref r1, r2;
-  if (!resolve(b.s, o[0], o[1], r1) || !resolve(b.s, o[2], o[3], r2)) {
+  if (!resolve(b, o[0], o[1], r1) || !resolve(b, o[2], o[3], r2)) {
     indexFault(b);
     return;
   }
@@ -87,8 +91,8 @@ void bmov(const BlockCall &b) {
   if (en) {
     // memmove semantics (functions-2 2.3): read all n values first, then write them.
     std::vector<int32_t> v(static_cast<size_t>(o[2].value));
-    for (int32_t i = 0; i < o[2].value; ++i) v[i] = readAt(b.s, o[0].area, o[0].index + i);
-    for (int32_t i = 0; i < o[2].value; ++i) writeAt(b.s, o[1].area, o[1].index + i, v[i]);
+    for (int32_t i = 0; i < o[2].value; ++i) v[i] = readAt(b, o[0].area, o[0].index + i);
+    for (int32_t i = 0; i < o[2].value; ++i) writeAt(b, o[1].area, o[1].index + i, v[i]);
   }
   b.f.output(en);
 }
@@ -97,24 +101,24 @@ void fmov(const BlockCall &b) {
   if (!b.f.input()) return;
   const auto &o = b.stmt.ops;
   int32_t v = readValue(b.s, b.ops[2]); // read once, before any write (functions-2 2.4)
-  for (int32_t k = o[0].index; k <= o[1].index; ++k) writeAt(b.s, o[0].area, k, v);
+  for (int32_t k = o[0].index; k <= o[1].index; ++k) writeAt(b, o[0].area, k, v);
 }
 
 void zrst(const BlockCall &b) {
   const auto &o = b.stmt.ops;
   bool en = b.f.input();
   if (en && o[0].kind == Operand::Kind::Reg) {
-    for (int32_t k = o[0].index; k <= o[1].index; ++k) writeAt(b.s, o[0].area, k, 0);
+    for (int32_t k = o[0].index; k <= o[1].index; ++k) writeAt(b, o[0].area, k, 0);
   } else if (en) {
     // Bit form: bits ordered linearly as index * width + bit (functions-2 2.6).
-    const int w = bitWidth(o[0].area);
+    const int w = b.tp.bitWidth(o[0].area);
     for (int32_t p = o[0].index * w + o[0].bit; p <= o[1].index * w + o[1].bit; ++p) {
       Operand bitOp;
       bitOp.kind = Operand::Kind::Bit;
       bitOp.area = o[0].area;
       bitOp.index = p / w;
       bitOp.bit = static_cast<int8_t>(p % w);
-      writeBit(b.s, decode(bitOp), false);
+      writeBit(b.s, decode(b.tp, bitOp), false);
     }
   }
   b.f.output(en);
@@ -130,7 +134,7 @@ void table(const BlockCall &b) {
   const Area area = o[0].area;
   const int32_t start = o[0].index, n = o[1].value;
   const int32_t x = readValue(b.s, b.ops[2]);
-  auto t = [&](int32_t i) { return readAt(b.s, area, start + i); };
+  auto t = [&](int32_t i) { return readAt(b, area, start + i); };
   switch (b.c.op) {
   case Op::TableEncode: { // first entry equal to x -> its one-hot bit; not found -> 0 (2.7)
     uint32_t r = 0;
@@ -177,23 +181,23 @@ void table(const BlockCall &b) {
 void assem(const BlockCall &b) {
   if (!b.f.input()) return;
   const auto &o = b.stmt.ops;
-  const int w = bitWidth(o[0].area);
+  const int w = b.tp.bitWidth(o[0].area);
   // First source in the least-significant bits; pieces at or beyond bit 32 are lost (2.11).
   uint32_t acc = 0;
   for (int32_t i = 0; i < o[1].value; ++i)
-    if (i * w < 32) acc |= rawAt(b.s, o[0].area, o[0].index + i) << (i * w);
+    if (i * w < 32) acc |= rawAt(b, o[0].area, o[0].index + i) << (i * w);
   writeValue(b.s, b.ops[2], static_cast<int32_t>(acc));
 }
 
 void disas(const BlockCall &b) {
   if (!b.f.input()) return;
   const auto &o = b.stmt.ops;
-  const int w = bitWidth(o[2].area);
-  const uint32_t mask = (1u << w) - 1u;                   // destinations are 8 or 16 bits wide
-  const uint32_t raw = rawAt(b.s, o[0].area, o[0].index); // read once, before any write
+  const int w = b.tp.bitWidth(o[2].area);
+  const uint32_t mask = (1u << w) - 1u;                 // destinations are 8 or 16 bits wide
+  const uint32_t raw = rawAt(b, o[0].area, o[0].index); // read once, before any write
   for (int32_t i = 0; i < o[1].value; ++i) {
     uint32_t piece = i * w < 32 ? (raw >> (i * w)) & mask : 0; // logical, never shift >= 32
-    writeAt(b.s, o[2].area, o[2].index + i, static_cast<int32_t>(piece));
+    writeAt(b, o[2].area, o[2].index + i, static_cast<int32_t>(piece));
   }
 }
 
@@ -204,8 +208,8 @@ void acvt(const BlockCall &b) {
   // dst := (src - P[k]) * (P[k+3] - P[k+2]) / (P[k+1] - P[k]) + P[k+2] (the "+P2" fix, 2.13).
   // int64 intermediates: the differences are exact; the product wraps modulo 2^64 (only when
   // both ranges are wider than 2^31); the quotient truncates toward zero; the sum wraps.
-  int64_t smin = readAt(b.s, Area::Param, k), smax = readAt(b.s, Area::Param, k + 1);
-  int64_t dmin = readAt(b.s, Area::Param, k + 2), dmax = readAt(b.s, Area::Param, k + 3);
+  int64_t smin = readAt(b, Area::Param, k), smax = readAt(b, Area::Param, k + 1);
+  int64_t dmin = readAt(b, Area::Param, k + 2), dmax = readAt(b, Area::Param, k + 3);
   int64_t x = readValue(b.s, b.ops[1]);
   int64_t den = smax - smin;
   if (den == 0) { // division by zero (DIALECT.md 4): nothing written, output 0, counted

@@ -165,7 +165,7 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     }
     default:
       if (c.wide >= 0) {
-        BlockCall call{s, f, c, wide[c.wide].data(), prog.stmts[pc], prog.info[pc]};
+        BlockCall call{s, f, c, wide[c.wide].data(), prog.stmts[pc], prog.info[pc], *prog.profile};
         bool done = opFamily(c.op) == Family::Data ? runData(call)
                     : opFamily(c.op) == Family::Nc ? runNc(call)
                                                    : runCnc(call);

@@ -10,8 +10,7 @@ namespace {
 
 /// The target's CNC words (profile): FC[k] / GC[k] = F/G[channelBase + blockWords * ch + k]
 /// (hnc8-cnc-interface.md 1.3, 1.4).
-const CncLayout &kCnc = targetProfile().cnc;
-int32_t chanBase(int32_t ch) { return kCnc.channelBase + kCnc.blockWords * ch; }
+int32_t chanBase(const CncLayout &cnc, int32_t ch) { return cnc.channelBase + cnc.blockWords * ch; }
 
 /// Store the low 16 bits of v into G[i] (a write keeps the low bits, DIALECT.md 1).
 void setG(lj_state *s, int32_t i, int32_t v) {
@@ -62,13 +61,14 @@ void rot(const BlockCall &b) {
 
 bool runNc(const BlockCall &b) {
   lj_state *s = b.s;
+  const CncLayout &kCnc = b.tp.cnc;
   Frame &f = b.f;
   const Ref *o = b.ops;
   const bool en = f.input();
   switch (b.c.op) {
   case Op::MCodeGet: {
     // out = EN and one of FC[48..55] holds the M code; nothing written (functions-1 3.1).
-    int32_t cb = chanBase(o[0].value);
+    int32_t cb = chanBase(kCnc, o[0].value);
     bool pending = false;
     for (int k = 0; k < kCnc.mCodeSlots; ++k)
       pending = pending || s->img.F[cb + kCnc.mCodeWord + k] == o[1].value;
@@ -78,7 +78,7 @@ bool runNc(const BlockCall &b) {
   case Op::MCodeAck:
     // Every slot k holding the M code is acknowledged: GC[48+k] := M (functions-1 3.1).
     if (en) {
-      int32_t cb = chanBase(o[0].value);
+      int32_t cb = chanBase(kCnc, o[0].value);
       for (int k = 0; k < kCnc.mCodeSlots; ++k)
         if (s->img.F[cb + kCnc.mCodeWord + k] == o[1].value)
           setG(s, cb + kCnc.mCodeWord + k, o[1].value);
@@ -87,7 +87,7 @@ bool runNc(const BlockCall &b) {
   case Op::TCodeGet: {
     // FC[56] != -1: a T code is pending; it goes to the destination, or is compared with a
     // constant destination (functions-1 3.1 TGET resolution).
-    int16_t t = s->img.F[chanBase(o[0].value) + kCnc.tCodeWord];
+    int16_t t = s->img.F[chanBase(kCnc, o[0].value) + kCnc.tCodeWord];
     bool pending = t != -1;
     if (o[1].kind == Ref::Kind::Const) {
       f.output(en && pending && t == o[1].value);
@@ -99,7 +99,7 @@ bool runNc(const BlockCall &b) {
   }
   case Op::TCodeAck:
     if (en) {
-      int32_t cb = chanBase(o[0].value);
+      int32_t cb = chanBase(kCnc, o[0].value);
       setG(s, cb + kCnc.tCodeWord, s->img.F[cb + kCnc.tCodeWord]); // GC[56] := FC[56]
     }
     return true;
@@ -122,7 +122,7 @@ bool runNc(const BlockCall &b) {
   case Op::PartClear:
     // The part count of channel ch is GC[19] (functions-2 2.19, 2.20); level-triggered.
     if (en) {
-      int32_t i = chanBase(o[0].value) + kCnc.partCountWord;
+      int32_t i = chanBase(kCnc, o[0].value) + kCnc.partCountWord;
       setG(s, i, b.c.op == Op::PartCount ? addWrap(s->img.G[i], 1) : 0);
     }
     f.output(en);
@@ -218,7 +218,7 @@ bool runNc(const BlockCall &b) {
       if (auto fn = callback(s, &lj_host::spindle_da)) {
         // rpm: the spindle's S command FC[10+2sp] (32 bits, low word first); the DA value goes
         // to the reference operand and to GC[10+2sp] (hnc8-cnc-interface.md 2 #33, 1.4).
-        int32_t cb = chanBase(o[0].value), sp = o[1].value;
+        int32_t cb = chanBase(kCnc, o[0].value), sp = o[1].value;
         uint32_t lo = static_cast<uint16_t>(s->img.F[cb + 10 + 2 * sp]);
         uint32_t hi = static_cast<uint16_t>(s->img.F[cb + 11 + 2 * sp]);
         int32_t rpm = wrap(lo | (hi << 16));

@@ -52,15 +52,15 @@ Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
     const Stmt &st = p.stmts[i];
     Code &c = code[i];
     c.op = st.op;
-    c.a = decode(st.ops[0]);
-    c.b = decode(st.ops[1]);
-    c.c = decode(st.ops[2]);
+    c.a = decode(*prog.profile, st.ops[0]);
+    c.b = decode(*prog.profile, st.ops[1]);
+    c.c = decode(*prog.profile, st.ops[2]);
     c.target = p.info[i].target;
     c.slot = p.info[i].slot;
     if (opFamily(st.op) != Family::Core) {
       c.wide = static_cast<int32_t>(wide.size());
       std::array<Ref, kMaxOperands> &w = wide.emplace_back();
-      for (int k = 0; k < st.operandCount; ++k) w[k] = decode(st.ops[k]);
+      for (int k = 0; k < st.operandCount; ++k) w[k] = decode(*prog.profile, st.ops[k]);
     }
     assert(slotInRange(instrInfo(c.op).state, c.slot) && "state slot out of range");
     assert((c.op != Op::Jump && c.op != Op::LoopBegin) ||

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "interp/Interpreter.h"
+#include "ir/Profile.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 
@@ -68,7 +69,8 @@ struct Frame {
   }
 };
 
-inline Ref decode(const Operand &o) {
+/// `o` decoded with the area facts of `tp` (the program's profile).
+inline Ref decode(const TargetProfile &tp, const Operand &o) {
   Ref r;
   switch (o.kind) {
   case Operand::Kind::None:
@@ -78,10 +80,10 @@ inline Ref decode(const Operand &o) {
     r.value = o.value;
     return r;
   case Operand::Kind::Reg: {
-    uint32_t bytes = areaInfo(o.area).bytes;
+    uint32_t bytes = tp.area(o.area).bytes;
     if (bytes == 0) return r; // L, S: handled through StmtInfo::target
     r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
-    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
+    r.off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
     return r;
   }
   case Operand::Kind::Bit: {
@@ -98,7 +100,7 @@ inline Ref decode(const Operand &o) {
       r.mask = 1;
       return r;
     }
-    r.off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
+    r.off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * tp.area(o.area).bytes +
             static_cast<uint32_t>(o.bit / 8);
     r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
     return r;
@@ -181,6 +183,7 @@ struct BlockCall {
   const Ref *ops;
   const Stmt &stmt;
   const StmtInfo &info;
+  const TargetProfile &tp; ///< the program's profile
 };
 
 /// Family Data (InterpData.cpp): XMOV .. NTP. Each family runner returns false for an

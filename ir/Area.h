@@ -1,10 +1,9 @@
 // Memory areas by role (the core never names a dialect letter) and the per-area facts a target
-// profile gives for each (ir/Profile.h; the HNC-8 values are in profiles/hnc8/Areas.cpp).
+// profile gives for each (read through a profile: ir/Profile.h TargetProfile::area() and friends;
+// the HNC-8 values are in profiles/hnc8/Areas.cpp).
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <string_view>
 
 namespace lj {
 
@@ -44,24 +43,5 @@ struct AreaInfo {
   bool bitAddressable = false; ///< `A12.3` bit addresses accepted (contacts, coils)
   uint32_t offset = 0;         ///< byte offset of element 0 inside lj_state (numeric areas)
 };
-
-// Implemented by the linked target profile (profiles/hnc8/Areas.cpp): the core reads areas only
-// through these and ir/Profile.h.
-
-/// The facts of area `a` in the target profile.
-const AreaInfo &areaInfo(Area a);
-
-/// Area the dialect writes as `c` (case-insensitive), if any.
-std::optional<Area> areaFromLetter(char c);
-
-/// Whether element `n` exists in area `a` (timers/counters: the profile's number spaces).
-bool validIndex(Area a, int64_t n);
-
-/// Byte offset of element 0 of a numeric area inside lj_state (abi.h); 0 for the other areas.
-/// Element n is at stateOffset(a) + n * areaInfo(a).bytes.
-uint32_t stateOffset(Area a);
-
-/// Number of bits of one element (8, 16, 32), or 1 for timers/counters whose only bit is .0.
-int bitWidth(Area a);
 
 } // namespace lj

@@ -1,13 +1,18 @@
 // The target profile: everything the core (verify/, interp/, lowering/, the generator) needs to
-// know about a target that is not an operation's meaning. One value per target; the linked
-// profile library implements targetProfile() (HNC-8: profiles/hnc8/Areas.cpp).
+// know about a target that is not an operation's meaning. One value per target (HNC-8:
+// profiles/hnc8/Areas.cpp; all of them: profiles/Profiles.h). A program carries the profile it
+// was written for (ParsedProgram::profile, VerifiedProgram::profile): the core reads area facts
+// through it, never through a global.
 #pragma once
 
 #include "ir/Area.h"
+#include "ir/CncTable.h"
 #include "ir/OpTable.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace lj {
@@ -59,9 +64,49 @@ struct TargetProfile {
   EdgePolicy edgePolicy;
   CncLayout cnc;
   std::span<const char *const> hostServices; ///< lj_host callbacks the target may call
-};
+  /// CNC interface rows, one per family-Cnc Op in Op order (empty: the target has none).
+  std::span<const cnc::CncRow> cncRows;
+  /// Mode code (F/G channel word bits 0-3) of one-hot mode bit i (ModeSet / ModeGet actions).
+  std::array<int32_t, 7> modeCode;
 
-/// The profile of the target this build runs (HNC-8 is the one profile so far).
-const TargetProfile &targetProfile();
+  /// The facts of area `a`.
+  constexpr const AreaInfo &area(Area a) const { return areas[static_cast<int>(a)]; }
+
+  /// Area the dialect writes as `c` (case-insensitive), if any.
+  constexpr std::optional<Area> areaFromLetter(char c) const {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+    for (int i = 0; i < kAreaCount; ++i)
+      if (areas[i].letter == c) return static_cast<Area>(i);
+    return std::nullopt;
+  }
+
+  /// Whether element `n` exists in area `a` (timers/counters: the number spaces).
+  constexpr bool validIndex(Area a, int64_t n) const {
+    if (n < 0) return false;
+    if (a == Area::Timer || a == Area::Counter) {
+      for (const NumberRange &r : a == Area::Timer ? timerNumbers : counterNumbers)
+        if (r.contains(n)) return true;
+      return false;
+    }
+    return n < area(a).count;
+  }
+
+  /// Byte offset of element 0 of a numeric area inside lj_state (abi.h); 0 for the other
+  /// areas. Element n is at stateOffset(a) + n * area(a).bytes.
+  constexpr uint32_t stateOffset(Area a) const { return area(a).offset; }
+
+  /// Number of bits of one element (8, 16, 32), or 1 for timers/counters whose only bit is .0.
+  constexpr int bitWidth(Area a) const {
+    if (a == Area::Timer || a == Area::Counter) return 1;
+    return area(a).bytes * 8;
+  }
+
+  /// The CNC row of `op`, or nullptr when `op` is not driven by the table.
+  const cnc::CncRow *cncRow(Op op) const {
+    if (opFamily(op) != Family::Cnc) return nullptr;
+    const size_t i = static_cast<size_t>(op) - static_cast<size_t>(Op::ChannelModeSet);
+    return i < cncRows.size() ? &cncRows[i] : nullptr;
+  }
+};
 
 } // namespace lj

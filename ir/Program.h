@@ -14,6 +14,8 @@
 
 namespace lj {
 
+struct TargetProfile;
+
 /// A position in the source text (1-based line and column).
 struct SourceLoc {
   int32_t line = 0;
@@ -81,8 +83,9 @@ struct DroppedStmt {
 
 /// What the parser produces: statements in source order (markers included).
 struct ParsedProgram {
-  std::string file;                     ///< name used in diagnostics
-  const DialectText *dialect = nullptr; ///< the front end that read it
+  std::string file;                       ///< name used in diagnostics
+  const DialectText *dialect = nullptr;   ///< the front end that read it
+  const TargetProfile *profile = nullptr; ///< the target it was written for (set by the front end)
   std::vector<Stmt> stmts;
   std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
   std::vector<Comment> comments;    ///< in source order
@@ -126,7 +129,8 @@ struct Subroutine {
 /// A verified program: every fact the engines need, computed once by the front end.
 struct VerifiedProgram {
   std::string file;
-  const DialectText *dialect = nullptr; ///< copied from ParsedProgram
+  const DialectText *dialect = nullptr;   ///< copied from ParsedProgram
+  const TargetProfile *profile = nullptr; ///< copied from ParsedProgram (never null once verified)
   std::vector<Stmt> stmts;
   std::vector<StmtInfo> info; ///< parallel to stmts
   StmtRange init;             ///< statements of the init part (markers excluded)

@@ -171,6 +171,39 @@ size_t imageOffset(Area a) {
   }
 }
 
+/// Element width (bytes) and field name of a numeric area's lj_image array (abi.h).
+struct ImageField {
+  size_t bytes;
+  const char *name;
+};
+ImageField imageField(Area a) {
+#define LJ_FIELD(f)                                                                                \
+  ImageField { sizeof(lj_image::f[0]), #f }
+  switch (a) {
+  case Area::DWord:
+    return LJ_FIELD(D);
+  case Area::Retained:
+    return LJ_FIELD(B);
+  case Area::Param:
+    return LJ_FIELD(P);
+  case Area::NcStatus:
+    return LJ_FIELD(F);
+  case Area::NcControl:
+    return LJ_FIELD(G);
+  case Area::Word:
+    return LJ_FIELD(W);
+  case Area::Input:
+    return LJ_FIELD(X);
+  case Area::Output:
+    return LJ_FIELD(Y);
+  case Area::Relay:
+    return LJ_FIELD(R);
+  default:
+    return {0, "?"};
+  }
+#undef LJ_FIELD
+}
+
 } // namespace
 
 llvm::Expected<StateLayout> StateLayout::create(llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
@@ -186,13 +219,15 @@ llvm::Expected<StateLayout> StateLayout::create(llvm::LLVMContext &ctx, const ll
 uint64_t StateLayout::stateSize() { return sizeof(lj_state); }
 
 StateLoc StateLayout::area(Area a, int32_t index) const {
-  const AreaInfo &info = areaInfo(a);
+  // The process image is abi.h's (the profile describes it; profiles/hnc8/Areas.cpp checks that
+  // they agree), so the layout reads widths and names from the ABI itself.
+  const ImageField field = imageField(a);
   StateLoc loc;
   loc.offset = static_cast<uint32_t>(offsetof(lj_state, img) + imageOffset(a) +
-                                     static_cast<size_t>(index) * info.bytes);
-  loc.type = llvm::Type::getIntNTy(*ctx_, info.bytes * 8);
+                                     static_cast<size_t>(index) * field.bytes);
+  loc.type = llvm::Type::getIntNTy(*ctx_, static_cast<unsigned>(field.bytes * 8));
   loc.path = {kStImg, imageIndex(a), static_cast<uint32_t>(index)};
-  if (names_) loc.name = std::string(1, info.letter) + std::to_string(index);
+  if (names_) loc.name = field.name + std::to_string(index);
   return loc;
 }
 

@@ -10,7 +10,7 @@ namespace lj::lower {
 llvm::Value *FunctionEmitter::readBit(const Operand &op) {
   std::string name;
   if (mc_.opts.readableNames)
-    name = std::string(1, areaInfo(op.area).letter) + std::to_string(op.index) + "." +
+    name = std::string(1, tp().area(op.area).letter) + std::to_string(op.index) + "." +
            std::to_string(op.bit);
   if (op.area == Area::Timer || op.area == Area::Counter) {
     // Tn.0 / Cn.0: the timer's / counter's output byte (dialect-notes "Function blocks").
@@ -32,8 +32,8 @@ llvm::Value *FunctionEmitter::readInt(const Operand &op) {
   if (op.kind == Operand::Kind::Const) return b_.getInt32(static_cast<uint32_t>(op.value));
   llvm::Value *v = cache_.load(mc_.layout.area(op.area, op.index));
   if (v->getType()->getIntegerBitWidth() == 32) return v;
-  return areaInfo(op.area).isSigned ? b_.CreateSExt(v, b_.getInt32Ty())
-                                    : b_.CreateZExt(v, b_.getInt32Ty());
+  return tp().area(op.area).isSigned ? b_.CreateSExt(v, b_.getInt32Ty())
+                                     : b_.CreateZExt(v, b_.getInt32Ty());
 }
 
 void FunctionEmitter::writeInt(const Operand &op, llvm::Value *v, llvm::Value *en) {

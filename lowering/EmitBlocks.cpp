@@ -206,7 +206,7 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   llvm::Value *en = enable();
   llvm::Value *len = b_.CreateSExt(readInt(s.ops[2]), i64);
   llvm::Value *preset =
-      b_.CreateMul(len, b_.getInt64(targetProfile().timerUnitMs[unit])); // fits: |len| < 2^31
+      b_.CreateMul(len, b_.getInt64(tp().timerUnitMs[unit])); // fits: |len| < 2^31
   preset = b_.CreateSelect(b_.CreateICmpSLT(preset, zero64), zero64, preset, "preset");
   llvm::Value *now = cache_.load(mc_.layout.scalar(Scalar::NowMs));
   StateLoc startL = mc_.layout.timer(slot, TimerField::Start);

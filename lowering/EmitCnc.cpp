@@ -1,9 +1,10 @@
 // Lowering of family Cnc: chapter-6 CNC blocks on F/G words (hnc8-cnc-interface.md 2, 3.1). The
-// CNC table (profiles/hnc8/CncTable.h) is interpreted at compile time into straight-line IR:
-// constant words go through the image cache, EN guards are selects. Only a runtime axis operand
-// (JOGSW, STEPAXIS, JOGVEL, AXEN, AXISMOVE, AXISMVTO, AXLMF2) and SPDLBUS1's gear use computed
-// addresses: the index is clamped into range and the store writes the old value back when the
-// axis is invalid, so the code stays branch-free (docs/cnc-blocks.md "Runtime axis").
+// CNC table of the program's profile (TargetProfile::cncRows, ir/CncTable.h) is interpreted at
+// compile time into straight-line IR: constant words go through the image cache, EN guards are
+// selects. Only a runtime axis operand (JOGSW, STEPAXIS, JOGVEL, AXEN, AXISMOVE, AXISMVTO, AXLMF2)
+// and SPDLBUS1's gear use computed addresses: the index is clamped into range and the store writes
+// the old value back when the axis is invalid, so the code stays branch-free (docs/cnc-blocks.md
+// "Runtime axis").
 #include "lowering/FunctionEmitter.h"
 
 #include "ladderjit/abi.h"
@@ -128,7 +129,7 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     llvm::Value *code = b_.getInt16(0), *hot = b_.getFalse();
     for (int k = 0; k < 7; ++k) {
       llvm::Value *is = b_.CreateICmpEQ(v, b_.getInt32(1u << k));
-      code = b_.CreateSelect(is, b_.getInt16(static_cast<uint16_t>(cnc::kModeCode[k])), code);
+      code = b_.CreateSelect(is, b_.getInt16(static_cast<uint16_t>(tp().modeCode[k])), code);
       hot = b_.CreateOr(hot, is);
     }
     llvm::Value *en = b_.CreateAnd(act, hot);
@@ -146,7 +147,7 @@ void FunctionEmitter::emitCncAction(int32_t i, const Action &a, const CncBase &b
     llvm::Value *v = b_.getInt32(0);
     for (int k = 0; k < 7; ++k)
       v = b_.CreateSelect(
-          b_.CreateICmpEQ(code, b_.getInt16(static_cast<uint16_t>(cnc::kModeCode[k]))),
+          b_.CreateICmpEQ(code, b_.getInt16(static_cast<uint16_t>(tp().modeCode[k]))),
           b_.getInt32(1u << k), v);
     writeInt(s.ops[a.srcOp], v, act);
     return;
@@ -225,22 +226,23 @@ void FunctionEmitter::emitCncSpindle(int32_t i, const Action &a, const CncBase &
 
 llvm::Error FunctionEmitter::emitCncBlock(int32_t i) {
   const Stmt &s = prog_.stmts[i];
-  const cnc::CncRow *row = cnc::cncRow(s.op);
+  const cnc::CncRow *row = tp().cncRow(s.op);
+  const CncLayout &lay = tp().cnc;
   if (!row) return fail(i, "no lowering for this instruction");
   const InstrInfo &info = instrInfo(s.op);
 
   // Word base: axis A*80, channel 2560+C*80, or absolute (hnc8-cnc-interface.md 0).
   CncBase base;
   if (row->base == cnc::Base::Channel) {
-    base.word = cnc::kChannelBase + s.ops[row->where].value * cnc::kBlockWords;
+    base.word = lay.channelBase + s.ops[row->where].value * lay.blockWords;
   } else if (row->base == cnc::Base::Axis) {
     if (!cnc::runtimeAxis(*row, s)) {
-      base.word = s.ops[row->where].value * cnc::kBlockWords;
+      base.word = s.ops[row->where].value * lay.blockWords;
     } else {
       llvm::Value *axis = readInt(s.ops[row->where]);
-      base.valid = b_.CreateICmpULT(axis, b_.getInt32(cnc::kAxes), "axis.ok");
+      base.valid = b_.CreateICmpULT(axis, b_.getInt32(lay.axes), "axis.ok");
       base.dyn = b_.CreateMul(b_.CreateSelect(base.valid, axis, b_.getInt32(0)),
-                              b_.getInt32(cnc::kBlockWords));
+                              b_.getInt32(lay.blockWords));
     }
   }
 

@@ -79,8 +79,8 @@ llvm::Value *FunctionEmitter::dataLoadAt(Area a, llvm::Value *index) {
   llvm::Value *addr = b_.CreateInBoundsGEP(base.type, p, b_.CreateZExt(index, b_.getInt64Ty()));
   llvm::Value *v = b_.CreateLoad(base.type, addr);
   if (base.type->getIntegerBitWidth() == 32) return v;
-  return areaInfo(a).isSigned ? b_.CreateSExt(v, b_.getInt32Ty())
-                              : b_.CreateZExt(v, b_.getInt32Ty());
+  return tp().area(a).isSigned ? b_.CreateSExt(v, b_.getInt32Ty())
+                               : b_.CreateZExt(v, b_.getInt32Ty());
 }
 
 void FunctionEmitter::dataStoreAt(Area a, llvm::Value *index, llvm::Value *v) {
@@ -101,7 +101,7 @@ FunctionEmitter::DataRef FunctionEmitter::dataResolve(const Operand &format, con
   r.area = format.value == 1 ? Area::Retained : Area::Param;
   llvm::Value *k = readInt(addr);
   // Unsigned compare: a negative index is out of range too.
-  r.ok = b_.CreateICmpULT(k, b_.getInt32(static_cast<uint32_t>(areaInfo(r.area).count)));
+  r.ok = b_.CreateICmpULT(k, b_.getInt32(static_cast<uint32_t>(tp().area(r.area).count)));
   r.index = b_.CreateSelect(r.ok, k, b_.getInt32(0));
   return r;
 }
@@ -227,7 +227,7 @@ void FunctionEmitter::emitZrst(const Stmt &s) {
   } else {
     // Bits index * width + bit from a to b: partial first/last elements are masked, the whole
     // elements between them are zeroed.
-    const int w = bitWidth(a.area);
+    const int w = tp().bitWidth(a.area);
     auto clearBits = [&](int32_t index, int lo, int hi) {
       uint32_t m = widthMask(hi - lo + 1) << lo;
       Operand e = element(a.area, index);
@@ -302,7 +302,7 @@ void FunctionEmitter::emitAssemDisas(const Stmt &s) {
     // Raw pieces of the source width, the first in the least-significant bits; pieces at or
     // beyond bit 32 are lost (functions-2 2.11).
     const Operand &src = s.ops[0];
-    const int w = bitWidth(src.area);
+    const int w = tp().bitWidth(src.area);
     llvm::Value *acc = b_.getInt32(0);
     for (int32_t k = 0; k < n && k * w < 32; ++k) {
       llvm::Value *raw =
@@ -314,9 +314,9 @@ void FunctionEmitter::emitAssemDisas(const Stmt &s) {
   }
   // DISAS: pieces of the destination width from the raw source, logical shifts, 0 past bit 32.
   const Operand &dst = s.ops[2];
-  const int w = bitWidth(dst.area);
+  const int w = tp().bitWidth(dst.area);
   llvm::Value *raw =
-      b_.CreateAnd(readInt(s.ops[0]), b_.getInt32(widthMask(bitWidth(s.ops[0].area))));
+      b_.CreateAnd(readInt(s.ops[0]), b_.getInt32(widthMask(tp().bitWidth(s.ops[0].area))));
   for (int32_t k = 0; k < n; ++k) {
     llvm::Value *piece = k * w < 32 ? b_.CreateAnd(b_.CreateLShr(raw, static_cast<uint64_t>(k * w)),
                                                    b_.getInt32(widthMask(w)))

@@ -15,8 +15,7 @@ namespace {
 
 /// The target's CNC words (profile): FC[k] / GC[k] = F/G[channelBase + blockWords * ch + k]
 /// (hnc8-cnc-interface.md 1.3, 1.4).
-const CncLayout &kCnc = targetProfile().cnc;
-int32_t chanBase(int32_t ch) { return kCnc.channelBase + kCnc.blockWords * ch; }
+int32_t chanBase(const CncLayout &cnc, int32_t ch) { return cnc.channelBase + cnc.blockWords * ch; }
 
 } // namespace
 
@@ -111,12 +110,13 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const StmtInfo &info = prog_.info[i];
   const Operand *o = s.ops.data();
+  const CncLayout &kCnc = tp().cnc;
   auto k32 = [&](int32_t v) { return b_.getInt32(static_cast<uint32_t>(v)); };
   switch (s.op) {
   case Op::MCodeGet: {
     // out = EN and one of FC[48..55] holds the M code (functions-1 3.1); nothing written.
     llvm::Value *en = enable();
-    int32_t cb = chanBase(o[0].value);
+    int32_t cb = chanBase(kCnc, o[0].value);
     llvm::Value *pending = b_.getFalse();
     for (int k = 0; k < kCnc.mCodeSlots; ++k)
       pending =
@@ -127,7 +127,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   }
   case Op::MCodeAck: {
     llvm::Value *en = enable();
-    int32_t cb = chanBase(o[0].value);
+    int32_t cb = chanBase(kCnc, o[0].value);
     for (int k = 0; k < kCnc.mCodeSlots; ++k) {
       llvm::Value *hit =
           b_.CreateICmpEQ(ncRead(Area::NcStatus, cb + kCnc.mCodeWord + k), k32(o[1].value));
@@ -137,7 +137,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   }
   case Op::TCodeGet: {
     llvm::Value *en = enable();
-    llvm::Value *t = ncRead(Area::NcStatus, chanBase(o[0].value) + kCnc.tCodeWord);
+    llvm::Value *t = ncRead(Area::NcStatus, chanBase(kCnc, o[0].value) + kCnc.tCodeWord);
     llvm::Value *got = b_.CreateAnd(en, b_.CreateICmpNE(t, k32(-1)));
     if (o[1].kind == Operand::Kind::Const) {
       setOutput(b_.CreateAnd(got, b_.CreateICmpEQ(t, k32(o[1].value))));
@@ -148,7 +148,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     return llvm::Error::success();
   }
   case Op::TCodeAck: {
-    int32_t cb = chanBase(o[0].value);
+    int32_t cb = chanBase(kCnc, o[0].value);
     ncWrite(Area::NcControl, cb + kCnc.tCodeWord, ncRead(Area::NcStatus, cb + kCnc.tCodeWord),
             enable());
     return llvm::Error::success();
@@ -171,7 +171,8 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   case Op::PartCount:
   case Op::PartClear: {
     llvm::Value *en = enable();
-    int32_t g = chanBase(o[0].value) + kCnc.partCountWord; // GC[19] part count (functions-2 2.19)
+    int32_t g =
+        chanBase(kCnc, o[0].value) + kCnc.partCountWord; // GC[19] part count (functions-2 2.19)
     llvm::Value *v =
         s.op == Op::PartCount ? b_.CreateAdd(ncRead(Area::NcControl, g), k32(1)) : k32(0);
     ncWrite(Area::NcControl, g, v, en);
@@ -215,7 +216,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
     llvm::Value *code =
         b_.CreateAnd(b_.CreateSelect(c.called, c.ret, v), k32(o[1].value ? 0xFFFF : 0xFF));
     writeInt(o[2], code, en);
-    if (o[1].value && areaInfo(o[2].area).bytes == 1)
+    if (o[1].value && tp().area(o[2].area).bytes == 1)
       ncWrite(o[2].area, o[2].index + 1, b_.CreateLShr(code, 8), en);
     setOutput(en);
     return llvm::Error::success();
@@ -251,7 +252,7 @@ llvm::Error FunctionEmitter::emitNcBlock(int32_t i) {
   }
   case Op::SpindleAnalog: {
     // rpm = FC[10+2sp] (32 bits, low word first); DA -> reference operand and GC[10+2sp].
-    int32_t cb = chanBase(o[0].value), w = cb + 10 + 2 * o[1].value;
+    int32_t cb = chanBase(kCnc, o[0].value), w = cb + 10 + 2 * o[1].value;
     llvm::Value *lo = b_.CreateAnd(ncRead(Area::NcStatus, w), k32(0xFFFF));
     llvm::Value *rpm = b_.CreateOr(lo, b_.CreateShl(ncRead(Area::NcStatus, w + 1), 16));
     NcCall c = ncHostCall(enable(), offsetof(lj_host, spindle_da), true,

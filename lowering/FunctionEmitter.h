@@ -2,11 +2,12 @@
 // time (vectors of i1 SSA values); state fields go through a per-block ImageCache.
 #pragma once
 
+#include "ir/CncTable.h"
+#include "ir/Profile.h"
 #include "ir/Program.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/ImageCache.h"
 #include "lowering/Lower.h"
-#include "profiles/hnc8/CncTable.h"
 
 #include <llvm/Analysis/InstSimplifyFolder.h>
 #include <llvm/IR/Function.h>
@@ -207,6 +208,9 @@ private:
                      llvm::Value *&cond);
   /// SPDLBUS / SPDLBUS1 command words (docs/cnc-blocks.md "Spindle command").
   void emitCncSpindle(int32_t i, const cnc::Action &a, const CncBase &base, llvm::Value *act);
+
+  /// The program's profile (area facts, CNC layout and table, timer units).
+  const TargetProfile &tp() const { return *prog_.profile; }
 
   llvm::Value *notV(llvm::Value *v) { return b_.CreateNot(v); }
   /// `c ? a : b` on i1 values as and/or: FastISel cannot select an i1 `select` and would hand

@@ -33,8 +33,8 @@ bool applyForces(VerifiedProgram &prog, const std::map<int32_t, int8_t> &forces,
   return true;
 }
 
-ProgramLoader::ProgramLoader(std::string engine, int32_t plc2Nvalue)
-    : engine_(std::move(engine)), plc2Nvalue_(plc2Nvalue) {}
+ProgramLoader::ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string dialect)
+    : engine_(std::move(engine)), plc2Nvalue_(plc2Nvalue), dialect_(std::move(dialect)) {}
 
 ProgramLoader::~ProgramLoader() = default;
 
@@ -50,7 +50,7 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
     return nullptr;
   }
   io::ProgramSource src;
-  if (!io::readProgramFile(path, src, error)) return nullptr;
+  if (!io::readProgramFile(path, src, error, dialect_)) return nullptr;
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
   v->hash = src.fileHash;

@@ -30,7 +30,8 @@ class ProgramLoader {
 public:
   /// `engine` is "jit", "interp" or "aot" (the .so is given per load). `plc2Nvalue` < 0 = the
   /// container's, else 200.
-  ProgramLoader(std::string engine, int32_t plc2Nvalue);
+  /// `dialect`: --dialect (formats/Dialects.h), empty = by file name.
+  ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string dialect = {});
   ~ProgramLoader();
 
   /// Read, verify, force and compile `path` (engine "aot": load `so` instead of compiling, and
@@ -51,6 +52,7 @@ private:
   io::TrustedKeys aotTrust_;
   std::string engine_;
   int32_t plc2Nvalue_;
+  std::string dialect_;
   std::mutex mu_;
   std::shared_ptr<jit::Session> session_; // created on first use
   uint64_t nextId_ = 1;

@@ -8,7 +8,7 @@ namespace lj::verifier {
 namespace {
 
 std::string subName(const Context &cx, int32_t sub) {
-  return std::string(1, areaInfo(Area::Subroutine).letter) +
+  return std::string(1, cx.tp.area(Area::Subroutine).letter) +
          std::to_string(cx.prog.subs[static_cast<size_t>(sub)].number);
 }
 
@@ -79,10 +79,10 @@ void checkCallGraph(Context &cx) {
     if (cx.units[u].kind == Unit::Kind::Sub) continue;
     for (const CallSite &e : cx.calls[u]) {
       auto c = static_cast<size_t>(e.callee);
-      if (!recursion && height[c] > cx.opts.maxCallDepth)
+      if (!recursion && height[c] > *cx.opts.maxCallDepth)
         cx.error(cx.stmt(e.stmt).loc, "call nesting depth " + std::to_string(height[c]) +
                                           " exceeds the limit of " +
-                                          std::to_string(cx.opts.maxCallDepth));
+                                          std::to_string(*cx.opts.maxCallDepth));
       if (!reached[c]) {
         reached[c] = true;
         work.push_back(e.callee);

@@ -3,6 +3,8 @@
 // CALL sites (DIALECT.md 2, 3, 6; dialect-notes "Stacks and blocks", "Flow", "Double coils").
 #include "verify/VerifierInternal.h"
 
+#include "ir/StackEffect.h"
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -12,8 +14,8 @@ namespace {
 
 std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
 /// A label as the dialect writes it ("L3").
-std::string label(int32_t n) {
-  return std::string(1, areaInfo(Area::Label).letter) + std::to_string(n);
+std::string label(const Context &cx, int32_t n) {
+  return std::string(1, cx.tp.area(Area::Label).letter) + std::to_string(n);
 }
 
 class UnitChecker {
@@ -78,9 +80,9 @@ private:
     }
     int32_t lbl = it->second;
     if (scope_[rel(lbl)] != scope_[rel(i)]) {
-      cx_.error(s.ops[0].loc, std::string(cx_.spell(Op::Jump)) + " " + label(n) +
+      cx_.error(s.ops[0].loc, std::string(cx_.spell(Op::Jump)) + " " + label(cx_, n) +
                                   " crosses a scope boundary (" + cx_.spell(Op::Label) + " " +
-                                  label(n) + " on " + lineText(cx_.stmt(lbl)) +
+                                  label(cx_, n) + " on " + lineText(cx_.stmt(lbl)) +
                                   " is not in the same loop body)");
       return;
     }
@@ -126,7 +128,8 @@ private:
     cx_.note(first.ops[0].loc, "first write of " + a + " is here");
   }
 
-  void block(int32_t i, const InstrInfo &ii, int32_t &d) {
+  /// Block checks at ST depth `d` (the depth change is ir/StackEffect.h's, applied by stacks()).
+  void block(int32_t i, const InstrInfo &ii, int32_t d) {
     const Stmt &s = cx_.stmt(i);
     StmtInfo &inf = cx_.info(i);
     inf.hasInput = d > 0;
@@ -135,12 +138,10 @@ private:
       if (d < ii.inputs)
         underflow(s, std::string(cx_.spell(ii.op)) + " needs " + std::to_string(ii.inputs) +
                          " inputs on ST, found " + std::to_string(d));
-      d = std::max(d - ii.inputs, 0) + 1;
     } else {
       if (ii.input == InputRule::Required && d == 0)
         cx_.warning(s.loc, std::string(cx_.spell(ii.op)) +
                                ": block needs an input; ST is empty, input is 1");
-      if (ii.output != OutputRule::None && d == 0) d = 1; // output pushed onto an empty ST
     }
     if (s.op == Op::Jump) jump(i);
     if (s.op == Op::Call) call(i);
@@ -153,38 +154,17 @@ private:
   void applyDropped(int32_t i, int32_t &d, int32_t &ms) {
     while (dropIt_ != cx_.dropped.end() && dropIt_->before == i) {
       const InstrInfo &ii = instrInfo((dropIt_++)->op);
-      switch (ii.stack) {
-      case StackRule::Push:
-        ++d;
-        break;
-      case StackRule::Combine:
-      case StackRule::MsRead:
-        d = std::max(d, 1);
-        break;
-      case StackRule::Coil:
-      case StackRule::Structural:
-        break; // structure is not guessed from a broken line
-      case StackRule::BlockPop:
-        d = std::max(d - 1, 1);
-        break;
-      case StackRule::MpsPush:
-        d = std::max(d, 1);
+      // Structure is not guessed from a broken line: a dropped LBL/LOOP/NEXT/marker keeps the
+      // stacks as they are; every other rule moves them as ir/StackEffect.h says.
+      if (ii.stack == StackRule::Structural) continue;
+      const StackEffect e = stackEffect(ii, d);
+      d = e.after(d);
+      if (e.msDelta > 0) {
         ++ms;
         mps_.push_back(-1);
-        break;
-      case StackRule::MsPop:
-        if (ms > 0) {
-          --ms;
-          mps_.pop_back();
-        }
-        d = std::max(d, 1);
-        break;
-      case StackRule::Block:
-        if (ii.inputs > 1)
-          d = std::max(d - ii.inputs, 0) + 1;
-        else if (ii.output != OutputRule::None)
-          d = std::max(d, 1);
-        break;
+      } else if (e.msDelta < 0 && ms > 0) {
+        --ms;
+        mps_.pop_back();
       }
     }
   }
@@ -208,23 +188,21 @@ private:
         cx_.warning(s.loc, "unreachable code");
         dead = false;
       }
+      // The depth after it is ir/StackEffect.h's; the cases check and report.
+      const StackEffect effect = stackEffect(ii, d);
       switch (ii.stack) {
       case StackRule::Push:
-        ++d;
         break;
       case StackRule::Combine:
         if (d < 1) underflow(s, std::string(cx_.spell(ii.op)) + " with an empty ST");
-        d = std::max(d, 1);
         break;
       case StackRule::BlockPop:
         if (d < 2)
           underflow(s, std::string(cx_.spell(ii.op)) + " needs 2 entries on ST, found " +
                            std::to_string(d));
-        d = std::max(d - 1, 1);
         break;
       case StackRule::MpsPush:
         if (d < 1) underflow(s, std::string(cx_.spell(Op::BranchPush)) + " with an empty ST");
-        d = std::max(d, 1);
         ++ms;
         mps_.push_back(i);
         break;
@@ -236,7 +214,6 @@ private:
           --ms;
           mps_.pop_back();
         }
-        d = std::max(d, 1);
         break;
       case StackRule::Coil:
         if (d < 1) underflow(s, std::string(cx_.spell(ii.op)) + " with an empty ST");
@@ -245,7 +222,7 @@ private:
       case StackRule::Structural:
         if (s.op == Op::Label || s.op == Op::LoopBegin || s.op == Op::LoopEnd)
           closeMps(std::string(cx_.spell(s.op)) + " (" + lineText(s) + ")");
-        d = ms = 0;
+        ms = 0;
         break;
       case StackRule::Block: {
         bool uncond = d == 0 || (i > unit_.body.begin && cx_.stmt(i - 1).op == Op::LoadTrue);
@@ -254,6 +231,7 @@ private:
         break;
       }
       }
+      d = effect.after(d);
       cx_.prog.maxDepth = std::max({cx_.prog.maxDepth, inf.depth, d});
       cx_.prog.maxMsDepth = std::max({cx_.prog.maxMsDepth, inf.msDepth, ms});
     }

@@ -11,7 +11,7 @@ void planSlices(Context &cx) {
   const StmtRange r = p.plc2;
   p.slices.clear();
   p.sliceDepth.clear();
-  if (r.empty() || cx.opts.plc2Nvalue <= 0) {
+  if (r.empty() || *cx.opts.plc2Nvalue <= 0) {
     p.slices.push_back(r);
     p.sliceDepth.push_back(0);
     return;
@@ -42,7 +42,7 @@ void planSlices(Context &cx) {
 
   auto boundary = [&](int32_t i) { return rungStart[rel(i)] && cover[rel(i)] == 0; };
 
-  const int64_t n = cx.opts.plc2Nvalue;
+  const int64_t n = *cx.opts.plc2Nvalue;
   int32_t start = r.begin;
   int32_t i = r.begin;
   while (true) {

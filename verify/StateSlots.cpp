@@ -32,11 +32,11 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
   const Stmt &s = cx.stmt(i);
   int32_t n = s.ops[0].value;
   int slot = lj_tc_slot(n);
-  const char letter = areaInfo(area).letter;
+  const char letter = cx.tp.area(area).letter;
   std::string name = std::string(1, letter) + std::to_string(n);
   if (slot < 0) {
     // The number spaces of the profile, e.g. "T0..T127, T300..T427".
-    const TargetProfile &tp = targetProfile();
+    const TargetProfile &tp = cx.tp;
     std::string spaces;
     for (const NumberRange &r : area == Area::Timer ? tp.timerNumbers : tp.counterNumbers)
       spaces += (spaces.empty() ? "" : ", ") + std::string(1, letter) + std::to_string(r.lo) +
@@ -77,9 +77,9 @@ std::string spellAll(const Context &cx, std::span<const Op> ops) {
 void assignSlots(Context &cx) {
   // Edge memory per instruction instance is the one policy the engines implement (HNC-8); a
   // per-object policy (IEC IL) would key the edge slots by address here.
-  if (targetProfile().edgePolicy != EdgePolicy::PerInstance) {
-    cx.error({}, std::string("target ") + targetProfile().name +
-                     ": edge memory per object is not implemented");
+  if (cx.tp.edgePolicy != EdgePolicy::PerInstance) {
+    cx.error({},
+             std::string("target ") + cx.tp.name + ": edge memory per object is not implemented");
     return;
   }
   SlotUsers timers, counters, pls, plf, alt;

@@ -18,14 +18,14 @@ int markerRank(Op op) { return op == Op::EndInit ? 0 : op == Op::EndCyclic ? 1 :
 std::string lineOf(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
 
 /// A subroutine as the dialect writes it ("S7").
-std::string subText(int32_t n) {
-  return std::string(1, areaInfo(Area::Subroutine).letter) + std::to_string(n);
+std::string subText(const Context &cx, int32_t n) {
+  return std::string(1, cx.tp.area(Area::Subroutine).letter) + std::to_string(n);
 }
 
 /// The part markers in the order the profile runs the parts ("IEND, 1END, 2END").
 std::string markerOrder(const Context &cx) {
   std::string out;
-  for (const PartSpec &p : targetProfile().parts)
+  for (const PartSpec &p : cx.tp.parts)
     out += (out.empty() ? "" : ", ") + std::string(cx.spell(p.endMarker));
   return out;
 }
@@ -125,7 +125,7 @@ void planSubs(Context &cx, int32_t mainEnd) {
       if (inSub) {
         const Subroutine &cur = cx.prog.subs.back();
         cx.error(s.loc, "nested " + std::string(cx.spell(Op::SubBegin)) + ": " +
-                            subText(cur.number) + " (" + lineOf(cx.stmt(cur.spIndex)) +
+                            subText(cx, cur.number) + " (" + lineOf(cx.stmt(cur.spIndex)) +
                             ") has no " + cx.spell(Op::SubEnd) + " before it");
         closeSub(cx, i);
       }
@@ -151,7 +151,8 @@ void planSubs(Context &cx, int32_t mainEnd) {
   if (inSub) {
     const Subroutine &cur = cx.prog.subs.back();
     cx.error(cx.stmt(cur.spIndex).loc, std::string(cx.spell(Op::SubBegin)) + " " +
-                                           subText(cur.number) + " has no " + cx.spell(Op::SubEnd));
+                                           subText(cx, cur.number) + " has no " +
+                                           cx.spell(Op::SubEnd));
     closeSub(cx, n);
   }
 }
@@ -173,24 +174,30 @@ void planStructure(Context &cx) {
 
 } // namespace verifier
 
-std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyOptions &opts,
+std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyOptions &given,
                                       Diagnostics &diags) {
+  if (!parsed.profile) {
+    diags.error({}, "the program names no target profile (its front end must set one)");
+    return std::nullopt;
+  }
+  const VerifyOptions opts = given.resolved(*parsed.profile);
   VerifiedProgram prog;
   prog.file = parsed.file;
   prog.dialect = parsed.dialect;
+  prog.profile = parsed.profile;
   prog.stmts = parsed.stmts;
   prog.info.assign(prog.stmts.size(), StmtInfo{});
   prog.subByNumber.fill(-1);
-  prog.plc2Nvalue = opts.plc2Nvalue;
+  prog.plc2Nvalue = *opts.plc2Nvalue;
   int errorsBefore = diags.errorCount();
 
   verifier::Context cx(opts, diags, prog);
   cx.dropped = parsed.dropped;
-  if (prog.stmts.size() > static_cast<size_t>(std::max(opts.maxStatements, 0))) {
-    const Stmt &over = prog.stmts[static_cast<size_t>(std::max(opts.maxStatements, 0))];
+  if (prog.stmts.size() > static_cast<size_t>(std::max(*opts.maxStatements, 0))) {
+    const Stmt &over = prog.stmts[static_cast<size_t>(std::max(*opts.maxStatements, 0))];
     cx.error(over.loc, "program has " + std::to_string(prog.stmts.size()) +
                            " statements, more than the limit of " +
-                           std::to_string(opts.maxStatements));
+                           std::to_string(*opts.maxStatements));
   }
   verifier::planStructure(cx);
   cx.calls.resize(cx.units.size());

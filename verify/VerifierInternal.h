@@ -26,10 +26,11 @@ struct CallSite {
 /// Everything the passes share while verifying one program.
 struct Context {
   Context(const VerifyOptions &o, Diagnostics &d, VerifiedProgram &p)
-      : opts(o), diags(d), prog(p) {}
-  const VerifyOptions &opts;
+      : opts(o), diags(d), prog(p), tp(*p.profile) {}
+  const VerifyOptions &opts; ///< every limit set (verify() fills the unset ones from `tp`)
   Diagnostics &diags;
   VerifiedProgram &prog;
+  const TargetProfile &tp; ///< the program's profile (area facts, number spaces, parts)
   std::vector<Unit> units;
   /// CALL sites per unit (parallel to units).
   std::vector<std::vector<CallSite>> calls;

@@ -9,12 +9,18 @@
 
 namespace lj {
 
-/// Options the verifier plans with; the defaults are the target profile's.
+/// Options the verifier plans with; an unset one is the program's profile's
+/// (TargetProfile::defaultSliceStatements, maxStatements, maxCallDepth).
 struct VerifyOptions {
-  /// PLC2 statements per tick (0 = one slice)
-  int32_t plc2Nvalue = targetProfile().defaultSliceStatements;
-  int32_t maxStatements = targetProfile().maxStatements; ///< program size limit (DIALECT.md 6)
-  int32_t maxCallDepth = targetProfile().maxCallDepth;   ///< nesting of CALL
+  std::optional<int32_t> plc2Nvalue;    ///< PLC2 statements per tick (0 = one slice)
+  std::optional<int32_t> maxStatements; ///< program size limit (DIALECT.md 6)
+  std::optional<int32_t> maxCallDepth;  ///< nesting of CALL
+
+  /// These options with every unset limit taken from `tp`.
+  VerifyOptions resolved(const TargetProfile &tp) const {
+    return {plc2Nvalue.value_or(tp.defaultSliceStatements),
+            maxStatements.value_or(tp.maxStatements), maxCallDepth.value_or(tp.maxCallDepth)};
+  }
 };
 
 /// Check every rule of DIALECT.md 6 and compute stack depths, scopes, jump/call targets, state

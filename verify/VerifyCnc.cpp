@@ -9,14 +9,14 @@ namespace lj::verifier {
 
 namespace {
 
-std::string addr(Area a, int64_t index) {
-  return std::string(1, areaInfo(a).letter) + std::to_string(index);
+std::string addr(const Context &cx, Area a, int64_t index) {
+  return std::string(1, cx.tp.area(a).letter) + std::to_string(index);
 }
 
 std::string range(const ValueRange &r) {
   return std::to_string(r.lo) + ".." + std::to_string(r.hi);
 }
-std::string lastOf(Area a) { return addr(a, areaInfo(a).count - 1); }
+std::string lastOf(const Context &cx, Area a) { return addr(cx, a, cx.tp.area(a).count - 1); }
 
 void checkStmt(Context &cx, const Stmt &s) {
   const std::string mn = cx.spell(s.op);
@@ -34,21 +34,22 @@ void checkStmt(Context &cx, const Stmt &s) {
     // 32 user outputs go to four consecutive bytes from the start operand.
     const Operand &o = s.ops[2];
     const int64_t last = int64_t{o.index} + instrInfo(s.op).operands[2].span - 1;
-    if (!validIndex(o.area, last))
-      cx.error(o.loc, mn + " output bytes " + addr(o.area, o.index) + ".." + addr(o.area, last) +
-                          " run past the end of " + areaInfo(o.area).letter + " (" +
-                          addr(o.area, 0) + ".." + lastOf(o.area) + ")");
+    if (!cx.tp.validIndex(o.area, last))
+      cx.error(o.loc, mn + " output bytes " + addr(cx, o.area, o.index) + ".." +
+                          addr(cx, o.area, last) + " run past the end of " +
+                          cx.tp.area(o.area).letter + " (" + addr(cx, o.area, 0) + ".." +
+                          lastOf(cx, o.area) + ")");
     break;
   }
   case Op::BusSpindleGeared: {
     // Gear g uses P[base + 5(g-1) .. + 4]; at least gear 1's block must exist.
     const Operand &p = s.ops[3];
     const int64_t last = int64_t{p.index} + instrInfo(s.op).operands[3].span - 1;
-    if (!validIndex(Area::Param, last))
-      cx.error(p.loc, mn + " parameter block " + addr(Area::Param, p.index) + ".." +
-                          addr(Area::Param, last) + " runs past the end of " +
-                          areaInfo(Area::Param).letter + " (" + addr(Area::Param, 0) + ".." +
-                          lastOf(Area::Param) + ")");
+    if (!cx.tp.validIndex(Area::Param, last))
+      cx.error(p.loc, mn + " parameter block " + addr(cx, Area::Param, p.index) + ".." +
+                          addr(cx, Area::Param, last) + " runs past the end of " +
+                          cx.tp.area(Area::Param).letter + " (" + addr(cx, Area::Param, 0) + ".." +
+                          lastOf(cx, Area::Param) + ")");
     break;
   }
   case Op::ChannelModeSet: {

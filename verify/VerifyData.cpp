@@ -9,12 +9,12 @@ namespace lj::verifier {
 
 namespace {
 
-std::string addr(Area a, int64_t index) {
-  return std::string(1, areaInfo(a).letter) + std::to_string(index);
+std::string addr(const Context &cx, Area a, int64_t index) {
+  return std::string(1, cx.tp.area(a).letter) + std::to_string(index);
 }
 
-std::string addr(const Operand &o) {
-  std::string s = addr(o.area, o.index);
+std::string addr(const Context &cx, const Operand &o) {
+  std::string s = addr(cx, o.area, o.index);
   if (o.kind == Operand::Kind::Bit) {
     s += '.';
     s += std::to_string(o.bit);
@@ -25,11 +25,11 @@ std::string addr(const Operand &o) {
 /// `count` elements from register operand `start` must exist in its area.
 void checkRange(Context &cx, const Stmt &s, const Operand &start, int64_t count, const char *what) {
   const int64_t last = int64_t{start.index} + count - 1;
-  if (validIndex(start.area, last)) return;
-  cx.error(start.loc, std::string(cx.spell(s.op)) + " " + what + " " + addr(start) + ".." +
-                          addr(start.area, last) + " runs past the end of " +
-                          areaInfo(start.area).letter + " (" + addr(start.area, 0) + ".." +
-                          addr(start.area, areaInfo(start.area).count - 1) + ")");
+  if (cx.tp.validIndex(start.area, last)) return;
+  cx.error(start.loc, std::string(cx.spell(s.op)) + " " + what + " " + addr(cx, start) + ".." +
+                          addr(cx, start.area, last) + " runs past the end of " +
+                          cx.tp.area(start.area).letter + " (" + addr(cx, start.area, 0) + ".." +
+                          addr(cx, start.area, cx.tp.area(start.area).count - 1) + ")");
 }
 
 /// FMOV / ZRST: start and end in the same form and area, start <= end (bits: index*width+bit).
@@ -37,19 +37,21 @@ void checkZone(Context &cx, const Stmt &s) {
   const Operand &a = s.ops[0], &b = s.ops[1];
   const std::string mn = cx.spell(s.op);
   if (a.kind != b.kind) {
-    cx.error(b.loc, mn + " start " + addr(a) + " and end " + addr(b) +
+    cx.error(b.loc, mn + " start " + addr(cx, a) + " and end " + addr(cx, b) +
                         " must both be registers or both be bit addresses");
     return;
   }
   if (a.area != b.area) {
-    cx.error(b.loc, mn + " start " + addr(a) + " and end " + addr(b) + " are in different areas");
+    cx.error(b.loc,
+             mn + " start " + addr(cx, a) + " and end " + addr(cx, b) + " are in different areas");
     return;
   }
-  const int w = bitWidth(a.area);
+  const int w = cx.tp.bitWidth(a.area);
   auto pos = [w](const Operand &o) {
     return o.kind == Operand::Kind::Bit ? int64_t{o.index} * w + o.bit : int64_t{o.index};
   };
-  if (pos(b) < pos(a)) cx.error(b.loc, mn + " end " + addr(b) + " comes before start " + addr(a));
+  if (pos(b) < pos(a))
+    cx.error(b.loc, mn + " end " + addr(cx, b) + " comes before start " + addr(cx, a));
 }
 
 } // namespace

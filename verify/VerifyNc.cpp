@@ -13,7 +13,7 @@ namespace {
 void mustFit(Context &cx, const Stmt &s, int k, int32_t count, const char *what) {
   const Operand &op = s.ops[k];
   if (op.kind != Operand::Kind::Reg || count <= 0) return;
-  const AreaInfo &a = areaInfo(op.area);
+  const AreaInfo &a = cx.tp.area(op.area);
   int64_t last = int64_t{op.index} + count - 1;
   if (last < a.count) return;
   std::string l(1, a.letter);
@@ -43,7 +43,7 @@ void checkNc(Context &cx) {
     case Op::PanelDisplay:
       // Width 1 into a byte area writes two bytes; W/D/B elements hold both.
       if (s.ops[1].kind == Operand::Kind::Const && s.ops[1].value == 1 &&
-          s.ops[2].kind == Operand::Kind::Reg && areaInfo(s.ops[2].area).bytes == 1)
+          s.ops[2].kind == Operand::Kind::Reg && cx.tp.area(s.ops[2].area).bytes == 1)
         mustFit(cx, s, 2, spanOf(s, 2), "two-byte display");
       break;
     default:

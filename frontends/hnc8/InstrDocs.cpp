@@ -2,6 +2,7 @@
 // the renderer of docs/instructions.md: operands, roles, kinds and areas come from the table.
 #include "frontends/hnc8/InstrDocs.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <sstream>
 
@@ -262,215 +263,215 @@ constexpr InstrDoc kDocs[] = {
     {Op::SaveRetained, "Asks the host to save the retentive data on the rising edge of the input.",
      "LD X30.4\nSAVEDATA", "Host call save_data() once per press."},
     {Op::ChannelModeSet,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[60].0-6 := the one-hot mode, GC[0].0-3 := its code.",
      "LD X36.0\nMDST 0 R0", "R0 = 4 requests manual mode in channel 0."},
     {Op::ChannelModeGet,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): destination := one-hot of the mode code FC[0].0-3.",
      "LDT\nMDGT 0 R1", "R1 = 4 while channel 0 reports manual mode."},
     {Op::MdiMode,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].0-3 := 8 (MDI).",
      "LD X36.4\nMDI 0", "Channel 0 requests MDI mode while X36.4 = 1."},
     {Op::MstLock,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[2].11 := ACT (M/S/T lock).",
      "LD X36.4\nMST 0", "G2562.11 = X36.4."},
     {Op::CycleStart,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].5 := ACT (cycle start).",
      "LD X36.4\nCYCLE 0", "G2560.5 = X36.4."},
     {Op::EmergencyStop,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].11 := ACT (emergency stop).",
      "LD X1.2\nSTOP 0", "G2560.11 = X1.2."},
     {Op::ChannelReset,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].13 := ACT (reset).",
      "LD X2.4\nRESET 0", "G2560.13 = X2.4."},
     {Op::ChannelSwitch,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): G2970 := channel while ACT (active channel).",
      "LD X36.4\nCHANSW 0", "G2970 = 0 while X36.4 = 1."},
     {Op::FeedHold,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].4 := ACT (feed hold).",
      "LD X36.4\nHOLD 0", "G2560.4 = X36.4."},
     {Op::CycleStartLamp,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FC[0].5 (cycle running).",
      "LDT\nCYCLED 0\nOUT Y36.4", "Y36.4 lights while channel 0 runs."},
     {Op::FeedHoldLamp,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FC[0].4 (feed hold active).",
      "LDT\nHOLDLED 0\nOUT Y36.5", "Y36.5 lights while channel 0 holds."},
     {Op::SkipG31,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[22] := the G31 number and GC[0].7 := 1 while ACT.",
      "LDP X31.4\nESCBLK 0 1", "G2582 = 1, G2560.7 = 1 for one scan per press."},
     {Op::RapidOverride,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[5] := override while ACT.",
      "LDT\nRPOVRD 0 R7", "G2565 = R7."},
     {Op::FeedOverride,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[4] := override while ACT.",
      "LDT\nFEEDOVRD 0 R7", "G2564 = R7."},
     {Op::SpindleOverride,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[6 + spindle] := override while ACT.",
      "LDT\nSPDLOVRD 0 0 R7", "G2566 = R7."},
     {Op::StepMultiplier,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): axis increment multiplier GA[8] := value while ACT.",
      "LDT\nSTEPMUL 0 R7", "G8 = R7."},
     {Op::DryRun,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].6 := ACT (dry run).",
      "LD Y32.2\nDRYRUN 2", "G2720.6 = Y32.2."},
     {Op::BlockSkip,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[1].2 := ACT (block skip).",
      "LD Y32.2\nSKIP 2", "G2721.2 = Y32.2."},
     {Op::UserInput,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): user input bit GC[24..25].bit := ACT.",
      "LD X5.1\nUSERIN 0 0 3", "G2584.3 = X5.1."},
     {Op::UserOutput,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): four bytes from the start := the 32 user outputs FC[44..45].",
      "LDT\nUSEROUT 0 0 Y40", "Y40..Y43 = F2604..F2605."},
     {Op::OptionalStop,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[1].3 := ACT (optional stop M01).",
      "LD X5.2\nSELSTOP 0", "G2561.3 = X5.2."},
     {Op::SpindleJog,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): spindle jog forward / reverse bits and jog words of the spindle axis.",
      "LD X31.4\nSPDLJOG 0 X32.4", "Spindle 0 turns forward while X31.4 and X32.4 are on."},
     {Op::BusSpindle,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): commanded S of FC[10+2sp] scaled by the override GC[6+sp] into "
      "GC[10+2sp], S acknowledged.",
      "LD X31.4\nSPDLBUS 0 1", "Channel 0 spindle 1 follows its S command."},
     {Op::BusSpindleGeared,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): as SPDLBUS, scaled by the gear's 5-word P block (P[k + 5(gear-1)..]).",
      "LD X31.4\nSPDLBUS1 0 1 R1 P2", "Channel 0 spindle 1 with gear R1 and parameters from P2."},
     {Op::SpindleOrient,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[2].12 := ACT (orient).",
      "LD X6.0\nSPDLORI 0", "G2.12 = X6.0."},
     {Op::SpindleOrientDone,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[3].8 (orientation done).",
      "LDT\nSPDLOROK 0\nOUT R10.1", "R10.1 = 1 once axis 0 is oriented."},
     {Op::SpindleZeroSpeed,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[2].15 (zero speed).",
      "LDT\nSPDLZERO 1\nOUT Y2.0", "Y2.0 = 1 while spindle axis 1 stands still."},
     {Op::SpindleSpeedReached,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[2].14 (speed reached).",
      "LDT\nSPDLRCH 1\nOUT Y2.0", "Y2.0 = 1 once spindle axis 1 is at speed."},
     {Op::SlaveRelease,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].11 := ACT (release the slave axis).",
      "LD X6.1\nDESYN 0", "G0.11 = X6.1."},
     {Op::AxisJog,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[4] := +1 / -1 by the direction bit (1 = +) while ACT, else 0.",
      "LD X6.2\nJOGSW 0 X6.3", "Axis 0 jogs + while X6.2 and X6.3 are on."},
     {Op::AxisStep,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[5] step by the direction bit (0 = +) while ACT.",
      "LD X6.2\nSTEPAXIS 0 X6.3", "Axis 0 steps while X6.2 is on."},
     {Op::JogSpeed,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): jog speed GA[6..7] := speed while ACT.",
      "LD X6.4\nJOGVEL 0 R8", "G6..G7 = R8."},
     {Op::HomingStart,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].4 := ACT (homing start).",
      "LD X7.0\nHOMRUN 0", "G0.4 = X7.0."},
     {Op::HomingStartDir,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].4 := ACT with the homing direction bit.",
      "LD X7.0\nHOMERUN1 0 X7.1", "Axis 0 homes in the direction of X7.1."},
     {Op::HomeDog,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].5 := ACT (home dog).",
      "LD X7.2\nHOMESW 0", "G0.5 = X7.2."},
     {Op::HomingDoneLamp,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[0].4 (homing done).",
      "LDT\nHOMLED 0\nOUT Y2.0", "Y2.0 = 1 once axis 0 is homed."},
     {Op::AxisEnable,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].7 := ACT (axis enable).",
      "LD X7.3\nAXEN 0", "G0.7 = X7.3."},
     {Op::AxisReady,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): pushes FA[2].8 (axis ready, bus) like a contact.",
      "AXRDY 0\nOUT Y2.0", "Y2.0 = axis 0 ready."},
     {Op::AxisLock,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].6 := ACT (axis lock).",
      "LD X7.4\nAXISLOCK 0", "G0.6 = X7.4."},
     {Op::AxisMoveRelative,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[52..55] := distance (0.001 units) and GA[1].1 := ACT (relative "
      "move).",
      "LDP X7.5\nAXISMOVE 4 D10", "Axis 4 moves by D10 / 1000."},
     {Op::AxisMoveAbsolute,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[48..51] := position and GA[1].0 := ACT (absolute move).",
      "LDP X7.6\nAXISMVTO 4 D11", "Axis 4 moves to D11 / 1000."},
     {Op::SecondSoftLimit,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[1].2 := ACT (second soft limit).",
      "LD X7.7\nAXLMF2 0", "G1.2 = X7.7."},
     {Op::PositiveLimitDog,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].0 := ACT (positive limit dog).",
      "LD X8.0\nAXISPLMT 0", "G0.0 = X8.0."},
     {Op::NegativeLimitDog,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[0].1 := ACT (negative limit dog).",
      "LD X8.1\nAXISNLMT 0", "G0.1 = X8.1."},
     {Op::ServoEnable,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[3].0 := ACT (servo enable).",
      "LD X8.2\nSVSW 0", "G3.0 = X8.2."},
     {Op::AxisControlMode,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GA[2].9-11 := the mode while ACT.",
      "LD X8.3\nAXISMODE 0 1", "Axis 0 in mode 1."},
     {Op::ReferencePoint,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[0].(8 + n - 1) (reference point n reached; n = 5 "
      "has no bit).",
      "LDT\nREFPT 0 2\nOUT Y2.0", "Y2.0 = 1 at reference point 2."},
     {Op::AxisHoming,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[0].2 (homing in progress).",
      "LDT\nAXISHOM2 0\nOUT Y2.0", "Y2.0 = 1 while axis 0 homes."},
     {Op::AxisMoving,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FA[0].0 (axis moving).",
      "LDT\nAXMOVING 0\nOUT Y2.0", "Y2.0 = 1 while axis 0 moves."},
     {Op::Alarm,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): alarm n: G3010 + (n-1)/16 bit (n-1)%16 := ACT; prompt n (501..884): "
      "G3056 + (n-501)/16.",
      "LD X3.4\nALARM 3", "G3010.2 = X3.4 (alarm 3)."},
     {Op::ResetRequested,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): output := ACT and FC[0].12 (reset requested, held until acknowledged).",
      "LDT\nRSTCHK 0\nOUT R5.0", "R5.0 = 1 while the NC waits for the PLC's reset."},
     {Op::ResetClear,
-     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in instructions/CncTable.cpp, see "
+     "F/G words (hnc8-cnc-interface.md 4; the mapping lives in profiles/hnc8/CncTable.cpp, see "
      "docs/cnc-blocks.md): GC[0].9 := ACT (PLC reset done).",
      "LD X30.5\nRSTCLR 0", "G2560.9 = X30.5; the NC then clears FC[0].12."},
 };
@@ -490,7 +491,7 @@ std::string areaList(AreaMask m) {
   for (int a = 0; a < kAreaCount; ++a) {
     if (!hasArea(m, static_cast<Area>(a))) continue;
     if (!s.empty()) s += ' ';
-    s += areaInfo(static_cast<Area>(a)).letter;
+    s += hnc8::profile().area(static_cast<Area>(a)).letter;
   }
   return s;
 }
@@ -626,8 +627,8 @@ std::span<const InstrDoc> instrDocs() { return {kDocs, static_cast<size_t>(kOpCo
 
 std::string renderInstructionReference() {
   std::ostringstream o;
-  o << "<!-- Generated by tools/gen-instr-doc from instructions/InstrTable.cpp and "
-       "instructions/InstrDocs.cpp; do not edit. -->\n"
+  o << "<!-- Generated by tools/gen-instr-doc from ir/OpTable.cpp (the table), "
+       "frontends/hnc8/Mnemonics.cpp and frontends/hnc8/InstrDocs.cpp; do not edit. -->\n"
     << "# Instruction reference\n\n"
     << "One entry per mnemonic of the HNC-8 manual (" << kOpCount
     << " instructions plus the aliases `WRT`, `END1`, `END2`), generated from the instruction "

@@ -3,6 +3,7 @@
 // bad lines become located diagnostics and are dropped, parsing always continues.
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <algorithm>
 #include <climits>
@@ -51,7 +52,7 @@ std::string areaList(AreaMask m) {
   for (int a = 0; a < kAreaCount; ++a) {
     if (!hasArea(m, static_cast<Area>(a))) continue;
     if (n > 0) out += (n == total - 1) ? " or " : ", ";
-    out += areaInfo(static_cast<Area>(a)).letter;
+    out += hnc8::profile().area(static_cast<Area>(a)).letter;
     ++n;
   }
   return out;
@@ -59,10 +60,10 @@ std::string areaList(AreaMask m) {
 
 /// "X0..X512", or the two ranges of T/C.
 std::string indexRange(Area a) {
-  std::string l(1, areaInfo(a).letter);
+  std::string l(1, hnc8::profile().area(a).letter);
   if (a == Area::Timer || a == Area::Counter)
     return l + "0.." + l + "127, " + l + "300.." + l + "427";
-  return l + "0.." + l + std::to_string(areaInfo(a).count - 1);
+  return l + "0.." + l + std::to_string(hnc8::profile().area(a).count - 1);
 }
 
 /// Syntactic shape of one operand token, before it is checked against an OperandSpec.
@@ -157,7 +158,7 @@ private:
 
   bool lexAddress(const Token &t, RawOperand &raw) {
     std::string_view s = t.text;
-    std::optional<Area> area = areaFromLetter(s[0]);
+    std::optional<Area> area = hnc8::profile().areaFromLetter(s[0]);
     if (!area) {
       error(t, "unknown area letter " + quote(s.substr(0, 1)) + " in " + quote(s));
       return false;
@@ -221,7 +222,7 @@ private:
   }
 
   static std::string addrText(const RawOperand &r) {
-    std::string s(1, areaInfo(r.area).letter);
+    std::string s(1, hnc8::profile().area(r.area).letter);
     s += std::to_string(r.index);
     if (r.bit >= 0) {
       s += '.'; // appended separately: GCC 12 -O3 warns (-Wrestrict) on "." + std::string
@@ -233,17 +234,18 @@ private:
   /// Area allowed and writable where needed; reports and returns false otherwise.
   bool checkArea(const InstrInfo &info, const OperandSpec &spec, const Token &t,
                  const RawOperand &r) {
-    if (spec.writes && !areaInfo(r.area).writable) {
+    if (spec.writes && !hnc8::profile().area(r.area).writable) {
       error(t, addrText(r) + " is read-only; " + hnc8::mnemonicOf(info.op) + " cannot write its " +
                    spec.role + " (writable: " + areaList(spec.areas) + ")");
       return false;
     }
     if (!hasArea(spec.areas, r.area)) {
-      error(t, std::string("area ") + areaInfo(r.area).letter + " is not allowed as " + spec.role +
-                   " of " + hnc8::mnemonicOf(info.op) + " (allowed: " + areaList(spec.areas) + ")");
+      error(t, std::string("area ") + hnc8::profile().area(r.area).letter + " is not allowed as " +
+                   spec.role + " of " + hnc8::mnemonicOf(info.op) +
+                   " (allowed: " + areaList(spec.areas) + ")");
       return false;
     }
-    if (!validIndex(r.area, r.index)) {
+    if (!hnc8::profile().validIndex(r.area, r.index)) {
       error(t, "address " + quote(t.text) + " out of range (" + indexRange(r.area) + ")");
       return false;
     }
@@ -272,13 +274,14 @@ private:
         return false;
       }
       if (!checkArea(info, spec, t, r)) return false;
-      if (r.bit >= bitWidth(r.area)) {
-        std::string l(1, areaInfo(r.area).letter);
+      if (r.bit >= hnc8::profile().bitWidth(r.area)) {
+        std::string l(1, hnc8::profile().area(r.area).letter);
         error(t,
               "bit number " + std::to_string(r.bit) + " out of range in " + quote(t.text) + " (" +
                   l +
-                  (bitWidth(r.area) == 1 ? std::string(" has only bit .0")
-                                         : " has bits 0.." + std::to_string(bitWidth(r.area) - 1)) +
+                  (hnc8::profile().bitWidth(r.area) == 1
+                       ? std::string(" has only bit .0")
+                       : " has bits 0.." + std::to_string(hnc8::profile().bitWidth(r.area) - 1)) +
                   ")");
         return false;
       }
@@ -370,9 +373,11 @@ std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::strin
 std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
                                                const VerifyOptions &opts, Diagnostics &diags,
                                                const SymbolTable *symbols) {
-  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols, opts.maxStatements);
+  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols,
+                                  opts.maxStatements.value_or(hnc8::profile().maxStatements));
   // A program cut short at the statement limit is not verified (its end would look missing).
-  if (parsed.stmts.size() > static_cast<size_t>(std::max(opts.maxStatements, 0)))
+  if (parsed.stmts.size() >
+      static_cast<size_t>(std::max(opts.maxStatements.value_or(hnc8::profile().maxStatements), 0)))
     return std::nullopt;
   std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
   if (diags.hasErrors()) return std::nullopt;
@@ -389,6 +394,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
   ParsedProgram prog;
   prog.file = std::move(file);
   prog.dialect = &hnc8::dialectText();
+  prog.profile = &hnc8::profile();
   // A UTF-8 byte-order mark from a Windows editor is not part of the first statement.
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   if (symbols) prog.symbols = symbols->symbols();

@@ -2,6 +2,7 @@
 // subroutines and PLC2 slices, then one line per statement with the verifier's facts.
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cstdio>
 
@@ -14,9 +15,10 @@ std::string formatOperand(const Operand &op) {
   case Operand::Kind::Const:
     return std::to_string(op.value);
   case Operand::Kind::Reg:
-    return areaInfo(op.area).letter + std::to_string(op.index);
+    return hnc8::profile().area(op.area).letter + std::to_string(op.index);
   case Operand::Kind::Bit:
-    return areaInfo(op.area).letter + std::to_string(op.index) + "." + std::to_string(op.bit);
+    return hnc8::profile().area(op.area).letter + std::to_string(op.index) + "." +
+           std::to_string(op.bit);
   }
   return "";
 }

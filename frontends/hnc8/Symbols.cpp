@@ -1,6 +1,7 @@
 // Symbol names and their addresses: name syntax, address validation and case-insensitive lookup
 // (docs/plc-dit.md "Symbols").
 #include "frontends/hnc8/Symbols.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include "ir/Area.h"
 #include "ir/Diagnostics.h"
@@ -34,7 +35,7 @@ bool SymbolTable::isNameShaped(std::string_view t) {
 }
 
 std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error) {
-  std::optional<Area> area = t.empty() ? std::nullopt : areaFromLetter(t[0]);
+  std::optional<Area> area = t.empty() ? std::nullopt : hnc8::profile().areaFromLetter(t[0]);
   if (!area) {
     error = "bad address " + quote(t) +
             ": expected an area letter (X Y F G R W D B P T C L S), "
@@ -63,12 +64,12 @@ std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error
     error = "bad address " + quote(t) + ": expected an area letter, a number and an optional .bit";
     return {};
   }
-  char letter = areaInfo(*area).letter;
-  if (!validIndex(*area, index)) {
+  char letter = hnc8::profile().area(*area).letter;
+  if (!hnc8::profile().validIndex(*area, index)) {
     error = "address " + quote(t) + " out of range for area " + std::string(1, letter);
     return {};
   }
-  if (bit >= 0 && bit >= bitWidth(*area)) {
+  if (bit >= 0 && bit >= hnc8::profile().bitWidth(*area)) {
     error = "bit number out of range in address " + quote(t);
     return {};
   }

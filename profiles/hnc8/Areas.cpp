@@ -1,12 +1,13 @@
 // The HNC-8 target profile (DIALECT.md 1, 2, 4, 6; hnc8-cnc-interface.md 0-1), checked against the
 // process image of runtime_abi/include/ladderjit/abi.h: every area's count, width and offset.
-#include "ir/Profile.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include "profiles/hnc8/CncTable.h"
 
 #include "ladderjit/abi.h"
 
 #include <cstddef>
+#include <iterator>
 
 namespace lj {
 
@@ -59,6 +60,8 @@ constexpr TargetProfile kHnc8{
     EdgePolicy::PerInstance,
     {80, 2560, 32, 4, 48, 8, 56, 19},
     kHostServices,
+    cnc::kRows,
+    {1, 7, 2, 3, 5, 4, 6},
 };
 
 #undef LJ_AREA
@@ -85,37 +88,16 @@ static_assert(kHnc8.cnc.blockWords == cnc::kBlockWords &&
                   kHnc8.cnc.channelBase == cnc::kChannelBase && kHnc8.cnc.axes == cnc::kAxes,
               "the CNC table and the profile use one layout");
 
-const AreaInfo &info(Area a) { return kHnc8.areas[static_cast<int>(a)]; }
+static_assert(std::size(cnc::kModeCode) == kHnc8.modeCode.size());
+constexpr bool modeCodesAgree() {
+  for (size_t i = 0; i < kHnc8.modeCode.size(); ++i)
+    if (kHnc8.modeCode[i] != cnc::kModeCode[i]) return false;
+  return true;
+}
+static_assert(modeCodesAgree(), "the CNC table and the profile use one mode code list");
 
 } // namespace
 
-const TargetProfile &targetProfile() { return kHnc8; }
-
-const AreaInfo &areaInfo(Area a) { return info(a); }
-
-std::optional<Area> areaFromLetter(char c) {
-  if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  for (int i = 0; i < kAreaCount; ++i)
-    if (kHnc8.areas[i].letter == c) return static_cast<Area>(i);
-  return std::nullopt;
-}
-
-bool validIndex(Area a, int64_t n) {
-  if (n < 0) return false;
-  if (a == Area::Timer || a == Area::Counter) {
-    const auto &spaces = a == Area::Timer ? kHnc8.timerNumbers : kHnc8.counterNumbers;
-    for (const NumberRange &r : spaces)
-      if (r.contains(n)) return true;
-    return false;
-  }
-  return n < info(a).count;
-}
-
-int bitWidth(Area a) {
-  if (a == Area::Timer || a == Area::Counter) return 1;
-  return info(a).bytes * 8;
-}
-
-uint32_t stateOffset(Area a) { return info(a).offset; }
+const TargetProfile &hnc8::profile() { return kHnc8; }
 
 } // namespace lj

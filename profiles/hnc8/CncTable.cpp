@@ -111,7 +111,9 @@ constexpr Action kNone{Do::Status, 0};
 #define ROW1(op, base, where, doc, a0, text) ROW(op, base, where, doc, 1, a0, kNone, kNone, text)
 
 // clang-format off
-constexpr CncRow kRows[] = {
+} // namespace
+
+constexpr CncRow kRows[kRowCount] = {
     // ---- 6.1 NC functions (channel C = operand 0 unless noted) ----
     ROW1(ChannelModeSet, Channel, 0, false,
          modeSet(0, 60, 1),
@@ -192,6 +194,8 @@ constexpr CncRow kRows[] = {
 #undef ROW
 #undef ROW1
 
+namespace {
+
 constexpr bool rowsComplete() {
   // One row per Cnc-family Op, in Op order.
   int n = 0;
@@ -203,8 +207,6 @@ constexpr bool rowsComplete() {
 }
 static_assert(rowsComplete(), "one CNC row per family-Cnc Op, in Op order");
 
-int32_t constOf(const Stmt &s, int8_t op) { return op >= 0 ? s.ops[op].value : 0; }
-
 } // namespace
 
 const CncRow *cncRow(Op op) {
@@ -213,32 +215,5 @@ const CncRow *cncRow(Op op) {
 }
 
 std::span<const CncRow> cncTable() { return kRows; }
-
-Resolved resolve(const Action &a, const Stmt &s) {
-  Resolved r;
-  int32_t word = a.word + constOf(s, a.wordOp);
-  int32_t index = a.bit, auxIndex = a.auxBit;
-  if (a.bitOp >= 0) {
-    int32_t v = constOf(s, a.bitOp);
-    if (v < a.lo || v > a.hi) {
-      r.applies = false;
-      return r;
-    }
-    index += v - a.lo;
-    auxIndex += v - a.lo;
-  }
-  r.word = word + index / 16;
-  r.bit = index % 16;
-  r.auxWord = a.aux + auxIndex / 16;
-  r.auxBit = auxIndex % 16;
-  r.aux2Word = a.aux2;
-  if (a.spOp >= 0) {
-    int32_t sp = constOf(s, a.spOp);
-    r.word = a.word + 2 * sp;
-    r.auxWord = a.aux + 2 * sp;
-    r.aux2Word = a.aux2 + sp;
-  }
-  return r;
-}
 
 } // namespace lj::cnc

@@ -1,5 +1,6 @@
 // Test-side address parsing and state access (DIALECT.md 1 widths, CLI.md address forms).
 #include "tests/support/TestAddress.h"
+#include "profiles/hnc8/Hnc8Profile.h"
 
 #include <gtest/gtest.h>
 
@@ -76,15 +77,16 @@ TestAddr parseTestAddr(std::string_view text) {
     return TestAddr{};
   };
   if (text.empty()) return bad();
-  std::optional<Area> area = areaFromLetter(text[0]);
+  std::optional<Area> area = hnc8::profile().areaFromLetter(text[0]);
   if (!area || *area == Area::Label || *area == Area::Subroutine) return bad();
   size_t pos = 1;
   int32_t n = 0, bitNo = -1;
-  if (!parseNumber(text, pos, n) || !validIndex(*area, n)) return bad();
+  if (!parseNumber(text, pos, n) || !hnc8::profile().validIndex(*area, n)) return bad();
   if (pos < text.size()) {
     if (text[pos] != '.') return bad();
     ++pos;
-    if (!parseNumber(text, pos, bitNo) || pos != text.size() || bitNo >= bitWidth(*area))
+    if (!parseNumber(text, pos, bitNo) || pos != text.size() ||
+        bitNo >= hnc8::profile().bitWidth(*area))
       return bad();
   }
   a.area = *area;

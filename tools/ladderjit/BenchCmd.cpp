@@ -280,7 +280,7 @@ int runBench(const BenchArgs &a) {
   int code = kOk;
   ProgramSource src;
   auto tr = Clock::now();
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   FrontTimes ft;
   ft.readUs = usSince(tr);
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lj::cli {
@@ -27,7 +28,8 @@ using io::ProgramSource;
 
 /// Read PROGRAM into `src`. An unreadable file or a bad container is an input error: prints
 /// it, sets `exitCode` to 2 and returns false (docs/plc-dit.md "Exit codes").
-bool readProgram(const std::string &path, ProgramSource &src, int &exitCode);
+bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
+                 std::string_view dialect = {});
 
 /// Verify a read PROGRAM (with its symbols, for a container); diagnostics go to stderr. On
 /// failure sets `exitCode` to 1 and returns nothing.
@@ -35,6 +37,7 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
                                            int &exitCode);
 
 struct CheckArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line
@@ -43,6 +46,7 @@ struct CheckArgs {
 int runCheck(const CheckArgs &a);
 
 struct RunArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "jit"; ///< interp | jit | aot:PATH
   uint64_t ticks = 1;
@@ -62,6 +66,7 @@ struct RunArgs {
 int runRun(const RunArgs &a);
 
 struct EmitArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   int optLevel = 2;
   int32_t plc2Nvalue = 200;
@@ -70,6 +75,7 @@ struct EmitArgs {
 int runEmitLlvm(const EmitArgs &a);
 
 struct DitArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program; ///< STL file
   std::string symbols; ///< symbols file, empty = none
   std::string params;  ///< P values file, empty = none
@@ -81,6 +87,7 @@ struct DitArgs {
 int runDit(const DitArgs &a);
 
 struct CompileArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   std::string output;       ///< the .so to write
   std::string cpu = "host"; ///< host | generic
@@ -105,6 +112,7 @@ struct KeygenArgs {
 int runKeygen(const KeygenArgs &a);
 
 struct FuzzArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   uint64_t seed = 1;
   uint64_t programs = 1000;
   uint32_t ticks = 50;
@@ -113,6 +121,7 @@ struct FuzzArgs {
 int runFuzz(const FuzzArgs &a);
 
 struct BenchArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "all";  ///< interp | jit | aot | all
   std::string tier = "both";   ///< fast | opt | both (JIT; AOT is always the optimizing tier)
@@ -131,6 +140,7 @@ struct BenchArgs {
 int runBench(const BenchArgs &a);
 
 struct LadderArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   std::string format = "text"; ///< text | json | svg | html | layout
   std::string output;          ///< empty or "-": stdout
@@ -141,6 +151,7 @@ struct LadderArgs {
 int runLadder(const LadderArgs &a);
 
 struct ServeArgs {
+  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "jit"; ///< jit | interp | aot:PATH.so
   uint64_t periodMs = 1;

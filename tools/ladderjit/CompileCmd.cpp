@@ -53,7 +53,7 @@ int runCompile(const CompileArgs &a) {
     return usageError("--cpu: expected host or generic, got '" + a.cpu + "'");
   int code = kOk;
   ProgramSource src;
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;

@@ -49,6 +49,13 @@ int runDit(const DitArgs &a) {
     return usageError("--period-ms: expected 1..2^40 for a plc.dit, got " +
                       std::to_string(a.periodMs));
   std::string stl, error;
+  // A plc.dit holds an HNC-8 program (docs/plc-dit.md): --dialect and the name must say hnc8.
+  const io::Dialect *d = a.dialect.empty() ? io::dialectForPath(a.program, error)
+                                           : io::dialectForOption(a.dialect, error);
+  if (!d) return usageError(error);
+  if (d != &io::defaultDialect())
+    return usageError(std::string("a plc.dit holds an hnc8 program, not dialect '") + d->name +
+                      "'");
   if (!io::readFile(a.program, stl, error)) return usageError(error);
   if (io::looksLikeDit(stl))
     return usageError("'" + a.program + "' is already a plc.dit container; give the STL file");

@@ -18,9 +18,10 @@ int usageError(const std::string &msg) {
   return kUsage;
 }
 
-bool readProgram(const std::string &path, ProgramSource &src, int &exitCode) {
+bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
+                 std::string_view dialect) {
   std::string error;
-  if (!io::readProgramFile(path, src, error)) {
+  if (!io::readProgramFile(path, src, error, dialect)) {
     exitCode = usageError(error);
     return false;
   }
@@ -40,7 +41,7 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
 int runCheck(const CheckArgs &a) {
   int code = kOk;
   ProgramSource src;
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   std::optional<VerifiedProgram> prog =
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
@@ -51,7 +52,7 @@ int runCheck(const CheckArgs &a) {
 int runEmitLlvm(const EmitArgs &a) {
   int code = kOk;
   ProgramSource src;
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   std::optional<VerifiedProgram> prog =
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
@@ -62,6 +63,13 @@ int runEmitLlvm(const EmitArgs &a) {
 }
 
 int runFuzz(const FuzzArgs &a) {
+  // The generator writes HNC-8 STL: another dialect has no generator yet.
+  std::string error;
+  const io::Dialect *d = io::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
+  if (!d) return usageError(error);
+  if (d != &io::defaultDialect())
+    return usageError(std::string("fuzz generates only hnc8 programs, not dialect '") + d->name +
+                      "'");
   fuzz::FuzzOptions opts;
   opts.seed = a.seed;
   opts.programs = a.programs;

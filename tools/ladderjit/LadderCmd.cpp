@@ -19,7 +19,7 @@ int runLadder(const LadderArgs &a) {
                       "'");
   int code = kOk;
   ProgramSource src;
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   std::optional<VerifiedProgram> prog =
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;

@@ -40,6 +40,9 @@ CLI::Option *lastWins(CLI::Option *o) {
 }
 
 const char *const kProgramHelp = "STL file, plc.dit container or ladder JSON (.json)";
+const char *const kDialectHelp = "dialect of PROGRAM: hnc8 | fanuc | iec (default: by extension, "
+                                 ".stl/.dit hnc8, .pmc fanuc, .il iec, .json as it names; "
+                                 "other names hnc8); this build has hnc8";
 
 int mainImpl(int argc, char **argv) {
   CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "
@@ -50,6 +53,7 @@ int mainImpl(int argc, char **argv) {
 
   CheckArgs check;
   CLI::App *cCheck = app.add_subcommand("check", "parse and verify; print diagnostics");
+  lastWins(cCheck->add_option("--dialect", check.dialect, kDialectHelp));
   cCheck->add_option("PROGRAM", check.program, kProgramHelp)->required();
   cCheck->add_flag("--print", check.print, "print the verified program");
   CLI::Option *checkNvalue = lastWins(
@@ -58,6 +62,7 @@ int mainImpl(int argc, char **argv) {
 
   RunArgs run;
   CLI::App *cRun = app.add_subcommand("run", "simulate ticks and print the watch table");
+  lastWins(cRun->add_option("--dialect", run.dialect, kDialectHelp));
   cRun->add_option("PROGRAM", run.program, kProgramHelp)->required();
   lastWins(cRun->add_option("--engine", run.engine, "interp | jit | aot:PATH.so (default jit)"));
   lastWins(cRun->add_option("--ticks", run.ticks, "number of ticks (default 1)")->check(kUnsigned));
@@ -85,6 +90,7 @@ int mainImpl(int argc, char **argv) {
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
+  lastWins(cEmit->add_option("--dialect", emit.dialect, kDialectHelp));
   cEmit->add_option("PROGRAM", emit.program, kProgramHelp)->required();
   lastWins(cEmit->add_option("-O", emit.optLevel, "optimization level 0..3 (default 2)")
                ->check(CLI::Range(0, 3)));
@@ -96,6 +102,7 @@ int mainImpl(int argc, char **argv) {
 
   DitArgs dit;
   CLI::App *cDit = app.add_subcommand("dit", "write a plc.dit container from an STL file");
+  lastWins(cDit->add_option("--dialect", dit.dialect, kDialectHelp));
   cDit->add_option("PROGRAM", dit.program, "STL file")->required();
   lastWins(cDit->add_option("--symbols", dit.symbols, "symbols file, 'NAME ADDR [comment]' lines"));
   lastWins(cDit->add_option("--params", dit.params, "P values, 'P12=345' per line"));
@@ -109,6 +116,7 @@ int mainImpl(int argc, char **argv) {
 
   FuzzArgs fz;
   CLI::App *cFuzz = app.add_subcommand("fuzz", "differential test: interpreter against JIT");
+  lastWins(cFuzz->add_option("--dialect", fz.dialect, kDialectHelp));
   lastWins(cFuzz->add_option("--seed", fz.seed, "random seed (default 1)")->check(kUnsigned));
   lastWins(cFuzz->add_option("--programs", fz.programs, "number of programs (default 1000)")
                ->check(kUnsigned));
@@ -121,6 +129,7 @@ int mainImpl(int argc, char **argv) {
   BenchArgs bn;
   CLI::App *cBench = app.add_subcommand(
       "bench", "compile phases and scan times of PROGRAM per engine and tier (docs/bench.md)");
+  lastWins(cBench->add_option("--dialect", bn.dialect, kDialectHelp));
   cBench->add_option("PROGRAM", bn.program, kProgramHelp)->required();
   lastWins(cBench->add_option("--engine", bn.engine, "interp | jit | aot | all (default all)"));
   lastWins(cBench->add_option("--tier", bn.tier, "fast | opt | both (default both)"));
@@ -148,6 +157,7 @@ int mainImpl(int argc, char **argv) {
   LadderArgs lad;
   CLI::App *cLadder = app.add_subcommand(
       "ladder", "the program as ladder networks (text, json) or drawn (svg, html, layout json)");
+  lastWins(cLadder->add_option("--dialect", lad.dialect, kDialectHelp));
   cLadder->add_option("PROGRAM", lad.program, kProgramHelp)->required();
   lastWins(cLadder->add_option("--format", lad.format,
                                "text | json | svg | html | layout (default text)"));
@@ -160,6 +170,7 @@ int mainImpl(int argc, char **argv) {
   CLI::App *cCompile =
       app.add_subcommand("compile", "ahead-of-time build to a shared object with the C ABI");
   cCompile->add_option("PROGRAM", comp.program, kProgramHelp)->required();
+  lastWins(cCompile->add_option("--dialect", comp.dialect, kDialectHelp));
   lastWins(cCompile->add_option("-o,--output", comp.output, "shared object to write"))->required();
   lastWins(cCompile->add_option("--cpu", comp.cpu, "host | generic (default host)"));
   CLI::Option *compNvalue =
@@ -179,6 +190,7 @@ int mainImpl(int argc, char **argv) {
 
   ServeArgs serve;
   CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (docs/serve.md)");
+  lastWins(cServe->add_option("--dialect", serve.dialect, kDialectHelp));
   cServe->add_option("PROGRAM", serve.program, kProgramHelp)->required();
   lastWins(
       cServe->add_option("--engine", serve.engine, "jit | interp | aot:PATH.so (default jit)"));

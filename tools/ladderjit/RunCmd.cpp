@@ -163,7 +163,7 @@ int runRun(const RunArgs &a) {
 
   int code = kOk;
   ProgramSource src;
-  if (!readProgram(a.program, src, code)) return code;
+  if (!readProgram(a.program, src, code, a.dialect)) return code;
   if (src.dit) {
     // A container's parameters are defaults: its P values go first so --params and --set
     // override them; its period counts unless --period-ms was given (docs/plc-dit.md "run").

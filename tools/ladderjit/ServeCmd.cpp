@@ -224,7 +224,9 @@ int runServe(const ServeArgs &a) {
   if (control.empty() && !rt::defaultControlPath(control, error)) return usageError(error);
 
   // ---- the program ----
-  rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1);
+  if (!a.dialect.empty() && !io::dialectForOption(a.dialect, error)) return usageError(error);
+  rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1,
+                           a.dialect);
   if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)
     io::TrustedKeys trust;
     if (!io::loadTrustedKeys(a.trustKeys, trust, error)) return usageError("--trust-key: " + error);

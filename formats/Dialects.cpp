@@ -1,0 +1,104 @@
+// The dialects of this build (formats/Dialects.h). A new dialect adds its entry to kDialects
+// and moves its name from kPlanned.
+#include "formats/Dialects.h"
+
+#include "frontends/hnc8/FrontEnd.h"
+#include "profiles/Profiles.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+
+namespace lj::io {
+
+namespace {
+
+std::optional<VerifiedProgram> compileHnc8(std::string_view text, std::string file,
+                                           const VerifyOptions &opts, Diagnostics &diags,
+                                           const SymbolTable *symbols) {
+  return compileFrontEnd(text, std::move(file), opts, diags, symbols);
+}
+
+constexpr const char *kHnc8Extensions[] = {".stl", ".dit"};
+
+const Dialect kHnc8{"hnc8",       kHnc8Extensions, profileNamed("hnc8"), compileHnc8,
+                    parseAddress, parseAssignment, formatAddress};
+
+const Dialect *const kDialects[] = {&kHnc8};
+
+/// Dialects ladderjit plans (docs/architecture.md "Adding a dialect") and the extensions that
+/// name them; a build without one says so instead of reading the file as HNC-8.
+struct Planned {
+  const char *name;
+  const char *extension;
+};
+constexpr Planned kPlanned[] = {{"fanuc", ".pmc"}, {"iec", ".il"}};
+
+std::string quoted(std::string_view s) {
+  std::string out = "'";
+  for (char c : s.substr(0, 40)) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return out + (s.size() > 40 ? "...'" : "'");
+}
+
+bool endsWith(std::string_view s, std::string_view tail) {
+  if (s.size() < tail.size()) return false;
+  for (size_t i = 0; i < tail.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(s[s.size() - tail.size() + i])) != tail[i])
+      return false;
+  return true;
+}
+
+} // namespace
+
+std::span<const Dialect *const> allDialects() { return kDialects; }
+
+const Dialect *dialectNamed(std::string_view name) {
+  for (const Dialect *d : kDialects)
+    if (name == d->name) return d;
+  return nullptr;
+}
+
+const Dialect &defaultDialect() { return kHnc8; }
+
+std::string knownDialects() {
+  std::string out;
+  for (const Dialect *d : kDialects) out += (out.empty() ? "" : ", ") + std::string(d->name);
+  return out;
+}
+
+const Dialect *dialectForOption(std::string_view name, std::string &error) {
+  if (const Dialect *d = dialectNamed(name)) return d;
+  const bool planned = std::any_of(std::begin(kPlanned), std::end(kPlanned),
+                                   [&](const Planned &p) { return name == p.name; });
+  error = planned ? "dialect " + quoted(name) +
+                        " is not available in this build (known: " + knownDialects() + ")"
+                  : "unknown dialect " + quoted(name) + " (known: " + knownDialects() + ")";
+  return nullptr;
+}
+
+const Dialect *dialectForPath(std::string_view path, std::string &error) {
+  for (const Dialect *d : kDialects)
+    for (const char *ext : d->extensions)
+      if (endsWith(path, ext)) return d;
+  for (const Planned &p : kPlanned)
+    if (endsWith(path, p.extension)) {
+      error = std::string(path) + ": a " + p.extension + " file is dialect " + quoted(p.name) +
+              ", which is not available in this build (known: " + knownDialects() +
+              "; --dialect NAME reads it as another dialect)";
+      return nullptr;
+    }
+  return &kHnc8;
+}
+
+const Dialect *dialectOfJson(std::string_view text, std::string &error) {
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("dialect") || !j["dialect"].is_string())
+    return &kHnc8; // the ladder JSON reader names what is wrong with the document
+  const std::string name = j["dialect"].get<std::string>();
+  const Dialect *d = dialectForOption(name, error);
+  if (!d) error = "ladder JSON: " + error;
+  return d;
+}
+
+} // namespace lj::io

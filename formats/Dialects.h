@@ -1,0 +1,61 @@
+// The dialect registry: one entry per dialect this build reads, and the choice of a PROGRAM's
+// dialect (`--dialect NAME`, else the file's extension, else HNC-8 STL; CLI.md, docs/plc-dit.md,
+// docs/ladder-json.md). A dialect is its front end, its target profile, and the address syntax
+// of the command line, stimulus files, --watch and --dump.
+#pragma once
+
+#include "formats/Address.h"
+#include "ir/Diagnostics.h"
+#include "ir/Program.h"
+#include "verify/Verify.h"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace lj::io {
+
+/// One dialect of this build.
+struct Dialect {
+  const char *name;                        ///< "hnc8", what --dialect and ladder JSON say
+  std::span<const char *const> extensions; ///< PROGRAM file names that mean it (".stl")
+  const TargetProfile *profile;            ///< the target its programs run on
+  /// Parse and verify program text (symbols: a container's or a ladder JSON's, may be null).
+  std::optional<VerifiedProgram> (*compile)(std::string_view text, std::string file,
+                                            const VerifyOptions &opts, Diagnostics &diags,
+                                            const SymbolTable *symbols);
+  /// Command-line / stimulus / --watch / --dump addresses and `addr=value` items.
+  std::optional<CliAddress> (*parseAddress)(std::string_view text, std::string &error);
+  std::optional<Assignment> (*parseAssignment)(std::string_view item, std::string &error);
+  std::string (*formatAddress)(const CliAddress &addr);
+};
+
+/// Every dialect of this build ("hnc8" first, the default).
+std::span<const Dialect *const> allDialects();
+
+/// The dialect called `name` (case-sensitive, as --dialect takes it), or nullptr.
+const Dialect *dialectNamed(std::string_view name);
+
+/// The default dialect (HNC-8): plc.dit containers and files with an unknown extension.
+const Dialect &defaultDialect();
+
+/// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'fanuc' is not
+/// available in this build (known: hnc8)" for a dialect ladderjit plans but this build lacks
+/// (fanuc, iec), "unknown dialect 'x' (known: hnc8)" otherwise.
+const Dialect *dialectForOption(std::string_view name, std::string &error);
+
+/// The dialect PROGRAM `path` is written in, by its extension: `.stl` and `.dit` hnc8, `.pmc`
+/// fanuc, `.il` iec; any other name is HNC-8 STL (as before dialects existed). A `.json` file is
+/// not decided here: it names its dialect (jsonDialect). Nullptr with `error` set when the
+/// extension's dialect is not in this build.
+const Dialect *dialectForPath(std::string_view path, std::string &error);
+
+/// The dialect a ladder JSON document names in its "dialect" member (docs/ladder-json.md), or
+/// nullptr with `error` set (missing member: the JSON reader reports it; then hnc8 is returned).
+const Dialect *dialectOfJson(std::string_view text, std::string &error);
+
+/// All dialect names this build has, "hnc8, ..." (for messages and --help).
+std::string knownDialects();
+
+} // namespace lj::io

@@ -1,0 +1,19 @@
+// The profiles of this build (profiles/Profiles.h). A new target adds its profile here.
+#include "profiles/Profiles.h"
+
+#include "profiles/hnc8/Hnc8Profile.h"
+
+namespace lj {
+
+std::span<const TargetProfile *const> allProfiles() {
+  static const TargetProfile *const kAll[] = {&hnc8::profile()};
+  return kAll;
+}
+
+const TargetProfile *profileNamed(std::string_view name) {
+  for (const TargetProfile *p : allProfiles())
+    if (name == p->name) return p;
+  return nullptr;
+}
+
+} // namespace lj

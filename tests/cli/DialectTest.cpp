@@ -1,0 +1,111 @@
+// The dialect and profile registries (formats/Dialects.h, profiles/Profiles.h): which dialect a
+// PROGRAM is read in (--dialect, else its extension, else HNC-8; a ladder JSON names its own),
+// and the usage errors for a dialect this build does not have (CLI.md, docs/architecture.md).
+#include "formats/Dialects.h"
+#include "formats/ProgramFile.h"
+#include "profiles/Profiles.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace lj::io {
+namespace {
+
+TEST(Profiles, RegistryHoldsHnc8ByName) {
+  ASSERT_EQ(allProfiles().size(), 1u);
+  const TargetProfile *p = profileNamed("hnc8");
+  ASSERT_NE(p, nullptr);
+  EXPECT_STREQ(p->name, "hnc8");
+  EXPECT_EQ(profileNamed("fanuc"), nullptr);
+  EXPECT_EQ(profileNamed(""), nullptr);
+  // DIALECT.md 1: X is the input area, D the 32-bit registers; T numbers 0..127 and 300..427.
+  EXPECT_EQ(p->areaFromLetter('x'), Area::Input);
+  EXPECT_EQ(p->bitWidth(Area::DWord), 32);
+  EXPECT_TRUE(p->validIndex(Area::Timer, 300));
+  EXPECT_FALSE(p->validIndex(Area::Timer, 200));
+  // The CNC table comes with the profile: one row per family-Cnc operation.
+  EXPECT_NE(p->cncRow(Op::ChannelModeSet), nullptr);
+  EXPECT_EQ(p->cncRow(Op::Coil), nullptr);
+}
+
+TEST(Dialects, OnlyHnc8IsRegisteredAndItUsesTheHnc8Profile) {
+  ASSERT_EQ(allDialects().size(), 1u);
+  EXPECT_EQ(dialectNamed("hnc8"), &defaultDialect());
+  EXPECT_EQ(defaultDialect().profile, profileNamed("hnc8"));
+  EXPECT_EQ(dialectNamed("HNC8"), nullptr); // names are exact
+  EXPECT_EQ(knownDialects(), "hnc8");
+}
+
+TEST(Dialects, ExtensionChoosesTheDialect) {
+  std::string error;
+  EXPECT_EQ(dialectForPath("a/b/prog.stl", error), &defaultDialect());
+  EXPECT_EQ(dialectForPath("PROG.STL", error), &defaultDialect());
+  EXPECT_EQ(dialectForPath("plc.dit", error), &defaultDialect());
+  // An unknown extension keeps the behaviour from before dialects: HNC-8 STL.
+  EXPECT_EQ(dialectForPath("prog.txt", error), &defaultDialect());
+  EXPECT_EQ(dialectForPath("prog", error), &defaultDialect());
+  EXPECT_TRUE(error.empty()) << error;
+  EXPECT_EQ(dialectForPath("spindle.pmc", error), nullptr);
+  EXPECT_EQ(error, "spindle.pmc: a .pmc file is dialect 'fanuc', which is not available in this "
+                   "build (known: hnc8; --dialect NAME reads it as another dialect)");
+  error.clear();
+  EXPECT_EQ(dialectForPath("x.il", error), nullptr);
+  EXPECT_NE(error.find("dialect 'iec', which is not available in this build"), std::string::npos);
+}
+
+TEST(Dialects, OptionNamesTheDialect) {
+  std::string error;
+  EXPECT_EQ(dialectForOption("hnc8", error), &defaultDialect());
+  EXPECT_EQ(dialectForOption("fanuc", error), nullptr);
+  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(dialectForOption("iec", error), nullptr);
+  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8)");
+  EXPECT_EQ(dialectForOption("siemens", error), nullptr);
+  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8)");
+}
+
+TEST(Dialects, LadderJsonNamesItsDialect) {
+  std::string error;
+  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
+            &defaultDialect());
+  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"fanuc"})", error), nullptr);
+  EXPECT_EQ(error, "ladder JSON: dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
+  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8)");
+}
+
+std::string tempFile(const std::string &name, const std::string &text) {
+  std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
+  const std::string stl = tempFile("dialect_ok.stl", "LD X0.0\nOUT Y0.0\n");
+  ProgramSource src;
+  std::string error;
+  ASSERT_TRUE(readProgramFile(stl, src, error)) << error;
+  EXPECT_EQ(src.dialect, &defaultDialect());
+  ProgramSource viaOption;
+  ASSERT_TRUE(readProgramFile(stl, viaOption, error, "hnc8")) << error;
+  EXPECT_EQ(viaOption.dialect, &defaultDialect());
+  std::string diags;
+  std::optional<VerifiedProgram> prog = verifyProgram(src, 200, diags);
+  ASSERT_TRUE(prog) << diags;
+  EXPECT_EQ(prog->profile, profileNamed("hnc8")); // the verified program carries its profile
+
+  ProgramSource refused;
+  EXPECT_FALSE(readProgramFile(stl, refused, error, "fanuc"));
+  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
+  // --dialect hnc8 reads a .pmc name as HNC-8 STL.
+  const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
+  EXPECT_FALSE(readProgramFile(pmc, refused, error));
+  ProgramSource forced;
+  EXPECT_TRUE(readProgramFile(pmc, forced, error, "hnc8")) << error;
+}
+
+} // namespace
+} // namespace lj::io
