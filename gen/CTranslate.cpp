@@ -4,6 +4,8 @@
 // verifier's static depths (compilers keep them in registers), int32 arithmetic wrapping.
 #include "gen/CTranslate.h"
 
+#include "ir/Profile.h"
+
 #include "ladderjit/abi.h"
 
 #include <cstddef>
@@ -61,6 +63,12 @@ bool supported(Op op) {
 }
 
 /// Byte offset and mask of a bit operand (as interp decode()).
+// The profile of the program being translated (set by translateToC for its duration; the
+// helpers below are called only from inside it).
+thread_local const TargetProfile *tProfile = nullptr;
+const AreaInfo &areaInfo(Area a) { return tProfile->area(a); }
+uint32_t stateOffset(Area a) { return tProfile->stateOffset(a); }
+
 void bitRef(const Operand &o, uint32_t &off, unsigned &mask) {
   if (o.area == Area::Timer || o.area == Area::Counter) {
     int slot = lj_tc_slot(o.index);
@@ -275,6 +283,7 @@ bool cTranslatable(const VerifiedProgram &prog, std::string &error) {
 }
 
 std::string translateToC(const VerifiedProgram &p) {
+  tProfile = p.profile;
   std::ostringstream c;
   c << "/* C baseline of " << p.file << " (ladderjit bench --c-baseline) */\n"
     << "#include <stdint.h>\n"
