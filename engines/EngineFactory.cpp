@@ -79,11 +79,14 @@ Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const Verifie
                                            const EngineOptions &opts) {
   std::string error;
   std::unique_ptr<Engine> e;
+  if (spec.kind == EngineKind::Aot && !opts.forces.empty())
+    return engineFailed("aot: forcing needs recompilation, which an AOT .so cannot do");
   switch (spec.kind) {
   case EngineKind::Interp:
-    return makeInterpreterEngine(prog);
+    return makeInterpreterEngine(prog, opts.forces);
   case EngineKind::Jit: {
     jit::JitOptions jo;
+    jo.forces = opts.forces;
     jo.tier = opts.fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
     if (opts.session) {
       e = opts.session->compile(prog, jo, error);

@@ -57,6 +57,9 @@ struct EngineOptions {
   /// Aot without a path: the key that signs the temp .so. Null (and aotTrust null): a throwaway
   /// key pair made for this one build, trusted for this one load only.
   const io::SigningKey *aotSigningKey = nullptr;
+  /// Interp and Jit: contacts built as forced (ir/Forces.h, docs/serve.md "Forcing"). Aot
+  /// refuses a non-empty set (a prebuilt .so cannot be changed).
+  ContactForces forces{};
 };
 
 /// Build the engine for `prog`, which must outlive it. EngineFailed with the JIT's or the

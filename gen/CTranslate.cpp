@@ -274,7 +274,7 @@ bool cTranslatable(const VerifiedProgram &prog, std::string &error) {
   }
   for (size_t i = 0; i < prog.stmts.size(); ++i) {
     const Stmt &s = prog.stmts[i];
-    if (supported(s.op) && s.force < 0) continue;
+    if (supported(s.op)) continue;
     error = prog.file + ":" + std::to_string(s.loc.line) + ": '" + spelling(prog.dialect, s.op) +
             "' is outside the C baseline's subset (bit logic, MOV, math, compares)";
     return false;

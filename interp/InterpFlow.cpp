@@ -34,11 +34,8 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     // The dynamic depth must equal the verifier's static one, except at a label reached by a
     // jump (the LBL empties the stacks anyway).
     assert((c.op == Op::Label || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
-    // A forced contact (Stmt::force, docs/serve.md "Forcing") conducts its constant.
-    auto contact = [&](bool real) {
-      int8_t force = prog.stmts[pc].force;
-      return force >= 0 ? force != 0 : real;
-    };
+    // A forced contact (Code::force, docs/serve.md "Forcing") conducts its constant.
+    auto contact = [&](bool real) { return c.force >= 0 ? c.force != 0 : real; };
     switch (c.op) {
     // Contacts (hnc8-core.md 4.2).
     case Op::Load:

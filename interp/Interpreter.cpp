@@ -46,8 +46,9 @@ namespace {
 
 } // namespace
 
-Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
+Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces) : prog(p) {
   code.resize(p.stmts.size());
+  const std::vector<int8_t> forced = forceTable(p, forces);
   for (size_t i = 0; i < p.stmts.size(); ++i) {
     const Stmt &st = p.stmts[i];
     Code &c = code[i];
@@ -57,6 +58,7 @@ Interpreter::Impl::Impl(const VerifiedProgram &p) : prog(p) {
     c.c = decode(*prog.profile, st.ops[2]);
     c.target = p.info[i].target;
     c.slot = p.info[i].slot;
+    if (!forced.empty()) c.force = forced[i];
     if (opFamily(st.op) != Family::Core) {
       c.wide = static_cast<int32_t>(wide.size());
       std::array<Ref, kMaxOperands> &w = wide.emplace_back();
@@ -104,7 +106,8 @@ uint32_t sliceEntry(void *ctx, lj_state *s, uint32_t k) {
 }
 } // namespace
 
-Interpreter::Interpreter(const VerifiedProgram &prog) : impl_(std::make_unique<Impl>(prog)) {
+Interpreter::Interpreter(const VerifiedProgram &prog, const ContactForces &forces)
+    : impl_(std::make_unique<Impl>(prog, forces)) {
   entries_.ctx = this;
   entries_.init = initEntry;
   entries_.plc1 = plc1Entry;
@@ -136,7 +139,8 @@ namespace {
 /// The interpreter behind the common Engine interface (ir/Engine.h).
 class InterpreterEngine final : public Engine {
 public:
-  explicit InterpreterEngine(const VerifiedProgram &prog) : interp_(prog) {}
+  InterpreterEngine(const VerifiedProgram &prog, const ContactForces &forces)
+      : interp_(prog, forces) {}
   const lj_entries &entries() const override { return interp_.entries(); }
   const char *name() const override { return "interp"; }
 
@@ -145,8 +149,9 @@ private:
 };
 } // namespace
 
-std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog) {
-  return std::make_unique<InterpreterEngine>(prog);
+std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog,
+                                              const ContactForces &forces) {
+  return std::make_unique<InterpreterEngine>(prog, forces);
 }
 
 } // namespace lj

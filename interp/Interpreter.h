@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ir/Engine.h"
+#include "ir/Forces.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 
@@ -15,8 +16,9 @@ namespace lj {
 /// scratch stacks (preallocated) and the operands decoded once at construction.
 class Interpreter {
 public:
-  /// Binds to `prog`, which must outlive the interpreter.
-  explicit Interpreter(const VerifiedProgram &prog);
+  /// Binds to `prog`, which must outlive the interpreter; the contacts in `forces` conduct
+  /// their forced value (ir/Forces.h, kept in the decoded table, not in `prog`).
+  explicit Interpreter(const VerifiedProgram &prog, const ContactForces &forces = {});
   ~Interpreter();
   Interpreter(const Interpreter &) = delete;
   Interpreter &operator=(const Interpreter &) = delete;

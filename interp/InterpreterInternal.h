@@ -32,6 +32,7 @@ struct Code {
   int32_t target = -1; ///< JMP: its LBL; LOOP: its NEXT; CALL: index into subs
   int32_t slot = -1;   ///< edge / timer / counter / PLS-PLF-ALT slot, first inst_word
   int32_t wide = -1;   ///< non-core families: index of its WideRefs in Impl::wide
+  int8_t force = -1;   ///< contacts: -1 not forced, else the forced value (ir/Forces.h)
 };
 
 /// The ST and MS stacks of one active scope. Entries are 0/1; top is [sp - 1].
@@ -222,7 +223,7 @@ struct Interpreter::Impl {
   // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
   std::vector<std::vector<uint8_t>> stStore, msStore;
 
-  explicit Impl(const VerifiedProgram &p);
+  Impl(const VerifiedProgram &p, const ContactForces &forces);
   interp::Frame frame(size_t scope);
   uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);
   interp::Flow run(lj_state *s, interp::Frame &f, int32_t begin, int32_t end);

@@ -3,6 +3,7 @@
 // every engine the same way (through lj_tick / lj_run_init).
 #pragma once
 
+#include "ir/Forces.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 
@@ -19,7 +20,9 @@ public:
   virtual const char *name() const = 0;
 };
 
-/// The reference interpreter bound to `prog` (which must outlive the engine).
-std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog);
+/// The reference interpreter bound to `prog` (which must outlive the engine), with the
+/// contacts in `forces` forced (ir/Forces.h).
+std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog,
+                                              const ContactForces &forces = {});
 
 } // namespace lj

@@ -266,7 +266,7 @@ inline Family opFamily(Op op) { return instrInfo(op).family; }
 
 /// Whether `op` is a contact (a basic push or combine of one bit operand, edge contacts
 /// included): the instructions an online-monitor force applies to (hnc8-core.md 6.1 RESOLUTION
-/// (a), Stmt::force).
+/// (a), ir/Forces.h).
 inline bool isContact(Op op) {
   const InstrInfo &r = instrInfo(op);
   return r.family == Family::Core &&

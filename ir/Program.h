@@ -44,10 +44,6 @@ struct Stmt {
   uint8_t operandCount = 0;
   std::array<Operand, kMaxOperands> ops{};
   SourceLoc loc;
-  /// Online-monitor force of a contact (LD..ORF, hnc8-core.md 6.1 RESOLUTION (a)): -1 none,
-  /// 0/1 = the contact conducts that constant (NO/NC and edge ignored; an edge contact still
-  /// updates its memory with the real bit). Set only by `ladderjit serve` (docs/serve.md).
-  int8_t force = -1;
   StmtId id = -1;
 };
 

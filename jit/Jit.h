@@ -33,6 +33,8 @@ struct JitOptions {
   /// Reuse objects of an identical earlier compile (checked before any IR is built) and store
   /// new ones; null = always compile. `ladderjit run` passes ObjectCache::fromEnvironment().
   std::shared_ptr<ObjectCache> cache = nullptr;
+  /// Contacts compiled as forced constants (ir/Forces.h, docs/serve.md "Forcing").
+  ContactForces forces{};
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,

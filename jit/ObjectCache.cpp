@@ -34,7 +34,7 @@ constexpr size_t kMemoryLimit = size_t{64} << 20; ///< in-memory bytes before ev
 // A new field in these types must be added to programDigest (else two programs differing only
 // in it would share cached code). The sizes are the reminder. (Operand::symbol and Stmt::id
 // name what was written; they do not change the code.)
-static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 236 && sizeof(StmtInfo) == 20 &&
+static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 232 && sizeof(StmtInfo) == 20 &&
                   sizeof(Subroutine) == 16 && sizeof(StmtRange) == 8,
               "program model changed: update programDigest()");
 
@@ -155,7 +155,6 @@ std::string programDigest(const VerifiedProgram &p) {
     put(s, st.operandCount);
     put(s, st.loc.line);
     put(s, st.loc.col);
-    put(s, st.force); // a forced contact compiles to different code (docs/serve.md)
     for (const Operand &o : st.ops) {
       put(s, static_cast<uint8_t>(o.kind));
       put(s, static_cast<uint8_t>(o.area));
@@ -209,6 +208,10 @@ std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in
   put(s, in.tier);
   put(s, in.chunkStatements);
   put(s, in.partitions);
+  // Forces by statement position (ids are not in the digest): the code a force makes.
+  const std::vector<int8_t> forced = forceTable(prog, in.forces);
+  put<uint64_t>(s, forced.size());
+  for (int8_t v : forced) put(s, v);
   putStr(s, programDigest(prog));
   return sha256Hex(s);
 }

@@ -3,6 +3,7 @@
 // damaged or foreign file is never trusted: it is ignored, counted and rewritten.
 #pragma once
 
+#include "ir/Forces.h"
 #include "ir/Program.h"
 
 #include <cstdint>
@@ -62,6 +63,7 @@ struct CacheKeyInputs {
   int tier = 0;                      ///< jit::Tier
   int32_t chunkStatements = 0;
   uint32_t partitions = 1;
+  ContactForces forces{}; ///< forced contacts compile to constants (ir/Forces.h)
 };
 
 /// The cache key of a compile: SHA-256 (64 hex digits) over a format tag, the ladderjit version,

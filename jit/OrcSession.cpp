@@ -145,6 +145,7 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
   lo.readableNames = false;
   lo.partitions = parts;
   lo.partition = part;
+  lo.forces = &opts.forces;
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);
   if (!mod) return fail(mod.takeError());
@@ -187,9 +188,13 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   double cacheUs = 0;
   if (opts.cache) {
     const double tc = nowUs();
-    CacheKeyInputs in{
-        im.jtmb->getTargetTriple().str(), im.jtmb->getCPU(),    im.jtmb->getFeatures().getString(),
-        static_cast<int>(im.tier),        opts.chunkStatements, parts};
+    CacheKeyInputs in{im.jtmb->getTargetTriple().str(),
+                      im.jtmb->getCPU(),
+                      im.jtmb->getFeatures().getString(),
+                      static_cast<int>(im.tier),
+                      opts.chunkStatements,
+                      parts,
+                      opts.forces};
     cacheKey = objectCacheKey(prog, in);
     if (opts.cache->lookup(cacheKey, cached) && cached.size() != parts) cached.clear();
     for (uint32_t p = 0; p < parts && !cached.empty(); ++p)

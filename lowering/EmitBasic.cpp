@@ -59,9 +59,10 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
       return fail(i, "edge slot " + std::to_string(info.slot) + " out of range");
     return info.slot;
   };
-  // A forced contact (Stmt::force, docs/serve.md "Forcing") conducts its constant.
+  // A forced contact (ModuleContext::forced, docs/serve.md "Forcing") conducts its constant.
+  const int8_t force = mc_.forced.empty() ? -1 : mc_.forced[i];
   auto contact = [&](llvm::Value *real) -> llvm::Value * {
-    return s.force >= 0 ? b_.getInt1(s.force != 0) : real;
+    return force >= 0 ? b_.getInt1(force != 0) : real;
   };
   switch (s.op) {
   case Op::Load:

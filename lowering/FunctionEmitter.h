@@ -35,6 +35,8 @@ struct ModuleContext {
   std::vector<Outlined> pendingLoops;
   /// weightBefore[i]: bodyWeight of statements [0, i) (prefix sums: O(1) loop sizes).
   std::vector<int64_t> weightBefore;
+  /// forceTable(prog, *opts.forces): -1 / 0 / 1 per statement, empty when nothing is forced.
+  std::vector<int8_t> forced;
 };
 
 /// One chunk function of a long body. A carried cut hands live ST/MS entries to the next chunk

@@ -2,6 +2,7 @@
 // functions have the signatures of runtime_abi's lj_part_fn / lj_slice_fn (STYLE.md 5).
 #pragma once
 
+#include "ir/Forces.h"
 #include "ir/Program.h"
 
 #include <llvm/IR/DataLayout.h>
@@ -32,6 +33,9 @@ struct LowerOptions {
   /// link together; the entry symbols keep their names in whichever module defines them.
   uint32_t partitions = 1;
   uint32_t partition = 0;
+  /// Contacts compiled as forced (ir/Forces.h): each conducts its constant. Null or empty: none
+  /// (the code is the same as a build without forces). Must outlive lowerProgram.
+  const ContactForces *forces = nullptr;
 };
 
 /// Which of `partitions` modules defines the body of each top-level function, in the order

@@ -216,7 +216,7 @@ bool Controller::settle(const std::string &path, std::string &why) {
   }
 }
 
-bool Controller::change(const std::string &path, const std::map<int32_t, int8_t> &forces,
+bool Controller::change(const std::string &path, const std::optional<ContactForces> &forces,
                         std::string &error, const std::string &so, bool allowShrink) {
   struct Busy {
     std::atomic<int> &n;
@@ -232,7 +232,17 @@ bool Controller::change(const std::string &path, const std::map<int32_t, int8_t>
   auto t0 = std::chrono::steady_clock::now();
   timespec mt = mtimeOf(path);
   timespec soMt = so.empty() ? timespec{} : mtimeOf(so);
-  std::shared_ptr<ProgramVersion> next = loader_.load(path, forces, error, nullptr, so);
+  // Forces are runtime state: read them from the running version under changeMu_, so a force
+  // request and an online change never lose each other's work.
+  ContactForces want;
+  if (forces) {
+    want = *forces;
+  } else if (std::shared_ptr<ProgramVersion> running = exec_.current()) {
+    want = running->forces;
+  }
+  std::vector<std::string> dropped;
+  std::shared_ptr<ProgramVersion> next =
+      loader_.load(path, want, error, nullptr, so, forces ? nullptr : &dropped);
   if (!next) return refuse(what, error, error);
   // Stop wins over a compile in progress: a version finished after a stop request is dropped.
   if (shutdown_.load())
@@ -263,6 +273,12 @@ bool Controller::change(const std::string &path, const std::map<int32_t, int8_t>
     std::snprintf(buf, sizeof buf, "%.1f", compileMs);
     log_("online change: " + what + (so.empty() ? " compiled" : " loaded") + " in " + buf +
          " ms and swapped in");
+    for (const std::string &d : dropped) log_("online change: force dropped: " + d);
+    if (!forces && !want.empty()) {
+      std::string ids;
+      for (const auto &[id, v] : want) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+      log_("online change: forces kept on statement id(s) " + ids);
+    }
   }
   return true;
 }
@@ -286,7 +302,7 @@ void Controller::pollProgramFile() {
   if (log_)
     log_("'" + (so.empty() ? path : path + "' / '" + so) + "' changed on disk: online change");
   std::string error;
-  change(path, {}, error, so);
+  change(path, std::nullopt, error, so);
 }
 
 json Controller::handle(const json &req) {
@@ -358,13 +374,17 @@ json Controller::doWrite(const json &req) {
 }
 
 json Controller::doForce(const json &req) {
-  if (!req.contains("line") || !req["line"].is_number_integer() || !req.contains("mode") ||
+  const bool byId = req.contains("id");
+  const char *key = byId ? "id" : "line";
+  if (byId == req.contains("line") || !req[key].is_number_integer() || !req.contains("mode") ||
       !req["mode"].is_string())
-    return fail("force needs \"line\" (integer) and \"mode\" (on|off|restore)");
-  int64_t line = req["line"].get<int64_t>();
+    return fail("force needs \"id\" (a statement id, integer) or \"line\" (a source line, "
+                "integer), and \"mode\" (on|off|restore)");
+  int64_t n = req[key].get<int64_t>();
   std::string mode = req["mode"].get<std::string>();
-  if (line < 1 || line > INT32_MAX)
-    return fail("force: line " + std::to_string(line) + " is out of range");
+  if (n < (byId ? 0 : 1) || n > INT32_MAX)
+    return fail(std::string("force: ") + (byId ? "statement id " : "line ") + std::to_string(n) +
+                " is out of range");
   if (mode != "on" && mode != "off" && mode != "restore")
     return fail("force: mode must be on, off or restore, got '" + mode + "'");
   if (loader_.aot())
@@ -372,17 +392,37 @@ json Controller::doForce(const json &req) {
                 "the program with --engine jit or interp to force contacts");
   std::shared_ptr<ProgramVersion> cur = exec_.current();
   if (!cur) return fail("force: no program is running yet");
-  std::map<int32_t, int8_t> forces = cur->forces;
-  int32_t l = static_cast<int32_t>(line);
+  // The LINE form is an alias: the statements on that line of the running version, by id.
+  const int32_t v32 = static_cast<int32_t>(n);
+  std::vector<StmtId> ids{v32};
+  if (!byId) {
+    ids = stmtsOnLine(*cur->prog, v32);
+    if (ids.empty())
+      return fail("force: " + cur->prog->file + ":" + std::to_string(v32) +
+                  ": no statement on this line");
+  }
+  ContactForces forces = cur->forces;
   if (mode == "restore") {
-    if (!forces.erase(l)) return fail("force: line " + std::to_string(l) + " is not forced");
+    size_t erased = 0;
+    for (StmtId id : ids) erased += forces.erase(id);
+    if (!erased)
+      return fail(std::string("force: ") + (byId ? "statement id " : "line ") +
+                  std::to_string(v32) + " is not forced");
   } else {
-    forces[l] = mode == "on" ? 1 : 0; // 允许 = on (conducts), 禁止 = off (hnc8-core.md 6.1)
+    std::string err;
+    ContactForces asked;
+    for (StmtId id : ids) asked[id] = 0;
+    if (!checkForces(*cur->prog, asked, err)) return fail("force: " + err);
+    for (StmtId id : ids) forces[id] = mode == "on" ? 1 : 0; // 允许 = on, 禁止 = off (6.1)
   }
   std::string err;
   if (!change(cur->path, forces, err)) return fail(err);
+  std::shared_ptr<ProgramVersion> now = exec_.current();
   json list = json::array();
-  for (const auto &[ln, v] : forces) list.push_back({{"line", ln}, {"value", v}});
+  for (const auto &[id, v] : now->forces) {
+    const Stmt *st = stmtById(*now->prog, id);
+    list.push_back({{"id", id}, {"line", st ? st->loc.line : 0}, {"value", v}});
+  }
   return {{"ok", true}, {"forces", list}};
 }
 
@@ -444,7 +484,7 @@ json Controller::doLoad(const json &req) {
       refuse(what, err, err);
       return fail(err);
     }
-  if (!change(program, {}, err, so, allowShrink)) return fail(err);
+  if (!change(program, std::nullopt, err, so, allowShrink)) return fail(err);
   return {{"ok", true}, {"version", exec_.current()->id}};
 }
 

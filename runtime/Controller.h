@@ -16,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,16 +51,19 @@ public:
   nlohmann::json handle(const nlohmann::json &req);
 
   /// Compile `path` with `forces` (an AOT server: load `so`, checked against `path`) and swap
-  /// it in. On failure the old program keeps running and `error` says why (also logged).
-  /// Refused (logged, counted) when the file is not stable within the settle interval, or
-  /// when the new program is empty or lacks a part (init, PLC1, PLC2, a subroutine) the
-  /// running one has, unless `allowShrink`; and once shutdown() was called.
-  bool change(const std::string &path, const std::map<int32_t, int8_t> &forces, std::string &error,
-              const std::string &so = {}, bool allowShrink = false);
+  /// it in. `forces` empty (nullopt, `{}`): carry the running version's forces over, by
+  /// statement id; a force whose id no longer exists or is no longer a contact is dropped and
+  /// logged. Given: exactly these forces, and an id that is not a contact refuses the change. On
+  /// failure the old program keeps running and `error` says why (also logged). Refused (logged,
+  /// counted) when the file is not stable within the settle interval, or when the new program is
+  /// empty or lacks a part (init, PLC1, PLC2, a subroutine) the running one has, unless
+  /// `allowShrink`; and once shutdown() was called.
+  bool change(const std::string &path, const std::optional<ContactForces> &forces,
+              std::string &error, const std::string &so = {}, bool allowShrink = false);
 
   /// Once a second from the main thread: if the PROGRAM file's (or, serving AOT, the .so's)
-  /// mtime changed since the last look, reload it (forces are dropped: their line numbers refer
-  /// to the old text).
+  /// mtime changed since the last look, reload it (forces carried over by statement id, as for
+  /// change without forces).
   void pollProgramFile();
 
   /// Whether a client asked the server to stop.

@@ -6,6 +6,7 @@
 
 #include "formats/Address.h"
 #include "ir/Engine.h"
+#include "ir/Forces.h"
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 #include "runtime/Exchange.h"
@@ -25,16 +26,16 @@
 namespace lj::rt {
 
 /// One loaded program version: the verified program, its engine and the contact forces it was
-/// compiled with. Immutable once built; the engine refers to `prog` (declared first, so it is
-/// destroyed last).
+/// built with (runtime state, kept here and never in `prog`: ir/Forces.h). Immutable once built;
+/// the engine refers to `prog` (declared first, so it is destroyed last).
 struct ProgramVersion {
   std::string path; ///< PROGRAM file it came from
   std::string hash; ///< io::sha256Hash of the file's bytes (`sha256:...`)
   std::string so;   ///< the AOT .so the engine came from; empty for jit / interp
   std::unique_ptr<VerifiedProgram> prog;
   std::unique_ptr<Engine> engine;
-  std::map<int32_t, int8_t> forces; ///< source line -> forced conducting value (0/1)
-  uint64_t id = 0;                  ///< 1, 2, ... in load order
+  ContactForces forces; ///< statement id -> forced conducting value (0/1)
+  uint64_t id = 0;      ///< 1, 2, ... in load order
 };
 
 /// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory

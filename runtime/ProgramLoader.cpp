@@ -8,27 +8,42 @@
 
 namespace lj::rt {
 
-bool applyForces(VerifiedProgram &prog, const std::map<int32_t, int8_t> &forces,
-                 std::string &error) {
-  for (Stmt &st : prog.stmts) st.force = -1;
-  for (const auto &[line, value] : forces) {
-    bool found = false;
-    for (Stmt &st : prog.stmts) {
-      if (st.loc.line != line) continue;
-      found = true;
-      if (!isContact(st.op)) {
-        error = prog.file + ":" + std::to_string(line) + ": '" +
-                std::string(spelling(prog.dialect, st.op)) +
-                "' is not a contact (only LD LDI AND ANI OR ORI LDP LDF ANDP ANDF ORP ORF can be "
-                "forced)";
-        return false;
-      }
-      st.force = value;
+const Stmt *stmtById(const VerifiedProgram &prog, StmtId id) {
+  for (const Stmt &st : prog.stmts)
+    if (st.id == id) return &st;
+  return nullptr;
+}
+
+std::vector<StmtId> stmtsOnLine(const VerifiedProgram &prog, int32_t line) {
+  std::vector<StmtId> ids;
+  for (const Stmt &st : prog.stmts)
+    if (st.loc.line == line) ids.push_back(st.id);
+  return ids;
+}
+
+bool checkForces(const VerifiedProgram &prog, ContactForces &forces, std::string &error,
+                 std::vector<std::string> *dropped) {
+  for (auto it = forces.begin(); it != forces.end();) {
+    const Stmt *st = stmtById(prog, it->first);
+    std::string why;
+    if (!st) {
+      why = prog.file + ": statement id " + std::to_string(it->first) + " does not exist";
+    } else if (!isContact(st->op)) {
+      why = prog.file + ":" + std::to_string(st->loc.line) + ": statement id " +
+            std::to_string(it->first) + " is '" + std::string(spelling(prog.dialect, st->op)) +
+            "', not a contact (only LD LDI AND ANI OR ORI LDP LDF ANDP ANDF ORP ORF can be "
+            "forced)";
     }
-    if (!found) {
-      error = prog.file + ":" + std::to_string(line) + ": no statement on this line";
+    if (why.empty()) {
+      ++it;
+      continue;
+    }
+    if (!dropped) {
+      error = why;
       return false;
     }
+    dropped->push_back(why);
+    it = forces.erase(it);
   }
   return true;
 }
@@ -38,9 +53,11 @@ ProgramLoader::ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string
 
 ProgramLoader::~ProgramLoader() = default;
 
-std::shared_ptr<ProgramVersion>
-ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &forces,
-                    std::string &error, std::optional<io::DitFile> *ditOut, const std::string &so) {
+std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
+                                                    const ContactForces &forces, std::string &error,
+                                                    std::optional<io::DitFile> *ditOut,
+                                                    const std::string &so,
+                                                    std::vector<std::string> *dropped) {
   if (aot() && !forces.empty()) {
     error = "forcing needs recompilation, which an AOT .so cannot do";
     return nullptr;
@@ -64,13 +81,14 @@ ProgramLoader::load(const std::string &path, const std::map<int32_t, int8_t> &fo
     return nullptr;
   }
   v->prog = std::make_unique<VerifiedProgram>(std::move(*prog));
-  if (!applyForces(*v->prog, forces, error)) return nullptr;
   v->forces = forces;
+  if (!checkForces(*v->prog, v->forces, error, dropped)) return nullptr;
   engines::EngineSpec spec{engine_ == "interp" ? engines::EngineKind::Interp
                            : aot()             ? engines::EngineKind::Aot
                                                : engines::EngineKind::Jit,
                            so};
   engines::EngineOptions eo;
+  eo.forces = v->forces; // an override of this build; the verified program stays as verified
   std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
   if (spec.kind == engines::EngineKind::Jit) {
     // One session for every version (a JITDylib each). No object cache: each version is

@@ -14,6 +14,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lj::jit {
 class Session;
@@ -21,10 +22,18 @@ class Session;
 
 namespace lj::rt {
 
-/// Set `Stmt::force` on the statement of each forced source line. False (with `error` naming
-/// the line) when a line holds no statement or one that is not a contact.
-bool applyForces(VerifiedProgram &prog, const std::map<int32_t, int8_t> &forces,
-                 std::string &error);
+/// Check that every id of `forces` names a contact of `prog` (ir/Forces.h). `dropped` null:
+/// false with `error` naming the first id that does not. Otherwise (online change carrying the
+/// running forces over) such forces are removed from `forces`, one message each appended to
+/// `dropped`, and the rest are kept.
+bool checkForces(const VerifiedProgram &prog, ContactForces &forces, std::string &error,
+                 std::vector<std::string> *dropped = nullptr);
+
+/// The ids of the statements on source line `line` of `prog`, in order (none: empty).
+std::vector<StmtId> stmtsOnLine(const VerifiedProgram &prog, int32_t line);
+
+/// The statement with id `id`, or null.
+const Stmt *stmtById(const VerifiedProgram &prog, StmtId id);
 
 class ProgramLoader {
 public:
@@ -34,14 +43,16 @@ public:
   ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string dialect = {});
   ~ProgramLoader();
 
-  /// Read, verify, force and compile `path` (engine "aot": load `so` instead of compiling, and
-  /// only when it was built from `path` with this plc2 nvalue; forces are refused). Null with
-  /// `error` = the diagnostics or the reason. `dit`, when given, receives the container
-  /// (nothing for an STL file).
-  std::shared_ptr<ProgramVersion> load(const std::string &path,
-                                       const std::map<int32_t, int8_t> &forces, std::string &error,
+  /// Read, verify and compile `path` with the contacts of `forces` forced (engine "aot": load
+  /// `so` instead of compiling, and only when it was built from `path` with this plc2 nvalue;
+  /// forces are refused). Null with `error` = the diagnostics or the reason. `dit`, when given,
+  /// receives the container (nothing for an STL file). `dropped`: see checkForces (null: a
+  /// force whose id is not a contact refuses the load).
+  std::shared_ptr<ProgramVersion> load(const std::string &path, const ContactForces &forces,
+                                       std::string &error,
                                        std::optional<io::DitFile> *dit = nullptr,
-                                       const std::string &so = {});
+                                       const std::string &so = {},
+                                       std::vector<std::string> *dropped = nullptr);
   const std::string &engine() const { return engine_; }
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }

@@ -1,13 +1,38 @@
-// Forced contacts (Stmt::force, the online monitor's 禁止 / 允许 of hnc8-core.md 6.1
+// Forced contacts (ir/Forces.h, the online monitor's 禁止 / 允许 of hnc8-core.md 6.1
 // RESOLUTION (a), docs/serve.md "Forcing"): a forced contact conducts its constant whatever its
 // register and NO/NC type; an edge contact still updates its edge memory with the real bit
-// (DIALECT.md 3: m = cur on every execution). Every engine, plus a lock-step state comparison.
+// (DIALECT.md 3: m = cur on every execution). Forces are keyed by statement id and handed to
+// each engine build; the interpreter and the JIT, plus a lock-step state comparison. AOT .so
+// files are prebuilt and cannot be forced (the factory refuses, tested below).
 #include "tests/exec/ExecTest.h"
 
+#include "engines/EngineSpec.h"
 #include "frontends/hnc8/FrontEnd.h"
 
 namespace lj::test {
 namespace {
+
+/// The engine `kind` built with `forces` by the engine factory, as serve builds it.
+EngineFactory forcedEngine(const std::string &name, const ContactForces &forces) {
+  Result<engines::EngineSpec> spec = engines::parseEngineSpec(name);
+  EXPECT_TRUE(spec) << name;
+  engines::EngineSpec sp = spec ? *spec : engines::EngineSpec{};
+  return {name, [sp, forces](const VerifiedProgram &p, std::string &error) {
+            engines::EngineOptions o;
+            o.forces = forces;
+            Result<std::unique_ptr<Engine>> e = engines::makeEngine(sp, p, o);
+            if (!e) {
+              error = e.status().message();
+              return std::unique_ptr<Engine>();
+            }
+            return std::move(e).value();
+          }};
+}
+
+/// The forceable engines: the interpreter and the JIT.
+std::vector<EngineFactory> forcedEngines(const ContactForces &forces) {
+  return {forcedEngine("interp", forces), forcedEngine("jit", forces)};
+}
 
 class ForceExec : public ExecTest {
 protected:
@@ -16,8 +41,9 @@ protected:
     std::optional<VerifiedProgram> prog = compileOrFail(text);
     if (!prog) return nullptr;
     EXPECT_LT(static_cast<size_t>(index), prog->stmts.size());
-    prog->stmts[index].force = value;
-    std::unique_ptr<Machine> m = Machine::create(*prog, GetParam());
+    if (GetParam().name == "aot") return nullptr; // prebuilt: never forced (see AotRefuses)
+    ContactForces forces{{prog->stmts[index].id, value}};
+    std::unique_ptr<Machine> m = Machine::create(*prog, forcedEngine(GetParam().name, forces));
     if (m) {
       EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
     }
@@ -43,6 +69,7 @@ TEST_P(ForceExec, PlainContactsConductTheirConstant) {
     for (int8_t force : {0, 1}) {
       SCOPED_TRACE(std::string(c.text) + " forced " + std::to_string(force));
       auto m = loadForced(c.text, c.contact, force);
+      if (GetParam().name == "aot") GTEST_SKIP() << "an AOT .so cannot be forced";
       ASSERT_TRUE(m);
       for (int x : {0, 1, 0, 1}) { // NO/NC and the register value are ignored
         m->set("X1.0", x);
@@ -55,6 +82,7 @@ TEST_P(ForceExec, PlainContactsConductTheirConstant) {
 
 // A forced contact is still combined with ST0: 0 AND 1 = 0, 1 OR 0 = 1.
 TEST_P(ForceExec, ForcedContactStillCombines) {
+  if (GetParam().name == "aot") GTEST_SKIP() << "an AOT .so cannot be forced";
   auto andOn = loadForced("LD R0.0\nAND X1.0\nOUT Y1.0\n", 1, 1);
   ASSERT_TRUE(andOn);
   andOn->set("X1.0", 1);
@@ -77,6 +105,7 @@ TEST_P(ForceExec, EdgeContactsKeepTheirMemory) {
     for (int8_t force : {0, 1}) {
       SCOPED_TRACE(std::string(c.text) + " forced " + std::to_string(force));
       auto m = loadForced(c.text, c.contact, force);
+      if (GetParam().name == "aot") GTEST_SKIP() << "an AOT .so cannot be forced";
       ASSERT_TRUE(m);
       int slot = m->program().info[c.contact].slot;
       ASSERT_GE(slot, 0);
@@ -114,15 +143,62 @@ OUT Y1.3
   ASSERT_TRUE(prog);
   const int8_t pattern[] = {1, -1, 0, 1, 0, -1, 1, 0, -1, 1, 1, 0, 0, 1, -1};
   size_t k = 0;
-  for (Stmt &st : prog->stmts)
-    if (isContact(st.op)) st.force = pattern[k++ % std::size(pattern)];
+  ContactForces forces;
+  for (const Stmt &st : prog->stmts) {
+    if (!isContact(st.op)) continue;
+    int8_t v = pattern[k++ % std::size(pattern)];
+    if (v >= 0) forces[st.id] = v;
+  }
   Scenario sc;
   sc.ticks = 64;
   sc.hostInputs = [](uint32_t tick, lj_state &s) {
     s.img.X[1] = static_cast<uint8_t>(tick * 37u + (tick >> 2));
     s.img.X[2] = static_cast<uint8_t>(tick * 11u ^ (tick >> 1));
   };
-  EXPECT_TRUE(sameStateOnAllEngines(*prog, sc));
+  EXPECT_TRUE(sameStateOnEngines(forcedEngines(forces), *prog, sc));
+}
+
+// Forces are keyed by statement id (Stmt::id, DIALECT order), not by position: the contact with
+// id 4 here is `AND X1.5` on the second rung. Forced off (禁止), Y1.1 = X1.4 AND 0 = 0 although
+// X1.4 = X1.5 = 1, while the first rung, whose AND X1.1 is not forced, follows its inputs; the
+// interpreter and the JIT agree on every byte of the state.
+TEST(ForceCrossEngine, ForceByStatementIdInterpAndJitAgree) {
+  std::optional<VerifiedProgram> prog = compileOrFail("LD X1.0\nAND X1.1\nOUT Y1.0\n"
+                                                      "LD X1.4\nAND X1.5\nOUT Y1.1\n"
+                                                      "LD X1.4\nOUT Y1.2\n");
+  ASSERT_TRUE(prog);
+  const Stmt *st = nullptr;
+  for (const Stmt &s : prog->stmts)
+    if (s.id == 4) st = &s;
+  ASSERT_TRUE(st);
+  ASSERT_EQ(st->op, Op::And);
+  ASSERT_EQ(st->loc.line, 5);
+  ContactForces forces{{4, 0}};
+  Scenario sc;
+  sc.ticks = 8;
+  sc.hostInputs = [](uint32_t tick, lj_state &s) {
+    s.img.X[1] = tick % 2 ? 0x33 : 0x30; // X1.4 = X1.5 = 1 always; X1.0, X1.1 toggle
+  };
+  auto check = [](int64_t tick, const Machine &ref, uint32_t) {
+    if (tick < 0) return;
+    EXPECT_EQ(ref.get("Y1.0"), tick % 2) << "tick " << tick;
+    EXPECT_EQ(ref.get("Y1.1"), 0) << "tick " << tick << ": AND X1.5 (id 4) is forced off";
+    EXPECT_EQ(ref.get("Y1.2"), 1) << "tick " << tick;
+  };
+  EXPECT_TRUE(sameStateOnEngines(forcedEngines(forces), *prog, sc, check));
+}
+
+// A prebuilt .so cannot carry a force: the factory refuses and says why.
+TEST(ForceCrossEngine, AotRefusesForces) {
+  std::optional<VerifiedProgram> prog = compileOrFail("LD X1.0\nOUT Y1.0\n");
+  ASSERT_TRUE(prog);
+  engines::EngineOptions o;
+  o.forces = {{prog->stmts[0].id, 1}};
+  Result<std::unique_ptr<Engine>> e =
+      engines::makeEngine({engines::EngineKind::Aot, "unused.so"}, *prog, o);
+  ASSERT_FALSE(e);
+  EXPECT_NE(e.status().message().find("forcing needs recompilation"), std::string::npos)
+      << e.status().message();
 }
 
 } // namespace

@@ -199,6 +199,101 @@ TEST(Executive, ForcingRecompilesAndRejectsNonContacts) {
   EXPECT_EQ(s->img.Y[1] & 1, 0); // 恢复: the real X1.0 = 0 again
 }
 
+/// The id of the statement on source line `line` of the running version (-1: none).
+StmtId idOnLine(const Executive &exec, int32_t line) {
+  for (const Stmt &st : exec.current()->prog->stmts)
+    if (st.loc.line == line) return st.id;
+  return -1;
+}
+
+// Forces are keyed by statement id and live in the runtime: an online change to a text where
+// that id is still a contact keeps the force (the contact moved to another line), one where the
+// id became a coil drops it and says so in the log. The verified program carries no force.
+TEST(Executive, ForceByIdSurvivesOnlineChange) {
+  TempProgram p(kCounting); // line 7 = LD X1.0, line 8 = OUT Y1.0
+  // Same statements, a comment line in front of LD X1.0: it is on line 8 now, same id.
+  TempProgram moved("\nLDT\nMOV 7 D10\nIEND\nLDT\nADD D1 1 D1\n; moved down\nLD X1.0\nOUT "
+                    "Y1.0\n1END\n2END\n");
+  // The LDT / ADD rung gone: the id LD X1.0 had now names OUT Y1.1.
+  TempProgram shifted(
+      "\nLDT\nMOV 7 D10\nIEND\nLD X1.0\nOUT Y1.0\nOUT Y1.1\nOUT Y1.2\n1END\n2END\n");
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  std::vector<std::string> logs;
+  std::mutex mu;
+  Controller ctl(ex, exec, loader, p.path(), [&](const std::string &l) {
+    std::lock_guard<std::mutex> g(mu);
+    logs.push_back(l);
+  });
+  const StmtId ld = idOnLine(exec, 7);
+  ASSERT_GE(ld, 0);
+  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"id", ld}, {"mode", "on"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  ASSERT_EQ(r["forces"].size(), 1u);
+  EXPECT_EQ(r["forces"][0]["id"], ld);
+  EXPECT_EQ(r["forces"][0]["line"], 7);
+  waitTicks(ex, 2);
+  auto s = std::make_unique<lj_state>();
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.Y[1] & 1, 1); // 允许: X1.0 is 0 but the contact conducts
+  for (const Stmt &st : exec.current()->prog->stmts) EXPECT_EQ(st.id == ld, st.loc.line == 7);
+
+  ASSERT_TRUE(ctl.change(moved.path(), {}, err)) << err;
+  EXPECT_EQ(idOnLine(exec, 8), ld);
+  EXPECT_EQ(exec.current()->forces, (ContactForces{{ld, 1}}));
+  waitTicks(ex, 2);
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.Y[1] & 1, 1); // still forced after the online change
+
+  ASSERT_TRUE(ctl.change(shifted.path(), {}, err)) << err;
+  EXPECT_TRUE(exec.current()->forces.empty());
+  waitTicks(ex, 2);
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.Y[1] & 1, 0); // the force is gone: the real X1.0 = 0
+  std::lock_guard<std::mutex> g(mu);
+  bool logged = false;
+  for (const std::string &l : logs)
+    logged |= l.find("force dropped") != std::string::npos &&
+              l.find("statement id " + std::to_string(ld) + " is 'OUT', not a contact") !=
+                  std::string::npos;
+  EXPECT_TRUE(logged);
+}
+
+// Forcing an id that is not a contact, or that does not exist, is refused with the reason;
+// nothing is recompiled.
+TEST(Executive, ForceOnANonContactIdIsRefused) {
+  TempProgram p(kCounting);
+  ProgramLoader loader("jit", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  const StmtId out = idOnLine(exec, 8);
+  ASSERT_GE(out, 0);
+  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"id", out}, {"mode", "off"}});
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["error"].get<std::string>().find(":8: statement id " + std::to_string(out) +
+                                               " is 'OUT', not a contact"),
+            std::string::npos)
+      << r.dump();
+  r = ctl.handle({{"cmd", "force"}, {"id", 4000}, {"mode", "on"}});
+  EXPECT_FALSE(r["ok"].get<bool>());
+  EXPECT_NE(r["error"].get<std::string>().find("statement id 4000 does not exist"),
+            std::string::npos)
+      << r.dump();
+  r = ctl.handle({{"cmd", "force"}, {"id", 1}, {"line", 7}, {"mode", "on"}});
+  EXPECT_FALSE(r["ok"].get<bool>()); // one of the two, not both
+  EXPECT_EQ(exec.current()->id, 1u);
+}
+
 TEST(Exchange, LocksWinOverPostedWritesAndProgramWrites) {
   // hnc8-core.md 6.1 RESOLUTION (b): the locked value is what the image holds.
   Exchange ex;

@@ -78,7 +78,7 @@ def main():
     check(rc == 0, "write accepted")
     check(wait_value(sock, "Y1.0", 1), "the .so's PLC1 runs: Y1.0 follows X1.0")
 
-    rc, _, err = monitor(sock, "force", str(LINE_LD_X10), "off")
+    rc, _, err = monitor(sock, "force", f"line:{LINE_LD_X10}", "off")
     check(rc == 2 and "AOT" in err and "recompilation" in err, "force is refused: " + err)
     check(wait_value(sock, "Y1.0", 1), "nothing was forced")
 

@@ -9,7 +9,7 @@ import time
 LJ = sys.argv[1]
 FAILURES = []
 
-# Line numbers matter: `force` addresses source lines.
+# Line numbers matter: `force line:N` addresses source lines.
 PROGRAM = """\
 LDT
 MOV 7 D10

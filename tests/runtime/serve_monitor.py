@@ -47,16 +47,27 @@ def main():
     check(rc == 0, "write accepted")
     check(wait_value(sock, "Y1.0", 1), "Y1.0 follows X1.0 = 1")
 
-    rc, out, _ = monitor(sock, "force", str(LINE_LD_X10), "off")
+    # line:N is the alias of the older LINE form; the answer names the statement id.
+    rc, out, _ = monitor(sock, "force", f"line:{LINE_LD_X10}", "off")
     check(rc == 0 and f"line {LINE_LD_X10} forced off" in out, "force off accepted: " + out)
     check(wait_value(sock, "Y1.0", 0), "forced off (禁止): Y1.0 = 0 although X1.0 = 1")
-    rc, _, err = monitor(sock, "force", str(LINE_OUT), "on")
+    rc, _, err = monitor(sock, "force", f"line:{LINE_OUT}", "on")
     check(rc == 2 and "not a contact" in err, "forcing a coil is refused: " + err)
-    rc, _, err = monitor(sock, "force", "1000", "on")
+    rc, _, err = monitor(sock, "force", "line:1000", "on")
     check(rc == 2 and "no statement" in err, "forcing an empty line is refused: " + err)
-    rc, out, _ = monitor(sock, "force", str(LINE_LD_X10), "restore")
-    check(rc == 0 and "no forced contacts" in out, "restore accepted: " + out)
+    rc, _, err = monitor(sock, "force", "1000", "on")
+    check(rc == 2 and "statement id 1000 does not exist" in err, "unknown id refused: " + err)
+    ids = [w for w in out.split() if w.isdigit()]
+    stmt_id = ids[0] if ids else "?"
+    rc, out, _ = monitor(sock, "force", stmt_id, "restore")  # by statement id
+    check(rc == 0 and "no forced contacts" in out, "restore by id accepted: " + out)
     check(wait_value(sock, "Y1.0", 1), "restored (恢复): Y1.0 = X1.0 = 1 again")
+    rc, out, _ = monitor(sock, "force", f"id:{stmt_id}", "off")
+    check(rc == 0 and f"id {stmt_id} line {LINE_LD_X10} forced off" in out, "force by id: " + out)
+    check(wait_value(sock, "Y1.0", 0), "forced off by id")
+    rc, out, _ = monitor(sock, "force", f"line:{LINE_LD_X10}", "restore")
+    check(rc == 0 and "no forced contacts" in out, "restore by line accepted: " + out)
+    check(wait_value(sock, "Y1.0", 1), "restored again")
 
     rc, out, _ = monitor(sock, "lock", "D20=55")
     check(rc == 0 and "D20=55" in out, "lock accepted")

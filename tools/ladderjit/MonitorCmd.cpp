@@ -61,19 +61,28 @@ bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &
     return true;
   }
   if (cmd == "force") {
-    if (!want(2, "force LINE on|off|restore")) return false;
-    int64_t line = 0;
-    auto [end, ec] = std::from_chars(rest[0].data(), rest[0].data() + rest[0].size(), line);
-    if (ec != std::errc() || end != rest[0].data() + rest[0].size() || line < 1 ||
-        line > INT32_MAX) {
-      error = "force: LINE must be a source line number >= 1, got '" + rest[0] + "'";
+    if (!want(2, "force ID|id:ID|line:LINE on|off|restore")) return false;
+    // ID (or id:ID) is a statement id (`ladderjit ladder` shows them); line:LINE the statements
+    // on a source line of the running version (the older way, kept as an alias).
+    std::string_view t = rest[0];
+    const bool byLine = t.substr(0, 5) == "line:";
+    if (byLine)
+      t.remove_prefix(5);
+    else if (t.substr(0, 3) == "id:")
+      t.remove_prefix(3);
+    int64_t n = -1;
+    auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
+    if (t.empty() || ec != std::errc() || end != t.data() + t.size() || n < (byLine ? 1 : 0) ||
+        n > INT32_MAX) {
+      error = byLine ? "force: line:LINE needs a source line number >= 1, got '" + rest[0] + "'"
+                     : "force: expected a statement id >= 0 (or line:LINE), got '" + rest[0] + "'";
       return false;
     }
     if (rest[1] != "on" && rest[1] != "off" && rest[1] != "restore") {
       error = "force: expected on, off or restore, got '" + rest[1] + "'";
       return false;
     }
-    req = {{"cmd", "force"}, {"line", line}, {"mode", rest[1]}};
+    req = {{"cmd", "force"}, {byLine ? "line" : "id", n}, {"mode", rest[1]}};
     return true;
   }
   if (cmd == "lock") {
@@ -157,7 +166,7 @@ static int monitorOnce(const MonitorArgs &a) {
   } else if (cmd == "force") {
     if (resp["forces"].empty()) std::printf("no forced contacts\n");
     for (const json &f : resp["forces"])
-      std::printf("line %d forced %s\n", f["line"].get<int>(),
+      std::printf("id %d line %d forced %s\n", f["id"].get<int>(), f["line"].get<int>(),
                   f["value"].get<int>() ? "on" : "off");
   } else if (cmd == "lock" || cmd == "unlock" || cmd == "locks") {
     for (const json &l : resp["locks"]) std::printf("%s\n", l.get<std::string>().c_str());
