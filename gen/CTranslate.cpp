@@ -62,13 +62,13 @@ bool supported(Op op) {
   }
 }
 
-/// Byte offset and mask of a bit operand (as interp decode()).
 // The profile of the program being translated (set by translateToC for its duration; the
 // helpers below are called only from inside it).
 thread_local const TargetProfile *tProfile = nullptr;
 const AreaInfo &areaInfo(Area a) { return tProfile->area(a); }
 uint32_t stateOffset(Area a) { return tProfile->stateOffset(a); }
 
+/// Byte offset and mask of a bit operand (as interp decode()).
 void bitRef(const Operand &o, uint32_t &off, unsigned &mask) {
   if (o.area == Area::Timer || o.area == Area::Counter) {
     int slot = lj_tc_slot(o.index);
