@@ -62,14 +62,8 @@ bool supported(Op op) {
   }
 }
 
-// The profile of the program being translated (set by translateToC for its duration; the
-// helpers below are called only from inside it).
-thread_local const TargetProfile *tProfile = nullptr;
-const AreaInfo &areaInfo(Area a) { return tProfile->area(a); }
-uint32_t stateOffset(Area a) { return tProfile->stateOffset(a); }
-
 /// Byte offset and mask of a bit operand (as interp decode()).
-void bitRef(const Operand &o, uint32_t &off, unsigned &mask) {
+void bitRef(const TargetProfile &tp, const Operand &o, uint32_t &off, unsigned &mask) {
   if (o.area == Area::Timer || o.area == Area::Counter) {
     int slot = lj_tc_slot(o.index);
     off = o.area == Area::Timer
@@ -80,55 +74,56 @@ void bitRef(const Operand &o, uint32_t &off, unsigned &mask) {
     mask = 1;
     return;
   }
-  off = stateOffset(o.area) + static_cast<uint32_t>(o.index) * areaInfo(o.area).bytes +
+  off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * tp.area(o.area).bytes +
         static_cast<uint32_t>(o.bit / 8);
   mask = 1u << (o.bit % 8);
 }
 
-std::string bitRead(const Operand &o) {
+std::string bitRead(const TargetProfile &tp, const Operand &o) {
   uint32_t off;
   unsigned mask;
-  bitRef(o, off, mask);
+  bitRef(tp, o, off, mask);
   return "((B(" + std::to_string(off) + ") & " + std::to_string(mask) + "u) != 0)";
 }
 
-std::string bitWrite(const Operand &o, const std::string &v) {
+std::string bitWrite(const TargetProfile &tp, const Operand &o, const std::string &v) {
   uint32_t off;
   unsigned mask;
-  bitRef(o, off, mask);
+  bitRef(tp, o, off, mask);
   std::string b = "B(" + std::to_string(off) + ")", m = std::to_string(mask) + "u";
   return b + " = (unsigned char)((" + v + ") ? (" + b + " | " + m + ") : (" + b + " & ~" + m +
          "));";
 }
 
-std::string valueRead(const Operand &o) {
+std::string valueRead(const TargetProfile &tp, const Operand &o) {
   if (o.kind == Operand::Kind::Const)
     return o.value == INT32_MIN ? "(-2147483647 - 1)" : "(" + std::to_string(o.value) + ")";
-  if (o.kind == Operand::Kind::Bit) return "(int32_t)" + bitRead(o);
-  uint32_t bytes = areaInfo(o.area).bytes;
-  std::string off = std::to_string(stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+  if (o.kind == Operand::Kind::Bit) return "(int32_t)" + bitRead(tp, o);
+  uint32_t bytes = tp.area(o.area).bytes;
+  std::string off = std::to_string(tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
   if (bytes == 1) return "(int32_t)B(" + off + ")";
   if (bytes == 2) return "(int32_t)I16(" + off + ")";
   return "I32(" + off + ")";
 }
 
-std::string valueWrite(const Operand &o, const std::string &v) {
-  uint32_t bytes = areaInfo(o.area).bytes;
-  std::string off = std::to_string(stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+std::string valueWrite(const TargetProfile &tp, const Operand &o, const std::string &v) {
+  uint32_t bytes = tp.area(o.area).bytes;
+  std::string off = std::to_string(tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
   if (bytes == 1) return "B(" + off + ") = (unsigned char)(uint32_t)(" + v + ");";
   if (bytes == 2) return "I16(" + off + ") = (int16_t)(uint16_t)(uint32_t)(" + v + ");";
   return "I32(" + off + ") = (" + v + ");";
 }
 
-std::string edgeSample(int32_t slot, const Operand &o, bool rising) {
+std::string edgeSample(const TargetProfile &tp, int32_t slot, const Operand &o, bool rising) {
   std::string e = "B(" + std::to_string(offsetof(lj_state, edge) + static_cast<size_t>(slot)) + ")";
-  return "{ unsigned char c = " + bitRead(o) + ", m = " + e + "; " + e +
+  return "{ unsigned char c = " + bitRead(tp, o) + ", m = " + e + "; " + e +
          " = c; ev = " + (rising ? "c && !m" : "!c && m") + "; }";
 }
 
 void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
   const Stmt &st = p.stmts[static_cast<size_t>(pc)];
   const StmtInfo &in = p.info[static_cast<size_t>(pc)];
+  const TargetProfile &tp = *p.profile;
   const int d = in.depth, m = in.msDepth;
   auto S = [](int i) { return "st[" + std::to_string(i) + "]"; };
   auto M = [](int i) { return "ms[" + std::to_string(i) + "]"; };
@@ -138,37 +133,37 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
   c << "  ";
   switch (st.op) {
   case Op::Load:
-    c << S(d) << " = " << bitRead(a) << ";";
+    c << S(d) << " = " << bitRead(tp, a) << ";";
     break;
   case Op::LoadNot:
-    c << S(d) << " = !" << bitRead(a) << ";";
+    c << S(d) << " = !" << bitRead(tp, a) << ";";
     break;
   case Op::LoadTrue:
     c << S(d) << " = 1;";
     break;
   case Op::LoadRise:
   case Op::LoadFall:
-    c << edgeSample(in.slot, a, st.op == Op::LoadRise) << " " << S(d) << " = ev;";
+    c << edgeSample(tp, in.slot, a, st.op == Op::LoadRise) << " " << S(d) << " = ev;";
     break;
   case Op::And:
-    c << S(d - 1) << " &= " << bitRead(a) << ";";
+    c << S(d - 1) << " &= " << bitRead(tp, a) << ";";
     break;
   case Op::AndNot:
-    c << S(d - 1) << " &= !" << bitRead(a) << ";";
+    c << S(d - 1) << " &= !" << bitRead(tp, a) << ";";
     break;
   case Op::Or:
-    c << S(d - 1) << " |= " << bitRead(a) << ";";
+    c << S(d - 1) << " |= " << bitRead(tp, a) << ";";
     break;
   case Op::OrNot:
-    c << S(d - 1) << " |= !" << bitRead(a) << ";";
+    c << S(d - 1) << " |= !" << bitRead(tp, a) << ";";
     break;
   case Op::AndRise:
   case Op::AndFall:
-    c << edgeSample(in.slot, a, st.op == Op::AndRise) << " " << S(d - 1) << " &= ev;";
+    c << edgeSample(tp, in.slot, a, st.op == Op::AndRise) << " " << S(d - 1) << " &= ev;";
     break;
   case Op::OrRise:
   case Op::OrFall:
-    c << edgeSample(in.slot, a, st.op == Op::OrRise) << " " << S(d - 1) << " |= ev;";
+    c << edgeSample(tp, in.slot, a, st.op == Op::OrRise) << " " << S(d - 1) << " |= ev;";
     break;
   case Op::AndBlock:
     c << S(d - 2) << " &= " << S(d - 1) << ";";
@@ -184,16 +179,16 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
     c << S(d - 1) << " = " << M(m - 1) << ";";
     break;
   case Op::Coil:
-    c << bitWrite(a, S(d - 1));
+    c << bitWrite(tp, a, S(d - 1));
     break;
   case Op::CoilNot:
-    c << bitWrite(a, "!" + S(d - 1));
+    c << bitWrite(tp, a, "!" + S(d - 1));
     break;
   case Op::Set:
-    c << "if (" << S(d - 1) << ") " << bitWrite(a, "1");
+    c << "if (" << S(d - 1) << ") " << bitWrite(tp, a, "1");
     break;
   case Op::Reset:
-    c << "if (" << S(d - 1) << ") " << bitWrite(a, "0");
+    c << "if (" << S(d - 1) << ") " << bitWrite(tp, a, "0");
     break;
   case Op::EndInit:
   case Op::EndCyclic:
@@ -212,42 +207,42 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
                     : st.op == Op::BitAnd   ? "&"
                     : st.op == Op::BitOr    ? "|"
                                             : "^";
-    c << "if (" << en << ") { uint32_t va = (uint32_t)" << valueRead(a) << ", vb = (uint32_t)"
-      << valueRead(b) << "; " << valueWrite(x, std::string("(int32_t)(va ") + o + " vb)") << " } "
-      << out(en);
+    c << "if (" << en << ") { uint32_t va = (uint32_t)" << valueRead(tp, a) << ", vb = (uint32_t)"
+      << valueRead(tp, b) << "; " << valueWrite(tp, x, std::string("(int32_t)(va ") + o + " vb)")
+      << " } " << out(en);
     break;
   }
   case Op::Divide:
-    c << "{ unsigned char o = " << en << "; if (o) { int32_t va = " << valueRead(a)
-      << ", vb = " << valueRead(b) << "; if (vb == 0) { ++U32(" << offsetof(lj_state, fault_divzero)
-      << "); o = 0; } else { "
-      << valueWrite(x, "(va == (-2147483647 - 1) && vb == -1) ? va : va / vb") << " } } "
+    c << "{ unsigned char o = " << en << "; if (o) { int32_t va = " << valueRead(tp, a)
+      << ", vb = " << valueRead(tp, b) << "; if (vb == 0) { ++U32("
+      << offsetof(lj_state, fault_divzero) << "); o = 0; } else { "
+      << valueWrite(tp, x, "(va == (-2147483647 - 1) && vb == -1) ? va : va / vb") << " } } "
       << out("o") << " }";
     break;
   case Op::Increment:
   case Op::Decrement:
   case Op::Negate: {
-    std::string r = st.op == Op::Increment   ? "(int32_t)((uint32_t)" + valueRead(a) + " + 1u)"
-                    : st.op == Op::Decrement ? "(int32_t)((uint32_t)" + valueRead(a) + " - 1u)"
-                                             : "(int32_t)(0u - (uint32_t)" + valueRead(a) + ")";
-    c << "if (" << en << ") { " << valueWrite(a, r) << " } " << out(en);
+    std::string r = st.op == Op::Increment   ? "(int32_t)((uint32_t)" + valueRead(tp, a) + " + 1u)"
+                    : st.op == Op::Decrement ? "(int32_t)((uint32_t)" + valueRead(tp, a) + " - 1u)"
+                                             : "(int32_t)(0u - (uint32_t)" + valueRead(tp, a) + ")";
+    c << "if (" << en << ") { " << valueWrite(tp, a, r) << " } " << out(en);
     break;
   }
   case Op::Move:
-    c << "if (" << en << ") { " << valueWrite(b, valueRead(a)) << " } " << out(en);
+    c << "if (" << en << ") { " << valueWrite(tp, b, valueRead(tp, a)) << " } " << out(en);
     break;
   case Op::CompareLe:
-    c << out(en + " && " + valueRead(a) + " <= " + valueRead(b));
+    c << out(en + " && " + valueRead(tp, a) + " <= " + valueRead(tp, b));
     break;
   case Op::CompareLt:
-    c << out(en + " && " + valueRead(a) + " < " + valueRead(b));
+    c << out(en + " && " + valueRead(tp, a) + " < " + valueRead(tp, b));
     break;
   case Op::CompareEq:
-    c << out(en + " && " + valueRead(a) + " == " + valueRead(b));
+    c << out(en + " && " + valueRead(tp, a) + " == " + valueRead(tp, b));
     break;
   case Op::CompareRange:
-    c << "{ int32_t lo = " << valueRead(a) << ", hi = " << valueRead(b) << ", v = " << valueRead(x)
-      << "; " << out(en + " && lo < v && v < hi") << " }";
+    c << "{ int32_t lo = " << valueRead(tp, a) << ", hi = " << valueRead(tp, b)
+      << ", v = " << valueRead(tp, x) << "; " << out(en + " && lo < v && v < hi") << " }";
     break;
   default:
     c << "#error unsupported statement";
@@ -283,7 +278,6 @@ bool cTranslatable(const VerifiedProgram &prog, std::string &error) {
 }
 
 std::string translateToC(const VerifiedProgram &p) {
-  tProfile = p.profile;
   std::ostringstream c;
   c << "/* C baseline of " << p.file << " (ladderjit bench --c-baseline) */\n"
     << "#include <stdint.h>\n"
