@@ -1,0 +1,218 @@
+// The LinuxCNC HAL real-time component `ladderjit` (docs/linuxcnc.md):
+//   loadrt ladderjit program=PATH.so [source=PROGRAM] [map=FILE] [trust=KEY.pub[,KEY.pub]]
+//                    [params=FILE] [retain=FILE] [plc2_nvalue=N]
+// rtapi_app_main (not real-time) reads and verifies the program source, loads the signed AOT
+// .so through the project's trusted loader (engines/AotLoader: signer, identity, ABI, state
+// size, ELF checks, sealed memfd), builds the pin plan (HalPlan.h), creates the pins and exports
+// `ladderjit.refresh`. refresh (real-time) copies input pins into the image, runs one tick
+// (PLC1 + the next PLC2 slice, lj_tick), copies the image to output pins: no allocation, no
+// lock, no system call besides the clock read.
+#include "hosts/linuxcnc/HalInstance.h"
+
+#include "hal.h"
+#include "rtapi.h"
+#include "rtapi_app.h"
+
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+
+extern "C" {
+MODULE_AUTHOR("ladderjit");
+MODULE_DESCRIPTION("ladderjit: runs a signed AOT ladder program built by `ladderjit compile`");
+MODULE_LICENSE("GPL");
+
+static char *program = nullptr;
+RTAPI_MP_STRING(program, "the AOT .so built by `ladderjit compile` (required)");
+static char *source = nullptr;
+RTAPI_MP_STRING(source, "the program it was built from (default: PATH.so with .dit/.stl/.json)");
+static char *map = nullptr;
+RTAPI_MP_STRING(map, "map file: pins for other bits, registers, F/G words (docs/linuxcnc.md)");
+static char *trust = nullptr;
+RTAPI_MP_STRING(trust, "trusted public key file(s), comma separated (default: the user's key)");
+static char *params = nullptr;
+RTAPI_MP_STRING(params, "P values, one Pn=VALUE per line, applied before init");
+static char *retain = nullptr;
+RTAPI_MP_STRING(retain, "retentive store file (B, T300..T427, C300..C427; docs/retain.md)");
+static int plc2_nvalue = -1;
+RTAPI_MP_INT(plc2_nvalue, "PLC2 nvalue the .so was built with (default: container's, else 200)");
+}
+
+namespace {
+
+constexpr const char *kName = "ladderjit";
+
+int compId = -1;
+lj::hal::Instance *instance = nullptr;
+
+void logLine(const std::string &line) {
+  rtapi_print_msg(RTAPI_MSG_ERR, "%s: %s\n", kName, line.c_str());
+}
+
+std::string str(const char *s) { return s ? std::string(s) : std::string(); }
+
+/// The HAL side of one pin: where HAL keeps its pointer (hal_malloc'd, as HAL requires).
+union HalPtr {
+  hal_bit_t *b;
+  hal_s32_t *s;
+  hal_u32_t *u;
+  hal_float_t *f;
+};
+
+struct Status {
+  hal_u32_t *scanNs;
+  hal_u32_t *scanMaxNs;
+  hal_u32_t *ticks;
+  hal_u32_t *fault;
+  hal_u32_t *watchdog;
+  hal_bit_t *resetMax;
+};
+
+HalPtr *halPins = nullptr;
+Status *status = nullptr;
+
+void refresh(void *arg, long period) {
+  auto *inst = static_cast<lj::hal::Instance *>(arg);
+  const std::vector<lj::hal::PinSpec> &pins = inst->pins();
+  lj_state &s = inst->state();
+  for (size_t i = 0; i < pins.size(); ++i) {
+    const lj::hal::PinSpec &p = pins[i];
+    if (p.out) continue;
+    switch (p.type) {
+    case lj::hal::PinType::Bit:
+      lj::io::writeAddress(s, p.addr, *halPins[i].b ? 1 : 0);
+      break;
+    case lj::hal::PinType::S32:
+      lj::io::writeAddress(s, p.addr, *halPins[i].s);
+      break;
+    case lj::hal::PinType::U32:
+      lj::io::writeAddress(s, p.addr, *halPins[i].u);
+      break;
+    case lj::hal::PinType::Float:
+      lj::io::writeAddress(s, p.addr, inst->fromFloat(i, *halPins[i].f));
+      break;
+    }
+  }
+  long long t0 = rtapi_get_time();
+  uint32_t fault = inst->tick(period > 0 ? static_cast<uint64_t>(period) : 0);
+  long long ns = rtapi_get_time() - t0;
+  for (size_t i = 0; i < pins.size(); ++i) {
+    const lj::hal::PinSpec &p = pins[i];
+    if (!p.out) continue;
+    int64_t v = lj::io::readAddress(s, p.addr);
+    switch (p.type) {
+    case lj::hal::PinType::Bit:
+      *halPins[i].b = v != 0;
+      break;
+    case lj::hal::PinType::S32:
+      *halPins[i].s = static_cast<int32_t>(v);
+      break;
+    case lj::hal::PinType::U32:
+      *halPins[i].u = static_cast<uint32_t>(v);
+      break;
+    case lj::hal::PinType::Float:
+      *halPins[i].f = static_cast<double>(v) * p.scale;
+      break;
+    }
+  }
+  uint32_t scan = ns < 0 ? 0u : ns > 0xffffffffLL ? 0xffffffffu : static_cast<uint32_t>(ns);
+  *status->scanNs = scan;
+  if (*status->resetMax) *status->scanMaxNs = 0;
+  if (scan > *status->scanMaxNs) *status->scanMaxNs = scan;
+  *status->ticks = static_cast<uint32_t>(inst->ticks());
+  *status->fault = fault;
+  *status->watchdog = s.fault_watchdog;
+}
+
+int makePin(const lj::hal::PinSpec &p, HalPtr &ptr) {
+  hal_pin_dir_t dir = p.out ? HAL_OUT : HAL_IN;
+  const char *n = p.name.c_str();
+  switch (p.type) {
+  case lj::hal::PinType::Bit:
+    return hal_pin_bit_newf(dir, &ptr.b, compId, "%s.%s", kName, n);
+  case lj::hal::PinType::S32:
+    return hal_pin_s32_newf(dir, &ptr.s, compId, "%s.%s", kName, n);
+  case lj::hal::PinType::U32:
+    return hal_pin_u32_newf(dir, &ptr.u, compId, "%s.%s", kName, n);
+  case lj::hal::PinType::Float:
+    return hal_pin_float_newf(dir, &ptr.f, compId, "%s.%s", kName, n);
+  }
+  return -1;
+}
+
+int fail(const std::string &why) {
+  logLine(why + "; the component is not started");
+  if (compId >= 0) hal_exit(compId);
+  compId = -1;
+  delete instance;
+  instance = nullptr;
+  return -1;
+}
+
+int start() {
+  lj::hal::Options opt;
+  opt.program = str(program);
+  opt.source = str(source);
+  opt.map = str(map);
+  opt.trust = str(trust);
+  opt.params = str(params);
+  opt.retain = str(retain);
+  opt.plc2Nvalue = plc2_nvalue;
+  opt.log = logLine;
+  std::string error;
+  instance = lj::hal::Instance::create(opt, kName, error);
+  if (!instance) return fail(error);
+
+  compId = hal_init(kName);
+  if (compId < 0) return fail("hal_init failed (" + std::to_string(compId) + ")");
+  const std::vector<lj::hal::PinSpec> &pins = instance->pins();
+  halPins =
+      static_cast<HalPtr *>(hal_malloc(static_cast<long>(sizeof(HalPtr) * (pins.size() + 1))));
+  status = static_cast<Status *>(hal_malloc(sizeof(Status)));
+  if (!halPins || !status) return fail("hal_malloc failed (HAL shared memory full)");
+  for (size_t i = 0; i < pins.size(); ++i)
+    if (int r = makePin(pins[i], halPins[i]); r != 0)
+      return fail("cannot create pin " + std::string(kName) + "." + pins[i].name + " (" +
+                  std::to_string(r) + ")");
+  int r = hal_pin_u32_newf(HAL_OUT, &status->scanNs, compId, "%s.scan-time-ns", kName);
+  if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->scanMaxNs, compId, "%s.scan-time-max-ns", kName);
+  if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->ticks, compId, "%s.ticks", kName);
+  if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->fault, compId, "%s.fault", kName);
+  if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->watchdog, compId, "%s.watchdog-faults", kName);
+  if (!r) r = hal_pin_bit_newf(HAL_IN, &status->resetMax, compId, "%s.scan-time-max-reset", kName);
+  if (r) return fail("cannot create the status pins (" + std::to_string(r) + ")");
+  *status->scanNs = 0;
+  *status->scanMaxNs = 0;
+  *status->ticks = 0;
+  *status->fault = 0;
+  *status->watchdog = 0;
+  *status->resetMax = 0;
+  std::string fn = std::string(kName) + ".refresh";
+  // uses_fp: float pins are converted; not reentrant (one state).
+  if (int e = hal_export_funct(fn.c_str(), refresh, instance, 1, 0, compId); e != 0)
+    return fail("cannot export " + fn + " (" + std::to_string(e) + ")");
+  instance->startRetain();
+  rtapi_print_msg(RTAPI_MSG_INFO, "%s: %s\n", kName, instance->summary().c_str());
+  return hal_ready(compId);
+}
+
+} // namespace
+
+extern "C" int rtapi_app_main(void) {
+  try {
+    return start();
+  } catch (const std::exception &e) {
+    return fail(std::string("internal error: ") + e.what());
+  }
+}
+
+extern "C" void rtapi_app_exit(void) {
+  // HAL has stopped calling refresh (threads stopped or the function unlinked) when a
+  // component is unloaded: the retain store's final save takes the last state.
+  if (instance) instance->stopRetain();
+  if (compId >= 0) hal_exit(compId);
+  compId = -1;
+  delete instance;
+  instance = nullptr;
+}

@@ -1,0 +1,50 @@
+// The pins of the LinuxCNC HAL component (docs/linuxcnc.md): which process-image elements become
+// which HAL pins, from the verified program (default: every X bit it reads, every Y bit it
+// writes) and an optional map file. Plain C++ without the HAL headers, so the set-up is testable
+// and the real-time part (HalComponent.cpp) only copies through precomputed pointers.
+#pragma once
+
+#include "formats/Address.h"
+#include "ir/Program.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lj::hal {
+
+/// HAL pin types the component creates (hal_type_t without HAL_PORT).
+enum class PinType : uint8_t { Bit, S32, U32, Float };
+
+/// One pin: HAL `prefix.name`, the element it mirrors and how.
+struct PinSpec {
+  std::string name; ///< without the component prefix ("x484.5", "cw_key", "speed")
+  PinType type = PinType::Bit;
+  bool out = false; ///< HAL_OUT: program -> HAL; else HAL_IN: HAL -> program, before each tick
+  io::CliAddress addr;
+  double scale = 1.0; ///< float pins: pin = element * scale (in: element = lround(pin / scale))
+};
+
+/// The longest pin name HAL accepts (HAL_NAME_LEN in hal.h), prefix and dot included.
+inline constexpr size_t kHalNameLen = 47;
+
+/// Default pins: every X bit the program reads (contacts, and every bit of an X byte read as
+/// a register) becomes an input bit pin, every Y bit it writes an output bit pin, in address
+/// order. Named after the symbol of that address when the program has one whose name is a
+/// HAL-friendly ASCII name (letters, digits, `_`, `-`; lowercased), else after the address
+/// (`x484.5`, `y0.1`).
+std::vector<PinSpec> defaultPins(const VerifiedProgram &prog);
+
+/// Parse a map file (format: docs/linuxcnc.md "Map file") and merge it with `defaults`: a line
+/// for an address already in the list replaces that pin, other lines add pins; a `nodefaults`
+/// line drops every default pin. `file` names the source in errors (`file:line: ...`). False
+/// (with `error`) on any bad line, a duplicate name or address, or a name HAL would refuse.
+bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
+              std::string &error);
+
+/// Check the final list against HAL's rules with `prefix` ("ladderjit"): names unique and at
+/// most kHalNameLen long. False (with `error`) otherwise.
+bool checkPins(const std::vector<PinSpec> &pins, const std::string &prefix, std::string &error);
+
+} // namespace lj::hal
