@@ -164,20 +164,28 @@ bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpe
         return fail("unexpected '" + w[i] + "'");
       }
     }
+    // One element may feed several output pins (a bit and a number, two scales), but two
+    // input pins writing one element would fight.
     for (const PinSpec &m : mapped)
-      if (m.addr.text == p.addr.text && m.out == p.out)
-        return fail("'" + p.addr.text + "' is mapped twice");
+      if (!p.out && !m.out && m.addr.text == p.addr.text)
+        return fail("'" + p.addr.text + "' is mapped as an input twice");
     mapped.push_back(std::move(p));
   }
   if (noDefaults) pins.clear();
+  // A map line replaces the default pin of its address and direction (the first such line
+  // does; further output lines for that element add pins).
+  std::vector<bool> replaced(pins.size(), false);
   for (PinSpec &m : mapped) {
-    auto same = std::find_if(pins.begin(), pins.end(), [&](const PinSpec &d) {
-      return d.addr.text == m.addr.text && d.out == m.out;
-    });
-    if (same != pins.end())
-      *same = std::move(m);
-    else
+    size_t i = 0;
+    while (i < replaced.size() &&
+           (replaced[i] || pins[i].addr.text != m.addr.text || pins[i].out != m.out))
+      ++i;
+    if (i < replaced.size()) {
+      pins[i] = std::move(m);
+      replaced[i] = true;
+    } else {
       pins.push_back(std::move(m));
+    }
   }
   return true;
 }

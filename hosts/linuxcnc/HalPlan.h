@@ -37,8 +37,9 @@ inline constexpr size_t kHalNameLen = 47;
 std::vector<PinSpec> defaultPins(const VerifiedProgram &prog);
 
 /// Parse a map file (format: docs/linuxcnc.md "Map file") and merge it with `defaults`: a line
-/// for an address already in the list replaces that pin, other lines add pins; a `nodefaults`
-/// line drops every default pin. `file` names the source in errors (`file:line: ...`). False
+/// for an address and direction already in the list replaces that pin, other lines add pins
+/// (one element may feed several output pins, never two input pins); a `nodefaults` line drops
+/// every default pin. `file` names the source in errors (`file:line: ...`). False
 /// (with `error`) on any bad line, a duplicate name or address, or a name HAL would refuse.
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
               std::string &error);
