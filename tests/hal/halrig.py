@@ -5,6 +5,7 @@ refuses module names with slashes), so install_module() copies the built ladderj
 (root needed; the test command runs as root). As root, rtapi_app needs a fallback user
 (RTAPI_UID) and a FIFO directory that user can write. Every halrun is bounded by a timeout."""
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -116,7 +117,10 @@ class Rig:
         shutil.rmtree(self.dir, ignore_errors=True)
 
 
+VALUE = re.compile(r"^(TRUE|FALSE|-?\d+(\.\d+)?([eE][-+]?\d+)?|0x[0-9A-Fa-f]+)$")
+
+
 def gets_values(stdout):
-    """The values `gets`/`getp` printed, in order (one per line; halrun echoes nothing else
-    on stdout for a -f file without `show`)."""
-    return [line.strip() for line in stdout.splitlines() if line.strip()]
+    """The values `gets`/`getp` printed, in order: every stdout line that is a HAL value
+    (bit, number, hex); informational lines of other components (classicladder) are skipped."""
+    return [l.strip() for l in stdout.splitlines() if VALUE.match(l.strip())]
