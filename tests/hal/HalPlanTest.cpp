@@ -1,0 +1,110 @@
+// The pin plan of the HAL component (hosts/linuxcnc/HalPlan.h) without HAL: default pins from a
+// program, the map file rules of docs/linuxcnc.md "Map file", HAL's name rules.
+#include "hosts/linuxcnc/HalPlan.h"
+
+#include "formats/ProgramFile.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using lj::hal::PinSpec;
+using lj::hal::PinType;
+
+lj::VerifiedProgram verify(const std::string &text) {
+  lj::io::ProgramSource src;
+  src.path = "t.stl";
+  src.text = text;
+  std::string diags;
+  auto prog = lj::io::verifyProgram(src, 200, diags);
+  EXPECT_TRUE(prog.has_value()) << diags;
+  return *prog;
+}
+
+std::vector<std::string> names(const std::vector<PinSpec> &pins) {
+  std::vector<std::string> out;
+  for (const PinSpec &p : pins) out.push_back((p.out ? "out " : "in ") + p.name);
+  return out;
+}
+
+const char *kProgram = "LD X0.1\nOR Y2.0\nANI X0.0\nOUT Y2.0\nMOV X3 D0\nLD Y0.5\nOUT R1.0\n"
+                       "1END\n2END\n";
+
+TEST(HalPlan, DefaultPinsAreXBitsReadAndYBitsWritten) {
+  // X0.0, X0.1 contacts; X3 read as a byte: its 8 bits; Y2.0 written; Y0.5 only read: no pin.
+  std::vector<std::string> want = {"in x0.0", "in x0.1"};
+  for (int b = 0; b < 8; ++b) want.push_back("in x3." + std::to_string(b));
+  want.push_back("out y2.0");
+  EXPECT_EQ(names(lj::hal::defaultPins(verify(kProgram))), want);
+}
+
+TEST(HalPlan, MapReplacesAddsAndDropsDefaults) {
+  auto pins = lj::hal::defaultPins(verify(kProgram));
+  std::string err;
+  ASSERT_TRUE(lj::hal::applyMap("in bit X0.0 stop # comment\nout s32 D0 d0\n"
+                                "out float D0 d0-tenth scale=0.1\n",
+                                "m", pins, err))
+      << err;
+  EXPECT_EQ(pins[0].name, "stop");
+  EXPECT_EQ(pins[0].addr.text, "X0.0");
+  EXPECT_EQ(pins.back().name, "d0-tenth");
+  EXPECT_EQ(pins.back().type, PinType::Float);
+  EXPECT_DOUBLE_EQ(pins.back().scale, 0.1);
+  EXPECT_EQ(pins.size(), 11u + 2u);
+
+  auto only = lj::hal::defaultPins(verify(kProgram));
+  ASSERT_TRUE(lj::hal::applyMap("nodefaults\nin s32 F2560 nc-mode\n", "m", only, err)) << err;
+  ASSERT_EQ(only.size(), 1u);
+  EXPECT_EQ(only[0].name, "nc-mode");
+  EXPECT_FALSE(only[0].out);
+}
+
+TEST(HalPlan, BadMapLinesNameFileAndLine) {
+  struct Case {
+    const char *text, *want;
+  } cases[] = {
+      {"\nsideways bit X0.0\n", "m:2: direction 'sideways'"},
+      {"in bool X0.0\n", "m:1: type 'bool'"},
+      {"in bit D5\n", "a bit pin needs a bit address"},
+      {"in s32 X0.1\n", "a s32 pin a whole element"},
+      {"out s32 T5\n", "timers and counters cannot be mapped"},
+      {"in bit X0.0 a\nin s32 X0\nin bit X0.0 b\n", "m:3: 'X0.0' is mapped as an input twice"},
+      {"out s32 D0 d scale=2\n", "scale= is for float pins only"},
+      {"out float D0 d scale=0\n", "the scale must be a non-zero number"},
+      {"out bit Y0.0 9lives\n", "pin name '9lives' must start with a letter"},
+      {"out bit Y0.0 a b\n", "unexpected 'b'"},
+      {"in bit X999.0\n", "X999"},
+      {"in\n", "expected `in|out"},
+  };
+  for (const Case &c : cases) {
+    std::vector<PinSpec> pins;
+    std::string err;
+    EXPECT_FALSE(lj::hal::applyMap(c.text, "m", pins, err)) << c.text;
+    EXPECT_NE(err.find(c.want), std::string::npos) << c.text << " -> " << err;
+  }
+}
+
+TEST(HalPlan, NamesMustBeUniqueAndFitHal) {
+  std::vector<PinSpec> pins;
+  std::string err;
+  ASSERT_TRUE(lj::hal::applyMap("in bit X0.0 same\nout bit Y0.0 same\n", "m", pins, err)) << err;
+  EXPECT_FALSE(lj::hal::checkPins(pins, "ladderjit", err));
+  EXPECT_NE(err.find("two pins are named 'ladderjit.same'"), std::string::npos) << err;
+
+  std::vector<PinSpec> longName;
+  std::string name(38, 'a'); // "ladderjit." + 38 = 48 > HAL_NAME_LEN 47
+  ASSERT_TRUE(lj::hal::applyMap("in bit X0.0 " + name + "\n", "m", longName, err)) << err;
+  EXPECT_FALSE(lj::hal::checkPins(longName, "ladderjit", err));
+  EXPECT_NE(err.find("longer than HAL's 47 characters"), std::string::npos) << err;
+  longName[0].name.pop_back(); // 47: accepted
+  EXPECT_TRUE(lj::hal::checkPins(longName, "ladderjit", err)) << err;
+}
+
+TEST(HalPlan, SymbolsNameDefaultPinsWhenHalFriendly) {
+  lj::VerifiedProgram prog = verify("LD X0.0\nLD X0.1\nANB\nOUT Y0.0\n1END\n2END\n");
+  prog.symbols = {{"Start_Key", "X0.0", ""}, {"主轴", "X0.1", ""}, {"LAMP", "Y0.0", ""}};
+  EXPECT_EQ(names(lj::hal::defaultPins(prog)),
+            (std::vector<std::string>{"in start_key", "in x0.1", "out lamp"}));
+}
+
+} // namespace
