@@ -28,6 +28,7 @@ import random
 import statistics
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "hal"))
 from halrig import Rig, RigError, gets_values  # noqa: E402
 

@@ -16,6 +16,7 @@ import random
 import re
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from halrig import Rig, RigError, gets_values  # noqa: E402
 
