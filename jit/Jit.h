@@ -24,9 +24,10 @@ struct JitOptions {
   int32_t chunkStatements = 150;
   /// Threads compiling at once: the program is lowered into this many modules (contiguous groups
   /// of bodies of about equal size), each compiled to an object on its own thread and linked
-  /// into the version's JITDylib. 1 = everything on the calling thread. The generated code is
-  /// the same either way, apart from cross-module calls.
-  int32_t compileThreads = 2;
+  /// into the version's JITDylib. 1 = everything on the calling thread; 0 = one per hardware
+  /// thread (std::thread::hardware_concurrency). The generated code is the same either way,
+  /// apart from cross-module calls.
+  int32_t compileThreads = 0;
   /// Fewer threads for smaller programs: each needs this many statements (a thread, a context
   /// and a TargetMachine cost about a millisecond). Tests set 1 to force partitioning.
   int32_t minStatementsPerThread = 500;
@@ -35,6 +36,12 @@ struct JitOptions {
   std::shared_ptr<ObjectCache> cache = nullptr;
   /// Contacts compiled as forced constants (ir/Forces.h, docs/serve.md "Forcing").
   ContactForces forces{};
+  /// Incremental compile (lowering/Incremental.h): every rung group (a chunk of a long body, or
+  /// a short body) is its own object, looked up in `cache` under a key of its content and what
+  /// it depends on (jit::leafCacheKey) and compiled only when missing; a small spine of entry
+  /// and dispatch functions is compiled every time. `compileThreads` threads compile the
+  /// missing groups. Same behaviour as a whole-program compile; one call per group more.
+  bool incremental = false;
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,
@@ -42,10 +49,13 @@ struct JitOptions {
 /// linkUs and cacheUs). For `ladderjit bench` (docs/bench.md).
 struct CompileTimes {
   double lowerUs = 0, optimizeUs = 0, codegenUs = 0;
-  double linkUs = 0;        ///< JITLink (adding the objects, resolving the entries); AOT: cc
-  double cacheUs = 0;       ///< object cache lookup + store (0 without a cache)
-  uint64_t objectBytes = 0; ///< size of the object file(s) linked
-  bool cacheHit = false;    ///< the objects came from the cache (lower/optimize are then 0)
+  double linkUs = 0;           ///< JITLink (adding the objects, resolving the entries); AOT: cc
+  double cacheUs = 0;          ///< object cache lookup + store (0 without a cache)
+  uint64_t objectBytes = 0;    ///< size of the object file(s) linked
+  bool cacheHit = false;       ///< the objects came from the cache (lower/optimize are then 0)
+  double cpuUs = 0;            ///< CPU time of lowering, optimizing and codegen over all threads
+  uint32_t leaves = 0;         ///< incremental: distinct rung groups (leaf objects) linked
+  uint32_t leavesCompiled = 0; ///< incremental: of them compiled now (the rest from the cache)
 };
 
 /// Compile `prog` (which must outlive the engine) into an Engine. On failure returns null and
@@ -73,6 +83,10 @@ public:
   std::unique_ptr<Engine> compile(const VerifiedProgram &prog, const JitOptions &opts,
                                   std::string &error, CompileTimes *times = nullptr);
   Tier tier() const;
+  /// Every later compile of this session is incremental (JitOptions::incremental) with an
+  /// in-memory leaf cache of the session's own, unless the options bring a cache: an online
+  /// change that edits one rung recompiles that rung's group and links the rest from memory.
+  void enableIncremental();
 
   struct Impl; ///< ORC state, defined in jit/OrcSession.cpp
 

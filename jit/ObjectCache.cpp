@@ -216,6 +216,23 @@ std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in
   return sha256Hex(s);
 }
 
+std::string leafCacheKey(const CacheKeyInputs &in, std::string_view profile,
+                         std::string_view leafBytes) {
+  std::string s;
+  putStr(s, "ladderjit-leaf-cache 1");
+  putStr(s, LADDERJIT_VERSION);
+  putStr(s, buildIdentity());
+  putStr(s, LLVM_VERSION_STRING);
+  putStr(s, in.triple);
+  putStr(s, in.cpu);
+  putStr(s, in.features);
+  put(s, in.tier);
+  put(s, in.chunkStatements);
+  putStr(s, profile);
+  putStr(s, leafBytes);
+  return sha256Hex(s);
+}
+
 ObjectCache::ObjectCache(std::string dir) : dir_(std::move(dir)) {}
 
 std::shared_ptr<ObjectCache> ObjectCache::fromEnvironment() {

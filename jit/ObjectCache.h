@@ -71,6 +71,14 @@ struct CacheKeyInputs {
 /// the LLVM version, `in` and programDigest(prog).
 std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in);
 
+/// The key of one leaf of an incremental compile (lowering/Incremental.h): SHA-256 over a format
+/// tag, the build identity and LLVM version as objectCacheKey, the target and tier of `in`, its
+/// chunk size (it decides how loops inside the leaf are outlined), the profile's name and the
+/// leaf's own bytes (lower::leafDigestInput, which holds its forces). `in.partitions` and
+/// `in.forces` are not read.
+std::string leafCacheKey(const CacheKeyInputs &in, std::string_view profile,
+                         std::string_view leafBytes);
+
 /// SHA-256 (64 hex digits) over every field of `prog` that the lowering reads (all but `file`).
 std::string programDigest(const VerifiedProgram &prog);
 

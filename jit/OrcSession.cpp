@@ -5,6 +5,7 @@
 // strings.
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"
+#include "jit/OrcInternal.h"
 #include "jit/Pipeline.h"
 #include "lowering/Lower.h"
 
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <ctime>
 #include <mutex>
 #include <optional>
 #include <system_error>
@@ -22,17 +24,6 @@
 #include <vector>
 
 namespace lj::jit {
-
-struct Session::Impl {
-  Tier tier = Tier::Optimizing;
-  std::unique_ptr<llvm::orc::LLJIT> jit;
-  llvm::orc::JITDylib *runtime = nullptr;
-  /// Settings of the tier's code generator; every compile thread makes its own TargetMachine
-  /// from it (a TargetMachine is not safe to share between concurrent compiles).
-  std::optional<llvm::orc::JITTargetMachineBuilder> jtmb;
-  std::mutex mu; ///< guards nextVersion
-  uint64_t nextVersion = 1;
-};
 
 namespace {
 
@@ -114,12 +105,13 @@ struct PartResult {
   std::unique_ptr<llvm::MemoryBuffer> obj;
   std::string error;
   double lowerUs = 0, optimizeUs = 0;
+  double cpuUs = 0; ///< CPU time of the thread that compiled it
 };
 
 /// Partitions for `prog`: a thread only pays off for a program of some size (a thread, a
 /// context and a TargetMachine cost ~1 ms; codegen runs at ~5-50 us per statement).
 uint32_t partitionCount(const VerifiedProgram &prog, const JitOptions &opts) {
-  size_t byThreads = static_cast<size_t>(std::max(opts.compileThreads, 1));
+  size_t byThreads = compileThreadCount(opts);
   size_t perThread = static_cast<size_t>(std::max(opts.minStatementsPerThread, 1));
   size_t bySize = std::max<size_t>(prog.stmts.size() / perThread, 1);
   return static_cast<uint32_t>(std::min({byThreads, bySize, size_t{16}}));
@@ -136,6 +128,7 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
     return std::move(r);
   };
   double t0 = nowUs();
+  const double c0 = threadCpuUs();
   auto tm = jtmb.createTargetMachine();
   if (!tm) return fail(tm.takeError());
   llvm::LLVMContext ctx;
@@ -158,6 +151,7 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
   auto obj = compiler(**mod);
   if (!obj) return fail(obj.takeError());
   r.obj = std::move(*obj);
+  r.cpuUs = threadCpuUs() - c0;
   return r;
 }
 
@@ -166,6 +160,10 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
 Session::Session(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Session::~Session() = default;
 Tier Session::tier() const { return impl_->tier; }
+void Session::enableIncremental() {
+  std::lock_guard<std::mutex> lock(impl_->mu);
+  if (!impl_->leafCache) impl_->leafCache = std::make_shared<ObjectCache>(std::string());
+}
 
 std::shared_ptr<Session> Session::create(Tier tier, std::string &error) {
   auto impl = createImpl(tier);
@@ -179,6 +177,15 @@ std::shared_ptr<Session> Session::create(Tier tier, std::string &error) {
 std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitOptions &opts,
                                          std::string &error, CompileTimes *times) {
   Impl &im = *impl_;
+  std::shared_ptr<ObjectCache> leafCache;
+  {
+    std::lock_guard<std::mutex> lock(im.mu);
+    leafCache = im.leafCache;
+  }
+  if (opts.incremental || leafCache) {
+    ObjectCache *cache = opts.cache ? opts.cache.get() : leafCache.get();
+    return compileIncremental(*this, im, prog, opts, cache, error, times);
+  }
   const double t0 = nowUs();
   const uint32_t parts = partitionCount(prog, opts);
   std::vector<PartResult> res(parts);
@@ -223,6 +230,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     t.lowerUs = std::max(t.lowerUs, r.lowerUs);
     t.optimizeUs = std::max(t.optimizeUs, r.optimizeUs);
     t.objectBytes += r.obj->getBufferSize();
+    t.cpuUs += r.cpuUs;
   }
   t.cacheHit = !cached.empty();
   if (opts.cache && cached.empty()) {
@@ -234,6 +242,15 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     cacheUs += nowUs() - tc;
   }
   t.cacheUs = cacheUs;
+  std::vector<std::unique_ptr<llvm::MemoryBuffer>> objs;
+  for (PartResult &r : res) objs.push_back(std::move(r.obj));
+  return linkVersion(*this, im, std::move(objs), prog, t0, t, error, times);
+}
+
+std::unique_ptr<Engine> linkVersion(Session &self, Session::Impl &im,
+                                    std::vector<std::unique_ptr<llvm::MemoryBuffer>> objs,
+                                    const VerifiedProgram &prog, double t0, CompileTimes t,
+                                    std::string &error, CompileTimes *times) {
   const double tLink = nowUs();
   std::string name;
   {
@@ -251,8 +268,8 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     llvm::consumeError(im.jit->getExecutionSession().removeJITDylib(*jd));
     return nullptr;
   };
-  for (PartResult &r : res)
-    if (llvm::Error e = im.jit->addObjectFile(*jd, std::move(r.obj))) return failWith(std::move(e));
+  for (std::unique_ptr<llvm::MemoryBuffer> &o : objs)
+    if (llvm::Error e = im.jit->addObjectFile(*jd, std::move(o))) return failWith(std::move(e));
   // The first lookup links the objects (JITLink resolves the calls between them).
   lj_entries entries{};
   auto init = lookupEntry<lj_part_fn>(im, *jd, lower::kInitSymbol);
@@ -270,7 +287,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   t.linkUs = tEnd - tLink;
   t.codegenUs = tEnd - t0 - t.lowerUs - t.optimizeUs;
   if (times) *times = t;
-  return std::make_unique<JitEngine>(shared_from_this(), impl_.get(), &*jd, entries);
+  return std::make_unique<JitEngine>(self.shared_from_this(), &im, &*jd, entries);
 }
 
 } // namespace lj::jit

@@ -7,6 +7,7 @@
 #include "ir/Program.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/ImageCache.h"
+#include "lowering/Incremental.h"
 #include "lowering/Lower.h"
 
 #include <llvm/Analysis/InstSimplifyFolder.h>
@@ -39,20 +40,6 @@ struct ModuleContext {
   std::vector<int8_t> forced;
 };
 
-/// One chunk function of a long body. A carried cut hands live ST/MS entries to the next chunk
-/// through the body's carry buffer (ST position k at byte k, MS position k at byte msBase + k):
-/// the chunk loads positions [stLoad, depth) / [msLoad, msDepth) on entry and stores
-/// [stStore, depth) / [msStore, msDepth) at its end (-1: none). The ranges are the positions the
-/// chunk touches, so their size is bounded by its statement count, not by the stack depth.
-struct ChunkPlan {
-  StmtRange r;
-  bool carriedIn = false, carriedOut = false;
-  /// The body has cuts inside JMP spans: a JMP to a label of another chunk (which then starts
-  /// with that label) returns kStatusJump + the chunk's index to the body's dispatcher.
-  bool jumps = false;
-  int32_t stLoad = -1, msLoad = -1, stStore = -1, msStore = -1;
-};
-
 /// An internal `i32 (ptr s)` function for a chunk or an outlined loop body (LowerProgram.cpp);
 /// `carried`: `i32 (ptr s, ptr carry)` for a chunk of a body with carried cuts.
 llvm::Function *makeBodyFunction(ModuleContext &mc, const std::string &name, bool carried);
@@ -62,7 +49,7 @@ llvm::Function *makeBodyFunction(ModuleContext &mc, const std::string &name, boo
 struct CarryBuffer {
   llvm::Value *buf = nullptr;
   int32_t msBase = 0;
-  const std::unordered_map<int32_t, uint32_t> *labelChunk = nullptr;
+  const LabelChunks *labelChunk = nullptr;
 };
 
 /// Status a body chunk of a subroutine returns when a RETN fired (never seen by the host).

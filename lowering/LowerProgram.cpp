@@ -64,16 +64,35 @@ llvm::Function *makeFunction(llvm::Module &m, const std::string &name, FnKind ki
   return fn;
 }
 
+// A leaf of a spine by its symbol: equal leaves (equal keys) occur more than once in a program.
+llvm::Function *declareLeaf(llvm::Module &m, const std::string &symbol, bool carried) {
+  if (llvm::Function *f = m.getFunction(symbol)) return f;
+  return makeFunction(m, symbol, carried ? FnKind::CarriedBody : FnKind::Body, true);
+}
+
 llvm::Value *stateArg(llvm::Function *fn) { return fn->getArg(fn->arg_size() == 1 ? 0 : 1); }
 
 // Lowers one body (a part, a slice, a subroutine or an outlined loop body) into `fn`, cutting it
 // into chunk functions when it is long. `retnStatus` is what a taken RETN returns from `fn`: 0
 // from a subroutine's own function, kStatusReturn from an outlined loop body; in a chunk of a
 // subroutine (`isSub`) a RETN returns kStatusReturn, which becomes `retnStatus` here.
+// With `namer` (the spine of an incremental compile) every chunk, and a short body as a whole,
+// is a leaf: declared under the name `namer` gives it and called, its code lowered elsewhere.
 llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
-                      bool isSub, uint32_t retnStatus = LJ_FAULT_NONE) {
+                      bool isSub, uint32_t retnStatus = LJ_FAULT_NONE,
+                      const LeafNamer *namer = nullptr) {
   std::vector<ChunkPlan> chunks =
       planChunkFunctions(mc.prog, r, mc.opts.chunkStatements, &mc.weightBefore);
+  if (chunks.size() <= 1 && namer) {
+    Leaf leaf;
+    leaf.r = r;
+    leaf.deadDepth = deadDepth;
+    leaf.retnStatus = retnStatus;
+    llvm::Function *lf = declareLeaf(mc.mod, (*namer)(leaf), false);
+    llvm::IRBuilder<> b(llvm::BasicBlock::Create(fn->getContext(), "entry", fn));
+    b.CreateRet(b.CreateCall(lf, {stateArg(fn)}));
+    return llvm::Error::success();
+  }
   if (chunks.size() <= 1) {
     FunctionEmitter fe(mc, fn, stateArg(fn), retnStatus);
     if (llvm::Error e = fe.emitRange(r, deadDepth)) return e;
@@ -100,7 +119,8 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
   // Chunk k runs in block chunk<k>; a non-zero status goes to `stop`, or with jumps between
   // chunks first to `dispatch`, which goes on at the chunk a kStatusJump names.
   const bool jumps = chunks.front().jumps;
-  std::unordered_map<int32_t, uint32_t> labelChunk;
+  auto labelChunkOwned = std::make_shared<LabelChunks>();
+  LabelChunks &labelChunk = *labelChunkOwned;
   std::vector<llvm::BasicBlock *> callAt;
   for (size_t k = 0; k < chunks.size(); ++k) {
     callAt.push_back(llvm::BasicBlock::Create(ctx, "chunk" + std::to_string(k), fn));
@@ -125,15 +145,29 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
   for (size_t k = 0; k < chunks.size(); ++k) {
     const ChunkPlan &c = chunks[k];
     b.SetInsertPoint(callAt[k]);
-    llvm::Function *cfn =
-        makeBodyFunction(mc, fn->getName().str() + ".c" + std::to_string(k), carried);
-    cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
-    FunctionEmitter fe(mc, cfn, cfn->getArg(0), isSub ? kStatusReturn : retnStatus);
+    const uint32_t chunkRetn = isSub ? kStatusReturn : retnStatus;
     int32_t dead = k == 0 ? deadDepth : mc.prog.info[c.r.begin].depth;
-    const CarryBuffer mine{carried ? cfn->getArg(1) : nullptr, carry.msBase,
-                           jumps ? &labelChunk : nullptr};
-    if (llvm::Error e = fe.emitRange(c.r, dead, &c, &mine)) return e;
-    if (llvm::Error e = fe.finish()) return e;
+    llvm::Function *cfn = nullptr;
+    if (namer) {
+      Leaf leaf;
+      leaf.r = c.r;
+      leaf.deadDepth = dead;
+      leaf.retnStatus = chunkRetn;
+      leaf.chunk = true;
+      leaf.plan = c;
+      leaf.carried = carried;
+      leaf.msBase = carry.msBase;
+      if (jumps) leaf.labelChunk = labelChunkOwned;
+      cfn = declareLeaf(mc.mod, (*namer)(leaf), carried);
+    } else {
+      cfn = makeBodyFunction(mc, fn->getName().str() + ".c" + std::to_string(k), carried);
+      cfn->addFnAttr(llvm::Attribute::NoInline); // keep functions small: linear compile time
+      FunctionEmitter fe(mc, cfn, cfn->getArg(0), chunkRetn);
+      const CarryBuffer mine{carried ? cfn->getArg(1) : nullptr, carry.msBase,
+                             jumps ? &labelChunk : nullptr};
+      if (llvm::Error e = fe.emitRange(c.r, dead, &c, &mine)) return e;
+      if (llvm::Error e = fe.finish()) return e;
+    }
     llvm::Value *st = carried ? b.CreateCall(cfn, {stateArg(fn), carry.buf}, "st")
                               : b.CreateCall(cfn, {stateArg(fn)}, "st");
     b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), dispatch,
@@ -151,8 +185,8 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
 
 // lowerBody, then the loop bodies it outlined (and theirs), without recursion.
 llvm::Error lowerTopBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_t deadDepth,
-                         bool isSub) {
-  if (llvm::Error e = lowerBody(mc, fn, r, deadDepth, isSub)) return e;
+                         bool isSub, const LeafNamer *namer = nullptr) {
+  if (llvm::Error e = lowerBody(mc, fn, r, deadDepth, isSub, LJ_FAULT_NONE, namer)) return e;
   while (!mc.pendingLoops.empty()) {
     ModuleContext::Outlined o = mc.pendingLoops.back();
     mc.pendingLoops.pop_back();
@@ -204,9 +238,12 @@ std::vector<uint32_t> planPartitions(const VerifiedProgram &prog, uint32_t parti
   return owner;
 }
 
+namespace {
+
+/// The module of lowerProgram, or with `namer` the spine of lowerSpine.
 llvm::Expected<std::unique_ptr<llvm::Module>>
-lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
-             const std::string &triple, const LowerOptions &opts) {
+lowerModule(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
+            const std::string &triple, const LowerOptions &opts, const LeafNamer *namer) {
   auto mod = std::make_unique<llvm::Module>(prog.file.empty() ? "program" : prog.file, ctx);
   mod->setDataLayout(dl);
   mod->setTargetTriple(triple);
@@ -219,7 +256,7 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
   for (int32_t i = 0; i < static_cast<int32_t>(prog.stmts.size()); ++i)
     mc.weightBefore.push_back(mc.weightBefore.back() + bodyWeight(prog, {i, i + 1}));
   const uint32_t parts = std::max<uint32_t>(opts.partitions, 1);
-  const bool shared = parts > 1;
+  const bool shared = parts > 1 || namer; // leaves of the spine call the subroutines
   const std::vector<uint32_t> owner = planPartitions(prog, parts);
   size_t unit = 0; // index into `owner`
   auto mine = [&](size_t u) { return owner[u] == opts.partition; };
@@ -229,27 +266,31 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
         makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body, shared));
   for (size_t k = 0; k < prog.subs.size(); ++k, ++unit)
     if (mine(unit))
-      if (llvm::Error e = lowerTopBody(mc, mc.subFns[k], prog.subs[k].body, 0, true)) return e;
+      if (llvm::Error e = lowerTopBody(mc, mc.subFns[k], prog.subs[k].body, 0, true, namer))
+        return e;
 
   if (mine(unit++)) {
     llvm::Function *init = makeFunction(*mod, kInitSymbol, FnKind::Entry);
-    if (llvm::Error e = lowerTopBody(mc, init, prog.init, 0, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, init, prog.init, 0, false, namer)) return e;
   }
   if (mine(unit++)) {
     llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
-    if (llvm::Error e = lowerTopBody(mc, plc1, prog.plc1, 0, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, plc1, prog.plc1, 0, false, namer)) return e;
   }
 
   std::vector<StmtRange> slices = prog.slices;
   if (slices.empty()) slices.push_back(prog.plc2);
   std::vector<llvm::Function *> sliceFns;
   for (size_t k = 0; k < slices.size(); ++k, ++unit) {
-    llvm::Function *fn = makeFunction(*mod, "lj_plc2.s" + std::to_string(k), FnKind::Body, shared);
+    llvm::Function *fn =
+        makeFunction(*mod, "lj_plc2.s" + std::to_string(k), FnKind::Body, parts > 1);
     sliceFns.push_back(fn);
     if (!mine(unit)) continue; // declared only: another partition defines it
-    fn->addFnAttr(llvm::Attribute::NoInline);
+    // In a spine the slice function only calls its leaf (or dispatches its chunks): the spine
+    // is compiled with inlining of these, one function for the switch instead of one per slice.
+    fn->addFnAttr(namer ? llvm::Attribute::AlwaysInline : llvm::Attribute::NoInline);
     int32_t dead = k < prog.sliceDepth.size() ? prog.sliceDepth[k] : 0;
-    if (llvm::Error e = lowerTopBody(mc, fn, slices[k], dead, false)) return e;
+    if (llvm::Error e = lowerTopBody(mc, fn, slices[k], dead, false, namer)) return e;
   }
   if (opts.partition == 0)
     emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
@@ -261,6 +302,68 @@ lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Da
   llvm::raw_string_ostream os(msg);
   if (llvm::verifyModule(*mod, &os))
     return llvm::createStringError("internal error: lowered module is invalid: %s", msg.c_str());
+  return mod;
+}
+
+} // namespace
+
+llvm::Expected<std::unique_ptr<llvm::Module>>
+lowerProgram(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
+             const std::string &triple, const LowerOptions &opts) {
+  return lowerModule(prog, ctx, dl, triple, opts, nullptr);
+}
+
+llvm::Expected<std::unique_ptr<llvm::Module>>
+lowerSpine(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::DataLayout &dl,
+           const std::string &triple, const LowerOptions &opts, const LeafNamer &namer) {
+  if (opts.partitions > 1) return llvm::createStringError("a spine is never partitioned");
+  return lowerModule(prog, ctx, dl, triple, opts, &namer);
+}
+
+llvm::Expected<std::unique_ptr<llvm::Module>>
+lowerLeaf(const VerifiedProgram &prog, const Leaf &leaf, const std::string &symbol,
+          llvm::LLVMContext &ctx, const llvm::DataLayout &dl, const std::string &triple,
+          const LowerOptions &opts) {
+  auto mod = std::make_unique<llvm::Module>(symbol, ctx);
+  mod->setDataLayout(dl);
+  mod->setTargetTriple(triple);
+  llvm::Expected<StateLayout> layout = StateLayout::create(ctx, dl, opts.readableNames);
+  if (!layout) return layout.takeError();
+  if (prog.info.size() != prog.stmts.size() || leaf.r.begin < 0 || leaf.r.begin > leaf.r.end ||
+      leaf.r.end > static_cast<int32_t>(prog.stmts.size()))
+    return llvm::createStringError("leaf outside the verified program");
+  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {}, {}};
+  if (opts.forces) mc.forced = forceTable(prog, *opts.forces);
+  // Only differences of weights inside the leaf are read (loop sizes, nested chunk plans).
+  mc.weightBefore.assign(static_cast<size_t>(leaf.r.begin) + 1, 0);
+  for (int32_t i = leaf.r.begin; i < leaf.r.end; ++i)
+    mc.weightBefore.push_back(mc.weightBefore.back() + bodyWeight(prog, {i, i + 1}));
+  mc.weightBefore.resize(prog.stmts.size() + 1, mc.weightBefore.back());
+  for (const Subroutine &sub : prog.subs)
+    mc.subFns.push_back(
+        makeFunction(*mod, "lj_sub" + std::to_string(sub.number), FnKind::Body, true));
+  llvm::Function *fn =
+      makeFunction(*mod, symbol, leaf.carried ? FnKind::CarriedBody : FnKind::Body, true);
+  FunctionEmitter fe(mc, fn, fn->getArg(0), leaf.retnStatus);
+  if (leaf.chunk) {
+    const CarryBuffer mine{leaf.carried ? fn->getArg(1) : nullptr, leaf.msBase,
+                           leaf.labelChunk.get()};
+    if (llvm::Error e = fe.emitRange(leaf.r, leaf.deadDepth, &leaf.plan, &mine)) return e;
+  } else if (llvm::Error e = fe.emitRange(leaf.r, leaf.deadDepth)) {
+    return e;
+  }
+  if (llvm::Error e = fe.finish()) return e;
+  while (!mc.pendingLoops.empty()) {
+    ModuleContext::Outlined o = mc.pendingLoops.back();
+    mc.pendingLoops.pop_back();
+    if (llvm::Error e = lowerBody(mc, o.fn, o.body, 0, true, kStatusReturn)) return e;
+  }
+  for (llvm::Function &f : llvm::make_early_inc_range(*mod))
+    if (f.isDeclaration() && f.use_empty() && !f.isIntrinsic()) f.eraseFromParent();
+  std::string msg;
+  llvm::raw_string_ostream os(msg);
+  if (llvm::verifyModule(*mod, &os))
+    return llvm::createStringError("internal error: lowered leaf is invalid: %s", msg.c_str());
   return mod;
 }
 

@@ -91,12 +91,14 @@ std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
   eo.forces = v->forces; // an override of this build; the verified program stays as verified
   std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
   if (spec.kind == engines::EngineKind::Jit) {
-    // One session for every version (a JITDylib each). No object cache: each version is
-    // compiled once, and a forced copy differs anyway.
+    // One session for every version (a JITDylib each), compiling incrementally: an online
+    // change or a force recompiles only the rung groups it touches; the others are linked from
+    // the session's in-memory leaf cache (jit/Jit.h, docs/incremental.md).
     jitLock.lock();
     if (!session_) {
       session_ = jit::Session::create(jit::Tier::Optimizing, error);
       if (!session_) return nullptr;
+      session_->enableIncremental();
     }
     eo.session = session_.get();
   }

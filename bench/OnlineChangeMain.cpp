@@ -1,0 +1,158 @@
+// bench_online_change: how long a one-rung online change of a program takes to give new code,
+// with the incremental compile (JitOptions::incremental) in one JIT session as `serve` uses it.
+//   bench_online_change PROGRAM [--changes N] [--threads T] [--full]
+// Compiles PROGRAM once (cold), then N times: edits one rung (the operand of one contact
+// statement, a different rung each time, spread over the program), writes nothing to disk,
+// parses + verifies the edited text and compiles it as a new version; prints per change the
+// front-end and compile times (wall; `cpu`: the compile's CPU time over its threads, which a
+// loaded machine inflates less) and the leaves compiled / reused, then min / median / max.
+// --full compiles every version without the incremental compile, for comparison.
+#include "formats/ProgramFile.h"
+#include "jit/Jit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Lines "LD Xa.b" / "AND Xa.b" / "OR Xa.b" ... (a contact on X with a bit): the edit sites.
+std::vector<size_t> contactLines(const std::vector<std::string> &lines) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string &l = lines[i];
+    size_t sp = l.find(' ');
+    if (sp == std::string::npos || l.size() < sp + 4) continue;
+    std::string op = l.substr(0, sp);
+    if (op != "LD" && op != "LDI" && op != "AND" && op != "ANI" && op != "OR" && op != "ORI")
+      continue;
+    if (l[sp + 1] == 'X' && l.find('.', sp) != std::string::npos) out.push_back(i);
+  }
+  return out;
+}
+
+/// The same contact on the next bit of its byte (X7.3 -> X7.4, X7.7 -> X7.0).
+std::string nextBit(const std::string &line) {
+  std::string l = line;
+  size_t dot = l.find('.');
+  char &b = l[dot + 1];
+  b = b == '7' ? '0' : static_cast<char>(b + 1);
+  return l;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    std::fprintf(stderr,
+                 "usage: bench_online_change PROGRAM [--changes N] [--threads T] [--full]\n");
+    return 2;
+  }
+  int changes = 20, threads = 0;
+  bool full = false;
+  for (int i = 2; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--changes") && i + 1 < argc)
+      changes = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--threads") && i + 1 < argc)
+      threads = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--full"))
+      full = true;
+    else {
+      std::fprintf(stderr, "bench_online_change: unknown option '%s'\n", argv[i]);
+      return 2;
+    }
+  }
+  lj::io::ProgramSource src;
+  std::string error;
+  if (!lj::io::readProgramFile(argv[1], src, error)) {
+    std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
+    return 2;
+  }
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(src.text);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  const std::vector<size_t> sites = contactLines(lines);
+  if (sites.empty()) {
+    std::fprintf(stderr, "bench_online_change: no X contact to edit in %s\n", argv[1]);
+    return 2;
+  }
+  std::shared_ptr<lj::jit::Session> session =
+      lj::jit::Session::create(lj::jit::Tier::Optimizing, error);
+  if (!session) {
+    std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
+    return 2;
+  }
+  if (!full) session->enableIncremental();
+  lj::jit::JitOptions jo;
+  jo.compileThreads = threads;
+  // Versions stay alive as in serve until the next one replaced them.
+  std::unique_ptr<lj::VerifiedProgram> prog, prevProg;
+  std::unique_ptr<lj::Engine> engine, prevEngine;
+  std::vector<double> totals, compiles, cpus;
+  std::printf("program %s: %zu lines, %zu edit sites, %s compile, %d threads (0 = all)\n", argv[1],
+              lines.size(), sites.size(), full ? "whole-program" : "incremental", threads);
+  std::printf("%-7s %9s %9s %9s %9s %9s %9s %8s %7s\n", "change", "frontend", "compile", "total",
+              "codegen", "link", "cpu", "leaves", "new");
+  for (int c = 0; c <= changes; ++c) {
+    if (c > 0) {
+      size_t site =
+          sites[(static_cast<size_t>(c) * 7919u * sites.size() / 20011u + c) % sites.size()];
+      lines[site] = nextBit(lines[site]);
+      src.text.clear();
+      for (const std::string &l : lines) src.text += l + "\n";
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    std::string diags;
+    std::optional<lj::VerifiedProgram> v = lj::io::verifyProgram(src, 200, diags);
+    if (!v) {
+      std::fprintf(stderr, "bench_online_change: %s\n", diags.c_str());
+      return 1;
+    }
+    auto p = std::make_unique<lj::VerifiedProgram>(std::move(*v));
+    const double fe = msSince(t0);
+    auto t1 = std::chrono::steady_clock::now();
+    lj::jit::CompileTimes t;
+    std::unique_ptr<lj::Engine> e = session->compile(*p, jo, error, &t);
+    if (!e) {
+      std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
+      return 1;
+    }
+    const double comp = msSince(t1), total = msSince(t0);
+    std::printf("%-7s %7.2fms %7.2fms %7.2fms %7.2fms %7.2fms %7.2fms %8u %7u\n",
+                c == 0 ? "cold" : std::to_string(c).c_str(), fe, comp, total,
+                (t.codegenUs - t.linkUs - t.cacheUs) / 1000, t.linkUs / 1000, t.cpuUs / 1000,
+                t.leaves, t.leavesCompiled);
+    if (c > 0) {
+      totals.push_back(total);
+      compiles.push_back(comp);
+      cpus.push_back(t.cpuUs / 1000);
+    }
+    prevEngine = std::move(engine);
+    prevProg = std::move(prog);
+    engine = std::move(e);
+    prog = std::move(p);
+  }
+  if (!totals.empty())
+    std::printf("one-rung change, %zu changes: request -> new code ready (parse + verify + "
+                "compile + link) min %.2f / median %.2f / max %.2f ms; compile alone median "
+                "%.2f ms (compile CPU median %.2f ms: lower + optimize + codegen, all threads)\n",
+                totals.size(), *std::min_element(totals.begin(), totals.end()), median(totals),
+                *std::max_element(totals.begin(), totals.end()), median(compiles), median(cpus));
+  return 0;
+}

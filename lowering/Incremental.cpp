@@ -1,0 +1,87 @@
+// The content of a leaf's cache key (lowering/Incremental.h): everything the lowering of one
+// leaf reads, with statement positions made relative to the leaf so that an edit elsewhere
+// that only moves the leaf keeps its key, and every fact that changes its code changing it.
+#include "lowering/Incremental.h"
+
+#include <type_traits>
+
+namespace lj::lower {
+
+namespace {
+
+// A new field in these types must be added below if the lowering reads it (else two leaves
+// differing only in it would share cached code). The sizes are the reminder; jit/ObjectCache.cpp
+// has the same one for the whole-program digest.
+static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 232 && sizeof(StmtInfo) == 20 &&
+                  sizeof(Subroutine) == 16 && sizeof(StmtRange) == 8 && sizeof(ChunkPlan) == 28,
+              "program model changed: update leafDigestInput()");
+
+template <typename T> void put(std::string &out, T v) {
+  auto u = static_cast<uint64_t>(static_cast<std::make_unsigned_t<T>>(v));
+  for (size_t i = 0; i < sizeof(T); ++i) out += static_cast<char>((u >> (8 * i)) & 0xff);
+}
+
+} // namespace
+
+std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
+                            const std::vector<int8_t> &forced) {
+  std::string s;
+  const StmtRange r = leaf.r;
+  s.reserve(static_cast<size_t>(r.end - r.begin) * 64 + 64);
+  s += "leaf 1";
+  put(s, r.end - r.begin);
+  put(s, leaf.deadDepth);
+  put(s, leaf.retnStatus);
+  put(s, static_cast<uint8_t>(leaf.chunk));
+  put(s, static_cast<uint8_t>(leaf.carried));
+  put(s, leaf.msBase);
+  if (leaf.chunk) {
+    const ChunkPlan &c = leaf.plan;
+    put(s, static_cast<uint8_t>(c.carriedIn));
+    put(s, static_cast<uint8_t>(c.carriedOut));
+    put(s, static_cast<uint8_t>(c.jumps));
+    put(s, c.stLoad);
+    put(s, c.msLoad);
+    put(s, c.stStore);
+    put(s, c.msStore);
+  }
+  for (int32_t i = r.begin; i < r.end; ++i) {
+    const Stmt &st = p.stmts[i];
+    const StmtInfo &in = p.info[i];
+    put(s, static_cast<uint8_t>(st.op));
+    put(s, st.operandCount);
+    for (int32_t k = 0; k < st.operandCount && k < static_cast<int32_t>(std::size(st.ops)); ++k) {
+      const Operand &o = st.ops[k];
+      put(s, static_cast<uint8_t>(o.kind));
+      put(s, static_cast<uint8_t>(o.area));
+      put(s, o.index);
+      put(s, o.bit);
+      put(s, o.value);
+    }
+    put(s, in.depth);
+    put(s, in.msDepth);
+    put(s, in.slot); // an absolute edge / timer / counter / pulse slot: a state offset
+    put(s, static_cast<uint8_t>(in.hasInput));
+    put(s, static_cast<uint8_t>(in.backward));
+    // Where the target is, as the code sees it.
+    if (in.target < 0) {
+      put(s, 'n');
+    } else if (in.target >= r.begin && in.target < r.end && st.op != Op::Call) {
+      put(s, 'r');
+      put(s, in.target - r.begin);
+    } else if (st.op == Op::Call && in.target < static_cast<int32_t>(p.subs.size())) {
+      put(s, 'c'); // the callee by the number its symbol carries (lj_sub<number>)
+      put(s, p.subs[in.target].number);
+    } else if (st.op == Op::Jump && leaf.labelChunk && leaf.labelChunk->count(in.target)) {
+      put(s, 'j'); // a jump out of this chunk returns the index of the chunk it goes on at
+      put(s, leaf.labelChunk->at(in.target));
+    } else {
+      put(s, 'a'); // anything else: its absolute position (never reused after a shift)
+      put(s, in.target);
+    }
+    put(s, forced.empty() ? int8_t{-1} : forced[i]);
+  }
+  return s;
+}
+
+} // namespace lj::lower
