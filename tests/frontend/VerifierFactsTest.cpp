@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 namespace lj {
@@ -211,22 +210,16 @@ TEST(VerifierFacts, CallDepthLimitExact) {
   EXPECT_TRUE(c.prog.has_value()) << c.diags;
 }
 
-// Linear time: a 10,000-statement program parses and verifies well under 50 ms.
-TEST(VerifierFacts, TenThousandStatementsAreFast) {
+// A program at the statement limit (10,000 statements) parses and verifies. How fast is
+// measured in bench/BenchFrontend.cpp (BM_ParseVerify), never in a timed unit test.
+TEST(VerifierFacts, TenThousandStatementsVerify) {
   std::string text;
   for (int i = 0; i < 2500; ++i)
     text += "LD X" + std::to_string(i % 500) + ".1\nAND R3.0\nOUT Y" + std::to_string(i % 500) +
             "." + std::to_string(i % 8) + "\nLDP X1.0\n";
-  double best = 1e9;
-  for (int rep = 0; rep < 3; ++rep) {
-    auto t0 = std::chrono::steady_clock::now();
-    auto c = compile(text);
-    auto t1 = std::chrono::steady_clock::now();
-    ASSERT_TRUE(c.prog.has_value());
-    ASSERT_EQ(c.prog->stmts.size(), 10000u);
-    best = std::min(best, std::chrono::duration<double, std::milli>(t1 - t0).count());
-  }
-  EXPECT_LT(best, 50.0);
+  auto c = compile(text);
+  ASSERT_TRUE(c.prog.has_value()) << c.diags;
+  EXPECT_EQ(c.prog->stmts.size(), 10000u);
 }
 
 } // namespace
