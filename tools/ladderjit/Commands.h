@@ -121,6 +121,7 @@ struct FuzzArgs {
   uint64_t programs = 1000;
   uint32_t ticks = 50;
   bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
+  bool switches = false;  ///< engine switches at random ticks against an unswitched interpreter
 };
 int runFuzz(const FuzzArgs &a);
 

@@ -131,6 +131,9 @@ int mainImpl(int argc, char **argv) {
   cFuzz->add_flag("--round-trip", fz.roundTrip,
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
                   "on the interpreter");
+  cFuzz->add_flag("--switch", fz.switches,
+                  "switch engines (interp, JIT fast, JIT optimizing) at random ticks on one "
+                  "state, against an unswitched interpreter run (docs/serve.md \"Tiering\")");
 
   BenchArgs bn;
   CLI::App *cBench = app.add_subcommand(
