@@ -4,6 +4,7 @@
 #include "CliRunner.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace lj::clitest {
 namespace {
@@ -66,6 +67,37 @@ TEST(Tier, BadTierOptionsAreUsageErrors) {
   r = runCli({"serve", stl, "--engine", "interp", "--tier", "interp-first", "--duration", "1"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("needs --engine jit"), std::string::npos) << r.err;
+}
+
+// serve's default with --engine jit is interp-fast-opt: the statistics name the interpreter as
+// the first engine, the switches (tick, engines) and the time to JIT speed
+// (docs/serve.md "Time to first tick").
+TEST(Tier, ServeStatisticsShowTheSwitches) {
+  const std::string stats = scratchDir() + "/tier_stats.json";
+  CliResult r = runCli({"serve", sourcePath("examples/lathe_panel.stl"), "--duration", "3",
+                        "--stats", stats, "--control", scratchDir() + "/tier.sock"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("tier interp-fast-opt"), std::string::npos) << r.out;
+  nlohmann::json j = nlohmann::json::parse(slurp(stats));
+  const nlohmann::json &st = j["startup"];
+  EXPECT_EQ(j["tier"], "interp-fast-opt");
+  EXPECT_EQ(st["tiering"]["mode"], "interp-fast-opt");
+  EXPECT_EQ(st["tiering"]["first_engine"], "interp");
+  EXPECT_GT(st["first_tick_ms"].get<double>(), 0.0);
+  EXPECT_GE(st["first_tick_ms"].get<double>(), st["ready_ms"].get<double>());
+  // An 82-statement program compiles in milliseconds: both switches happen within 3 s.
+  ASSERT_EQ(st["tiering"]["switch_count"], 2) << st.dump();
+  const nlohmann::json &sw = st["tiering"]["switches"];
+  EXPECT_EQ(sw[0]["from"], "interp");
+  EXPECT_EQ(sw[0]["to"], "jit-fast");
+  EXPECT_EQ(sw[1]["from"], "jit-fast");
+  EXPECT_EQ(sw[1]["to"], "jit-opt");
+  EXPECT_LE(sw[0]["tick"].get<uint64_t>(), sw[1]["tick"].get<uint64_t>());
+  EXPECT_EQ(st["tiering"]["engine"], "jit-opt");
+  EXPECT_EQ(st["tiering"]["time_to_jit_ms"], sw[0]["at_ms"]);
+  EXPECT_GE(sw[0]["at_ms"].get<double>(), st["first_tick_ms"].get<double>());
+  EXPECT_EQ(j["swaps"], 0); // tier switches are no online changes
+  EXPECT_NE(r.out.find("engine switch interp -> jit-fast at tick"), std::string::npos) << r.out;
 }
 
 } // namespace
