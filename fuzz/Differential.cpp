@@ -102,6 +102,55 @@ std::string firstCallDifference(const std::vector<test::HostCall> &a,
          show(b, i);
 }
 
+const char *switchEngineName(SwitchEngine e) {
+  switch (e) {
+  case SwitchEngine::Interp:
+    return "interp";
+  case SwitchEngine::JitFast:
+    return "jit-fast";
+  case SwitchEngine::JitOpt:
+    return "jit-opt";
+  }
+  return "interp";
+}
+
+namespace {
+
+/// The candidate of a switch-mode case: one engine per code kind the schedule uses.
+class SwitchedCandidate {
+public:
+  bool build(const VerifiedProgram &prog, const Case &c, const EngineFactory &factory,
+             std::string &error) {
+    auto need = [&](SwitchEngine e) {
+      std::unique_ptr<Engine> &slot = engines_[static_cast<size_t>(e)];
+      if (slot) return true;
+      if (e == SwitchEngine::Interp)
+        slot = makeInterpreterEngine(prog);
+      else
+        slot = factory(prog, e == SwitchEngine::JitFast, error);
+      if (!slot && error.empty()) error = "engine build failed without a message";
+      return slot != nullptr;
+    };
+    if (!need(c.first)) return false;
+    for (const SwitchPoint &p : c.switches)
+      if (!need(p.engine)) return false;
+    return true;
+  }
+  /// The entries for tick `t` (kInitTick: init).
+  const lj_entries &at(const Case &c, uint32_t t) const {
+    SwitchEngine e = c.first;
+    if (t != Outcome::kInitTick)
+      for (const SwitchPoint &p : c.switches)
+        if (p.tick <= t) e = p.engine;
+    return engines_[static_cast<size_t>(e)]->entries();
+  }
+
+private:
+  std::unique_ptr<Engine> engines_[3];
+};
+
+} // namespace
+
 Outcome runCase(const Case &c, const EngineFactory &factory) {
   Outcome r;
   std::string text;
@@ -117,12 +166,15 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   }
   std::unique_ptr<Engine> ref = makeInterpreterEngine(*prog);
   std::string error;
-  std::unique_ptr<Engine> cand = factory(*prog, c.fastTier, error);
-  if (!cand) {
+  std::unique_ptr<Engine> cand;
+  SwitchedCandidate switched;
+  if (c.switched ? !switched.build(*prog, c, factory, error)
+                 : !(cand = factory(*prog, c.fastTier, error))) {
     r.kind = Outcome::Kind::EngineError;
     r.detail = error.empty() ? "engine build failed without a message" : error;
     return r;
   }
+  const char *candName = c.switched ? "switched" : cand->name();
   // Two full states on the heap (each is ~40 KB), each with its own NC host of equal content.
   auto sa = std::make_unique<lj_state>();
   auto sb = std::make_unique<lj_state>();
@@ -135,7 +187,9 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     s->now_ms = c.stim.initNowMs;
   }
   const lj_entries &ea = ref->entries();
-  const lj_entries &eb = cand->entries();
+  auto eb = [&](uint32_t t) -> const lj_entries & {
+    return c.switched ? switched.at(c, t) : cand->entries();
+  };
   r.slices = ea.plc2_slice_count;
   auto compare = [&](uint32_t fa, uint32_t fb, uint32_t tick) {
     const bool sameCalls = ha.calls() == hb.calls();
@@ -144,16 +198,16 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     r.kind = Outcome::Kind::Mismatch;
     r.tick = tick;
     if (fa != fb)
-      r.detail = "fault code: interp=" + std::to_string(fa) + ' ' + cand->name() + '=' +
-                 std::to_string(fb);
+      r.detail =
+          "fault code: interp=" + std::to_string(fa) + ' ' + candName + '=' + std::to_string(fb);
     else if (!sameCalls)
-      r.detail = firstCallDifference(ha.calls(), hb.calls(), cand->name());
+      r.detail = firstCallDifference(ha.calls(), hb.calls(), candName);
     else
-      r.detail = firstDifference(*sa, *sb, cand->name());
+      r.detail = firstDifference(*sa, *sb, candName);
     return false;
   };
   uint32_t fa = lj_run_init(sa.get(), &ea);
-  uint32_t fb = lj_run_init(sb.get(), &eb);
+  uint32_t fb = lj_run_init(sb.get(), &eb(Outcome::kInitTick));
   r.statements += static_cast<uint64_t>(prog->init.end - prog->init.begin);
   if (!compare(fa, fb, Outcome::kInitTick)) return r;
   const int32_t plc1 = prog->plc1.end - prog->plc1.begin;
@@ -164,7 +218,7 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
       s->now_ms = c.stim.nowMs[t];
     }
     fa = lj_tick(sa.get(), &ea);
-    fb = lj_tick(sb.get(), &eb);
+    fb = lj_tick(sb.get(), &eb(t));
     r.statements += static_cast<uint64_t>(plc1);
     if (slice < prog->slices.size())
       r.statements += static_cast<uint64_t>(prog->slices[slice].end - prog->slices[slice].begin);

@@ -16,6 +16,18 @@
 
 namespace lj::fuzz {
 
+/// The code one side runs in switch mode (`ladderjit fuzz --switch`).
+enum class SwitchEngine : uint8_t { Interp, JitFast, JitOpt };
+/// "interp", "jit-fast", "jit-opt".
+const char *switchEngineName(SwitchEngine e);
+
+/// From tick `tick` on (before its scan), the engine under test runs `engine`'s code on the same
+/// lj_state: nothing is reset, init does not run again.
+struct SwitchPoint {
+  uint32_t tick = 0;
+  SwitchEngine engine = SwitchEngine::Interp;
+};
+
 /// A reproducible case: what the minimizer shrinks.
 struct Case {
   std::vector<std::string> lines;
@@ -25,6 +37,12 @@ struct Case {
   /// Content seed of the recording NC host (hosts/TestHost.h) each engine gets a copy
   /// of; 0 = empty content.
   uint64_t hostSeed = 0;
+  /// Switch mode: the candidate side runs init and the first ticks on `first`, then switches at
+  /// every point (ticks not decreasing), and is compared with an unswitched interpreter run.
+  /// Empty = the plain differential case (the factory's engine throughout).
+  bool switched = false;
+  SwitchEngine first = SwitchEngine::Interp;
+  std::vector<SwitchPoint> switches;
 };
 
 /// What running a case on both engines gave.
@@ -40,7 +58,9 @@ struct Outcome {
   uint32_t slices = 0;
 };
 
-/// Parse + verify `c.lines`, build the interpreter and `factory`'s engine, give each its own
+/// Parse + verify `c.lines`, build the interpreter and `factory`'s engine (switch mode: a second
+/// interpreter and the factory's fast and optimizing builds, switched as `c.switches` says),
+/// give each its own
 /// TestHost with the same content, run init and every tick of the stimulus on both, and compare
 /// the program state (LJ_STATE_COMPARED_BYTES), the fault codes and the two hosts' call logs
 /// after init and after every tick. Stops at the first difference.

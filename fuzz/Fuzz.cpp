@@ -6,6 +6,7 @@
 
 #include "gen/Rng.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <ostream>
@@ -27,10 +28,47 @@ const char *modeName(TierMode m) {
   }
 }
 
+/// A random switch schedule: init on a random engine, then 1..4 switches at random ticks, each
+/// to an engine other than the one running.
+void randomSwitches(gen::Rng &rng, uint32_t ticks, Case &c) {
+  c.switched = true;
+  c.first = static_cast<SwitchEngine>(rng.range(0, 2));
+  SwitchEngine now = c.first;
+  const int n = static_cast<int>(rng.range(1, 4));
+  std::vector<uint32_t> at;
+  for (int i = 0; i < n; ++i)
+    at.push_back(static_cast<uint32_t>(rng.range(0, ticks > 0 ? ticks - 1 : 0)));
+  std::sort(at.begin(), at.end());
+  for (uint32_t t : at) {
+    SwitchEngine e = static_cast<SwitchEngine>((static_cast<int>(now) + rng.range(1, 2)) % 3);
+    c.switches.push_back({t, e});
+    now = e;
+  }
+}
+
+void countSwitches(const Case &c, FuzzStats &st) {
+  SwitchEngine now = c.first;
+  for (const SwitchPoint &p : c.switches) {
+    if (p.tick >= c.stim.ticks()) break;
+    if (now == SwitchEngine::Interp) ++st.interpToJit;
+    if (p.engine == SwitchEngine::Interp) ++st.jitToInterp;
+    if (now == SwitchEngine::JitFast && p.engine == SwitchEngine::JitOpt) ++st.fastToOpt;
+    if (now == SwitchEngine::JitOpt && p.engine == SwitchEngine::JitFast) ++st.optToFast;
+    now = p.engine;
+  }
+}
+
 /// Print a case so it replays: the program, the slicing, the stimulus file.
 void printCase(std::ostream &out, const Case &c) {
-  out << "--- program (" << c.lines.size() << " statements; --plc2-nvalue " << c.plc2Nvalue
-      << ", JIT tier " << tierName(c.fastTier) << ") ---\n";
+  out << "--- program (" << c.lines.size() << " statements; --plc2-nvalue " << c.plc2Nvalue;
+  if (c.switched) {
+    out << "; engine switches: init on " << switchEngineName(c.first);
+    for (const SwitchPoint &p : c.switches)
+      out << ", " << switchEngineName(p.engine) << " from tick " << p.tick;
+  } else {
+    out << ", JIT tier " << tierName(c.fastTier);
+  }
+  out << ") ---\n";
   for (const std::string &l : c.lines) out << l << "\n";
   out << "--- NC host: tests/support/TestHost(" << c.hostSeed << ") per engine ---\n";
   out << "--- stimulus (" << c.stim.ticks() << " ticks; --stimulus file) ---\n";
@@ -77,7 +115,12 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
     c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
     c.hostSeed = rng.next() | 1; // never 0: the host serves seeded variables, deltas, pockets
-    ++(c.fastTier ? st.fastPrograms : st.optimizingPrograms);
+    if (opts.switches) {
+      randomSwitches(rng, opts.ticks, c);
+      countSwitches(c, st);
+    } else {
+      ++(c.fastTier ? st.fastPrograms : st.optimizingPrograms);
+    }
     ++st.programs;
 
     Outcome o = runCase(c, candidate);
@@ -117,13 +160,21 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
   if (opts.progress) opts.progress(st, 0);
 
   out << "fuzz summary: seed " << opts.seed << ", programs " << st.programs << ", ticks/program "
-      << opts.ticks << ", tiers " << modeName(opts.tiers) << " (fast " << st.fastPrograms
-      << ", optimizing " << st.optimizingPrograms << ")\n"
+      << opts.ticks << ", tiers "
+      << (opts.switches
+              ? std::string("switched (interp, fast and optimizing JIT)")
+              : std::string(modeName(opts.tiers)) + " (fast " + std::to_string(st.fastPrograms) +
+                    ", optimizing " + std::to_string(st.optimizingPrograms) + ")")
+      << "\n"
       << "  ticks run " << st.ticks << ", statements executed " << st.statements
       << " (PLC1 + slice per tick, loops and calls counted once), watchdog ticks "
       << st.watchdogTicks << ", division-by-zero faults " << st.divZero
-      << ", programs with PLC2 slices > 1 " << st.multiSlice << "\n"
-      << "  mismatches " << st.mismatches << ", engine errors " << st.engineErrors
+      << ", programs with PLC2 slices > 1 " << st.multiSlice << "\n";
+  if (opts.switches)
+    out << "  engine switches at random ticks: interp->jit " << st.interpToJit << ", jit->interp "
+        << st.jitToInterp << ", fast->opt " << st.fastToOpt << ", opt->fast " << st.optToFast
+        << " (each compared tick by tick with an unswitched interpreter run)\n";
+  out << "  mismatches " << st.mismatches << ", engine errors " << st.engineErrors
       << ", programs not verified " << st.notVerified << "\n"
       << "  time " << std::fixed << std::setprecision(2) << st.seconds << " s\n";
   out << (st.failures() == 0 ? "PASS\n" : "FAIL\n");
@@ -140,6 +191,9 @@ uint64_t run(const FuzzOptions &opts, std::ostream &out) {
         << counts->marker << "\n";
     return st.failures();
   }
+  if (opts.switches)
+    out << "switch mode: each program's engine switches between the interpreter and the JIT "
+           "tiers at random ticks on one state, against an unswitched interpreter run\n";
   FuzzStats st = runWith(opts, out, jitFactory());
   return st.failures();
 }

@@ -33,6 +33,11 @@ struct FuzzOptions {
   /// Engine under test: the interpreter on the program's ladder round trip instead of the JIT
   /// (fuzz/RoundTrip.h).
   bool roundTrip = false;
+  /// Switch mode (`ladderjit fuzz --switch`, docs/serve.md "Tiering"): the side under test
+  /// switches between the interpreter, the fast and the optimizing JIT at random ticks (1 to 4
+  /// switches, init on a random one of them) on one lj_state, compared tick by tick with an
+  /// unswitched interpreter run.
+  bool switches = false;
   /// Called after every program with the counters so far and the programs done, and once more
   /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
   std::function<void(const FuzzStats &, uint64_t done)> progress;
@@ -50,6 +55,8 @@ struct FuzzStats {
   uint64_t divZero = 0;    ///< division-by-zero faults counted by the programs
   uint64_t multiSlice = 0; ///< programs whose PLC2 ran in more than one slice
   uint64_t fastPrograms = 0, optimizingPrograms = 0;
+  /// Switch mode: switches scheduled within the ticks run, by kind.
+  uint64_t interpToJit = 0, jitToInterp = 0, fastToOpt = 0, optToFast = 0;
   double seconds = 0;
   /// Mismatches + engine errors + programs that did not verify.
   uint64_t failures() const { return notVerified + mismatches + engineErrors; }

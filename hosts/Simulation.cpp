@@ -38,7 +38,7 @@ uint32_t Simulation::powerUp() {
   s_.now_ms = 0;
   tick_ = 0;
   nextEvent_ = 0;
-  return lj_run_init(&s_, &entries_);
+  return lj_run_init(&s_, entries_);
 }
 
 uint32_t Simulation::step(WatchRow &row) {
@@ -54,7 +54,7 @@ uint32_t Simulation::step(WatchRow &row) {
     nc_->beforeTick(s_, tick_);
   }
   s_.now_ms = tick_ * opts_.periodMs;
-  uint32_t fault = lj_tick(&s_, &entries_);
+  uint32_t fault = lj_tick(&s_, entries_);
   if (nc_) nc_->afterTick(s_, tick_);
   row.tick = tick_;
   row.fault = fault;

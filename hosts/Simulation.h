@@ -52,7 +52,13 @@ class Simulation {
 public:
   /// `entries`, `s`, `opts` and `nc` must outlive the simulation.
   Simulation(const lj_entries &entries, lj_state &s, const SimOptions &opts, SimNc *nc = nullptr)
-      : entries_(entries), s_(s), opts_(opts), nc_(nc) {}
+      : entries_(&entries), s_(s), opts_(opts), nc_(nc) {}
+  /// Run the following ticks on other code for the same program (interpreter-first tiering,
+  /// docs/serve.md "Tiering"): only the entry table changes, the state goes on as it is.
+  /// `entries` must outlive the simulation. Call between steps.
+  void setEntries(const lj_entries &entries) { entries_ = &entries; }
+  /// The number of the next tick step() runs.
+  uint64_t nextTick() const { return tick_; }
   /// Reset to power-up and run init; returns init's fault code.
   uint32_t powerUp();
   /// Whether all `opts.ticks` ticks have run.
@@ -61,7 +67,7 @@ public:
   uint32_t step(WatchRow &row);
 
 private:
-  const lj_entries &entries_;
+  const lj_entries *entries_;
   lj_state &s_;
   const SimOptions &opts_;
   SimNc *nc_;

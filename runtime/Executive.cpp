@@ -15,11 +15,13 @@ namespace lj::rt {
 
 namespace {
 
-int64_t monoNs() {
+int64_t clockNs(clockid_t clock) {
   timespec ts;
-  clock_gettime(CLOCK_MONOTONIC, &ts);
+  clock_gettime(clock, &ts);
   return int64_t{ts.tv_sec} * 1000000000 + ts.tv_nsec;
 }
+
+int64_t monoNs() { return clockNs(CLOCK_MONOTONIC); }
 
 void sleepUntil(int64_t ns) {
   timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
@@ -78,6 +80,10 @@ bool Executive::start(std::shared_ptr<ProgramVersion> initial, std::string &erro
   std::future<std::vector<std::string>> startedF = started.get_future();
   running_.store(true, std::memory_order_release);
   scanStats_.periodNs = opts_.periodNs;
+  scanStats_.tierMode = opts_.tierMode ? opts_.tierMode : "direct";
+  scanStats_.startNs = opts_.startNs ? opts_.startNs : monoNs();
+  scanStats_.readyNs = opts_.readyNs;
+  scanStats_.firstTier = scanStats_.tier = initial->tier;
   thread_ = std::thread([this, &started] {
     std::vector<std::string> notes;
     // The default 50 us timer slack of normal threads would be wake-up jitter of our own making.
@@ -149,8 +155,16 @@ void Executive::loop() {
       deadline += m * period;
     }
     uint64_t swapsBefore = scanStats_.swaps;
+    uint32_t tiersBefore = scanStats_.tierSwitches;
     tickOnce(tick);
     int64_t end = monoNs();
+    if (scanStats_.ticks == 0) {
+      scanStats_.firstTickEndNs = end;
+      scanStats_.firstTickEndUnixNs = clockNs(CLOCK_REALTIME);
+    }
+    if (scanStats_.tierSwitches != tiersBefore &&
+        scanStats_.tierSwitches <= TickStats::kMaxSwitches)
+      scanStats_.switches[scanStats_.tierSwitches - 1].endNs = end;
     scanStats_.scan.add(end - woke);
     if (scanStats_.swaps != swapsBefore && uint64_t(end - woke) > scanStats_.swapTickMaxNs)
       scanStats_.swapTickMaxNs = static_cast<uint64_t>(end - woke);
@@ -188,17 +202,66 @@ void Executive::takeSwap() {
   swapsTaken_.fetch_add(1, std::memory_order_release);
 }
 
+bool Executive::takeTierUp(uint64_t tick) {
+  if (stop_.load(std::memory_order_acquire)) return false;
+  ProgramVersion *next = pendingTier_.exchange(nullptr, std::memory_order_acq_rel);
+  if (!next) return false;
+  if (next->prog != cur_->prog) { // built for a version an online change has replaced
+    ++scanStats_.tierRefusals;
+    tiersRefused_.fetch_add(1, std::memory_order_release);
+    return false;
+  }
+  // The whole switch: the next lj_tick calls other code on the same lj_state.
+  if (scanStats_.tierSwitches < TickStats::kMaxSwitches) {
+    TierSwitch &w = scanStats_.switches[scanStats_.tierSwitches];
+    w.tick = tick;
+    w.from = cur_->tier;
+    w.to = next->tier;
+    w.buildNs = next->buildNs;
+  }
+  ++scanStats_.tierSwitches;
+  scanStats_.tier = next->tier;
+  cur_ = next;
+  tiersTaken_.fetch_add(1, std::memory_order_release);
+  return true;
+}
+
 void Executive::tickOnce(uint64_t tick) {
   lj_state &s = *state_;
   ex_.applyPending(s);
   for (IoBinding *io : io_) io->beforeTick(s, tick);
   s.now_ms = tick * opts_.periodNs / 1000000;
   takeSwap(); // init of a new version sees this tick's inputs and now_ms
+  takeTierUp(tick);
   if (lj_tick(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
   for (IoBinding *io : io_) io->afterTick(s, tick);
   ex_.applyLocks(s);
   ex_.publish(s, tick);
   for (AfterTickHook &h : after_) h(s, tick);
+}
+
+bool Executive::waitTaken(std::atomic<ProgramVersion *> &pending, ProgramVersion *offered,
+                          const std::atomic<uint64_t> &counter, uint64_t before,
+                          const std::atomic<uint64_t> *refused, uint64_t refusedBefore,
+                          std::chrono::milliseconds timeout, std::string &error) {
+  auto until = std::chrono::steady_clock::now() + timeout;
+  while (counter.load(std::memory_order_acquire) == before) {
+    if (refused && refused->load(std::memory_order_acquire) != refusedBefore) {
+      error = "the running program changed before the faster code was ready";
+      return false;
+    }
+    if (std::chrono::steady_clock::now() >= until || !running()) {
+      // Take the offer back unless the scan thread grabbed it in the meantime.
+      ProgramVersion *expected = offered;
+      if (pending.compare_exchange_strong(expected, nullptr)) {
+        error = running() ? "the scan thread did not take the new program in time"
+                          : "the scan thread is not running";
+        return false;
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  return true;
 }
 
 bool Executive::swap(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
@@ -210,18 +273,8 @@ bool Executive::swap(std::shared_ptr<ProgramVersion> next, std::chrono::millisec
   }
   uint64_t before = swapsTaken_.load(std::memory_order_acquire);
   pending_.store(next.get(), std::memory_order_release);
-  auto until = std::chrono::steady_clock::now() + timeout;
-  while (swapsTaken_.load(std::memory_order_acquire) == before) {
-    if (std::chrono::steady_clock::now() >= until || !running()) {
-      // Take the offer back unless the scan thread grabbed it in the meantime.
-      ProgramVersion *expected = next.get();
-      if (pending_.compare_exchange_strong(expected, nullptr)) {
-        error = "the scan thread did not take the new program in time";
-        return false;
-      }
-    }
-    std::this_thread::sleep_for(std::chrono::microseconds(200));
-  }
+  if (!waitTaken(pending_, next.get(), swapsTaken_, before, nullptr, 0, timeout, error))
+    return false;
   std::shared_ptr<ProgramVersion> old;
   {
     std::lock_guard<std::mutex> g(ownerMu_);
@@ -230,6 +283,43 @@ bool Executive::swap(std::shared_ptr<ProgramVersion> next, std::chrono::millisec
   }
   old.reset(); // the old engine (and its JITDylib) goes away here, off the scan thread
   if (log_) log_("online change: now running version " + std::to_string(current()->id));
+  return true;
+}
+
+bool Executive::tierUp(std::shared_ptr<ProgramVersion> faster, std::chrono::milliseconds timeout,
+                       std::string &error) {
+  std::lock_guard<std::mutex> one(swapMu_); // never at the same time as an online change
+  if (!running()) {
+    error = "the scan thread is not running";
+    return false;
+  }
+  if (!faster || !faster->engine) {
+    error = "no engine to switch to";
+    return false;
+  }
+  {
+    std::lock_guard<std::mutex> g(ownerMu_);
+    if (!currentOwner_ || currentOwner_->prog != faster->prog) {
+      error = "the running program changed before the faster code was ready";
+      return false;
+    }
+  }
+  uint64_t before = tiersTaken_.load(std::memory_order_acquire);
+  uint64_t refusedBefore = tiersRefused_.load(std::memory_order_acquire);
+  pendingTier_.store(faster.get(), std::memory_order_release);
+  if (!waitTaken(pendingTier_, faster.get(), tiersTaken_, before, &tiersRefused_, refusedBefore,
+                 timeout, error))
+    return false;
+  std::shared_ptr<ProgramVersion> old;
+  {
+    std::lock_guard<std::mutex> g(ownerMu_);
+    old = std::move(currentOwner_);
+    currentOwner_ = std::move(faster);
+  }
+  old.reset(); // the slower engine goes away off the scan thread; the program stays (shared)
+  if (log_)
+    log_(std::string("tiering: version ") + std::to_string(current()->id) + " now runs on " +
+         engineTierName(current()->tier));
   return true;
 }
 

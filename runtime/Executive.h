@@ -27,15 +27,19 @@ namespace lj::rt {
 
 /// One loaded program version: the verified program, its engine and the contact forces it was
 /// built with (runtime state, kept here and never in `prog`: ir/Forces.h). Immutable once built;
-/// the engine refers to `prog` (declared first, so it is destroyed last).
+/// the engine refers to `prog` (declared first, so it is destroyed last). Interpreter-first
+/// tiering builds further versions of the same program (the same `prog`, shared) with faster
+/// engines (ProgramLoader::buildTier, Executive::tierUp).
 struct ProgramVersion {
   std::string path; ///< PROGRAM file it came from
   std::string hash; ///< io::sha256Hash of the file's bytes (`sha256:...`)
   std::string so;   ///< the AOT .so the engine came from; empty for jit / interp
-  std::unique_ptr<VerifiedProgram> prog;
+  std::shared_ptr<VerifiedProgram> prog;
   std::unique_ptr<Engine> engine;
   ContactForces forces; ///< statement id -> forced conducting value (0/1)
-  uint64_t id = 0;      ///< 1, 2, ... in load order
+  uint64_t id = 0;      ///< 1, 2, ... in load order (a tier of a version keeps its id)
+  EngineTier tier = EngineTier::Interp; ///< which code `engine` is
+  int64_t buildNs = 0;                  ///< how long building `engine` took
 };
 
 /// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory
@@ -56,6 +60,10 @@ struct ExecutiveOptions {
   int cpu = -1;                        ///< pin the scan thread to this CPU, -1 = no pinning
   uint64_t maxTicks = 0;               ///< stop after this many ticks, 0 = until requestStop
   std::vector<io::Assignment> powerUp; ///< written after the reset, before the start hooks
+  /// For the statistics only (TickStats): CLOCK_MONOTONIC ns of what serve calls its start (the
+  /// start of main) and of the program being ready (read and verified); 0 = start() / unknown.
+  int64_t startNs = 0, readyNs = 0;
+  const char *tierMode = "direct"; ///< a static string: the `--tier` mode, for the statistics
 };
 
 class Executive {
@@ -90,6 +98,15 @@ public:
   /// the executive is not running or `timeout` passed first.
   bool swap(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
             std::string &error);
+  /// Interpreter-first tiering (docs/serve.md "Tiering"): run `faster`, another build of the
+  /// running program (the same `prog` object), from the next tick boundary on. Nothing else
+  /// happens there: no init, nothing in lj_state is touched (PLC2 continues with its next slice,
+  /// edge memories, timers and counters run on), because every engine keeps all program state
+  /// in lj_state. False (with `error`) when the running program is no longer `faster->prog` (an
+  /// online change or a force came first; `faster` is discarded and counted), when the
+  /// executive is not running or `timeout` passed. The replaced version is destroyed here.
+  bool tierUp(std::shared_ptr<ProgramVersion> faster, std::chrono::milliseconds timeout,
+              std::string &error);
   /// Ask the scan thread to stop after the current tick (async-signal-unsafe: not from a
   /// signal handler).
   void requestStop() { stop_.store(true, std::memory_order_release); }
@@ -109,6 +126,13 @@ private:
   void loop();
   void tickOnce(uint64_t tick);
   void takeSwap();
+  bool takeTierUp(uint64_t tick);
+  /// Wait until `counter` moves past `before` (or `refused` past `refusedBefore`): true when
+  /// taken; false when refused, stopped or timed out, with `pending` taken back when possible.
+  bool waitTaken(std::atomic<ProgramVersion *> &pending, ProgramVersion *offered,
+                 const std::atomic<uint64_t> &counter, uint64_t before,
+                 const std::atomic<uint64_t> *refused, uint64_t refusedBefore,
+                 std::chrono::milliseconds timeout, std::string &error);
 
   Exchange &ex_;
   ExecutiveOptions opts_;
@@ -126,6 +150,8 @@ private:
   ProgramVersion *cur_ = nullptr; // scan thread
   std::atomic<ProgramVersion *> pending_{nullptr};
   std::atomic<uint64_t> swapsTaken_{0};
+  std::atomic<ProgramVersion *> pendingTier_{nullptr};
+  std::atomic<uint64_t> tiersTaken_{0}, tiersRefused_{0};
   mutable std::mutex ownerMu_;
   std::shared_ptr<ProgramVersion> currentOwner_;
   std::mutex swapMu_; // one swap at a time

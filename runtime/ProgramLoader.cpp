@@ -6,6 +6,8 @@
 #include "formats/ProgramFile.h"
 #include "jit/Jit.h"
 
+#include <chrono>
+
 namespace lj::rt {
 
 const Stmt *stmtById(const VerifiedProgram &prog, StmtId id) {
@@ -53,11 +55,79 @@ ProgramLoader::ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string
 
 ProgramLoader::~ProgramLoader() = default;
 
-std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
-                                                    const ContactForces &forces, std::string &error,
-                                                    std::optional<io::DitFile> *ditOut,
-                                                    const std::string &so,
-                                                    std::vector<std::string> *dropped) {
+namespace {
+int64_t monoNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+} // namespace
+
+std::shared_ptr<ProgramVersion>
+ProgramLoader::load(const std::string &path, const ContactForces &forces, std::string &error,
+                    std::optional<io::DitFile> *ditOut, const std::string &so,
+                    std::vector<std::string> *dropped, int64_t *readyNs) {
+  return loadAs(false, path, forces, error, ditOut, so, dropped, readyNs);
+}
+
+std::shared_ptr<ProgramVersion> ProgramLoader::loadInterpreted(const std::string &path,
+                                                               std::string &error,
+                                                               std::optional<io::DitFile> *ditOut,
+                                                               int64_t *readyNs) {
+  return loadAs(true, path, {}, error, ditOut, {}, nullptr, readyNs);
+}
+
+jit::Session *ProgramLoader::session(bool fast, std::string &error) {
+  std::shared_ptr<jit::Session> &s = fast ? fastSession_ : session_;
+  if (!s) {
+    s = jit::Session::create(fast ? jit::Tier::Fast : jit::Tier::Optimizing, error);
+    // The optimizing session compiles incrementally (docs/incremental.md): its first build
+    // fills the per-group cache (the program already runs on the interpreter or the fast
+    // JIT meanwhile), so an online change or a force recompiles only the groups it touches.
+    if (s && !fast) s->enableIncremental();
+  }
+  return s.get();
+}
+
+std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v, EngineTier tier,
+                                                         std::string &error) {
+  if (tier != EngineTier::JitFast && tier != EngineTier::JitOpt) {
+    error = "tiering builds JIT code only";
+    return nullptr;
+  }
+  const int64_t t0 = monoNs();
+  auto out = std::make_shared<ProgramVersion>();
+  out->path = v.path;
+  out->hash = v.hash;
+  out->prog = v.prog; // the same verified program: the switch is of code only
+  out->forces = v.forces;
+  out->id = v.id;
+  out->tier = tier;
+  engines::EngineOptions eo;
+  eo.forces = v.forces;
+  std::lock_guard<std::mutex> g(mu_);
+  eo.session = session(tier == EngineTier::JitFast, error);
+  if (!eo.session) return nullptr;
+  Result<std::unique_ptr<Engine>> made =
+      engines::makeEngine(engines::EngineSpec{engines::EngineKind::Jit, {}}, *out->prog, eo);
+  if (!made) {
+    error = "jit: " + made.status().message();
+    return nullptr;
+  }
+  out->engine = std::move(made).value();
+  out->buildNs = monoNs() - t0;
+  return out;
+}
+
+std::shared_ptr<ProgramVersion>
+ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactForces &forces,
+                      std::string &error, std::optional<io::DitFile> *ditOut, const std::string &so,
+                      std::vector<std::string> *dropped, int64_t *readyNs) {
+  const int64_t t0 = monoNs();
+  if (interpreted && aot()) {
+    error = "an AOT server runs its .so from the first tick (no interpreter-first tiering)";
+    return nullptr;
+  }
   if (aot() && !forces.empty()) {
     error = "forcing needs recompilation, which an AOT .so cannot do";
     return nullptr;
@@ -80,13 +150,17 @@ std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
     while (!error.empty() && error.back() == '\n') error.pop_back();
     return nullptr;
   }
-  v->prog = std::make_unique<VerifiedProgram>(std::move(*prog));
+  v->prog = std::make_shared<VerifiedProgram>(std::move(*prog));
+  if (readyNs) *readyNs = monoNs();
   v->forces = forces;
   if (!checkForces(*v->prog, v->forces, error, dropped)) return nullptr;
-  engines::EngineSpec spec{engine_ == "interp" ? engines::EngineKind::Interp
-                           : aot()             ? engines::EngineKind::Aot
-                                               : engines::EngineKind::Jit,
+  engines::EngineSpec spec{interpreted || engine_ == "interp" ? engines::EngineKind::Interp
+                           : aot()                            ? engines::EngineKind::Aot
+                                                              : engines::EngineKind::Jit,
                            so};
+  v->tier = spec.kind == engines::EngineKind::Interp ? EngineTier::Interp
+            : spec.kind == engines::EngineKind::Aot  ? EngineTier::Aot
+                                                     : EngineTier::JitOpt;
   engines::EngineOptions eo;
   eo.forces = v->forces; // an override of this build; the verified program stays as verified
   std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
@@ -95,12 +169,8 @@ std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
     // change or a force recompiles only the rung groups it touches; the others are linked from
     // the session's in-memory leaf cache (jit/Jit.h, docs/incremental.md).
     jitLock.lock();
-    if (!session_) {
-      session_ = jit::Session::create(jit::Tier::Optimizing, error);
-      if (!session_) return nullptr;
-      session_->enableIncremental();
-    }
-    eo.session = session_.get();
+    eo.session = session(false, error);
+    if (!eo.session) return nullptr;
   }
   // AOT: the loader checks the signer, ABI, state size, ELF and that `so` was built from this
   // program with this nvalue; a mismatch leaves the running version alone (the caller reports it).
@@ -117,6 +187,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
   v->engine = std::move(made).value();
   if (aot()) v->so = so;
   if (jitLock.owns_lock()) jitLock.unlock();
+  v->buildNs = monoNs() - t0;
   {
     std::lock_guard<std::mutex> g(mu_);
     v->id = nextId_++;

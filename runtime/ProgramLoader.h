@@ -47,12 +47,22 @@ public:
   /// `so` instead of compiling, and only when it was built from `path` with this plc2 nvalue;
   /// forces are refused). Null with `error` = the diagnostics or the reason. `dit`, when given,
   /// receives the container (nothing for an STL file). `dropped`: see checkForces (null: a
-  /// force whose id is not a contact refuses the load).
-  std::shared_ptr<ProgramVersion> load(const std::string &path, const ContactForces &forces,
-                                       std::string &error,
-                                       std::optional<io::DitFile> *dit = nullptr,
-                                       const std::string &so = {},
-                                       std::vector<std::string> *dropped = nullptr);
+  /// force whose id is not a contact refuses the load). `readyNs`: see loadInterpreted.
+  std::shared_ptr<ProgramVersion>
+  load(const std::string &path, const ContactForces &forces, std::string &error,
+       std::optional<io::DitFile> *dit = nullptr, const std::string &so = {},
+       std::vector<std::string> *dropped = nullptr, int64_t *readyNs = nullptr);
+  /// The same as load, but the version runs on the interpreter whatever the loader's engine:
+  /// the first version of interpreter-first tiering (docs/serve.md "Tiering"), ready as soon as
+  /// the program is verified. `readyNs`, when given, receives CLOCK_MONOTONIC at that moment.
+  std::shared_ptr<ProgramVersion> loadInterpreted(const std::string &path, std::string &error,
+                                                  std::optional<io::DitFile> *dit = nullptr,
+                                                  int64_t *readyNs = nullptr);
+  /// Another build of `v`'s program (the same VerifiedProgram, forces and id) on the JIT tier
+  /// `tier` (JitFast or JitOpt), in the loader's session of that tier. For the background
+  /// compile of tiering; runs on the calling thread. Null with `error` when the JIT fails.
+  std::shared_ptr<ProgramVersion> buildTier(const ProgramVersion &v, EngineTier tier,
+                                            std::string &error);
   const std::string &engine() const { return engine_; }
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }
@@ -60,12 +70,20 @@ public:
   void setAotTrust(io::TrustedKeys keys) { aotTrust_ = std::move(keys); }
 
 private:
+  std::shared_ptr<ProgramVersion> loadAs(bool interpreted, const std::string &path,
+                                         const ContactForces &forces, std::string &error,
+                                         std::optional<io::DitFile> *dit, const std::string &so,
+                                         std::vector<std::string> *dropped, int64_t *readyNs);
+  /// The session of `tier`, created on first use; call with mu_ held.
+  jit::Session *session(bool fast, std::string &error);
+
   io::TrustedKeys aotTrust_;
   std::string engine_;
   int32_t plc2Nvalue_;
   std::string dialect_;
   std::mutex mu_;
-  std::shared_ptr<jit::Session> session_; // created on first use
+  std::shared_ptr<jit::Session> session_;     // optimizing tier, created on first use
+  std::shared_ptr<jit::Session> fastSession_; // fast tier (tiering only), created on first use
   uint64_t nextId_ = 1;
 };
 

@@ -46,6 +46,53 @@ nlohmann::json Histogram::toJson() const {
           {"max_us", us(maxNs())}};
 }
 
+const char *engineTierName(EngineTier t) {
+  switch (t) {
+  case EngineTier::Interp:
+    return "interp";
+  case EngineTier::JitFast:
+    return "jit-fast";
+  case EngineTier::JitOpt:
+    return "jit-opt";
+  case EngineTier::Aot:
+    return "aot";
+  }
+  return "interp";
+}
+
+namespace {
+double msSince(int64_t from, int64_t to) {
+  return from && to ? static_cast<double>(to - from) / 1e6 : -1.0;
+}
+} // namespace
+
+nlohmann::json TickStats::startupJson() const {
+  nlohmann::json sw = nlohmann::json::array();
+  double toJit = -1;
+  for (uint32_t i = 0; i < std::min(tierSwitches, kMaxSwitches); ++i) {
+    const TierSwitch &w = switches[i];
+    double at = msSince(startNs, w.endNs);
+    sw.push_back({{"tick", w.tick},
+                  {"from", engineTierName(w.from)},
+                  {"to", engineTierName(w.to)},
+                  {"build_ms", static_cast<double>(w.buildNs) / 1e6},
+                  {"at_ms", at}});
+    if (toJit < 0 && w.to != EngineTier::Interp) toJit = at;
+  }
+  if (firstTier != EngineTier::Interp && toJit < 0) toJit = msSince(startNs, firstTickEndNs);
+  return {{"ready_ms", msSince(startNs, readyNs)},
+          {"first_tick_ms", msSince(startNs, firstTickEndNs)},
+          {"first_tick_unix_ns", firstTickEndUnixNs},
+          {"tiering",
+           {{"mode", tierMode},
+            {"first_engine", engineTierName(firstTier)},
+            {"engine", engineTierName(tier)},
+            {"switches", sw},
+            {"switch_count", tierSwitches},
+            {"refused", tierRefusals},
+            {"time_to_jit_ms", toJit}}}};
+}
+
 nlohmann::json TickStats::toJson() const {
   return {{"period_us", static_cast<double>(periodNs) / 1000.0},
           {"ticks", ticks},
@@ -57,7 +104,8 @@ nlohmann::json TickStats::toJson() const {
           {"swap_overruns", swapOverruns},
           {"missed_after_swap", missedAfterSwap},
           {"scan", scan.toJson()},
-          {"jitter", jitter.toJson()}};
+          {"jitter", jitter.toJson()},
+          {"startup", startupJson()}};
 }
 
 std::string TickStats::summary() const {
@@ -85,6 +133,20 @@ std::string TickStats::summary() const {
                   static_cast<double>(swapTickMaxNs) / 1000.0,
                   static_cast<unsigned long long>(swapOverruns),
                   static_cast<unsigned long long>(missedAfterSwap));
+    out += buf;
+  }
+  if (firstTickEndNs) {
+    std::snprintf(buf, sizeof buf, "  first tick %.1f ms after start (program ready at %.1f ms)\n",
+                  msSince(startNs, firstTickEndNs), msSince(startNs, readyNs));
+    out += buf;
+  }
+  for (uint32_t i = 0; i < std::min(tierSwitches, kMaxSwitches); ++i) {
+    const TierSwitch &w = switches[i];
+    std::snprintf(buf, sizeof buf,
+                  "  engine switch %s -> %s at tick %llu, %.1f ms after start (built in %.1f ms)\n",
+                  engineTierName(w.from), engineTierName(w.to),
+                  static_cast<unsigned long long>(w.tick), msSince(startNs, w.endNs),
+                  static_cast<double>(w.buildNs) / 1e6);
     out += buf;
   }
   return out + line("scan", scan) + line("jitter", jitter);

@@ -33,6 +33,20 @@ private:
   long double sum_ = 0;
 };
 
+/// Which code runs a program version (docs/serve.md "Tiering").
+enum class EngineTier : uint8_t { Interp, JitFast, JitOpt, Aot };
+/// "interp", "jit-fast", "jit-opt", "aot" (the lane names of `ladderjit bench`).
+const char *engineTierName(EngineTier t);
+
+/// One engine switch of the running program at a tick boundary (interpreter-first tiering): the
+/// same program and the same lj_state, only the code changed.
+struct TierSwitch {
+  uint64_t tick = 0; ///< the first tick the new code ran
+  EngineTier from = EngineTier::Interp, to = EngineTier::Interp;
+  int64_t buildNs = 0; ///< how long the background build of the new code took
+  int64_t endNs = 0;   ///< CLOCK_MONOTONIC at the end of that tick
+};
+
 /// Everything the executive counts.
 struct TickStats {
   uint64_t periodNs = 0;
@@ -44,10 +58,27 @@ struct TickStats {
   uint64_t swapTickMaxNs = 0;   ///< longest scan of a tick that swapped (init + tick)
   uint64_t swapOverruns = 0;    ///< overruns of ticks that swapped
   uint64_t missedAfterSwap = 0; ///< deadlines missed right after a swap tick
-  Histogram scan;               ///< work per tick: apply, I/O, lj_tick, publish, hooks
-  Histogram jitter;             ///< wake-up minus deadline
+  // Start-up and tiering (docs/serve.md "Time to first tick" and "Tiering"). Times are
+  // CLOCK_MONOTONIC ns; 0 = not (yet) known.
+  const char *tierMode = "direct"; ///< ExecutiveOptions::tierMode (a static string)
+  int64_t startNs = 0;             ///< ExecutiveOptions::startNs (serve: the start of main)
+  int64_t readyNs = 0;             ///< ExecutiveOptions::readyNs (program read and verified)
+  int64_t firstTickEndNs = 0;      ///< the end of the first tick's scan (step 9)
+  int64_t firstTickEndUnixNs = 0;  ///< the same moment on CLOCK_REALTIME (for outside clocks)
+  EngineTier firstTier = EngineTier::Interp; ///< the code init and the first tick ran on
+  EngineTier tier = EngineTier::Interp;      ///< the code running now
+  static constexpr uint32_t kMaxSwitches = 8;
+  uint32_t tierSwitches = 0;                       ///< engine switches taken (all of them counted)
+  std::array<TierSwitch, kMaxSwitches> switches{}; ///< the first kMaxSwitches of them
+  uint64_t tierRefusals = 0; ///< faster code discarded: an online change came first
+  Histogram scan;            ///< work per tick: apply, I/O, lj_tick, publish, hooks
+  Histogram jitter;          ///< wake-up minus deadline
 
   nlohmann::json toJson() const;
+  /// The "startup" object of toJson: ready_ms, first_tick_ms, first_tick_unix_ns and "tiering"
+  /// (mode, first_engine, engine, switches [{tick, from, to, build_ms, at_ms}], switch_count,
+  /// refused, time_to_jit_ms); times in ms since startNs, -1 = not known.
+  nlohmann::json startupJson() const;
   /// Human-readable summary (several lines).
   std::string summary() const;
 };

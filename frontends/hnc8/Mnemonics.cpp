@@ -5,7 +5,8 @@
 #include "frontends/hnc8/FrontEnd.h"
 
 #include <cctype>
-#include <cstring>
+#include <string>
+#include <unordered_map>
 
 namespace lj::hnc8 {
 
@@ -168,35 +169,40 @@ constexpr bool rowsInOrder() {
 }
 static_assert(rowsInOrder(), "rows are in Op order");
 
-bool equalsNoCase(std::string_view a, const char *b) {
-  size_t n = std::strlen(b);
-  if (a.size() != n) return false;
-  for (size_t i = 0; i < n; ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != b[i]) return false;
-  return true;
-}
-
 } // namespace
 
 std::span<const MnemonicRow> mnemonicTable() { return {kRows, static_cast<size_t>(kOpCount)}; }
 
 const MnemonicRow &mnemonicRow(Op op) { return kRows[static_cast<int>(op)]; }
 
+namespace {
+
+/// Every spelling and alias, upper case -> Op, built once. A spelling wins over an alias of the
+/// same text (the order the linear search of before checked them in).
+const std::unordered_map<std::string, Op> &mnemonicIndex() {
+  static const std::unordered_map<std::string, Op> index = [] {
+    std::unordered_map<std::string, Op> m;
+    m.reserve(2 * kOpCount);
+    for (const MnemonicRow &row : kRows) m.emplace(row.spelling, row.op);
+    for (const MnemonicRow &row : kRows)
+      if (row.alias) m.emplace(row.alias, row.op); // emplace keeps an existing spelling
+    return m;
+  }();
+  return index;
+}
+
+} // namespace
+
 bool lookupMnemonic(std::string_view m, Op &out) {
-  // Spellings first, then aliases: the order the one table of before checked them in.
-  for (const MnemonicRow &row : kRows) {
-    if (equalsNoCase(m, row.spelling)) {
-      out = row.op;
-      return true;
-    }
-  }
-  for (const MnemonicRow &row : kRows) {
-    if (row.alias && equalsNoCase(m, row.alias)) {
-      out = row.op;
-      return true;
-    }
-  }
-  return false;
+  // The parser asks once per statement: a hash lookup instead of comparing against every row
+  // (which was half of parsing a 10,000-statement program, docs/BENCHMARKS.md "Tiering").
+  std::string key(m);
+  for (char &c : key) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::unordered_map<std::string, Op> &index = mnemonicIndex();
+  auto it = index.find(key);
+  if (it == index.end()) return false;
+  out = it->second;
+  return true;
 }
 
 const DialectText &dialectText() {

@@ -1,7 +1,8 @@
 // The bounded differential campaign CTest runs: interpreter against the JIT (mixed tiers) on a
 // few thousand small random programs; exit status 1 on any mismatch, engine error or program
 // that does not verify. `difffuzz_campaign [--seed S] [--programs N] [--ticks T]
-// [--statements K] [--tier mixed|fast|optimizing]`.
+// [--statements K] [--tier mixed|fast|optimizing] [--switch 1]` (`--switch 1`: engine switches at
+// random ticks against an unswitched interpreter run, fuzz/Fuzz.h FuzzOptions::switches).
 #include "fuzz/Fuzz.h"
 
 #include <cstdlib>
@@ -28,6 +29,8 @@ int main(int argc, char **argv) {
       o.tiers = !std::strcmp(v, "fast")         ? lj::fuzz::TierMode::Fast
                 : !std::strcmp(v, "optimizing") ? lj::fuzz::TierMode::Optimizing
                                                 : lj::fuzz::TierMode::Mixed;
+    else if (!std::strcmp(k, "--switch"))
+      o.switches = std::strcmp(v, "0") != 0;
     else {
       std::cerr << "difffuzz_campaign: unknown option " << k << "\n";
       return 2;

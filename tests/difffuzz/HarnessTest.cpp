@@ -49,6 +49,76 @@ private:
   lj_entries entries_{};
 };
 
+/// The interpreter, except that it keeps the PLC2 slice position to itself (its own counter
+/// instead of the index lj_tick passes from lj_state.plc2_next_slice): right when it runs every
+/// tick from power-up, wrong when it takes over a running state. An engine switch (tiering)
+/// must catch exactly this kind of private state.
+class PrivateSliceEngine final : public Engine {
+public:
+  explicit PrivateSliceEngine(const VerifiedProgram &p) : inner_(makeInterpreterEngine(p)) {
+    entries_ = inner_->entries();
+    entries_.ctx = this;
+    entries_.init = [](void *ctx, lj_state *s) {
+      const lj_entries &in = static_cast<PrivateSliceEngine *>(ctx)->inner_->entries();
+      return in.init(in.ctx, s);
+    };
+    entries_.plc1 = [](void *ctx, lj_state *s) {
+      const lj_entries &in = static_cast<PrivateSliceEngine *>(ctx)->inner_->entries();
+      return in.plc1(in.ctx, s);
+    };
+    entries_.plc2_slice = [](void *ctx, lj_state *s, uint32_t) {
+      auto *self = static_cast<PrivateSliceEngine *>(ctx);
+      const lj_entries &in = self->inner_->entries();
+      uint32_t k = self->next_;
+      self->next_ = (k + 1) % in.plc2_slice_count;
+      return in.plc2_slice(in.ctx, s, k);
+    };
+  }
+  const lj_entries &entries() const override { return entries_; }
+  const char *name() const override { return "private-slice"; }
+
+private:
+  std::unique_ptr<Engine> inner_;
+  lj_entries entries_{};
+  uint32_t next_ = 0;
+};
+
+TEST(Harness, SwitchModeCatchesAnEngineWithPrivateState) {
+  EngineFactory privateSlice = [](const VerifiedProgram &p, bool, std::string &) {
+    return std::unique_ptr<Engine>(new PrivateSliceEngine(p));
+  };
+  FuzzOptions o;
+  o.seed = 9;
+  o.programs = 150;
+  o.ticks = 20;
+  o.minimize = false;
+  std::ostringstream plain, switched;
+  // Run from power-up on every tick, the private counter stays in step with lj_state.
+  FuzzStats st = runWith(o, plain, privateSlice);
+  EXPECT_EQ(st.failures(), 0u) << plain.str();
+  ASSERT_GT(st.multiSlice, 0u) << "no program had more than one PLC2 slice";
+  // Taking over a running state (or handing it back), it runs the wrong slice.
+  o.switches = true;
+  st = runWith(o, switched, privateSlice);
+  EXPECT_GT(st.mismatches, 0u) << switched.str();
+  EXPECT_GT(st.interpToJit, 0u);
+  EXPECT_GT(st.jitToInterp, 0u);
+  EXPECT_GT(st.fastToOpt, 0u);
+  EXPECT_NE(switched.str().find("engine switches: init on"), std::string::npos) << switched.str();
+}
+
+TEST(Harness, SwitchModeInterpreterAgainstItselfNeverMismatches) {
+  FuzzOptions o;
+  o.seed = 21;
+  o.programs = 200;
+  o.ticks = 20;
+  o.switches = true;
+  std::ostringstream out;
+  FuzzStats st = runWith(o, out, interpreterFactory());
+  EXPECT_EQ(st.failures(), 0u) << out.str();
+  EXPECT_GT(st.interpToJit + st.jitToInterp, 0u);
+}
+
 TEST(Harness, InterpreterAgainstItselfNeverMismatches) {
   FuzzOptions o;
   o.seed = 5;

@@ -144,6 +144,103 @@ OUT Y1.1
   EXPECT_EQ(exec.stats().swaps, 1u);
 }
 
+// Interpreter-first tiering (docs/serve.md "Tiering"): the interpreter runs from the start,
+// the JIT build of the same program is switched in at a tick boundary. Nothing else happens:
+// the init part ran once (D11 counts init runs), D1 counts every PLC1 run across the switch,
+// the edge memory of LDP X1.0 is kept (X1.0 = 1 since before the switch: one rising edge in
+// all, so Y1.1 stays 0 after the first tick), and the statistics name the switch.
+TEST(Executive, TierUpSwitchesCodeOnly) {
+  TempProgram p(R"(
+LDT
+MOV 7 D10
+ADD D11 1 D11
+IEND
+LDT
+ADD D1 1 D1
+LDP X1.0
+OUT Y1.1
+1END
+2END
+)");
+  ProgramLoader loader("jit", -1);
+  std::string err;
+  int64_t ready = 0;
+  auto v = loader.loadInterpreted(p.path(), err, nullptr, &ready);
+  ASSERT_TRUE(v) << err;
+  EXPECT_EQ(v->tier, EngineTier::Interp);
+  EXPECT_GT(ready, 0);
+  Exchange ex;
+  ExecutiveOptions o;
+  o.tierMode = "interp-first";
+  Executive exec(ex, o);
+  std::atomic<int> risingTicks{0}; // ticks that ended with Y1.1 = 1
+  exec.addAfterTickHook([&](const lj_state &st, uint64_t) {
+    if (st.img.Y[1] & 2) risingTicks.fetch_add(1);
+  });
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  ASSERT_TRUE(ex.waitApplied(ex.post({assign("X1.0=1")}), std::chrono::seconds(30)));
+  waitTicks(ex, 3);
+  auto fast = loader.buildTier(*v, EngineTier::JitOpt, err);
+  ASSERT_TRUE(fast) << err;
+  EXPECT_EQ(fast->prog, v->prog); // the same verified program
+  EXPECT_EQ(fast->id, v->id);
+  ASSERT_TRUE(exec.tierUp(fast, std::chrono::seconds(30), err)) << err;
+  EXPECT_EQ(exec.current()->tier, EngineTier::JitOpt);
+  waitTicks(ex, 3);
+  exec.requestStop();
+  exec.join();
+  const lj_state &s = exec.finalState();
+  TickStats st = exec.stats();
+  EXPECT_EQ(s.img.D[11], 1); // init ran once, not again at the switch
+  EXPECT_EQ(s.img.D[10], 7);
+  EXPECT_EQ(s.img.D[1], static_cast<int32_t>(st.ticks)); // one PLC1 run per tick, none lost
+  EXPECT_EQ(s.img.Y[1] & 2, 0);                          // no second rising edge
+  EXPECT_EQ(s.edge[0], 1);                               // the memory holds X1.0's level
+  EXPECT_EQ(st.swaps, 0u);                               // a tier switch is no online change
+  ASSERT_EQ(st.tierSwitches, 1u);
+  EXPECT_EQ(st.switches[0].from, EngineTier::Interp);
+  EXPECT_EQ(st.switches[0].to, EngineTier::JitOpt);
+  EXPECT_GT(st.switches[0].tick, 0u);
+  EXPECT_GT(st.switches[0].buildNs, 0);
+  EXPECT_GE(st.switches[0].endNs, st.firstTickEndNs);
+  EXPECT_EQ(st.firstTier, EngineTier::Interp);
+  EXPECT_EQ(st.tier, EngineTier::JitOpt);
+  nlohmann::json j = st.toJson()["startup"];
+  EXPECT_EQ(j["tiering"]["mode"], "interp-first");
+  EXPECT_EQ(j["tiering"]["switches"][0]["from"], "interp");
+  EXPECT_EQ(j["tiering"]["switches"][0]["to"], "jit-opt");
+  EXPECT_EQ(j["tiering"]["switches"][0]["tick"], st.switches[0].tick);
+  EXPECT_GT(j["first_tick_ms"].get<double>(), 0.0);
+}
+
+// A faster build of a program an online change has replaced is never switched in.
+TEST(Executive, TierUpAfterOnlineChangeIsRefused) {
+  TempProgram p(kCounting);
+  TempProgram p2("LDT\nMOV 9 D10\nIEND\nLDT\nADD D2 1 D2\n1END\n2END\n");
+  ProgramLoader loader("jit", -1);
+  std::string err;
+  auto v = loader.loadInterpreted(p.path(), err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  auto fast = loader.buildTier(*v, EngineTier::JitFast, err);
+  ASSERT_TRUE(fast) << err;
+  auto v2 = loader.load(p2.path(), {}, err);
+  ASSERT_TRUE(v2) << err;
+  ASSERT_TRUE(exec.swap(v2, std::chrono::seconds(30), err)) << err;
+  EXPECT_FALSE(exec.tierUp(fast, std::chrono::seconds(30), err));
+  EXPECT_NE(err.find("running program changed"), std::string::npos) << err;
+  EXPECT_EQ(exec.current()->id, v2->id);
+  waitTicks(ex, 2);
+  auto s = std::make_unique<lj_state>();
+  ASSERT_TRUE(ex.snapshot(*s));
+  EXPECT_EQ(s->img.D[10], 9); // version 2 runs
+  exec.requestStop();
+  exec.join();
+  EXPECT_EQ(exec.stats().tierSwitches, 0u);
+}
+
 TEST(Executive, FailedCompileKeepsTheOldProgram) {
   TempProgram p(kCounting);
   TempProgram bad("LD X1.0\nOUT\n"); // OUT without its operand: a verifier error

@@ -20,6 +20,8 @@ enum Exit : int { kOk = 0, kProgramErrors = 1, kUsage = 2 };
 
 /// Print `ladderjit: error: <msg>` to stderr and return kUsage.
 int usageError(const std::string &msg);
+/// Flush stdout; a write that failed turns `code` kOk into kUsage (with a message).
+int checkStdout(int code);
 
 /// PROGRAM as read: an STL file, or a plc.dit container (formats/ProgramFile.h).
 using io::effectiveNvalue;
@@ -62,6 +64,8 @@ struct RunArgs {
   std::string dump;                    ///< file ("-" = stdout), empty = none
   std::string params;                  ///< file, empty = none
   std::vector<std::string> trustKeys;  ///< --trust-key public keys, empty = the default key
+  std::string tier = "direct";         ///< --tier direct | interp-first | interp-fast-opt
+  std::string tierSwitchTicks;         ///< --tier-switch-tick N[,M]: switch exactly there
 };
 int runRun(const RunArgs &a);
 
@@ -117,6 +121,7 @@ struct FuzzArgs {
   uint64_t programs = 1000;
   uint32_t ticks = 50;
   bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
+  bool switches = false;  ///< engine switches at random ticks against an unswitched interpreter
 };
 int runFuzz(const FuzzArgs &a);
 
@@ -176,11 +181,15 @@ struct ServeArgs {
   std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
   std::vector<std::string> loadDirs;  ///< where `monitor load` may read; empty = PROGRAM's dir
   bool watchFile = false;             ///< reload PROGRAM (and the .so) when it changes on disk
+  std::string tier; ///< --tier direct | interp-first | interp-fast-opt; empty = the default
 
   // Client deadlines of the control socket and Modbus (docs/serve.md "Control").
   uint32_t clientIdleS = 30;        ///< connections idle this long are closed
   uint32_t requestTimeoutMs = 2000; ///< a request must be whole this long after its 1st byte
 };
+/// CLOCK_MONOTONIC (steady_clock) ns at the start of main: serve's "start" for the time to the
+/// first tick (docs/serve.md "Time to first tick").
+int64_t mainStartNs();
 /// `ladderjit serve`: the real-time runtime (docs/serve.md).
 int runServe(const ServeArgs &a);
 

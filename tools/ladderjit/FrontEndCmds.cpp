@@ -75,6 +75,8 @@ int runFuzz(const FuzzArgs &a) {
   opts.programs = a.programs;
   opts.ticks = a.ticks;
   opts.roundTrip = a.roundTrip;
+  opts.switches = a.switches;
+  if (a.roundTrip && a.switches) return usageError("--switch and --round-trip exclude each other");
   // Programs done, rate, mismatches so far and time left, once the campaign has run a second;
   // only on a terminal (CLI.md: nothing extra on a redirected stderr).
   Progress progress;

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -87,6 +88,11 @@ int mainImpl(int argc, char **argv) {
   repeatable(cRun, "--trust-key", run.trustKeys,
              "public key whose aot .so files are accepted; repeatable (default: the default "
              "key pair's, docs/aot.md)");
+  lastWins(cRun->add_option("--tier", run.tier,
+                            "direct | interp-first | interp-fast-opt (default direct; "
+                            "docs/serve.md \"Tiering\")"));
+  lastWins(cRun->add_option("--tier-switch-tick", run.tierSwitchTicks,
+                            "N[,M]: take the background JIT code exactly before tick N (and M)"));
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
@@ -125,6 +131,9 @@ int mainImpl(int argc, char **argv) {
   cFuzz->add_flag("--round-trip", fz.roundTrip,
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
                   "on the interpreter");
+  cFuzz->add_flag("--switch", fz.switches,
+                  "switch engines (interp, JIT fast, JIT optimizing) at random ticks on one "
+                  "state, against an unswitched interpreter run (docs/serve.md \"Tiering\")");
 
   BenchArgs bn;
   CLI::App *cBench = app.add_subcommand(
@@ -194,6 +203,9 @@ int mainImpl(int argc, char **argv) {
   cServe->add_option("PROGRAM", serve.program, kProgramHelp)->required();
   lastWins(
       cServe->add_option("--engine", serve.engine, "jit | interp | aot:PATH.so (default jit)"));
+  lastWins(cServe->add_option("--tier", serve.tier,
+                              "direct | interp-first | interp-fast-opt (default interp-fast-opt "
+                              "with --engine jit; docs/serve.md \"Tiering\")"));
   CLI::Option *servePeriod =
       lastWins(cServe->add_option("--period-ms", serve.periodMs, "PLC1 period in ms (default 1)")
                    ->check(kUnsigned));
@@ -301,7 +313,7 @@ int mainImpl(int argc, char **argv) {
 
 // Output that did not reach stdout (a full disk, /dev/full, a closed pipe) is a failure, not
 // exit 0: flush it and look at the stream's error flag (cout shares stdout's buffer).
-int checkStdout(int code) {
+int lj::cli::checkStdout(int code) {
   std::cout.flush();
   errno = 0;
   bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout.good();
@@ -311,10 +323,19 @@ int checkStdout(int code) {
   return code == kOk ? kUsage : code;
 }
 
+namespace {
+int64_t gMainStartNs = 0;
+} // namespace
+
+int64_t lj::cli::mainStartNs() { return gMainStartNs; }
+
 int main(int argc, char **argv) {
+  gMainStartNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                     std::chrono::steady_clock::now().time_since_epoch())
+                     .count();
   // Last line of defence: an exception (bad_alloc, a JSON error) must not end in a core dump.
   try {
-    return checkStdout(mainImpl(argc, argv));
+    return lj::cli::checkStdout(mainImpl(argc, argv));
   } catch (const std::exception &e) {
     std::fprintf(stderr, "ladderjit: error: %s\n", e.what());
   } catch (...) {

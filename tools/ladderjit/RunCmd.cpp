@@ -8,11 +8,16 @@
 #include "hosts/Simulation.h"
 #include "ir/Engine.h"
 #include "jit/ObjectCache.h"
+#include "runtime/TierUp.h"
 
 #include <charconv>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <mutex>
+#include <thread>
 
 namespace lj::cli {
 
@@ -147,6 +152,103 @@ private:
   std::ofstream file_;
 };
 
+// TIER: the JIT tiers of `run --tier` (docs/serve.md "Tiering"), built one after another on a
+// background thread while the interpreter runs the first ticks.
+class BackgroundJit {
+public:
+  BackgroundJit(const VerifiedProgram &prog, std::vector<rt::EngineTier> tiers,
+                std::shared_ptr<jit::ObjectCache> cache)
+      : tiers_(std::move(tiers)) {
+    built_.resize(tiers_.size());
+    thread_ = std::thread([this, &prog, cache = std::move(cache)] {
+      for (size_t i = 0; i < tiers_.size(); ++i) {
+        engines::EngineOptions eo;
+        eo.fastTier = tiers_[i] == rt::EngineTier::JitFast;
+        eo.cache = cache;
+        Result<std::unique_ptr<Engine>> made =
+            engines::makeEngine(engines::EngineSpec{engines::EngineKind::Jit, {}}, prog, eo);
+        std::lock_guard<std::mutex> g(mu_);
+        if (!made) {
+          error_ = std::string(rt::engineTierName(tiers_[i])) + ": " + made.status().message();
+          failed_ = true;
+          break;
+        }
+        built_[i] = std::move(made).value();
+        done_ = i + 1;
+        cv_.notify_all();
+      }
+      std::lock_guard<std::mutex> g(mu_);
+      finished_ = true;
+      cv_.notify_all();
+    });
+  }
+  ~BackgroundJit() {
+    if (thread_.joinable()) thread_.join();
+  }
+  size_t count() const { return tiers_.size(); }
+  rt::EngineTier tier(size_t i) const { return tiers_[i]; }
+  /// Tier i's engine once built; null before (or, with `wait`, only when the build failed:
+  /// `error` says why).
+  Engine *get(size_t i, bool wait, std::string &error) {
+    std::unique_lock<std::mutex> g(mu_);
+    if (wait) cv_.wait(g, [&] { return done_ > i || failed_; });
+    if (done_ > i) return built_[i].get();
+    if (failed_) error = error_;
+    return nullptr;
+  }
+  bool failed() {
+    std::lock_guard<std::mutex> g(mu_);
+    return failed_;
+  }
+  bool finished() {
+    std::lock_guard<std::mutex> g(mu_);
+    return finished_;
+  }
+  /// Let a compile still running end with the process.
+  void detach() { thread_.detach(); }
+
+private:
+  std::vector<rt::EngineTier> tiers_;
+  std::mutex mu_;
+  std::condition_variable cv_;
+  std::vector<std::unique_ptr<Engine>> built_;
+  size_t done_ = 0;
+  bool failed_ = false, finished_ = false;
+  std::string error_;
+  std::thread thread_;
+};
+
+// --tier-switch-tick N[,M]: one tick per background tier, in order, not decreasing.
+bool parseSwitchTicks(const std::string &text, size_t tiers, std::vector<uint64_t> &out,
+                      std::string &error) {
+  size_t pos = 0;
+  while (pos <= text.size() && !text.empty()) {
+    size_t comma = text.find(',', pos);
+    std::string item = text.substr(pos, comma == std::string::npos ? comma : comma - pos);
+    uint64_t v = 0;
+    auto [end, ec] = std::from_chars(item.data(), item.data() + item.size(), v);
+    if (item.empty() || ec != std::errc() || end != item.data() + item.size()) {
+      error = "--tier-switch-tick: expected tick numbers N[,M], got '" + text + "'";
+      return false;
+    }
+    if (!out.empty() && v < out.back()) {
+      error = "--tier-switch-tick: the ticks must not decrease, got '" + text + "'";
+      return false;
+    }
+    out.push_back(v);
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  if (out.size() > tiers) {
+    error = "--tier-switch-tick: " + std::to_string(out.size()) +
+            " ticks, but the tier plan "
+            "switches " +
+            std::to_string(tiers) + " time(s)";
+    return false;
+  }
+  return true;
+}
+
 } // namespace
 
 int runRun(const RunArgs &a) {
@@ -156,6 +258,21 @@ int runRun(const RunArgs &a) {
   if (!spec) return usageError(spec.status().message());
   if (a.periodMs > (uint64_t{1} << 40))
     return usageError("--period-ms: too large (at most 2^40 ms)");
+  std::string tierError;
+  std::optional<rt::TierPlan> plan = rt::parseTierPlan(a.tier, tierError);
+  if (!plan) return usageError(tierError);
+  const std::vector<rt::EngineTier> tiers = rt::backgroundTiers(*plan);
+  if (!tiers.empty() && spec->kind != engines::EngineKind::Jit)
+    return usageError("--tier " + a.tier +
+                      " needs --engine jit (it switches from the interpreter to the JIT)");
+  std::vector<uint64_t> switchTicks;
+  if (!a.tierSwitchTicks.empty()) {
+    if (tiers.empty())
+      return usageError("--tier-switch-tick needs --tier interp-first or "
+                        "interp-fast-opt");
+    if (!parseSwitchTicks(a.tierSwitchTicks, tiers.size(), switchTicks, tierError))
+      return usageError(tierError);
+  }
 
   io::SimOptions sim;
   std::string error;
@@ -185,7 +302,11 @@ int runRun(const RunArgs &a) {
     eo.aotExpect = io::aotExpectOf(src, nvalue);
     eo.aotTrust = &trust;
   }
-  Result<std::unique_ptr<Engine>> made = engines::makeEngine(*spec, *prog, eo);
+  // TIER: interpreter-first, the interpreter runs at once, the JIT is built in the background.
+  Result<std::unique_ptr<Engine>> made =
+      tiers.empty()
+          ? engines::makeEngine(*spec, *prog, eo)
+          : engines::makeEngine(engines::EngineSpec{engines::EngineKind::Interp, {}}, *prog, eo);
   if (!made)
     return usageError((spec->kind == engines::EngineKind::Aot ? "--engine aot: " : "jit: ") +
                       made.status().message());
@@ -212,6 +333,32 @@ int runRun(const RunArgs &a) {
   ncConfig.logLimit = kRunNcLogLimit;
   auto nc = std::make_unique<io::SimNc>(ncConfig);
   io::Simulation run(engine->entries(), *state, sim, nc.get());
+  std::unique_ptr<BackgroundJit> background;
+  if (!tiers.empty()) background = std::make_unique<BackgroundJit>(*prog, tiers, eo.cache);
+  size_t nextTier = 0;
+  // Before each tick: switch to every tier that is due (its --tier-switch-tick reached, waiting
+  // for its build) or, without a given tick, already built. Only the code changes.
+  auto tierUp = [&] {
+    while (background && nextTier < background->count()) {
+      const bool pinned = nextTier < switchTicks.size();
+      if (pinned && run.nextTick() < switchTicks[nextTier]) return;
+      std::string err;
+      Engine *e = background->get(nextTier, pinned, err);
+      if (!e) {
+        if (background->failed()) {
+          std::fprintf(stderr, "ladderjit: warning: %s (the run goes on with the engine it has)\n",
+                       err.empty() ? "the background JIT build failed" : err.c_str());
+          nextTier = background->count();
+        }
+        return;
+      }
+      run.setEntries(e->entries());
+      std::fprintf(stderr, "ladderjit: tiering: %s from tick %llu\n",
+                   rt::engineTierName(background->tier(nextTier)),
+                   static_cast<unsigned long long>(run.nextTick()));
+      ++nextTier;
+    }
+  };
   if (uint32_t f = run.powerUp(); f != LJ_FAULT_NONE)
     std::fprintf(stderr, "ladderjit: init: fault: %s (the init part was aborted)\n",
                  io::faultName(f));
@@ -219,6 +366,7 @@ int runRun(const RunArgs &a) {
   if (!sim.watch.empty()) table.emplace(sim.watch, a.format == "jsonl");
   io::WatchRow row;
   while (!run.done()) {
+    tierUp();
     if (uint32_t f = run.step(row); f != LJ_FAULT_NONE) {
       if (table) table->flush(); // keep stdout and stderr in tick order on a terminal
       std::fprintf(stderr, "ladderjit: tick %llu: fault: %s (the tick was aborted)\n",
@@ -228,6 +376,13 @@ int runRun(const RunArgs &a) {
   }
   if (table) table->flush();
   if (!dump.write(*state, *nc, error)) return usageError(error);
+  if (background && !background->finished()) {
+    // TIER: the result is complete; a compile still running ends with the process.
+    background->detach();
+    int code = checkStdout(kOk);
+    std::fflush(stderr);
+    std::_Exit(code);
+  }
   return kOk;
 }
 

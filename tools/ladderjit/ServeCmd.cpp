@@ -16,6 +16,7 @@
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 #include "runtime/ShmImage.h"
+#include "runtime/TierUp.h"
 #include "services/ModbusServer.h"
 #include "services/RetainStore.h"
 
@@ -168,6 +169,26 @@ bool writeStats(const std::string &path, const nlohmann::json &j, std::string &e
   return true;
 }
 
+// TIER: --tier (docs/serve.md "Tiering"): interp-fast-opt is the default of --engine jit; the
+// interpreter and an AOT .so have nothing to tier up to.
+bool serveTierPlan(const ServeArgs &a, const engines::EngineSpec &spec, rt::TierPlan &plan,
+                   std::string &error) {
+  if (a.tier.empty()) {
+    plan =
+        spec.kind == engines::EngineKind::Jit ? rt::TierPlan::InterpFastOpt : rt::TierPlan::Direct;
+    return true;
+  }
+  std::optional<rt::TierPlan> p = rt::parseTierPlan(a.tier, error);
+  if (!p) return false;
+  if (*p != rt::TierPlan::Direct && spec.kind != engines::EngineKind::Jit) {
+    error =
+        "--tier " + a.tier + " needs --engine jit (it switches from the interpreter to the JIT)";
+    return false;
+  }
+  plan = *p;
+  return true;
+}
+
 } // namespace
 
 int runServe(const ServeArgs &a) {
@@ -179,6 +200,9 @@ int runServe(const ServeArgs &a) {
   if (!spec) return usageError(spec.status().message());
   const bool aot = spec->kind == engines::EngineKind::Aot;
   const std::string so = spec->soPath;
+  rt::TierPlan tierPlan = rt::TierPlan::Direct;
+  std::string tierError;
+  if (!serveTierPlan(a, *spec, tierPlan, tierError)) return usageError(tierError);
   if (a.io != "simnc" && a.io != "shm")
     return usageError("--io: expected simnc or shm, got '" + a.io + "'");
   if (a.io == "shm" && a.shm.empty()) return usageError("--io shm needs --shm NAME");
@@ -233,7 +257,12 @@ int runServe(const ServeArgs &a) {
     loader.setAotTrust(std::move(trust));
   }
   std::optional<io::DitFile> dit;
-  std::shared_ptr<rt::ProgramVersion> first = loader.load(a.program, {}, error, &dit, so);
+  int64_t readyNs = 0;
+  // TIER: interpreter-first, the first version is the interpreter, ready once verified.
+  std::shared_ptr<rt::ProgramVersion> first =
+      tierPlan == rt::TierPlan::Direct
+          ? loader.load(a.program, {}, error, &dit, so, nullptr, &readyNs)
+          : loader.loadInterpreted(a.program, error, &dit, &readyNs);
   if (!first) {
     // Diagnostics of PROGRAM exit 1; an unreadable file or a .so that does not fit exits 2.
     if (error.find(": error:") != std::string::npos) {
@@ -264,6 +293,9 @@ int runServe(const ServeArgs &a) {
   eo.rtPriority = a.rtPriority;
   eo.cpu = a.cpu;
   eo.powerUp = powerUp;
+  eo.startNs = mainStartNs();
+  eo.readyNs = readyNs;
+  eo.tierMode = rt::tierPlanName(tierPlan);
   rt::Executive exec(exchange, eo, logLine);
 
   // ---- I/O binding: the simulated NC (default) and/or the shared-memory image ----
@@ -326,11 +358,16 @@ int runServe(const ServeArgs &a) {
   if (!socket.start(control, error)) return usageError(error);
 
   if (!exec.start(first, error)) return usageError(error);
+  // TIER: the JIT code is compiled in the background and switched in at a tick boundary.
+  rt::TierUp tierUp(exec, loader, logLine);
+  tierUp.start(first, rt::backgroundTiers(tierPlan));
   first.reset();
-  std::printf("ladderjit serve: running '%s' (engine %s, period %llu ms, %zu PLC2 slices)\n"
+  std::printf("ladderjit serve: running '%s' (engine %s, tier %s, period %llu ms, %zu PLC2 "
+              "slices)\n"
               "ladderjit serve: control socket %s\n",
-              a.program.c_str(), a.engine.c_str(), static_cast<unsigned long long>(periodMs),
-              exec.current()->prog->slices.size(), control.c_str());
+              a.program.c_str(), a.engine.c_str(), rt::tierPlanName(tierPlan),
+              static_cast<unsigned long long>(periodMs), exec.current()->prog->slices.size(),
+              control.c_str());
   if (!a.shm.empty())
     std::printf("ladderjit serve: shared-memory image /%s (io %s)\n",
                 a.shm[0] == '/' ? a.shm.c_str() + 1 : a.shm.c_str(), a.io.c_str());
@@ -397,6 +434,7 @@ int runServe(const ServeArgs &a) {
   // A stop wins over an online change in progress (issue 11 item 5): nothing is swapped in
   // from here on, and a compile LLVM cannot interrupt is not waited for.
   controller.shutdown();
+  tierUp.stop(); // TIER: nothing is switched in from here on
   if (watch) watch->stop();
   // HOOK(modbus): stop the Modbus TCP server (before the executive, so no write is lost).
   if (modbus) modbus->stop();
@@ -420,6 +458,11 @@ int runServe(const ServeArgs &a) {
       ::unlink(control.c_str());
       logLine("stopping without waiting for a control request in progress");
     }
+  }
+  if (tierUp.busy()) { // TIER: a background compile LLVM cannot interrupt ends with the process
+    tierUp.detach();
+    fastExit = true;
+    logLine("stopping without waiting for the background JIT compile");
   }
   if (watch) {
     if (controller.busy()) {
@@ -449,6 +492,7 @@ int runServe(const ServeArgs &a) {
     nlohmann::json j = st.toJson();
     j["program"] = exec.current()->path;
     j["engine"] = a.engine;
+    j["tier"] = rt::tierPlanName(tierPlan);
     j["stop_reason"] = why;
     j["online_change_refusals"] = cs.refused;
     j["last_refusal"] = cs.lastRefusal;
