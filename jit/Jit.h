@@ -35,6 +35,9 @@ struct JitOptions {
   std::shared_ptr<ObjectCache> cache = nullptr;
   /// Contacts compiled as forced constants (ir/Forces.h, docs/serve.md "Forcing").
   ContactForces forces{};
+  /// A traced build recording into this buffer (ir/Trace.h, lowering/Lower.h LowerOptions::trace);
+  /// never cached (the address is baked into the code). Null: untraced, today's code.
+  int32_t *trace = nullptr;
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,
