@@ -66,18 +66,26 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
     case Op::LoadFall:
       f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false)));
       break;
-    case Op::And:
-      f.setTop(f.top() && contact(readBit(s, c.a)));
+    case Op::And: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(readBit(s, c.a));
+      f.setTop(f.top() && v);
       break;
-    case Op::AndNot:
-      f.setTop(f.top() && contact(!readBit(s, c.a)));
+    }
+    case Op::AndNot: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(!readBit(s, c.a));
+      f.setTop(f.top() && v);
       break;
-    case Op::Or:
-      f.setTop(f.top() || contact(readBit(s, c.a)));
+    }
+    case Op::Or: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(readBit(s, c.a));
+      f.setTop(f.top() || v);
       break;
-    case Op::OrNot:
-      f.setTop(f.top() || contact(!readBit(s, c.a)));
+    }
+    case Op::OrNot: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(!readBit(s, c.a));
+      f.setTop(f.top() || v);
       break;
+    }
     // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
     case Op::AndRise: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));

@@ -117,6 +117,7 @@ struct FuzzArgs {
   uint64_t programs = 1000;
   uint32_t ticks = 50;
   bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
+  bool trace = false;     ///< both engines traced, traces compared (ir/Trace.h)
 };
 int runFuzz(const FuzzArgs &a);
 

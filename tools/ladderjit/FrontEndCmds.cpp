@@ -75,6 +75,7 @@ int runFuzz(const FuzzArgs &a) {
   opts.programs = a.programs;
   opts.ticks = a.ticks;
   opts.roundTrip = a.roundTrip;
+  opts.trace = a.trace;
   // Programs done, rate, mismatches so far and time left, once the campaign has run a second;
   // only on a terminal (CLI.md: nothing extra on a redirected stderr).
   Progress progress;

@@ -122,6 +122,9 @@ int mainImpl(int argc, char **argv) {
                ->check(kUnsigned));
   lastWins(
       cFuzz->add_option("--ticks", fz.ticks, "ticks per program (default 50)")->check(kUnsigned));
+  cFuzz->add_flag("--trace", fz.trace,
+                  "build the interpreter and the JIT traced and compare their power-flow traces "
+                  "too (ir/Trace.h, the live ladder view)");
   cFuzz->add_flag("--round-trip", fz.roundTrip,
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
                   "on the interpreter");
