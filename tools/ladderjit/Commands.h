@@ -161,6 +161,9 @@ struct ServeArgs {
   bool plc2NvalueGiven = false;
   uint64_t maxBackwardSteps = 1000000;
   std::string modbus;             ///< [HOST:]PORT, empty = no Modbus server
+  std::string http;               ///< [HOST:]PORT of the live view, empty = none
+  std::string httpTokenFile;      ///< the live view's token, from this file
+  bool httpReadOnly = false;      ///< the live view changes nothing
   std::string retain;             ///< retentive store file, empty = none
   bool retainForce = false;       ///< --retain-force: a file of another layout -> zeros
   uint32_t retainPeriodMs = 100;  ///< minimum gap between periodic retain saves

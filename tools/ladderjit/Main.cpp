@@ -210,6 +210,13 @@ int mainImpl(int argc, char **argv) {
                             "watchdog limit per tick (default 1000000)")
                ->check(kUnsigned));
   lastWins(cServe->add_option("--modbus", serve.modbus, "Modbus TCP server on [HOST:]PORT"));
+  lastWins(cServe->add_option("--http", serve.http,
+                              "the live ladder view on [HOST:]PORT (HOST defaults to 127.0.0.1)"));
+  lastWins(cServe->add_option("--http-token-file", serve.httpTokenFile,
+                              "the token the live view's changes need (default: a fresh one, "
+                              "printed at start)"));
+  cServe->add_flag("--http-read-only", serve.httpReadOnly,
+                   "the live view only shows: force, lock and unlock are refused (403)");
   lastWins(cServe->add_option("--retain", serve.retain, "retentive store file"));
   cServe->add_flag("--retain-force", serve.retainForce,
                    "load nothing from a retain file of another layout; start with zeros, keep "
