@@ -31,7 +31,9 @@ body.live main,body.live nav,body.live header,body.live #live{margin-right:330px
 const char *kLiveJs = R"JS(
 (function(){
 var L=window.ladder,model=null,hash=window.LJ_HASH||null,prev=[],lastMsg=null,hits=[],hitAt=-1;
-var byId={};document.querySelectorAll('g.el[data-stmt]').forEach(function(g){(byId[g.dataset.stmt]=byId[g.dataset.stmt]||[]).push(g)});
+var byId={};document.querySelectorAll('g.el[data-stmt]').forEach(function(g){(byId[g.dataset.stmt]=byId[g.dataset.stmt]||[]).push(g);
+ var bb=g.getBBox(),r=document.createElementNS('http://www.w3.org/2000/svg','rect');r.setAttribute('class','hit');r.setAttribute('x',bb.x);r.setAttribute('y',bb.y);
+ r.setAttribute('width',bb.width);r.setAttribute('height',bb.height);r.setAttribute('fill','transparent');g.insertBefore(r,g.firstChild)});
 var q=new URLSearchParams(location.search);if(q.get('token'))try{localStorage.setItem('ljtoken',q.get('token'))}catch(e){}
 function token(){var t=document.getElementById('tok').value;try{localStorage.setItem('ljtoken',t)}catch(e){}return t}
 var bar=document.createElement('div');bar.id='live';
