@@ -132,6 +132,7 @@ struct BenchArgs {
   uint64_t seed = 1;           ///< pseudo-random inputs
   bool cache = false;          ///< compile through the object cache (default: cache off)
   bool cBaseline = false;      ///< also translate to C and build with gcc / clang
+  bool trace = false;          ///< also time the traced builds of the live view (ir/Trace.h)
   uint32_t cTimeoutS = 300;    ///< time bound of one C compile
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;
