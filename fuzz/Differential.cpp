@@ -111,8 +111,8 @@ std::string firstTraceDifference(const VerifiedProgram &prog, const TraceLayout 
   for (size_t k = 0; k < tl.at.size(); ++k)
     if (tl.at[k] >= 0 && static_cast<size_t>(tl.at[k]) <= w) i = k;
   const Stmt &st = prog.stmts[i];
-  return "trace word " + std::to_string(w) + " (statement id " + std::to_string(st.id) +
-         ", line " + std::to_string(st.loc.line) + ", word " + std::to_string(w - size_t(tl.at[i])) +
+  return "trace word " + std::to_string(w) + " (statement id " + std::to_string(st.id) + ", line " +
+         std::to_string(st.loc.line) + ", word " + std::to_string(w - size_t(tl.at[i])) +
          "): interp=" + std::to_string(a[w]) + ' ' + candName + '=' + std::to_string(b[w]);
 }
 
@@ -134,8 +134,8 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   std::vector<int32_t> ta(static_cast<size_t>(tl.words)), tb(ta.size());
   std::unique_ptr<Engine> ref = makeInterpreterEngine(*prog, {}, c.trace ? ta.data() : nullptr);
   std::string error;
-  std::unique_ptr<Engine> cand = c.trace ? tracedJit(*prog, c.fastTier, tb.data(), error)
-                                         : factory(*prog, c.fastTier, error);
+  std::unique_ptr<Engine> cand =
+      c.trace ? tracedJit(*prog, c.fastTier, tb.data(), error) : factory(*prog, c.fastTier, error);
   if (!cand) {
     r.kind = Outcome::Kind::EngineError;
     r.detail = error.empty() ? "engine build failed without a message" : error;

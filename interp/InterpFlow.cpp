@@ -45,9 +45,12 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
     if constexpr (kTrace) {
       // EN is recorded before the statement runs (a taken JMP never comes back here).
       TraceKind tk = traceAt.kind[pc];
-      if (tk == TraceKind::Box || tk == TraceKind::Flow) trace[traceAt.at[pc]] = f.input();
-      else if (tk == TraceKind::Coil) trace[traceAt.at[pc]] = f.top();
-      else if (c.op == Op::LoadTrue) trace[traceAt.at[pc]] = 1;
+      if (tk == TraceKind::Box || tk == TraceKind::Flow)
+        trace[traceAt.at[pc]] = f.input();
+      else if (tk == TraceKind::Coil)
+        trace[traceAt.at[pc]] = f.top();
+      else if (c.op == Op::LoadTrue)
+        trace[traceAt.at[pc]] = 1;
     }
     switch (c.op) {
     // Contacts (hnc8-core.md 4.2).

@@ -108,8 +108,7 @@ uint32_t sliceEntry(void *ctx, lj_state *s, uint32_t k) {
 }
 } // namespace
 
-Interpreter::Interpreter(const VerifiedProgram &prog, const ContactForces &forces,
-                         int32_t *trace)
+Interpreter::Interpreter(const VerifiedProgram &prog, const ContactForces &forces, int32_t *trace)
     : impl_(std::make_unique<Impl>(prog, forces, trace)) {
   entries_.ctx = this;
   entries_.init = initEntry;

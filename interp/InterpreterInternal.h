@@ -6,8 +6,8 @@
 
 #include "interp/Interpreter.h"
 #include "ir/Profile.h"
-#include "ir/Trace.h"
 #include "ir/Program.h"
+#include "ir/Trace.h"
 #include "ladderjit/abi.h"
 
 #include <array>

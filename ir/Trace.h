@@ -32,8 +32,8 @@ enum class TraceKind : uint8_t {
 /// Core-block operands recorded as values: registers of the data areas and constants.
 inline bool traceOperand(const TargetProfile &tp, const Operand &o) {
   if (o.kind == Operand::Kind::Const) return true;
-  return o.kind == Operand::Kind::Reg && hasArea(static_cast<AreaMask>(kSrcAreas | kDstAreas), o.area) &&
-         tp.area(o.area).bytes > 0;
+  return o.kind == Operand::Kind::Reg &&
+         hasArea(static_cast<AreaMask>(kSrcAreas | kDstAreas), o.area) && tp.area(o.area).bytes > 0;
 }
 
 inline TraceKind traceKind(Op op) {

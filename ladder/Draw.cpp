@@ -240,7 +240,8 @@ std::string renderSvg(const Layout &l) {
          "\n";
 }
 
-std::string renderHtml(const Layout &l, const std::string &liveHead, const std::string &liveScript) {
+std::string renderHtml(const Layout &l, const std::string &liveHead,
+                       const std::string &liveScript) {
   std::string tabs, sections;
   for (size_t i = 0; i < l.parts.size(); ++i) {
     const PartLayout &p = l.parts[i];
@@ -265,9 +266,9 @@ std::string renderHtml(const Layout &l, const std::string &liveHead, const std::
          ".tab.sel{background:#1565c0;color:#fff}"
          "section.part{display:none;overflow:auto;padding:6px}section.part.sel{display:block}"
          "#info{font-size:12px;color:#444;margin-left:8px}" +
-         liveHead + "</style></head><body><header><b>" +
-         esc(l.file) + "</b><span id=\"info\"></span></header><nav>" + tabs + "</nav><main>" +
-         sections + "</main><script type=\"application/json\" id=\"ladder-layout\">" + data +
+         liveHead + "</style></head><body><header><b>" + esc(l.file) +
+         "</b><span id=\"info\"></span></header><nav>" + tabs + "</nav><main>" + sections +
+         "</main><script type=\"application/json\" id=\"ladder-layout\">" + data +
          "</script><script>"
          "(function(){var tabs=document.querySelectorAll('.tab');"
          "function "

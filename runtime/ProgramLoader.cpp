@@ -90,7 +90,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::load(const std::string &path,
                            so};
   engines::EngineOptions eo;
   eo.forces = v->forces; // an override of this build; the verified program stays as verified
-  if (traced()) { // a traced build records into the version's own buffer (ir/Trace.h)
+  if (traced()) {        // a traced build records into the version's own buffer (ir/Trace.h)
     v->trace = std::make_unique<TraceBuffer>(traceLayout(*v->prog).words);
     eo.trace = v->trace->live();
   }

@@ -81,9 +81,9 @@ struct HttpServer::Impl {
         }
       json ans = be.command(r);
       const bool ok = ans.value("ok", false);
-      log(req.method + " " + req.path + " " + body.dump(-1, ' ', false, json::error_handler_t::replace) +
-          " from " + origin(req) + ": " +
-          (ok ? std::string("ok") : "refused: " + ans.value("error", std::string("?"))));
+      log(req.method + " " + req.path + " " +
+          body.dump(-1, ' ', false, json::error_handler_t::replace) + " from " + origin(req) +
+          ": " + (ok ? std::string("ok") : "refused: " + ans.value("error", std::string("?"))));
       reply(res, ok ? 200 : 400, ans);
     });
   }

@@ -18,9 +18,9 @@ namespace lj::io {
 
 /// What the server serves, supplied by `serve` (tools/ladderjit/ServeHttp.cpp).
 struct HttpBackend {
-  std::function<std::string()> page;            ///< GET /: the self-contained HTML page
-  std::function<nlohmann::json()> model;        ///< GET /api/model: version + trace layout
-  std::function<nlohmann::json()> state;        ///< GET /api/state: the newest snapshot
+  std::function<std::string()> page;     ///< GET /: the self-contained HTML page
+  std::function<nlohmann::json()> model; ///< GET /api/model: version + trace layout
+  std::function<nlohmann::json()> state; ///< GET /api/state: the newest snapshot
   /// SSE: wait up to `timeout` for a message newer than `seq`; true with its text (whole
   /// `event:`/`data:` blocks) and `seq` advanced, false on timeout.
   std::function<bool(uint64_t &seq, std::string &text, std::chrono::milliseconds timeout)> next;
@@ -31,8 +31,8 @@ struct HttpBackend {
 
 struct HttpConfig {
   std::string host = "127.0.0.1";
-  int port = 0;       ///< 0 = any free port (port() tells which)
-  std::string token;  ///< required on every POST (Authorization: Bearer TOKEN)
+  int port = 0;      ///< 0 = any free port (port() tells which)
+  std::string token; ///< required on every POST (Authorization: Bearer TOKEN)
   bool readOnly = false;
   int maxStreams = 32; ///< SSE streams at once; more get 503
   std::function<void(const std::string &)> log;

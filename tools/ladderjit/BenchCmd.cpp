@@ -337,7 +337,8 @@ int runBench(const BenchArgs &a) {
   }
   if (a.trace) { // the live view's traced builds beside the untraced ones (docs/BENCHMARKS.md)
     Lane l;
-    auto buf = std::make_shared<std::vector<int32_t>>(static_cast<size_t>(traceLayout(*prog).words));
+    auto buf =
+        std::make_shared<std::vector<int32_t>>(static_cast<size_t>(traceLayout(*prog).words));
     l.name = "interp-traced";
     l.engine = "interp";
     l.tier = "-";

@@ -198,8 +198,10 @@ int runServe(const ServeArgs &a) {
     if (!splitHostPort(a.http, live.host, live.port, error, "--http")) return usageError(error);
     if (!a.httpTokenFile.empty()) {
       std::string text;
-      if (!io::readFile(a.httpTokenFile, text, error)) return usageError("--http-token-file: " + error);
-      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+      if (!io::readFile(a.httpTokenFile, text, error))
+        return usageError("--http-token-file: " + error);
+      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.pop_back();
       if (text.size() < 8 || text.find_first_of(" \t\r\n") != std::string::npos)
         return usageError("--http-token-file: '" + a.httpTokenFile +
                           "' must hold one token of at least 8 characters on one line");

@@ -48,10 +48,10 @@ json histJson(const rt::Histogram &h) {
 }
 
 json statsJson(const rt::TickStats &s) {
-  return {{"period_ns", s.periodNs},       {"ticks", s.ticks},
-          {"overruns", s.overruns},        {"missed_deadlines", s.missedDeadlines},
-          {"fault_ticks", s.faultTicks},   {"swaps", s.swaps},
-          {"scan", histJson(s.scan)},      {"jitter", histJson(s.jitter)}};
+  return {{"period_ns", s.periodNs},     {"ticks", s.ticks},
+          {"overruns", s.overruns},      {"missed_deadlines", s.missedDeadlines},
+          {"fault_ticks", s.faultTicks}, {"swaps", s.swaps},
+          {"scan", histJson(s.scan)},    {"jitter", histJson(s.jitter)}};
 }
 
 const char *kindName(TraceKind k) {
@@ -142,12 +142,16 @@ struct LiveView::Impl {
               break;
             }
           stmts[std::to_string(v.prog->stmts[i].id)] = {tl.at[i], kindName(tl.kind[i]),
-                                                         end - tl.at[i]};
+                                                        end - tl.at[i]};
         }
       }
-      model = {{"version", v.id},       {"hash", v.hash},       {"file", v.path},
-               {"engine", cfg.engine},  {"traced", v.trace != nullptr},
-               {"words", v.trace ? v.trace->words() : 0},      {"stmts", stmts}};
+      model = {{"version", v.id},
+               {"hash", v.hash},
+               {"file", v.path},
+               {"engine", cfg.engine},
+               {"traced", v.trace != nullptr},
+               {"words", v.trace ? v.trace->words() : 0},
+               {"stmts", stmts}};
       modelVersion = v.id;
     }
     return model;
@@ -191,7 +195,8 @@ struct LiveView::Impl {
         if (round % 10 == 0) stats = statsJson(exec.stats()); // 2 Hz
         m["stats"] = stats;
         std::string text =
-            "event: state\ndata: " + m.dump(-1, ' ', false, json::error_handler_t::replace) + "\n\n";
+            "event: state\ndata: " + m.dump(-1, ' ', false, json::error_handler_t::replace) +
+            "\n\n";
         std::lock_guard<std::mutex> lg(mu);
         message = std::move(text);
         latest = std::move(m);
