@@ -26,14 +26,13 @@ body.live main,body.live nav,body.live header,body.live #live{margin-right:330px
 .lad g.forced-off line.sym,.lad g.forced-off path.sym{stroke:#d50000!important;stroke-width:3}
 .lad text.fmark{font-size:10px;font-weight:bold}.lad text.val{font-size:11px;fill:#0d47a1;font-weight:bold}
 .lad g.box.on rect.box{stroke:#0a0;stroke-width:2.6}
+.lad g.el{pointer-events:bounding-box}
 )CSS";
 
 const char *kLiveJs = R"JS(
 (function(){
 var L=window.ladder,model=null,hash=window.LJ_HASH||null,prev=[],lastMsg=null,hits=[],hitAt=-1;
-var byId={};document.querySelectorAll('g.el[data-stmt]').forEach(function(g){(byId[g.dataset.stmt]=byId[g.dataset.stmt]||[]).push(g);
- var bb=g.getBBox(),r=document.createElementNS('http://www.w3.org/2000/svg','rect');r.setAttribute('class','hit');r.setAttribute('x',bb.x);r.setAttribute('y',bb.y);
- r.setAttribute('width',bb.width);r.setAttribute('height',bb.height);r.setAttribute('fill','transparent');g.insertBefore(r,g.firstChild)});
+var byId={};document.querySelectorAll('g.el[data-stmt]').forEach(function(g){(byId[g.dataset.stmt]=byId[g.dataset.stmt]||[]).push(g)});
 var q=new URLSearchParams(location.search);if(q.get('token'))try{localStorage.setItem('ljtoken',q.get('token'))}catch(e){}
 function token(){var t=document.getElementById('tok').value;try{localStorage.setItem('ljtoken',t)}catch(e){}return t}
 var bar=document.createElement('div');bar.id='live';
