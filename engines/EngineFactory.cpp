@@ -81,12 +81,15 @@ Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const Verifie
   std::unique_ptr<Engine> e;
   if (spec.kind == EngineKind::Aot && !opts.forces.empty())
     return engineFailed("aot: forcing needs recompilation, which an AOT .so cannot do");
+  if (spec.kind == EngineKind::Aot && opts.trace)
+    return engineFailed("aot: a .so is never traced; the live view needs --engine jit or interp");
   switch (spec.kind) {
   case EngineKind::Interp:
-    return makeInterpreterEngine(prog, opts.forces);
+    return makeInterpreterEngine(prog, opts.forces, opts.trace);
   case EngineKind::Jit: {
     jit::JitOptions jo;
     jo.forces = opts.forces;
+    jo.trace = opts.trace;
     jo.tier = opts.fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
     if (opts.session) {
       e = opts.session->compile(prog, jo, error);

@@ -60,6 +60,9 @@ struct EngineOptions {
   /// Interp and Jit: contacts built as forced (ir/Forces.h, docs/serve.md "Forcing"). Aot
   /// refuses a non-empty set (a prebuilt .so cannot be changed).
   ContactForces forces{};
+  /// Interp and Jit: a traced build recording into this buffer of traceLayout(prog).words words
+  /// (ir/Trace.h), which must outlive the engine. Aot refuses it (a .so is never traced).
+  int32_t *trace = nullptr;
 };
 
 /// Build the engine for `prog`, which must outlive it. EngineFailed with the JIT's or the

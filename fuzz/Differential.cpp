@@ -151,6 +151,20 @@ private:
 
 } // namespace
 
+std::string firstTraceDifference(const VerifiedProgram &prog, const TraceLayout &tl,
+                                 const std::vector<int32_t> &a, const std::vector<int32_t> &b,
+                                 const char *candName) {
+  size_t w = 0;
+  while (w < a.size() && a[w] == b[w]) ++w;
+  size_t i = 0; // the statement owning word w
+  for (size_t k = 0; k < tl.at.size(); ++k)
+    if (tl.at[k] >= 0 && static_cast<size_t>(tl.at[k]) <= w) i = k;
+  const Stmt &st = prog.stmts[i];
+  return "trace word " + std::to_string(w) + " (statement id " + std::to_string(st.id) + ", line " +
+         std::to_string(st.loc.line) + ", word " + std::to_string(w - size_t(tl.at[i])) +
+         "): interp=" + std::to_string(a[w]) + ' ' + candName + '=' + std::to_string(b[w]);
+}
+
 Outcome runCase(const Case &c, const EngineFactory &factory) {
   Outcome r;
   std::string text;
@@ -164,12 +178,16 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     r.detail = diags.render();
     return r;
   }
-  std::unique_ptr<Engine> ref = makeInterpreterEngine(*prog);
+  // Traced: both engines record into their own buffer of the one layout (ir/Trace.h).
+  const TraceLayout tl = c.trace ? traceLayout(*prog) : TraceLayout{};
+  std::vector<int32_t> ta(static_cast<size_t>(tl.words)), tb(ta.size());
+  std::unique_ptr<Engine> ref = makeInterpreterEngine(*prog, {}, c.trace ? ta.data() : nullptr);
   std::string error;
   std::unique_ptr<Engine> cand;
   SwitchedCandidate switched;
   if (c.switched ? !switched.build(*prog, c, factory, error)
-                 : !(cand = factory(*prog, c.fastTier, error))) {
+                 : !(cand = c.trace ? tracedJit(*prog, c.fastTier, tb.data(), error)
+                                    : factory(*prog, c.fastTier, error))) {
     r.kind = Outcome::Kind::EngineError;
     r.detail = error.empty() ? "engine build failed without a message" : error;
     return r;
@@ -193,7 +211,9 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   r.slices = ea.plc2_slice_count;
   auto compare = [&](uint32_t fa, uint32_t fb, uint32_t tick) {
     const bool sameCalls = ha.calls() == hb.calls();
-    if (fa == fb && sameCalls && std::memcmp(sa.get(), sb.get(), LJ_STATE_COMPARED_BYTES) == 0)
+    const bool sameTrace = ta == tb;
+    if (fa == fb && sameCalls && sameTrace &&
+        std::memcmp(sa.get(), sb.get(), LJ_STATE_COMPARED_BYTES) == 0)
       return true;
     r.kind = Outcome::Kind::Mismatch;
     r.tick = tick;
@@ -202,6 +222,8 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
           "fault code: interp=" + std::to_string(fa) + ' ' + candName + '=' + std::to_string(fb);
     else if (!sameCalls)
       r.detail = firstCallDifference(ha.calls(), hb.calls(), candName);
+    else if (!sameTrace)
+      r.detail = firstTraceDifference(*prog, tl, ta, tb, candName);
     else
       r.detail = firstDifference(*sa, *sb, candName);
     return false;

@@ -7,6 +7,7 @@
 #include "gen/ProgramGenerator.h"
 #include "hosts/TestHost.h"
 #include "ir/Engine.h"
+#include "ir/Trace.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -43,7 +44,14 @@ struct Case {
   bool switched = false;
   SwitchEngine first = SwitchEngine::Interp;
   std::vector<SwitchPoint> switches;
+  /// Build both engines traced (ir/Trace.h) and compare their traces too; the candidate is then
+  /// the traced JIT (tracedJit), whatever the factory.
+  bool trace = false;
 };
+
+/// The JIT built traced into `trace` (ir/Trace.h), for Case::trace.
+std::unique_ptr<Engine> tracedJit(const VerifiedProgram &prog, bool fastTier, int32_t *trace,
+                                  std::string &error);
 
 /// What running a case on both engines gave.
 struct Outcome {
@@ -69,6 +77,11 @@ Outcome runCase(const Case &c, const EngineFactory &factory);
 /// The first field (in struct order) where two states differ, as `D5: interp=3 jit=4`; empty when
 /// the states are byte-identical.
 std::string firstDifference(const lj_state &ref, const lj_state &cand, const char *candName);
+
+/// The first trace word where two traces of `prog` differ, with its statement.
+std::string firstTraceDifference(const VerifiedProgram &prog, const TraceLayout &tl,
+                                 const std::vector<int32_t> &a, const std::vector<int32_t> &b,
+                                 const char *candName);
 
 /// The first host call where two call logs differ, as `host call 3: interp=event(5) -> 0
 /// jit=(no call)`.

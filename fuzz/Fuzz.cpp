@@ -115,6 +115,7 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
     c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
     c.hostSeed = rng.next() | 1; // never 0: the host serves seeded variables, deltas, pockets
+    c.trace = opts.trace;
     if (opts.switches) {
       randomSwitches(rng, opts.ticks, c);
       countSwitches(c, st);

@@ -38,6 +38,9 @@ struct FuzzOptions {
   /// switches, init on a random one of them) on one lj_state, compared tick by tick with an
   /// unswitched interpreter run.
   bool switches = false;
+  /// Build both engines traced and compare the power-flow traces (ir/Trace.h) after init and
+  /// every tick as well as the states (the JIT is the engine under test).
+  bool trace = false;
   /// Called after every program with the counters so far and the programs done, and once more
   /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
   std::function<void(const FuzzStats &, uint64_t done)> progress;

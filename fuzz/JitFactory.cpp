@@ -1,4 +1,5 @@
 // The JIT as the fuzzer's engine under test, built by the one engine factory (engines/).
+#include "fuzz/Differential.h"
 #include "fuzz/Fuzz.h"
 
 #include "engines/EngineSpec.h"
@@ -17,6 +18,19 @@ EngineFactory jitFactory() {
     }
     return std::move(e).value();
   };
+}
+
+std::unique_ptr<Engine> tracedJit(const VerifiedProgram &prog, bool fastTier, int32_t *trace,
+                                  std::string &error) {
+  engines::EngineOptions o;
+  o.fastTier = fastTier;
+  o.trace = trace;
+  Result<std::unique_ptr<Engine>> e = engines::makeEngine({engines::EngineKind::Jit, {}}, prog, o);
+  if (!e) {
+    error = e.status().message();
+    return nullptr;
+  }
+  return std::move(e).value();
 }
 
 } // namespace lj::fuzz

@@ -27,15 +27,31 @@ Flow Interpreter::Impl::call(lj_state *s, int32_t sub) {
   return r == Flow::Watchdog ? Flow::Watchdog : Flow::Done;
 }
 
-Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
+template <bool kTrace>
+Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) {
   int32_t pc = begin;
   while (pc < end) {
     const Code &c = code[pc];
     // The dynamic depth must equal the verifier's static one, except at a label reached by a
     // jump (the LBL empties the stacks anyway).
     assert((c.op == Op::Label || f.sp == prog.info[pc].depth) && "ST depth differs from verifier");
-    // A forced contact (Code::force, docs/serve.md "Forcing") conducts its constant.
-    auto contact = [&](bool real) { return c.force >= 0 ? c.force != 0 : real; };
+    // A forced contact (Code::force, docs/serve.md "Forcing") conducts its constant; a traced
+    // build records what it conducts (ir/Trace.h).
+    auto contact = [&](bool real) {
+      bool v = c.force >= 0 ? c.force != 0 : real;
+      if constexpr (kTrace) trace[traceAt.at[pc]] = v;
+      return v;
+    };
+    if constexpr (kTrace) {
+      // EN is recorded before the statement runs (a taken JMP never comes back here).
+      TraceKind tk = traceAt.kind[pc];
+      if (tk == TraceKind::Box || tk == TraceKind::Flow)
+        trace[traceAt.at[pc]] = f.input();
+      else if (tk == TraceKind::Coil)
+        trace[traceAt.at[pc]] = f.top();
+      else if (c.op == Op::LoadTrue)
+        trace[traceAt.at[pc]] = 1;
+    }
     switch (c.op) {
     // Contacts (hnc8-core.md 4.2).
     case Op::Load:
@@ -53,18 +69,26 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
     case Op::LoadFall:
       f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false)));
       break;
-    case Op::And:
-      f.setTop(f.top() && contact(readBit(s, c.a)));
+    case Op::And: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(readBit(s, c.a));
+      f.setTop(f.top() && v);
       break;
-    case Op::AndNot:
-      f.setTop(f.top() && contact(!readBit(s, c.a)));
+    }
+    case Op::AndNot: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(!readBit(s, c.a));
+      f.setTop(f.top() && v);
       break;
-    case Op::Or:
-      f.setTop(f.top() || contact(readBit(s, c.a)));
+    }
+    case Op::Or: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(readBit(s, c.a));
+      f.setTop(f.top() || v);
       break;
-    case Op::OrNot:
-      f.setTop(f.top() || contact(!readBit(s, c.a)));
+    }
+    case Op::OrNot: { // the contact is evaluated (and traced) whatever ST0 is
+      bool v = contact(!readBit(s, c.a));
+      f.setTop(f.top() || v);
       break;
+    }
     // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
     case Op::AndRise: {
       bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
@@ -172,9 +196,30 @@ Flow Interpreter::Impl::run(lj_state *s, Frame &f, int32_t begin, int32_t end) {
       }
       break;
     }
+    if constexpr (kTrace)
+      if (traceAt.kind[pc] == TraceKind::Box) traceAfter(s, f, pc);
     ++pc;
   }
   return Flow::Done;
 }
+
+void Interpreter::Impl::traceAfter(lj_state *s, const Frame &f, int32_t pc) {
+  // The order of ir/Trace.h Box: [0] EN (already written), [1] output, operand values, then the
+  // timer's elapsed or the counter's value.
+  int32_t *w = trace + traceAt.at[pc];
+  w[1] = f.sp > 0 ? f.top() : w[0];
+  int32_t k = 2;
+  const Stmt &st = prog.stmts[pc];
+  for (int o = 0; o < st.operandCount && o < 8; ++o)
+    if (traceAt.operand[pc] & (1u << o)) w[k++] = readValue(s, decode(*prog.profile, st.ops[o]));
+  const StateKind sk = instrInfo(st.op).state;
+  if (instrInfo(st.op).family == Family::Core && sk == StateKind::Timer)
+    w[k] = static_cast<int32_t>(static_cast<uint32_t>(s->T[code[pc].slot].elapsed_ms));
+  else if (instrInfo(st.op).family == Family::Core && sk == StateKind::Counter)
+    w[k] = s->C[code[pc].slot].value;
+}
+
+template Flow Interpreter::Impl::runT<true>(lj_state *, Frame &, int32_t, int32_t);
+template Flow Interpreter::Impl::runT<false>(lj_state *, Frame &, int32_t, int32_t);
 
 } // namespace lj

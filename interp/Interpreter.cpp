@@ -46,7 +46,9 @@ namespace {
 
 } // namespace
 
-Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces) : prog(p) {
+Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces, int32_t *traceBuf)
+    : prog(p), trace(traceBuf) {
+  if (trace) traceAt = traceLayout(p);
   code.resize(p.stmts.size());
   const std::vector<int8_t> forced = forceTable(p, forces);
   for (size_t i = 0; i < p.stmts.size(); ++i) {
@@ -106,8 +108,8 @@ uint32_t sliceEntry(void *ctx, lj_state *s, uint32_t k) {
 }
 } // namespace
 
-Interpreter::Interpreter(const VerifiedProgram &prog, const ContactForces &forces)
-    : impl_(std::make_unique<Impl>(prog, forces)) {
+Interpreter::Interpreter(const VerifiedProgram &prog, const ContactForces &forces, int32_t *trace)
+    : impl_(std::make_unique<Impl>(prog, forces, trace)) {
   entries_.ctx = this;
   entries_.init = initEntry;
   entries_.plc1 = plc1Entry;
@@ -139,8 +141,8 @@ namespace {
 /// The interpreter behind the common Engine interface (ir/Engine.h).
 class InterpreterEngine final : public Engine {
 public:
-  InterpreterEngine(const VerifiedProgram &prog, const ContactForces &forces)
-      : interp_(prog, forces) {}
+  InterpreterEngine(const VerifiedProgram &prog, const ContactForces &forces, int32_t *trace)
+      : interp_(prog, forces, trace) {}
   const lj_entries &entries() const override { return interp_.entries(); }
   const char *name() const override { return "interp"; }
 
@@ -150,8 +152,8 @@ private:
 } // namespace
 
 std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog,
-                                              const ContactForces &forces) {
-  return std::make_unique<InterpreterEngine>(prog, forces);
+                                              const ContactForces &forces, int32_t *trace) {
+  return std::make_unique<InterpreterEngine>(prog, forces, trace);
 }
 
 } // namespace lj

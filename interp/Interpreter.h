@@ -17,8 +17,11 @@ namespace lj {
 class Interpreter {
 public:
   /// Binds to `prog`, which must outlive the interpreter; the contacts in `forces` conduct
-  /// their forced value (ir/Forces.h, kept in the decoded table, not in `prog`).
-  explicit Interpreter(const VerifiedProgram &prog, const ContactForces &forces = {});
+  /// their forced value (ir/Forces.h, kept in the decoded table, not in `prog`). `trace`, when
+  /// not null, is a buffer of traceLayout(prog).words int32 words the statements record into
+  /// (ir/Trace.h); it must outlive the interpreter.
+  explicit Interpreter(const VerifiedProgram &prog, const ContactForces &forces = {},
+                       int32_t *trace = nullptr);
   ~Interpreter();
   Interpreter(const Interpreter &) = delete;
   Interpreter &operator=(const Interpreter &) = delete;

@@ -7,6 +7,7 @@
 #include "interp/Interpreter.h"
 #include "ir/Profile.h"
 #include "ir/Program.h"
+#include "ir/Trace.h"
 #include "ladderjit/abi.h"
 
 #include <array>
@@ -223,10 +224,21 @@ struct Interpreter::Impl {
   // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
   std::vector<std::vector<uint8_t>> stStore, msStore;
 
-  Impl(const VerifiedProgram &p, const ContactForces &forces);
+  /// A traced build (ir/Trace.h): the buffer the statements record into, and where.
+  int32_t *trace = nullptr;
+  TraceLayout traceAt;
+
+  Impl(const VerifiedProgram &p, const ContactForces &forces, int32_t *traceBuf);
   interp::Frame frame(size_t scope);
   uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);
-  interp::Flow run(lj_state *s, interp::Frame &f, int32_t begin, int32_t end);
+  /// runT<true> when traced: the untraced loop has no trace code at all.
+  interp::Flow run(lj_state *s, interp::Frame &f, int32_t begin, int32_t end) {
+    return trace ? runT<true>(s, f, begin, end) : runT<false>(s, f, begin, end);
+  }
+  template <bool kTrace>
+  interp::Flow runT(lj_state *s, interp::Frame &f, int32_t begin, int32_t end);
+  /// The words of statement `pc` that are known after it ran (Box: output and values).
+  void traceAfter(lj_state *s, const interp::Frame &f, int32_t pc);
   interp::Flow call(lj_state *s, int32_t sub);
   void block(lj_state *s, interp::Frame &f, const interp::Code &c);
 };

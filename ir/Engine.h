@@ -21,8 +21,10 @@ public:
 };
 
 /// The reference interpreter bound to `prog` (which must outlive the engine), with the
-/// contacts in `forces` forced (ir/Forces.h).
+/// contacts in `forces` forced (ir/Forces.h); `trace` not null: a traced build recording into
+/// that buffer of traceLayout(prog).words words (ir/Trace.h), which must outlive the engine.
 std::unique_ptr<Engine> makeInterpreterEngine(const VerifiedProgram &prog,
-                                              const ContactForces &forces = {});
+                                              const ContactForces &forces = {},
+                                              int32_t *trace = nullptr);
 
 } // namespace lj

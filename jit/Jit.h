@@ -42,6 +42,9 @@ struct JitOptions {
   /// and dispatch functions is compiled every time. `compileThreads` threads compile the
   /// missing groups. Same behaviour as a whole-program compile; one call per group more.
   bool incremental = false;
+  /// A traced build recording into this buffer (ir/Trace.h, lowering/Lower.h LowerOptions::trace);
+  /// never cached (the address is baked into the code). Null: untraced, today's code.
+  int32_t *trace = nullptr;
 };
 
 /// Wall-clock time of each compile phase, in microseconds. With several compile threads,

@@ -139,6 +139,7 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
   lo.partitions = parts;
   lo.partition = part;
   lo.forces = &opts.forces;
+  lo.trace = opts.trace;
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);
   if (!mod) return fail(mod.takeError());
@@ -193,7 +194,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
   std::string cacheKey;
   std::vector<std::string> cached;
   double cacheUs = 0;
-  if (opts.cache) {
+  if (opts.cache && !opts.trace) { // a traced object holds its buffer's address
     const double tc = nowUs();
     CacheKeyInputs in{im.jtmb->getTargetTriple().str(),
                       im.jtmb->getCPU(),
@@ -233,7 +234,7 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     t.cpuUs += r.cpuUs;
   }
   t.cacheHit = !cached.empty();
-  if (opts.cache && cached.empty()) {
+  if (opts.cache && !opts.trace && cached.empty()) {
     const double tc = nowUs();
     std::vector<std::string_view> objs;
     for (const PartResult &r : res)

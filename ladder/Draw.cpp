@@ -240,7 +240,8 @@ std::string renderSvg(const Layout &l) {
          "\n";
 }
 
-std::string renderHtml(const Layout &l) {
+std::string renderHtml(const Layout &l, const std::string &liveHead,
+                       const std::string &liveScript) {
   std::string tabs, sections;
   for (size_t i = 0; i < l.parts.size(); ++i) {
     const PartLayout &p = l.parts[i];
@@ -264,10 +265,10 @@ std::string renderHtml(const Layout &l) {
          ".tab{border:1px solid #bbb;background:#fff;margin:2px;padding:4px 10px;cursor:pointer}"
          ".tab.sel{background:#1565c0;color:#fff}"
          "section.part{display:none;overflow:auto;padding:6px}section.part.sel{display:block}"
-         "#info{font-size:12px;color:#444;margin-left:8px}"
-         "</style></head><body><header><b>" +
-         esc(l.file) + "</b><span id=\"info\"></span></header><nav>" + tabs + "</nav><main>" +
-         sections + "</main><script type=\"application/json\" id=\"ladder-layout\">" + data +
+         "#info{font-size:12px;color:#444;margin-left:8px}" +
+         liveHead + "</style></head><body><header><b>" + esc(l.file) +
+         "</b><span id=\"info\"></span></header><nav>" + tabs + "</nav><main>" + sections +
+         "</main><script type=\"application/json\" id=\"ladder-layout\">" + data +
          "</script><script>"
          "(function(){var tabs=document.querySelectorAll('.tab');"
          "function "
@@ -286,7 +287,9 @@ std::string renderHtml(const Layout &l) {
          "g=ev.target.closest&&ev.target.closest('[data-stmt]');"
          "if(g)document.getElementById('info').textContent=g.querySelector('title')?g."
          "querySelector('title').textContent:''});"
-         "})();</script></body></html>\n";
+         "})();</script>" +
+         (liveScript.empty() ? std::string() : "<script>" + liveScript + "</script>") +
+         "</body></html>\n";
 }
 
 } // namespace lj::ladder

@@ -58,6 +58,13 @@ std::string layoutJson(const Layout &l);
 /// One self-contained SVG of every part, stacked (docs/ladder-view.md).
 std::string renderSvg(const Layout &l);
 /// One self-contained HTML page: a tab per part, inline CSS/JS/SVG, the layout JSON embedded.
-std::string renderHtml(const Layout &l);
+/// `liveHead` / `liveScript` (the live view, LiveScript.cpp) go into a <style> of the head and a
+/// <script> after the page's own; empty: the static drawing.
+std::string renderHtml(const Layout &l, const std::string &liveHead = {},
+                       const std::string &liveScript = {});
+
+/// The live view's CSS and JS (`serve --http`, docs/ladder-view.md "Live view").
+std::string liveCss();
+std::string liveScript();
 
 } // namespace lj::ladder

@@ -62,7 +62,7 @@ llvm::Error FunctionEmitter::emitBasic(int32_t i) {
   // A forced contact (ModuleContext::forced, docs/serve.md "Forcing") conducts its constant.
   const int8_t force = mc_.forced.empty() ? -1 : mc_.forced[i];
   auto contact = [&](llvm::Value *real) -> llvm::Value * {
-    return force >= 0 ? b_.getInt1(force != 0) : real;
+    return traceContact_ = force >= 0 ? b_.getInt1(force != 0) : real;
   };
   switch (s.op) {
   case Op::Load:

@@ -103,7 +103,7 @@ llvm::Error FunctionEmitter::finish() {
   return llvm::Error::success();
 }
 
-llvm::Error FunctionEmitter::emitStmt(int32_t i) {
+llvm::Error FunctionEmitter::emitStmtBody(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const InstrInfo &row = instrInfo(s.op);
   switch (s.op) {

@@ -5,6 +5,7 @@
 #include "ir/CncTable.h"
 #include "ir/Profile.h"
 #include "ir/Program.h"
+#include "ir/Trace.h"
 #include "lowering/AbiTypes.h"
 #include "lowering/ImageCache.h"
 #include "lowering/Incremental.h"
@@ -38,6 +39,8 @@ struct ModuleContext {
   std::vector<int64_t> weightBefore;
   /// forceTable(prog, *opts.forces): -1 / 0 / 1 per statement, empty when nothing is forced.
   std::vector<int8_t> forced;
+  /// traceLayout(prog) when opts.trace is set (EmitTrace.cpp), else empty.
+  TraceLayout traceAt;
 };
 
 /// An internal `i32 (ptr s)` function for a chunk or an outlined loop body (LowerProgram.cpp);
@@ -75,8 +78,15 @@ public:
   llvm::Error finish();
 
 private:
-  // EmitFlow.cpp: dispatch and control flow.
+  // EmitTrace.cpp: one statement with its trace words around it (ir/Trace.h) when traced.
   llvm::Error emitStmt(int32_t i);
+  /// Store the i1 or i32 `v` into trace word `word` (the buffer's address is a constant).
+  void traceStore(int32_t word, llvm::Value *v);
+  /// What a contact conducted, set by emitBasic for the trace (null: not a contact).
+  llvm::Value *traceContact_ = nullptr;
+
+  // EmitFlow.cpp: dispatch and control flow.
+  llvm::Error emitStmtBody(int32_t i);
   llvm::Error emitJmp(int32_t i);
   void emitLabel(int32_t i);
   void emitLoop(int32_t i);

@@ -36,6 +36,10 @@ struct LowerOptions {
   /// Contacts compiled as forced (ir/Forces.h): each conducts its constant. Null or empty: none
   /// (the code is the same as a build without forces). Must outlive lowerProgram.
   const ContactForces *forces = nullptr;
+  /// A traced build (ir/Trace.h): the statements store their trace words into this buffer of
+  /// traceLayout(prog).words int32 words, its address baked into the code. Null: no trace code
+  /// at all (the default; an AOT .so is always untraced). Must outlive the compiled code.
+  int32_t *trace = nullptr;
 };
 
 /// Which of `partitions` modules defines the body of each top-level function, in the order

@@ -251,8 +251,9 @@ lowerModule(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Dat
   if (!layout) return layout.takeError();
   if (prog.info.size() != prog.stmts.size())
     return llvm::createStringError("verified program without statement facts");
-  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {0}, {}};
+  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {0}, {}, {}};
   if (opts.forces) mc.forced = forceTable(prog, *opts.forces);
+  if (opts.trace) mc.traceAt = traceLayout(prog);
   for (int32_t i = 0; i < static_cast<int32_t>(prog.stmts.size()); ++i)
     mc.weightBefore.push_back(mc.weightBefore.back() + bodyWeight(prog, {i, i + 1}));
   const uint32_t parts = std::max<uint32_t>(opts.partitions, 1);

@@ -283,6 +283,26 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   return true;
 }
 
+bool Controller::setTraced(bool on, std::string &error) {
+  if (loader_.aot() && on) {
+    error = "an AOT .so is never traced; serve with --engine jit or interp for the live view";
+    return false;
+  }
+  loader_.setTraced(on);
+  std::shared_ptr<ProgramVersion> cur = exec_.current();
+  if (!cur || (cur->trace != nullptr) == on) return true;
+  std::string path, so;
+  {
+    std::lock_guard<std::mutex> g(changeMu_);
+    path = program_;
+    so = so_;
+  }
+  if (log_)
+    log_(std::string("live view: building the ") + (on ? "traced" : "untraced") + " version of '" +
+         path + "'");
+  return change(path, std::nullopt, error, so);
+}
+
 void Controller::pollProgramFile() {
   std::string path, so;
   {

@@ -66,6 +66,12 @@ public:
   /// change without forces).
   void pollProgramFile();
 
+  /// The live view (docs/ladder-view.md "Live view"): rebuild the running program traced (`on`)
+  /// or untraced and swap it in at a tick boundary like an online change, forces kept; later
+  /// loads (forces, online change) keep that choice. True at once when the running version
+  /// already is so; false with `error` when the rebuild was refused or the engine is AOT.
+  bool setTraced(bool on, std::string &error);
+
   /// Whether a client asked the server to stop.
   bool stopRequested() const { return stop_.load(); }
 

@@ -11,6 +11,7 @@
 #include "ladderjit/abi.h"
 #include "runtime/Exchange.h"
 #include "runtime/Stats.h"
+#include "runtime/TraceBuffer.h"
 
 #include <atomic>
 #include <chrono>
@@ -35,6 +36,8 @@ struct ProgramVersion {
   std::string hash; ///< io::sha256Hash of the file's bytes (`sha256:...`)
   std::string so;   ///< the AOT .so the engine came from; empty for jit / interp
   std::shared_ptr<VerifiedProgram> prog;
+  /// A traced build's power-flow trace (ir/Trace.h), null when untraced; outlives `engine`.
+  std::unique_ptr<TraceBuffer> trace;
   std::unique_ptr<Engine> engine;
   ContactForces forces; ///< statement id -> forced conducting value (0/1)
   uint64_t id = 0;      ///< 1, 2, ... in load order (a tier of a version keeps its id)
@@ -116,6 +119,8 @@ public:
 
   /// The running program version.
   std::shared_ptr<ProgramVersion> current() const;
+  /// The version the scan thread runs this tick: only for after-tick hooks (scan thread).
+  const ProgramVersion *scanVersion() const { return cur_; }
   /// A copy of the statistics (taken by the scan thread at a tick boundary; after the thread
   /// ended, the final ones).
   TickStats stats() const;

@@ -4,6 +4,7 @@
 
 #include "engines/EngineSpec.h"
 #include "formats/ProgramFile.h"
+#include "ir/Trace.h"
 #include "jit/Jit.h"
 
 #include <chrono>
@@ -163,6 +164,10 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
                                                      : EngineTier::JitOpt;
   engines::EngineOptions eo;
   eo.forces = v->forces; // an override of this build; the verified program stays as verified
+  if (traced()) {        // a traced build records into the version's own buffer (ir/Trace.h)
+    v->trace = std::make_unique<TraceBuffer>(traceLayout(*v->prog).words);
+    eo.trace = v->trace->live();
+  }
   std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
   if (spec.kind == engines::EngineKind::Jit) {
     // One session for every version (a JITDylib each), compiling incrementally: an online

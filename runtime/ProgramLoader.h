@@ -8,6 +8,7 @@
 #include "formats/PlcDit.h"
 #include "runtime/Executive.h"
 
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -64,6 +65,10 @@ public:
   std::shared_ptr<ProgramVersion> buildTier(const ProgramVersion &v, EngineTier tier,
                                             std::string &error);
   const std::string &engine() const { return engine_; }
+  /// Whether the next loads build traced versions (ir/Trace.h; the live view while a page
+  /// watches). Ignored for AOT, which is never traced.
+  void setTraced(bool on) { traced_.store(on); }
+  bool traced() const { return traced_.load() && !aot(); }
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }
   /// The keys whose .so files engine "aot" accepts (docs/aot.md "Trust"); none = refuse all.
@@ -81,6 +86,7 @@ private:
   std::string engine_;
   int32_t plc2Nvalue_;
   std::string dialect_;
+  std::atomic<bool> traced_{false};
   std::mutex mu_;
   std::shared_ptr<jit::Session> session_;     // optimizing tier, created on first use
   std::shared_ptr<jit::Session> fastSession_; // fast tier (tiering only), created on first use

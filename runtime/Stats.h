@@ -22,6 +22,8 @@ public:
   double meanNs() const { return n_ ? static_cast<double>(sum_) / static_cast<double>(n_) : 0; }
   /// Upper edge (ns) of the bucket holding the q-quantile (0 < q <= 1), capped at max.
   int64_t percentileNs(double q) const;
+  /// Ticks in 1 us bucket `i` (i == kBuckets: the overflow bucket).
+  uint32_t bucket(uint32_t i) const { return i <= kBuckets ? b_[i] : 0; }
   /// {"count", "min_us", "mean_us", "p99_us", "p99_9_us", "max_us"}.
   nlohmann::json toJson() const;
   void clear();

@@ -3,6 +3,8 @@
 // Every lane runs the same inputs; at the end every final state must equal the interpreter's.
 #include "tools/ladderjit/BenchCmd.h"
 #include "tools/ladderjit/Commands.h"
+
+#include "ir/Trace.h"
 #include "tools/ladderjit/Progress.h"
 
 #include "engines/AotLoader.h"
@@ -122,16 +124,23 @@ Phases phasesOf(const jit::CompileTimes &t, double totalUs) {
 }
 
 bool addJitLane(const VerifiedProgram &prog, bool fast, bool useCache, std::vector<Lane> &lanes,
-                std::string &error) {
+                std::string &error, bool traced = false) {
   jit::JitOptions o;
   o.tier = fast ? jit::Tier::Fast : jit::Tier::Optimizing;
   if (useCache) o.cache = jit::ObjectCache::fromEnvironment();
+  // --trace: the traced build of the live view (ir/Trace.h), recording into its own buffer.
+  std::shared_ptr<std::vector<int32_t>> buf;
+  if (traced) {
+    buf = std::make_shared<std::vector<int32_t>>(static_cast<size_t>(traceLayout(prog).words));
+    o.trace = buf->data();
+  }
   jit::CompileTimes t;
   auto t0 = Clock::now();
   std::unique_ptr<Engine> e = jit::compile(prog, o, error, &t);
   if (!e) return false;
   Lane l;
-  l.name = fast ? "jit-fast" : "jit-opt";
+  l.name = std::string(fast ? "jit-fast" : "jit-opt") + (traced ? "-traced" : "");
+  l.keepAlive = buf;
   l.engine = "jit";
   l.tier = fast ? "fast" : "opt";
   l.phases = phasesOf(t, usSince(t0));
@@ -325,6 +334,22 @@ int runBench(const BenchArgs &a) {
   if (wantJit && opt) {
     progress.show("bench: compiling jit-opt ...");
     if (!addJitLane(*prog, false, a.cache, lanes, error)) return usageError("jit: " + error);
+  }
+  if (a.trace) { // the live view's traced builds beside the untraced ones (docs/BENCHMARKS.md)
+    Lane l;
+    auto buf =
+        std::make_shared<std::vector<int32_t>>(static_cast<size_t>(traceLayout(*prog).words));
+    l.name = "interp-traced";
+    l.engine = "interp";
+    l.tier = "-";
+    l.engine_ = makeInterpreterEngine(*prog, {}, buf->data());
+    l.keepAlive = buf;
+    l.entries = l.engine_->entries();
+    lanes.push_back(std::move(l));
+    if (wantJit && fast && !addJitLane(*prog, true, false, lanes, error, true))
+      return usageError("jit: " + error);
+    if (wantJit && opt && !addJitLane(*prog, false, false, lanes, error, true))
+      return usageError("jit: " + error);
   }
   if ((wantAot && opt) || a.cBaseline)
     if (!dir.make(error)) return usageError(error);

@@ -122,6 +122,7 @@ struct FuzzArgs {
   uint32_t ticks = 50;
   bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
   bool switches = false;  ///< engine switches at random ticks against an unswitched interpreter
+  bool trace = false;     ///< both engines traced, traces compared (ir/Trace.h)
 };
 int runFuzz(const FuzzArgs &a);
 
@@ -136,6 +137,7 @@ struct BenchArgs {
   uint64_t seed = 1;           ///< pseudo-random inputs
   bool cache = false;          ///< compile through the object cache (default: cache off)
   bool cBaseline = false;      ///< also translate to C and build with gcc / clang
+  bool trace = false;          ///< also time the traced builds of the live view (ir/Trace.h)
   uint32_t cTimeoutS = 300;    ///< time bound of one C compile
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;
@@ -165,6 +167,9 @@ struct ServeArgs {
   bool plc2NvalueGiven = false;
   uint64_t maxBackwardSteps = 1000000;
   std::string modbus;             ///< [HOST:]PORT, empty = no Modbus server
+  std::string http;               ///< [HOST:]PORT of the live view, empty = none
+  std::string httpTokenFile;      ///< the live view's token, from this file
+  bool httpReadOnly = false;      ///< the live view changes nothing
   std::string retain;             ///< retentive store file, empty = none
   bool retainForce = false;       ///< --retain-force: a file of another layout -> zeros
   uint32_t retainPeriodMs = 100;  ///< minimum gap between periodic retain saves

@@ -77,6 +77,9 @@ int runFuzz(const FuzzArgs &a) {
   opts.roundTrip = a.roundTrip;
   opts.switches = a.switches;
   if (a.roundTrip && a.switches) return usageError("--switch and --round-trip exclude each other");
+  opts.trace = a.trace;
+  if (a.trace && a.switches) return usageError("--switch and --trace exclude each other");
+  if (a.trace && a.roundTrip) return usageError("--trace and --round-trip exclude each other");
   // Programs done, rate, mismatches so far and time left, once the campaign has run a second;
   // only on a terminal (CLI.md: nothing extra on a redirected stderr).
   Progress progress;

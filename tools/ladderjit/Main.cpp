@@ -128,6 +128,9 @@ int mainImpl(int argc, char **argv) {
                ->check(kUnsigned));
   lastWins(
       cFuzz->add_option("--ticks", fz.ticks, "ticks per program (default 50)")->check(kUnsigned));
+  cFuzz->add_flag("--trace", fz.trace,
+                  "build the interpreter and the JIT traced and compare their power-flow traces "
+                  "too (ir/Trace.h, the live ladder view)");
   cFuzz->add_flag("--round-trip", fz.roundTrip,
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
                   "on the interpreter");
@@ -151,6 +154,8 @@ int mainImpl(int argc, char **argv) {
   lastWins(cBench->add_option("--seed", bn.seed, "seed of the pseudo-random inputs (default 1)")
                ->check(kUnsigned));
   cBench->add_flag("--cache", bn.cache, "compile through the object cache (default: off)");
+  cBench->add_flag("--trace", bn.trace,
+                   "also time the traced builds of the live view (interp-traced, jit-*-traced)");
   cBench->add_flag("--c-baseline", bn.cBaseline,
                    "also translate PROGRAM to C and build it with gcc and clang at -O1/-O2");
   lastWins(
@@ -219,6 +224,13 @@ int mainImpl(int argc, char **argv) {
                             "watchdog limit per tick (default 1000000)")
                ->check(kUnsigned));
   lastWins(cServe->add_option("--modbus", serve.modbus, "Modbus TCP server on [HOST:]PORT"));
+  lastWins(cServe->add_option("--http", serve.http,
+                              "the live ladder view on [HOST:]PORT (HOST defaults to 127.0.0.1)"));
+  lastWins(cServe->add_option("--http-token-file", serve.httpTokenFile,
+                              "the token the live view's changes need (default: a fresh one, "
+                              "printed at start)"));
+  cServe->add_flag("--http-read-only", serve.httpReadOnly,
+                   "the live view only shows: force, lock and unlock are refused (403)");
   lastWins(cServe->add_option("--retain", serve.retain, "retentive store file"));
   cServe->add_flag("--retain-force", serve.retainForce,
                    "load nothing from a retain file of another layout; start with zeros, keep "

@@ -3,6 +3,7 @@
 // shared memory), starts the cyclic executive and the control socket, then waits for SIGINT /
 // SIGTERM, `monitor stop` or --duration (with --watch-file, watching PROGRAM for online change).
 #include "tools/ladderjit/Commands.h"
+#include "tools/ladderjit/ServeHttp.h"
 
 #include "engines/EngineSpec.h"
 #include "formats/InputFiles.h"
@@ -26,6 +27,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -64,14 +66,15 @@ public:
   void afterTick(lj_state &s, uint64_t tick) override { nc.afterTick(s, tick); }
 };
 
-bool splitHostPort(const std::string &text, std::string &host, int &port, std::string &error) {
+bool splitHostPort(const std::string &text, std::string &host, int &port, std::string &error,
+                   const char *flag = "--modbus") {
   size_t colon = text.rfind(':');
   std::string p = colon == std::string::npos ? text : text.substr(colon + 1);
   host = colon == std::string::npos || colon == 0 ? "127.0.0.1" : text.substr(0, colon);
   char *end = nullptr;
   long v = p.empty() ? -1 : std::strtol(p.c_str(), &end, 10);
   if (p.empty() || *end != '\0' || v < 0 || v > 65535) {
-    error = "--modbus: expected [HOST:]PORT with PORT 0..65535, got '" + text + "'";
+    error = std::string(flag) + ": expected [HOST:]PORT with PORT 0..65535, got '" + text + "'";
     return false;
   }
   port = static_cast<int>(v);
@@ -212,6 +215,29 @@ int runServe(const ServeArgs &a) {
   int modbusPort = -1;
   if (!a.modbus.empty() && !splitHostPort(a.modbus, modbusHost, modbusPort, error))
     return usageError(error);
+  // --http (docs/serve.md "Live view"): loopback unless HOST is given; the token of every
+  // change from the page is --http-token-file's, else a fresh one printed below.
+  LiveViewConfig live;
+  if (!a.http.empty()) {
+    if (!splitHostPort(a.http, live.host, live.port, error, "--http")) return usageError(error);
+    if (!a.httpTokenFile.empty()) {
+      std::string text;
+      if (!io::readFile(a.httpTokenFile, text, error))
+        return usageError("--http-token-file: " + error);
+      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+        text.pop_back();
+      if (text.size() < 8 || text.find_first_of(" \t\r\n") != std::string::npos)
+        return usageError("--http-token-file: '" + a.httpTokenFile +
+                          "' must hold one token of at least 8 characters on one line");
+      live.token = text;
+    } else {
+      live.token = newHttpToken();
+    }
+    live.readOnly = a.httpReadOnly;
+    live.engine = a.engine;
+  } else if (!a.httpTokenFile.empty() || a.httpReadOnly) {
+    return usageError("--http-token-file and --http-read-only need --http [HOST:]PORT");
+  }
   std::vector<io::Assignment> powerUp;
   if (!a.params.empty()) {
     std::string text;
@@ -355,6 +381,12 @@ int runServe(const ServeArgs &a) {
   co.log = logLine;
   rt::ControlSocket socket([&controller](const nlohmann::json &r) { return controller.handle(r); },
                            co);
+  std::unique_ptr<LiveView> liveView;
+  if (!a.http.empty()) {
+    live.periodNs = eo.periodNs;
+    liveView = std::make_unique<LiveView>(exec, exchange, controller, logLine, live);
+    exec.addAfterTickHook(liveView->hook());
+  }
   if (!socket.start(control, error)) return usageError(error);
 
   if (!exec.start(first, error)) return usageError(error);
@@ -372,6 +404,20 @@ int runServe(const ServeArgs &a) {
     std::printf("ladderjit serve: shared-memory image /%s (io %s)\n",
                 a.shm[0] == '/' ? a.shm.c_str() + 1 : a.shm.c_str(), a.io.c_str());
   std::fflush(stdout);
+
+  if (liveView) {
+    if (!liveView->start(error)) {
+      exec.requestStop();
+      exec.join();
+      return usageError(error);
+    }
+    std::printf("ladderjit serve: live view http://%s:%d/%s%s\n", live.host.c_str(),
+                liveView->port(),
+                a.httpTokenFile.empty() ? (" (token " + live.token + ")").c_str()
+                                        : " (token from --http-token-file)",
+                a.httpReadOnly ? " read-only" : "");
+    std::fflush(stdout);
+  }
 
   // HOOK(modbus): start the Modbus TCP server on modbusHost:modbusPort (when modbusPort >= 0)
   // over exchange.snapshot / exchange.post / exchange.waitApplied.
@@ -435,6 +481,7 @@ int runServe(const ServeArgs &a) {
   // from here on, and a compile LLVM cannot interrupt is not waited for.
   controller.shutdown();
   tierUp.stop(); // TIER: nothing is switched in from here on
+  if (liveView) liveView->stop();
   if (watch) watch->stop();
   // HOOK(modbus): stop the Modbus TCP server (before the executive, so no write is lost).
   if (modbus) modbus->stop();

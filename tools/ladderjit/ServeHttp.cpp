@@ -1,0 +1,282 @@
+// The live view of `serve --http` (ServeHttp.h).
+#include "tools/ladderjit/ServeHttp.h"
+
+#include "formats/Address.h"
+#include "ir/Trace.h"
+#include "ladder/Layout.h"
+#include "ladder/Network.h"
+#include "services/HttpServer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <map>
+#include <mutex>
+#include <random>
+#include <thread>
+
+namespace lj::cli {
+
+using nlohmann::json;
+
+namespace {
+
+/// Stop watching for this long before the untraced build goes back in.
+constexpr auto kUntraceAfter = std::chrono::seconds(10);
+constexpr auto kHubPeriod = std::chrono::milliseconds(50); // 20 Hz to every page
+
+json histJson(const rt::Histogram &h) {
+  // ~60 bars up to 1.5 x the p99.9 (at least 10 us), from the 1 us buckets.
+  const int64_t hiUs = std::max<int64_t>(10, h.percentileNs(0.999) * 3 / 2 / 1000);
+  const int64_t binUs = std::max<int64_t>(1, (hiUs + 59) / 60);
+  json bins = json::array();
+  for (int64_t b = 0; b < 60; ++b) {
+    uint64_t n = 0;
+    for (int64_t k = b * binUs; k < (b + 1) * binUs && k <= rt::Histogram::kBuckets; ++k)
+      n += h.bucket(static_cast<uint32_t>(k));
+    bins.push_back(n);
+  }
+  return {{"binUs", binUs},
+          {"bins", bins},
+          {"p99_us", h.percentileNs(0.99) / 1000.0},
+          {"max_us", h.maxNs() / 1000.0},
+          {"mean_us", std::round(h.meanNs() / 100.0) / 10.0}};
+}
+
+json statsJson(const rt::TickStats &s) {
+  return {{"period_ns", s.periodNs},     {"ticks", s.ticks},
+          {"overruns", s.overruns},      {"missed_deadlines", s.missedDeadlines},
+          {"fault_ticks", s.faultTicks}, {"swaps", s.swaps},
+          {"scan", histJson(s.scan)},    {"jitter", histJson(s.jitter)}};
+}
+
+const char *kindName(TraceKind k) {
+  switch (k) {
+  case TraceKind::Contact:
+    return "contact";
+  case TraceKind::Coil:
+    return "coil";
+  case TraceKind::Box:
+    return "box";
+  case TraceKind::Flow:
+    return "flow";
+  case TraceKind::None:
+    break;
+  }
+  return "none";
+}
+
+} // namespace
+
+std::string newHttpToken() {
+  std::random_device rd; // the kernel's entropy (getrandom)
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string t;
+  for (int i = 0; i < 16; ++i) {
+    unsigned v = rd() & 0xFFu;
+    t += kHex[v >> 4];
+    t += kHex[v & 15];
+  }
+  return t;
+}
+
+struct LiveView::Impl {
+  rt::Executive &exec;
+  rt::Exchange &ex;
+  rt::Controller &ctl;
+  std::function<void(const std::string &)> log;
+  LiveViewConfig cfg;
+  std::unique_ptr<io::HttpServer> http;
+
+  uint64_t publishEvery = 1; // ticks between trace copies (~40 per second)
+  uint64_t lastPublished = 0;
+
+  std::thread hub;
+  std::mutex mu;
+  std::condition_variable cv;
+  bool stopping = false;
+  uint64_t seq = 0;
+  std::string message; // the newest SSE message
+  json latest;         // and its JSON
+  std::atomic<int> watchers{0};
+
+  std::mutex cacheMu;
+  std::string pageHash, page; // the page of the program with this hash
+  uint64_t modelVersion = 0;
+  json model;
+
+  Impl(rt::Executive &e, rt::Exchange &x, rt::Controller &c,
+       std::function<void(const std::string &)> l, LiveViewConfig cf)
+      : exec(e), ex(x), ctl(c), log(std::move(l)), cfg(std::move(cf)) {
+    publishEvery = std::max<uint64_t>(1, 25000000 / std::max<uint64_t>(cfg.periodNs, 1));
+  }
+
+  std::string pageOf(const rt::ProgramVersion &v) {
+    std::lock_guard<std::mutex> g(cacheMu);
+    if (pageHash != v.hash) {
+      ladder::Layout l = ladder::layout(ladder::fromProgram(*v.prog));
+      json h = v.hash;
+      page = ladder::renderHtml(l, ladder::liveCss(),
+                                "window.LJ_HASH=" + h.dump() + ";" + ladder::liveScript());
+      pageHash = v.hash;
+    }
+    return page;
+  }
+
+  json modelOf(const rt::ProgramVersion &v) {
+    std::lock_guard<std::mutex> g(cacheMu);
+    if (modelVersion != v.id) {
+      json stmts = json::object();
+      if (v.trace) {
+        TraceLayout tl = traceLayout(*v.prog);
+        for (size_t i = 0; i < tl.at.size(); ++i) {
+          if (tl.at[i] < 0) continue;
+          int32_t end = tl.words;
+          for (size_t k = i + 1; k < tl.at.size(); ++k)
+            if (tl.at[k] >= 0) {
+              end = tl.at[k];
+              break;
+            }
+          stmts[std::to_string(v.prog->stmts[i].id)] = {tl.at[i], kindName(tl.kind[i]),
+                                                        end - tl.at[i]};
+        }
+      }
+      model = {{"version", v.id},
+               {"hash", v.hash},
+               {"file", v.path},
+               {"engine", cfg.engine},
+               {"traced", v.trace != nullptr},
+               {"words", v.trace ? v.trace->words() : 0},
+               {"stmts", stmts}};
+      modelVersion = v.id;
+    }
+    return model;
+  }
+
+  void hubLoop() {
+    std::vector<int32_t> words;
+    auto lastWatched = std::chrono::steady_clock::now();
+    bool tracedWanted = false;
+    json stats;
+    uint64_t round = 0;
+    std::unique_lock<std::mutex> g(mu);
+    while (!cv.wait_for(g, kHubPeriod, [&] { return stopping; })) {
+      g.unlock();
+      const auto now = std::chrono::steady_clock::now();
+      const bool watched = watchers.load() > 0;
+      if (watched) lastWatched = now;
+      // A page watches: the traced build goes in (a compile, off the scan thread); nobody for
+      // kUntraceAfter: the untraced one comes back (full speed).
+      if (watched != tracedWanted && (watched || now - lastWatched > kUntraceAfter)) {
+        tracedWanted = watched;
+        std::string err;
+        if (!ctl.setTraced(watched, err) && log) log("live view: " + err);
+      }
+      std::shared_ptr<rt::ProgramVersion> cur = exec.current();
+      if (cur && (watched || round % 10 == 0)) {
+        json m{{"v", cur->id},
+               {"hash", cur->hash},
+               {"traced", cur->trace != nullptr},
+               {"aot", !cur->so.empty()}};
+        uint64_t tick = ex.lastTick();
+        if (cur->trace && cur->trace->take(words, tick)) m["w"] = words;
+        m["tick"] = tick;
+        json f = json::object();
+        for (const auto &[id, val] : cur->forces) f[std::to_string(id)] = val;
+        m["forced"] = f;
+        json locks = json::array();
+        for (const io::Assignment &a : ex.locks())
+          locks.push_back(a.addr.text + "=" + std::to_string(a.value));
+        m["locks"] = locks;
+        if (round % 10 == 0) stats = statsJson(exec.stats()); // 2 Hz
+        m["stats"] = stats;
+        std::string text =
+            "event: state\ndata: " + m.dump(-1, ' ', false, json::error_handler_t::replace) +
+            "\n\n";
+        std::lock_guard<std::mutex> lg(mu);
+        message = std::move(text);
+        latest = std::move(m);
+        ++seq;
+        cv.notify_all();
+      }
+      ++round;
+      g.lock();
+    }
+  }
+
+  bool next(uint64_t &mine, std::string &text, std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> g(mu);
+    if (!cv.wait_for(g, timeout, [&] { return stopping || seq > mine; }) || stopping) return false;
+    mine = seq;
+    text = message;
+    return true;
+  }
+};
+
+LiveView::LiveView(rt::Executive &exec, rt::Exchange &ex, rt::Controller &ctl,
+                   std::function<void(const std::string &)> log, LiveViewConfig cfg)
+    : impl_(std::make_unique<Impl>(exec, ex, ctl, std::move(log), std::move(cfg))) {}
+
+LiveView::~LiveView() { stop(); }
+
+rt::Executive::AfterTickHook LiveView::hook() {
+  Impl *im = impl_.get();
+  return [im](const lj_state &, uint64_t tick) {
+    // Scan thread: a traced version's words of this tick into its triple buffer (no lock).
+    const rt::ProgramVersion *v = im->exec.scanVersion();
+    if (!v || !v->trace || tick - im->lastPublished < im->publishEvery) return;
+    im->lastPublished = tick;
+    v->trace->publish(tick);
+  };
+}
+
+bool LiveView::start(std::string &error) {
+  Impl *im = impl_.get();
+  io::HttpBackend be;
+  be.page = [im] {
+    std::shared_ptr<rt::ProgramVersion> cur = im->exec.current();
+    return cur ? im->pageOf(*cur) : std::string("no program is running\n");
+  };
+  be.model = [im] {
+    std::shared_ptr<rt::ProgramVersion> cur = im->exec.current();
+    return cur ? im->modelOf(*cur) : json{{"error", "no program is running"}};
+  };
+  be.state = [im] {
+    std::lock_guard<std::mutex> g(im->mu);
+    return im->latest.is_null() ? json{{"error", "no snapshot yet"}} : im->latest;
+  };
+  be.next = [im](uint64_t &seq, std::string &text, std::chrono::milliseconds t) {
+    return im->next(seq, text, t);
+  };
+  be.watchers = [im](int d) { im->watchers.fetch_add(d); };
+  be.command = [im](const json &r) { return im->ctl.handle(r); };
+  io::HttpConfig hc;
+  hc.host = im->cfg.host;
+  hc.port = im->cfg.port;
+  hc.token = im->cfg.token;
+  hc.readOnly = im->cfg.readOnly;
+  hc.log = im->log;
+  im->http = std::make_unique<io::HttpServer>(hc, std::move(be));
+  if (!im->http->start(error)) return false;
+  im->hub = std::thread([im] { im->hubLoop(); });
+  return true;
+}
+
+void LiveView::stop() {
+  if (!impl_) return;
+  {
+    std::lock_guard<std::mutex> g(impl_->mu);
+    impl_->stopping = true;
+  }
+  impl_->cv.notify_all();
+  if (impl_->http) impl_->http->stop();
+  if (impl_->hub.joinable()) impl_->hub.join();
+}
+
+int LiveView::port() const { return impl_->http ? impl_->http->port() : -1; }
+
+} // namespace lj::cli

@@ -1,0 +1,48 @@
+// `serve --http`: the live ladder view (docs/serve.md "Live view"). Composes the trace of the
+// running version (runtime/TraceBuffer.h), the page (ladder/), the controller's force and lock
+// requests and the HTTP server (services/HttpServer.h). A hub thread turns the newest trace
+// snapshot into one SSE message 20 times a second for every page; the scan thread only copies
+// the trace into its triple buffer at a tick boundary.
+#pragma once
+
+#include "runtime/Controller.h"
+#include "runtime/Exchange.h"
+#include "runtime/Executive.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace lj::cli {
+
+struct LiveViewConfig {
+  std::string host = "127.0.0.1";
+  int port = 0;
+  std::string token;
+  bool readOnly = false;
+  uint64_t periodNs = 1000000;
+  std::string engine; ///< for the page's header
+};
+
+class LiveView {
+public:
+  LiveView(rt::Executive &exec, rt::Exchange &ex, rt::Controller &ctl,
+           std::function<void(const std::string &)> log, LiveViewConfig cfg);
+  ~LiveView();
+  /// The after-tick hook that publishes the trace (add before exec.start).
+  rt::Executive::AfterTickHook hook();
+  /// Start the hub and the HTTP server (after exec.start); false with `error`.
+  bool start(std::string &error);
+  void stop();
+  int port() const;
+
+  struct Impl;
+
+private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// A fresh random token (32 hex digits) for --http.
+std::string newHttpToken();
+
+} // namespace lj::cli
