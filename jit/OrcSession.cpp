@@ -183,7 +183,8 @@ std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitO
     std::lock_guard<std::mutex> lock(im.mu);
     leafCache = im.leafCache;
   }
-  if (opts.incremental || leafCache) {
+  if ((opts.incremental || leafCache) &&
+      !opts.trace) { // a traced build is whole (its buffer address is in the code)
     ObjectCache *cache = opts.cache ? opts.cache.get() : leafCache.get();
     return compileIncremental(*this, im, prog, opts, cache, error, times);
   }

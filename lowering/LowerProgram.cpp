@@ -333,7 +333,8 @@ lowerLeaf(const VerifiedProgram &prog, const Leaf &leaf, const std::string &symb
   if (prog.info.size() != prog.stmts.size() || leaf.r.begin < 0 || leaf.r.begin > leaf.r.end ||
       leaf.r.end > static_cast<int32_t>(prog.stmts.size()))
     return llvm::createStringError("leaf outside the verified program");
-  ModuleContext mc{prog, *mod, *layout, opts, {}, {}, {}, {}};
+  ModuleContext mc{prog, *mod, *layout, opts, {},
+                   {},   {},   {},      {}}; // leaves are never traced (Session::compile)
   if (opts.forces) mc.forced = forceTable(prog, *opts.forces);
   // Only differences of weights inside the leaf are read (loop sizes, nested chunk plans).
   mc.weightBefore.assign(static_cast<size_t>(leaf.r.begin) + 1, 0);
