@@ -25,6 +25,8 @@ struct Case {
   /// Content seed of the recording NC host (hosts/TestHost.h) each engine gets a copy
   /// of; 0 = empty content.
   uint64_t hostSeed = 0;
+  /// The lines are FANUC PMC text (gen/FanucProgram.h) and the stimulus names FANUC areas.
+  bool fanuc = false;
 };
 
 /// What running a case on both engines gave.

@@ -33,6 +33,8 @@ struct FuzzOptions {
   /// Engine under test: the interpreter on the program's ladder round trip instead of the JIT
   /// (fuzz/RoundTrip.h).
   bool roundTrip = false;
+  /// Generate FANUC PMC programs (gen/FanucProgram.h) instead of HNC-8 STL.
+  bool fanuc = false;
   /// Called after every program with the counters so far and the programs done, and once more
   /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
   std::function<void(const FuzzStats &, uint64_t done)> progress;
