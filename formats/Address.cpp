@@ -46,8 +46,7 @@ Cell cellOf(const lj_state &s, const CliAddress &a) {
   const AreaInfo &info = tp.area(a.area);
   if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
   const auto *base = reinterpret_cast<const unsigned char *>(&s);
-  return {base + tp.elementOffset(a.area, a.index), a.width ? a.width : info.bytes,
-          info.isSigned};
+  return {base + tp.elementOffset(a.area, a.index), a.width ? a.width : info.bytes, info.isSigned};
 }
 
 // The element's bits as an unsigned pattern (zero-extended to 32 bits).
@@ -215,7 +214,8 @@ std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::stri
     const AreaInfo &ai = tp.areas[static_cast<size_t>(i)];
     if (ai.count > 0 && ai.bytes > 0) known += (known.empty() ? "" : " ") + std::string(ai.name);
   }
-  if (!area || tp.area(*area).bytes == 0) return fail("unknown area (expected one of " + known + ")");
+  if (!area || tp.area(*area).bytes == 0)
+    return fail("unknown area (expected one of " + known + ")");
   std::string_view rest = text.substr(nameLen), indexPart = rest, tail;
   size_t sep = rest.find_first_of(".:");
   if (sep != std::string_view::npos) {
@@ -256,8 +256,10 @@ std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::stri
 std::string formatProfileAddress(const CliAddress &addr) {
   std::string s(profileOf(addr).area(addr.area).name);
   s += std::to_string(addr.index);
-  if (addr.isBit()) s += "." + std::to_string(addr.bit);
-  else if (addr.width > 1) s += ":" + std::to_string(addr.width);
+  if (addr.isBit())
+    s += "." + std::to_string(addr.bit);
+  else if (addr.width > 1)
+    s += ":" + std::to_string(addr.width);
   return s;
 }
 

@@ -117,7 +117,7 @@ nlohmann::ordered_json stateToJson(const lj_state &s, const TargetProfile &tp) {
         std::memcpy(&raw, p, ai.bytes);
         int64_t v = raw;
         if (ai.isSigned)
-          v = ai.bytes == 1 ? int64_t{static_cast<int8_t>(raw)}
+          v = ai.bytes == 1   ? int64_t{static_cast<int8_t>(raw)}
               : ai.bytes == 2 ? int64_t{static_cast<int16_t>(raw)}
                               : int64_t{static_cast<int32_t>(raw)};
         out.push_back(v);

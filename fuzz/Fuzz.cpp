@@ -2,9 +2,9 @@
 // valid program and stimulus, interpreter and JIT in lock step; mismatches minimized and printed.
 #include "fuzz/Fuzz.h"
 
-#include "gen/FanucProgram.h"
 #include "fuzz/Differential.h"
 #include "fuzz/RoundTrip.h"
+#include "gen/FanucProgram.h"
 
 #include "gen/Rng.h"
 

@@ -225,7 +225,8 @@ Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
                      static_cast<int8_t>(r.range(0, 7)), static_cast<int32_t>(r.range(0, 1))});
     }
     st.writes.push_back(std::move(w));
-    now += r.chance(90) ? static_cast<uint64_t>(r.range(1, 8)) : static_cast<uint64_t>(r.range(0, 50));
+    now +=
+        r.chance(90) ? static_cast<uint64_t>(r.range(1, 8)) : static_cast<uint64_t>(r.range(0, 50));
     st.nowMs.push_back(now);
   }
   return st;

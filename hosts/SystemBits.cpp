@@ -22,7 +22,8 @@ void writeSystemBits(const TargetProfile &tp, lj_state &s, uint64_t tick) {
       break;
     }
     const auto mask = static_cast<unsigned char>(1u << b.bit);
-    bytes[b.offset] = static_cast<unsigned char>(v ? (bytes[b.offset] | mask) : (bytes[b.offset] & ~mask));
+    bytes[b.offset] =
+        static_cast<unsigned char>(v ? (bytes[b.offset] | mask) : (bytes[b.offset] & ~mask));
   }
 }
 

@@ -278,8 +278,8 @@ inline bool isContact(Op op) {
 // (kByteRoles) are in every group: a profile without them gives them count 0, so no operand of
 // its programs can name them; whether one is writable is the profile's AreaInfo::writable.
 constexpr AreaMask kByteRoles =
-    areas(Area::KeepRelay, Area::ExtraRelay, Area::MessageBits, Area::TimerData,
-          Area::CounterData, Area::DataTable, Area::SystemBits, Area::SystemWords, Area::ConstWords);
+    areas(Area::KeepRelay, Area::ExtraRelay, Area::MessageBits, Area::TimerData, Area::CounterData,
+          Area::DataTable, Area::SystemBits, Area::SystemWords, Area::ConstWords);
 constexpr AreaMask kContactAreas =
     areas(Area::Input, Area::Output, Area::NcStatus, Area::NcControl, Area::Relay, Area::Word,
           Area::DWord, Area::Retained, Area::Param, Area::Timer, Area::Counter) |

@@ -114,7 +114,8 @@ struct TargetProfile {
     if (n < 0) return false;
     if (a == Area::Timer || a == Area::Counter) return tcSlot(a, n) >= 0;
     const AreaInfo &i = area(a);
-    return n < i.count || (i.upperCount > 0 && n >= i.upperLo && n < int64_t(i.upperLo) + i.upperCount);
+    return n < i.count ||
+           (i.upperCount > 0 && n >= i.upperLo && n < int64_t(i.upperLo) + i.upperCount);
   }
 
   /// Whether elements n .. n + len - 1 all exist in one range of area `a` (a multi-byte access).

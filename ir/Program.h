@@ -33,10 +33,10 @@ struct Operand {
   /// Reg: the bytes hold BCD digits (2 per byte); the instruction decides what an invalid digit
   /// does (front ends set it; engines honour it through the instruction's semantics).
   bool bcd = false;
-  int32_t index = 0;      ///< element number (Reg/Bit)
-  int8_t bit = -1;        ///< bit number (Bit)
-  int16_t symbol = -1;    ///< written as a symbol: index into the program's `symbols`
-  int32_t value = 0;      ///< constant value (Const)
+  int32_t index = 0;   ///< element number (Reg/Bit)
+  int8_t bit = -1;     ///< bit number (Bit)
+  int16_t symbol = -1; ///< written as a symbol: index into the program's `symbols`
+  int32_t value = 0;   ///< constant value (Const)
   SourceLoc loc;
 };
 

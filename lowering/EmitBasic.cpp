@@ -12,7 +12,8 @@ StateLoc FunctionEmitter::areaLoc(const Operand &op, unsigned width) {
   if (!StateLayout::inMem(off)) return mc_.layout.area(op.area, op.index);
   if (width == 0) width = op.width ? op.width : tp().area(op.area).bytes;
   std::string name;
-  if (mc_.opts.readableNames) name = std::string(tp().area(op.area).name) + std::to_string(op.index);
+  if (mc_.opts.readableNames)
+    name = std::string(tp().area(op.area).name) + std::to_string(op.index);
   return mc_.layout.memBytes(off, width, std::move(name));
 }
 
@@ -149,7 +150,8 @@ llvm::Error FunctionEmitter::emitCoil(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const Operand &op = s.ops[0];
   if (st_.empty()) return fail(i, "coil with an empty ST");
-  if (op.kind != Operand::Kind::Bit || !hasArea(kCoilAreas, op.area) || !tp().area(op.area).writable)
+  if (op.kind != Operand::Kind::Bit || !hasArea(kCoilAreas, op.area) ||
+      !tp().area(op.area).writable)
     return fail(i, "coil operand is not a writable bit");
   StateLoc loc = areaLoc(op, tp().area(op.area).bytes);
   llvm::Type *ty = loc.type;

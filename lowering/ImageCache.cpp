@@ -28,8 +28,9 @@ llvm::Value *ImageCache::load(const StateLoc &loc) {
     return it->second.value;
   }
   llvm::Value *addr = layout_.address(b_, state_, loc);
-  llvm::Value *v = loc.align ? b_.CreateAlignedLoad(loc.type, addr, llvm::Align(loc.align), loc.name)
-                             : b_.CreateLoad(loc.type, addr, loc.name);
+  llvm::Value *v = loc.align
+                       ? b_.CreateAlignedLoad(loc.type, addr, llvm::Align(loc.align), loc.name)
+                       : b_.CreateLoad(loc.type, addr, loc.name);
   entries_.emplace(loc.offset, Entry{loc, v, addr, nullptr});
   return v;
 }

@@ -40,8 +40,8 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
     const TargetProfile &tp = cx.tp;
     std::string spaces;
     for (const NumberRange &r : area == Area::Timer ? tp.timerNumbers : tp.counterNumbers)
-      spaces += (spaces.empty() ? "" : ", ") + letter + std::to_string(r.lo) +
-                ".." + letter + std::to_string(r.hi);
+      spaces += (spaces.empty() ? "" : ", ") + letter + std::to_string(r.lo) + ".." + letter +
+                std::to_string(r.hi);
     cx.error(s.ops[0].loc, std::string(family) + " number " + std::to_string(n) +
                                " is not valid (" + spaces + ")");
     return;

@@ -96,8 +96,8 @@ public:
         return;
       }
       if (toks.size() != 2) {
-        error(toks[0].loc, "a parameter line holds one value, got " +
-                               std::to_string(toks.size() - 1));
+        error(toks[0].loc,
+              "a parameter line holds one value, got " + std::to_string(toks.size() - 1));
         return;
       }
       pending_->params.push_back(toks[1]);
@@ -150,9 +150,12 @@ public:
 
   void finish(int32_t lastLine) {
     flush();
-    if (!sawEnd1_) error({lastLine, 1}, "program has no END1 (END1 is required, reference 4.1)");
-    else if (!sawEnd2_) error({lastLine, 1}, "program has no END2 (level 2 ends with END2)");
-    else if (!afterEnd_) error({lastLine, 1}, "program has no END (the last instruction)");
+    if (!sawEnd1_)
+      error({lastLine, 1}, "program has no END1 (END1 is required, reference 4.1)");
+    else if (!sawEnd2_)
+      error({lastLine, 1}, "program has no END2 (level 2 ends with END2)");
+    else if (!afterEnd_)
+      error({lastLine, 1}, "program has no END (the last instruction)");
   }
 
   // ---- Emitter ----
@@ -181,7 +184,8 @@ public:
       ++pos;
       size_t bs = pos;
       bit = 0;
-      while (pos < s.size() && isDigit(s[pos])) bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
+      while (pos < s.size() && isDigit(s[pos]))
+        bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
       ok = pos > bs;
     }
     if (!ok || pos != s.size()) {
@@ -204,7 +208,8 @@ public:
     std::string n(i.name);
     std::string r = n + "0.." + n + std::to_string(i.count - 1);
     if (i.upperCount > 0)
-      r += ", " + n + std::to_string(i.upperLo) + ".." + n + std::to_string(i.upperLo + i.upperCount - 1);
+      r += ", " + n + std::to_string(i.upperLo) + ".." + n +
+           std::to_string(i.upperLo + i.upperCount - 1);
     return r;
   }
 
@@ -244,7 +249,8 @@ public:
     }
     size_t start = pos;
     v = 0;
-    while (pos < s.size() && isDigit(s[pos])) v = std::min<int64_t>(v * 10 + (s[pos++] - '0'), int64_t{1} << 40);
+    while (pos < s.size() && isDigit(s[pos]))
+      v = std::min<int64_t>(v * 10 + (s[pos++] - '0'), int64_t{1} << 40);
     if (pos == start || pos != s.size()) {
       error(t.loc, std::string("expected a number as ") + role + ", got " + quote(s));
       return false;
@@ -303,8 +309,9 @@ public:
     int64_t bit;
     if (!address(t, out, bit) || out.area != a || bit >= 0) {
       if (out.area != a || bit >= 0)
-        error(t.loc, std::string("expected ") + (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") +
-                         ", got " + quote(t.text));
+        error(t.loc, std::string("expected ") +
+                         (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
+                         quote(t.text));
       return false;
     }
     if (out.index < 1) {
@@ -340,8 +347,9 @@ private:
   void basic(const Basic &b, const std::vector<Token> &toks) {
     const bool operand = b.kind != Basic::Block;
     if (toks.size() != (operand ? 2u : 1u)) {
-      error(toks[0].loc, std::string(b.name) + (operand ? " takes one bit address" : " takes no operand") +
-                             ", got " + std::to_string(toks.size() - 1));
+      error(toks[0].loc, std::string(b.name) +
+                             (operand ? " takes one bit address" : " takes no operand") + ", got " +
+                             std::to_string(toks.size() - 1));
       return;
     }
     switch (b.kind) {
@@ -358,8 +366,8 @@ private:
         return;
       }
       if (depth_ >= 8) {
-        error(toks[0].loc, std::string(b.name) +
-                               " pushes a ninth operation result: the PMC has only ST0..ST7");
+        error(toks[0].loc,
+              std::string(b.name) + " pushes a ninth operation result: the PMC has only ST0..ST7");
         return;
       }
       break;
@@ -417,7 +425,8 @@ private:
       level3Start_ = static_cast<int32_t>(prog_.stmts.size());
       emit(Op::EndSliced, at, {});
     } else if (head == "END3") {
-      if (!sawEnd2_ || level_ != 3) return error(at, "END3 must follow END2 (level 3 is END2..END3)");
+      if (!sawEnd2_ || level_ != 3)
+        return error(at, "END3 must follow END2 (level 3 is END2..END3)");
       if (static_cast<int32_t>(prog_.stmts.size()) != level3Start_ + 1)
         return error(at, "level 3 (END2..END3) is not supported: it must be empty "
                          "(docs/fanuc-pmc.md, [EXT] levels)");
@@ -452,39 +461,72 @@ private:
 
 const char *spell(Op op) {
   switch (op) {
-  case Op::Load: return "RD";
-  case Op::LoadNot: return "RD.NOT";
-  case Op::LoadTrue: return "(ON)";
-  case Op::And: return "AND";
-  case Op::AndNot: return "AND.NOT";
-  case Op::Or: return "OR";
-  case Op::OrNot: return "OR.NOT";
-  case Op::AndBlock: return "AND.STK";
-  case Op::OrBlock: return "OR.STK";
-  case Op::Coil: return "WRT";
-  case Op::CoilNot: return "WRT.NOT";
-  case Op::Set: return "SET";
-  case Op::Reset: return "RST";
-  case Op::EndInit: return "(INIT)";
-  case Op::EndCyclic: return "END1";
-  case Op::EndSliced: return "END2";
-  case Op::Jump: return "JMPB";
-  case Op::Label: return "LBL";
-  case Op::Call: return "CALL";
-  case Op::SubBegin: return "SP";
-  case Op::SubEnd: return "SPE";
-  case Op::Move: return "MOVB/MOVW/MOVD/MOVN";
-  case Op::BitAnd: return "AND(SUB60)/MOVE";
-  case Op::BitOr: return "OR(SUB61)/MOVOR";
-  case Op::BitXor: return "EOR/NOT";
-  case Op::CompareEq: return "EQB/EQW/EQD";
-  case Op::CompareLt: return "LTx/GTx";
-  case Op::CompareLe: return "LEx/GEx";
-  case Op::OnDelayTimer: return "TMRB";
-  case Op::OffDelayTimer: return "TMRBF";
-  case Op::RisePulse: return "DIFU";
-  case Op::FallPulse: return "DIFD";
-  default: return instrInfo(op).name;
+  case Op::Load:
+    return "RD";
+  case Op::LoadNot:
+    return "RD.NOT";
+  case Op::LoadTrue:
+    return "(ON)";
+  case Op::And:
+    return "AND";
+  case Op::AndNot:
+    return "AND.NOT";
+  case Op::Or:
+    return "OR";
+  case Op::OrNot:
+    return "OR.NOT";
+  case Op::AndBlock:
+    return "AND.STK";
+  case Op::OrBlock:
+    return "OR.STK";
+  case Op::Coil:
+    return "WRT";
+  case Op::CoilNot:
+    return "WRT.NOT";
+  case Op::Set:
+    return "SET";
+  case Op::Reset:
+    return "RST";
+  case Op::EndInit:
+    return "(INIT)";
+  case Op::EndCyclic:
+    return "END1";
+  case Op::EndSliced:
+    return "END2";
+  case Op::Jump:
+    return "JMPB";
+  case Op::Label:
+    return "LBL";
+  case Op::Call:
+    return "CALL";
+  case Op::SubBegin:
+    return "SP";
+  case Op::SubEnd:
+    return "SPE";
+  case Op::Move:
+    return "MOVB/MOVW/MOVD/MOVN";
+  case Op::BitAnd:
+    return "AND(SUB60)/MOVE";
+  case Op::BitOr:
+    return "OR(SUB61)/MOVOR";
+  case Op::BitXor:
+    return "EOR/NOT";
+  case Op::CompareEq:
+    return "EQB/EQW/EQD";
+  case Op::CompareLt:
+    return "LTx/GTx";
+  case Op::CompareLe:
+    return "LEx/GEx";
+  case Op::OnDelayTimer:
+    return "TMRB";
+  case Op::OffDelayTimer:
+    return "TMRBF";
+  case Op::RisePulse:
+    return "DIFU";
+  case Op::FallPulse:
+    return "DIFD";
+  default:
+    return instrInfo(op).name;
   }
 }
 
@@ -531,8 +573,8 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
     pos = nl + 1;
     if (toks.empty()) {
       if (hasComment)
-        prog.comments.push_back({line, static_cast<int32_t>(prog.stmts.size()), false,
-                                 std::string(comment)});
+        prog.comments.push_back(
+            {line, static_cast<int32_t>(prog.stmts.size()), false, std::string(comment)});
       continue;
     }
     p.line(toks, hasComment, comment);

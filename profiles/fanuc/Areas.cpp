@@ -26,7 +26,9 @@ constexpr AreaInfo byteArea(const char *name, int32_t count, bool writable, uint
 
 constexpr AreaInfo none() { return AreaInfo{"", 0, 0, false, false}; }
 
-constexpr uint32_t relayByte(int32_t r) { return kMem + kR + static_cast<uint32_t>(8000 + (r - 9000)); }
+constexpr uint32_t relayByte(int32_t r) {
+  return kMem + kR + static_cast<uint32_t>(8000 + (r - 9000));
+}
 using K = SystemBit::Kind;
 // Reference 2 [L115-L211]: R9091.0 OFF, .1 ON, .2 RUN, .5 FL2 (0.2 s, 1:1), .6 FL (1 s, 1:1);
 // R9015.0 RUNR (first scan after start, [EXT]). Written by the runtime before every tick.
@@ -39,28 +41,28 @@ constexpr SystemBit kSystemBits[] = {
 constexpr TargetProfile kFanuc{
     "fanuc",
     {{
-        byteArea("X", 128, false, kX, 200, 128), // Input
-        byteArea("Y", 128, true, kY, 200, 128),  // Output
-        byteArea("F", 768, false, kF),           // NcStatus
-        byteArea("G", 768, true, kG),            // NcControl
+        byteArea("X", 128, false, kX, 200, 128),  // Input
+        byteArea("Y", 128, true, kY, 200, 128),   // Output
+        byteArea("F", 768, false, kF),            // NcStatus
+        byteArea("G", 768, true, kG),             // NcControl
         byteArea("R", 8000, true, kR, 9000, 500), // Relay (R9000.. system relays)
-        none(),                                  // Word
-        none(),                                  // DWord
-        none(),                                  // Retained
-        none(),                                  // Param
-        {"T", 0, 0, false, false, false, 0},     // Timer: TMRB/TMRBF numbers (timerNumbers)
-        none(),                                  // Counter
-        {"L", 10000, 0, false, false, false, 0}, // Label
-        {"P", 512, 0, false, false, false, 0},   // Subroutine
-        byteArea("K", 100, true, kK, 900, 100),  // KeepRelay
-        byteArea("E", 10000, true, kE),          // ExtraRelay
-        byteArea("A", 250, true, kA, 9000, 250), // MessageBits
-        byteArea("T", 500, true, kT, 9000, 500), // TimerData
-        byteArea("C", 400, true, kC, 5000, 200), // CounterData
-        byteArea("D", 10000, true, kD),          // DataTable
-        none(),                                  // SystemBits
-        none(),                                  // SystemWords
-        none(),                                  // ConstWords
+        none(),                                   // Word
+        none(),                                   // DWord
+        none(),                                   // Retained
+        none(),                                   // Param
+        {"T", 0, 0, false, false, false, 0},      // Timer: TMRB/TMRBF numbers (timerNumbers)
+        none(),                                   // Counter
+        {"L", 10000, 0, false, false, false, 0},  // Label
+        {"P", 512, 0, false, false, false, 0},    // Subroutine
+        byteArea("K", 100, true, kK, 900, 100),   // KeepRelay
+        byteArea("E", 10000, true, kE),           // ExtraRelay
+        byteArea("A", 250, true, kA, 9000, 250),  // MessageBits
+        byteArea("T", 500, true, kT, 9000, 500),  // TimerData
+        byteArea("C", 400, true, kC, 5000, 200),  // CounterData
+        byteArea("D", 10000, true, kD),           // DataTable
+        none(),                                   // SystemBits
+        none(),                                   // SystemWords
+        none(),                                   // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
     // TMRB/TMRBF timer numbers 1..256 (lj_state has 256 timer slots; [EXT] row "timer numbers").
@@ -92,6 +94,8 @@ static_assert(kFanuc.elementOffset(Area::Relay, 9091) == relayByte(9091), "R9091
 
 const TargetProfile &fanuc::profile() { return kFanuc; }
 
-uint32_t fanuc::systemRelayOffset(int32_t rByte) { return kFanuc.elementOffset(Area::Relay, rByte); }
+uint32_t fanuc::systemRelayOffset(int32_t rByte) {
+  return kFanuc.elementOffset(Area::Relay, rByte);
+}
 
 } // namespace lj

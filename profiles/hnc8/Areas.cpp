@@ -96,7 +96,9 @@ static_assert(numberSpacesFillSlots(), "timer numbers map one to one onto lj_sta
 constexpr bool slotsAreAbiSlots() {
   for (int32_t n = -1; n < 500; ++n)
     // abi.h lj_tc_slot, spelled out (C inline functions are not constexpr)
-    if (const int abi = n >= 0 && n < 128 ? n : n >= 300 && n < 428 ? n - 300 + 128 : -1;
+    if (const int abi = n >= 0 && n < 128     ? n
+                        : n >= 300 && n < 428 ? n - 300 + 128
+                                              : -1;
         kHnc8.tcSlot(Area::Timer, n) != abi || kHnc8.tcSlot(Area::Counter, n) != abi)
       return false;
   return true;

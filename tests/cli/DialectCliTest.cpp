@@ -37,7 +37,8 @@ TEST(Dialect, EveryProgramCommandRefusesAnUnavailableDialect) {
     args.back() = "cobol";
     r = runCli(args);
     EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
-    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8, fanuc)")) << args[0] << ": " << r.err;
+    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8, fanuc)"))
+        << args[0] << ": " << r.err;
   }
 }
 
@@ -92,8 +93,8 @@ TEST(Dialect, LadderJsonNamesItsDialect) {
 // "Addresses"); RD X0.0 / WRT Y0.0 copies the input bit.
 TEST(Dialect, FanucProgramRunsWithFanucAddresses) {
   const std::string pmc = writeScratch("copy.pmc", "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n");
-  CliResult r = runCli({"run", pmc, "--engine", "interp", "--set", "X0.0=1", "--watch",
-                        "Y0.0,Y0,D0:4"});
+  CliResult r =
+      runCli({"run", pmc, "--engine", "interp", "--set", "X0.0=1", "--watch", "Y0.0,Y0,D0:4"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(csvValue(r.out, 0, "Y0.0"), 1);
   EXPECT_EQ(csvValue(r.out, 0, "Y0"), 1);

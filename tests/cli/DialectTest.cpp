@@ -87,7 +87,8 @@ TEST(Dialects, LadderJsonNamesItsDialect) {
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
             &defaultDialect());
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: dialect 'iec' is not available in this build (known: hnc8, fanuc)");
+  EXPECT_EQ(error,
+            "ladder JSON: dialect 'iec' is not available in this build (known: hnc8, fanuc)");
   EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
   EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc)");
 }

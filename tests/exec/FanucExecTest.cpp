@@ -14,7 +14,8 @@ class FanucExec : public ExecTest {
 protected:
   std::unique_ptr<Machine> pmc(std::string_view text) {
     Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
+    std::optional<VerifiedProgram> p =
+        fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
     if (!p) {
       ADD_FAILURE() << d.render() << text;
       return nullptr;
@@ -100,7 +101,7 @@ TEST_P(FanucExec, MovbMovwMovn) {
   set(*m, "X0.0", 1);
   m->tick();
   EXPECT_EQ(get(*m, "R200"), 0x11);
-  EXPECT_EQ(get(*m, "R201"), 0);     // MOVB moves one byte
+  EXPECT_EQ(get(*m, "R201"), 0);        // MOVB moves one byte
   EXPECT_EQ(get(*m, "R300:2"), 0x2211); // little-endian (3.1 [L235])
   for (int k = 0; k < 5; ++k) EXPECT_EQ(get(*m, "R" + std::to_string(100 + k)), 0x11 * (k + 1));
   EXPECT_EQ(get(*m, "R105"), 0);
@@ -108,7 +109,8 @@ TEST_P(FanucExec, MovbMovwMovn) {
 
 // 7.6 MOVE [L2387-L2391]: X10 = 01001010, AND data 00011111 -> R100 = 00001010.
 TEST_P(FanucExec, MoveAndMask) {
-  auto m = pmc("RD R9091.1\nSUB 8\n(PRM) 0001\n(PRM) 1111\n(PRM) X10\n(PRM) R100\nEND1\nEND2\nEND\n");
+  auto m =
+      pmc("RD R9091.1\nSUB 8\n(PRM) 0001\n(PRM) 1111\n(PRM) X10\n(PRM) R100\nEND1\nEND2\nEND\n");
   ASSERT_TRUE(m);
   set(*m, "X10", 0b01001010); // ACT = R9091.1, the always-on relay the runtime writes
   m->tick();
@@ -220,8 +222,9 @@ TEST_P(FanucExec, LevelsAndSubroutines) {
 // 2 [L115-L211]: R9091.0 = 0, R9091.1 = 1, R9091.2 = 1 (running), R9091.5 a 0.2 s clock and
 // R9091.6 a 1 s clock, both ON:OFF = 1:1; R9015.0 = 1 on the first scan only ([EXT]).
 TEST_P(FanucExec, SystemRelays) {
-  auto m = pmc("RD R9091.0\nWRT R0.0\nRD R9091.1\nWRT R0.1\nRD R9091.2\nWRT R0.2\n"
-               "RD R9091.5\nWRT R0.5\nRD R9091.6\nWRT R0.6\nRD R9015.0\nWRT R1.0\nEND1\nEND2\nEND\n");
+  auto m =
+      pmc("RD R9091.0\nWRT R0.0\nRD R9091.1\nWRT R0.1\nRD R9091.2\nWRT R0.2\n"
+          "RD R9091.5\nWRT R0.5\nRD R9091.6\nWRT R0.6\nRD R9015.0\nWRT R1.0\nEND1\nEND2\nEND\n");
   ASSERT_TRUE(m);
   m->setPeriodMs(4);
   for (int t = 0; t < 600; ++t) { // now_ms = 4 t

@@ -27,8 +27,9 @@ TEST(FanucDiagnostics, StackRulesOfSt0ToSt7) {
             "t.pmc:1:1: error: WRT without a logic line (start it with RD)\n");
   std::string nine = "RD X0.0\n";
   for (int i = 1; i <= 8; ++i) nine += "RD.STK X0." + std::to_string(i % 8) + "\n";
-  EXPECT_EQ(diags(nine + kEnd),
-            "t.pmc:9:1: error: RD.STK pushes a ninth operation result: the PMC has only ST0..ST7\n");
+  EXPECT_EQ(
+      diags(nine + kEnd),
+      "t.pmc:9:1: error: RD.STK pushes a ninth operation result: the PMC has only ST0..ST7\n");
 }
 
 TEST(FanucDiagnostics, Addresses) {
@@ -48,7 +49,8 @@ TEST(FanucDiagnostics, Addresses) {
 }
 
 TEST(FanucDiagnostics, LevelsAndEnds) {
-  EXPECT_EQ(diags("RD X0.0\nWRT Y0.0\n"), "t.pmc:2:1: error: program has no END1 (END1 is required, reference 4.1)\n");
+  EXPECT_EQ(diags("RD X0.0\nWRT Y0.0\n"),
+            "t.pmc:2:1: error: program has no END1 (END1 is required, reference 4.1)\n");
   EXPECT_EQ(diags("END1\nEND2\n"), "t.pmc:2:1: error: program has no END (the last instruction)\n");
   EXPECT_EQ(diags("END1\nEND2\nEND\nRD X0.0\n"),
             "t.pmc:4:1: error: statement after END (END ends the program)\n");
