@@ -2,6 +2,7 @@
 // and moves its name from kPlanned.
 #include "formats/Dialects.h"
 
+#include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "profiles/Profiles.h"
 
@@ -25,7 +26,18 @@ constexpr const char *kHnc8Extensions[] = {".stl", ".dit"};
 const Dialect kHnc8{"hnc8",       kHnc8Extensions, profileNamed("hnc8"), compileHnc8,
                     parseAddress, parseAssignment, formatAddress};
 
-const Dialect *const kDialects[] = {&kHnc8};
+// FANUC 0i-D PMC (docs/fanuc-pmc.md): byte-addressed areas, `R100`, `R100.3`, `D100:4`.
+std::optional<CliAddress> fanucAddress(std::string_view text, std::string &error) {
+  return parseProfileAddress(*profileNamed("fanuc"), text, error);
+}
+std::optional<Assignment> fanucAssignment(std::string_view item, std::string &error) {
+  return parseProfileAssignment(*profileNamed("fanuc"), item, error);
+}
+constexpr const char *kFanucExtensions[] = {".pmc"};
+const Dialect kFanuc{"fanuc",      kFanucExtensions, profileNamed("fanuc"), fanuc::compilePmc,
+                     fanucAddress, fanucAssignment,  formatProfileAddress};
+
+const Dialect *const kDialects[] = {&kHnc8, &kFanuc};
 
 /// Dialects ladderjit plans (docs/architecture.md "Adding a dialect") and the extensions that
 /// name them; a build without one says so instead of reading the file as HNC-8.
@@ -33,7 +45,7 @@ struct Planned {
   const char *name;
   const char *extension;
 };
-constexpr Planned kPlanned[] = {{"fanuc", ".pmc"}, {"iec", ".il"}};
+constexpr Planned kPlanned[] = {{"iec", ".il"}};
 
 std::string quoted(std::string_view s) {
   std::string out = "'";

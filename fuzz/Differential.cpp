@@ -2,7 +2,10 @@
 // the first field of lj_state where they part.
 #include "fuzz/Differential.h"
 
+#include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "gen/FanucProgram.h"
+#include "hosts/SystemBits.h"
 #include "hosts/TestHost.h"
 
 #include <cstring>
@@ -79,6 +82,7 @@ std::string firstDifference(const lj_state &a, const lj_state &b, const char *ca
   d.field("fault_index", a.fault_index, b.fault_index);
   d.field("fault_divzero", a.fault_divzero, b.fault_divzero);
   d.array("inst_word", a.inst_word, b.inst_word);
+  d.array("mem", a.mem, b.mem); // the profile-laid areas (FANUC: byte k of lj_state.mem)
   if (!d.found && std::memcmp(&a, &b, LJ_STATE_COMPARED_BYTES) != 0) {
     const auto *pa = reinterpret_cast<const unsigned char *>(&a);
     const auto *pb = reinterpret_cast<const unsigned char *>(&b);
@@ -169,10 +173,12 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   Outcome r;
   std::string text;
   for (const std::string &l : c.lines) text += l + "\n";
-  Diagnostics diags("fuzz.stl");
+  Diagnostics diags(c.fanuc ? "fuzz.pmc" : "fuzz.stl");
   VerifyOptions vo;
   vo.plc2Nvalue = c.plc2Nvalue;
-  std::optional<VerifiedProgram> prog = compileFrontEnd(text, "fuzz.stl", vo, diags);
+  std::optional<VerifiedProgram> prog =
+      c.fanuc ? fanuc::compilePmc(text, "fuzz.pmc", vo, diags, nullptr)
+              : compileFrontEnd(text, "fuzz.stl", vo, diags);
   if (!prog) {
     r.kind = Outcome::Kind::NotVerified;
     r.detail = diags.render();
@@ -201,7 +207,10 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     lj_state_reset(s);
     (s == sa.get() ? ha : hb).attach(*s);
     s->max_backward_steps = c.stim.maxBackwardSteps;
-    gen::applyWrites(*s, c.stim.beforeInit);
+    if (c.fanuc)
+      gen::applyFanucWrites(*prog->profile, *s, c.stim.beforeInit);
+    else
+      gen::applyWrites(*s, c.stim.beforeInit);
     s->now_ms = c.stim.initNowMs;
   }
   const lj_entries &ea = ref->entries();
@@ -236,8 +245,12 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   for (uint32_t t = 0; t < c.stim.ticks(); ++t) {
     uint32_t slice = sa->plc2_next_slice < prog->slices.size() ? sa->plc2_next_slice : 0;
     for (lj_state *s : {sa.get(), sb.get()}) {
-      gen::applyWrites(*s, c.stim.writes[t]);
+      if (c.fanuc)
+        gen::applyFanucWrites(*prog->profile, *s, c.stim.writes[t]);
+      else
+        gen::applyWrites(*s, c.stim.writes[t]);
       s->now_ms = c.stim.nowMs[t];
+      io::writeSystemBits(*prog->profile, *s, t);
     }
     fa = lj_tick(sa.get(), &ea);
     fb = lj_tick(sb.get(), &eb(t));

@@ -47,6 +47,8 @@ struct Case {
   /// Build both engines traced (ir/Trace.h) and compare their traces too; the candidate is then
   /// the traced JIT (tracedJit), whatever the factory.
   bool trace = false;
+  /// The lines are FANUC PMC text (gen/FanucProgram.h) and the stimulus names FANUC areas.
+  bool fanuc = false;
 };
 
 /// The JIT built traced into `trace` (ir/Trace.h), for Case::trace.

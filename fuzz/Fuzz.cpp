@@ -1,8 +1,10 @@
 // The differential fuzzing campaign behind `ladderjit fuzz`: per program a derived seed, a random
 // valid program and stimulus, interpreter and JIT in lock step; mismatches minimized and printed.
 #include "fuzz/Fuzz.h"
+
 #include "fuzz/Differential.h"
 #include "fuzz/RoundTrip.h"
+#include "gen/FanucProgram.h"
 
 #include "gen/Rng.h"
 
@@ -108,11 +110,18 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     gen::RandomOptions ro;
     ro.seed = rng.fork();
     ro.statements = static_cast<int32_t>(rng.range(opts.statements / 4 + 1, opts.statements));
-    gen::GenProgram gp = gen::generateRandom(ro);
     Case c;
-    c.lines = std::move(gp.lines);
-    c.plc2Nvalue = gp.plc2Nvalue;
-    c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
+    if (opts.fanuc) {
+      c.fanuc = true;
+      c.lines = gen::generateFanuc(ro.seed, ro.statements);
+      c.plc2Nvalue = static_cast<int32_t>(rng.chance(30) ? 0 : rng.range(1, 40));
+      c.stim = gen::generateFanucStimulus(rng.fork(), opts.ticks);
+    } else {
+      gen::GenProgram gp = gen::generateRandom(ro);
+      c.lines = std::move(gp.lines);
+      c.plc2Nvalue = gp.plc2Nvalue;
+      c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
+    }
     c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
     c.hostSeed = rng.next() | 1; // never 0: the host serves seeded variables, deltas, pockets
     c.trace = opts.trace;

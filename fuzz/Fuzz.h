@@ -41,6 +41,8 @@ struct FuzzOptions {
   /// Build both engines traced and compare the power-flow traces (ir/Trace.h) after init and
   /// every tick as well as the states (the JIT is the engine under test).
   bool trace = false;
+  /// Generate FANUC PMC programs (gen/FanucProgram.h) instead of HNC-8 STL.
+  bool fanuc = false;
   /// Called after every program with the counters so far and the programs done, and once more
   /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
   std::function<void(const FuzzStats &, uint64_t done)> progress;

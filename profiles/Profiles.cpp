@@ -1,12 +1,13 @@
 // The profiles of this build (profiles/Profiles.h). A new target adds its profile here.
 #include "profiles/Profiles.h"
 
+#include "profiles/fanuc/FanucProfile.h"
 #include "profiles/hnc8/Hnc8Profile.h"
 
 namespace lj {
 
 std::span<const TargetProfile *const> allProfiles() {
-  static const TargetProfile *const kAll[] = {&hnc8::profile()};
+  static const TargetProfile *const kAll[] = {&hnc8::profile(), &fanuc::profile()};
   return kAll;
 }
 

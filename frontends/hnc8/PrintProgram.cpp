@@ -15,9 +15,9 @@ std::string formatOperand(const Operand &op) {
   case Operand::Kind::Const:
     return std::to_string(op.value);
   case Operand::Kind::Reg:
-    return hnc8::profile().area(op.area).letter + std::to_string(op.index);
+    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index);
   case Operand::Kind::Bit:
-    return hnc8::profile().area(op.area).letter + std::to_string(op.index) + "." +
+    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index) + "." +
            std::to_string(op.bit);
   }
   return "";
@@ -66,9 +66,11 @@ std::string printProgram(const VerifiedProgram &p) {
     const StmtInfo &in = p.info[i];
     auto idx = static_cast<int32_t>(i);
     std::string ops;
-    for (int k = 0; k < s.operandCount; ++k) ops += (k ? " " : "") + formatOperand(s.ops[k]);
+    // In the program's own dialect (a FANUC program prints RD, R100, D100).
+    auto operandText = p.dialect ? p.dialect->formatOperand : &formatOperand;
+    for (int k = 0; k < s.operandCount; ++k) ops += (k ? " " : "") + operandText(s.ops[k]);
     std::snprintf(buf, sizeof buf, "%5zu %5d:%-3d %-5s %-6s ", i, s.loc.line, s.loc.col,
-                  partOf(p, idx).c_str(), hnc8::mnemonicOf(s.op));
+                  partOf(p, idx).c_str(), spelling(p.dialect, s.op));
     std::string line = buf;
     line += ops;
     if (line.size() < 48) line.resize(48, ' ');

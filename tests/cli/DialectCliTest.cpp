@@ -9,7 +9,7 @@ namespace lj::clitest {
 namespace {
 
 const char *kFollow = "LD X1.0\nOUT Y1.0\n";
-const char *kFanuc = "dialect 'fanuc' is not available in this build (known: hnc8)";
+const char *kIec = "dialect 'iec' is not available in this build (known: hnc8, fanuc)";
 
 bool says(const CliResult &r, const std::string &text) {
   return r.err.find(text) != std::string::npos;
@@ -30,14 +30,15 @@ TEST(Dialect, EveryProgramCommandRefusesAnUnavailableDialect) {
   };
   for (std::vector<std::string> args : commands) {
     args.push_back("--dialect");
-    args.push_back("fanuc");
+    args.push_back("iec");
     CliResult r = runCli(args);
     EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
-    EXPECT_TRUE(says(r, kFanuc)) << args[0] << ": " << r.err;
+    EXPECT_TRUE(says(r, kIec)) << args[0] << ": " << r.err;
     args.back() = "cobol";
     r = runCli(args);
     EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
-    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8)")) << args[0] << ": " << r.err;
+    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8, fanuc)"))
+        << args[0] << ": " << r.err;
   }
 }
 
@@ -60,12 +61,11 @@ TEST(Dialect, Hnc8ByOptionOrExtensionRunsAsBefore) {
 }
 
 TEST(Dialect, PlannedExtensionsAreUsageErrorsUnlessTheOptionSaysOtherwise) {
+  // A .pmc file is FANUC PMC text (docs/fanuc-pmc.md): HNC-8's LD is no PMC instruction.
   const std::string pmc = writeScratch("spindle.pmc", kFollow);
   CliResult r = runCli({"check", pmc});
-  EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_TRUE(says(r, "spindle.pmc: a .pmc file is dialect 'fanuc', which is not available in "
-                      "this build (known: hnc8"))
-      << r.err;
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(says(r, "spindle.pmc:1:1: error: unknown instruction 'LD'")) << r.err;
   r = runCli({"run", writeScratch("x.il", kFollow), "--engine", "interp"});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   EXPECT_TRUE(says(r, "dialect 'iec', which is not available in this build")) << r.err;
@@ -80,13 +80,30 @@ TEST(Dialect, LadderJsonNamesItsDialect) {
   ASSERT_NE(lad.out.find("\"dialect\": \"hnc8\""), std::string::npos) << lad.out;
   CliResult r = runCli({"check", writeScratch("j.json", lad.out)});
   EXPECT_EQ(r.exitCode, 0) << r.err;
-  std::string fanuc = lad.out;
-  fanuc.replace(fanuc.find("\"dialect\": \"hnc8\""), 17, "\"dialect\": \"fanuc\"");
-  r = runCli({"check", writeScratch("f.json", fanuc)});
+  std::string iec = lad.out;
+  iec.replace(iec.find("\"dialect\": \"hnc8\""), 17, "\"dialect\": \"iec\"");
+  r = runCli({"check", writeScratch("f.json", iec)});
   EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_TRUE(says(r, "f.json: ladder JSON: dialect 'fanuc' is not available in this build "
-                      "(known: hnc8)"))
+  EXPECT_TRUE(says(r, "f.json: ladder JSON: dialect 'iec' is not available in this build "
+                      "(known: hnc8, fanuc)"))
       << r.err;
+}
+
+// A FANUC program by extension: run with FANUC addresses on --set / --watch (docs/fanuc-pmc.md
+// "Addresses"); RD X0.0 / WRT Y0.0 copies the input bit.
+TEST(Dialect, FanucProgramRunsWithFanucAddresses) {
+  const std::string pmc = writeScratch("copy.pmc", "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n");
+  CliResult r =
+      runCli({"run", pmc, "--engine", "interp", "--set", "X0.0=1", "--watch", "Y0.0,Y0,D0:4"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(csvValue(r.out, 0, "Y0.0"), 1);
+  EXPECT_EQ(csvValue(r.out, 0, "Y0"), 1);
+  r = runCli({"run", pmc, "--engine", "interp", "--watch", "Y0.8"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_TRUE(says(r, "bad address 'Y0.8': bit out of range (0..7)")) << r.err;
+  r = runCli({"run", pmc, "--engine", "interp", "--watch", "D9999:2"});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_TRUE(says(r, "bad address 'D9999:2': element out of range (D0..D9999)")) << r.err;
 }
 
 } // namespace

@@ -15,11 +15,11 @@ namespace lj::io {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
-  ASSERT_EQ(allProfiles().size(), 1u);
+  ASSERT_EQ(allProfiles().size(), 2u); // hnc8, fanuc
   const TargetProfile *p = profileNamed("hnc8");
   ASSERT_NE(p, nullptr);
   EXPECT_STREQ(p->name, "hnc8");
-  EXPECT_EQ(profileNamed("fanuc"), nullptr);
+  EXPECT_EQ(profileNamed("iec"), nullptr);
   EXPECT_EQ(profileNamed(""), nullptr);
   // DIALECT.md 1: X is the input area, D the 32-bit registers; T numbers 0..127 and 300..427.
   EXPECT_EQ(p->areaFromLetter('x'), Area::Input);
@@ -31,12 +31,28 @@ TEST(Profiles, RegistryHoldsHnc8ByName) {
   EXPECT_EQ(p->cncRow(Op::Coil), nullptr);
 }
 
-TEST(Dialects, OnlyHnc8IsRegisteredAndItUsesTheHnc8Profile) {
-  ASSERT_EQ(allDialects().size(), 1u);
+TEST(Dialects, Hnc8AndFanucAreRegisteredWithTheirProfiles) {
+  ASSERT_EQ(allDialects().size(), 2u);
   EXPECT_EQ(dialectNamed("hnc8"), &defaultDialect());
   EXPECT_EQ(defaultDialect().profile, profileNamed("hnc8"));
+  ASSERT_NE(dialectNamed("fanuc"), nullptr);
+  EXPECT_EQ(dialectNamed("fanuc")->profile, profileNamed("fanuc"));
   EXPECT_EQ(dialectNamed("HNC8"), nullptr); // names are exact
-  EXPECT_EQ(knownDialects(), "hnc8");
+  EXPECT_EQ(knownDialects(), "hnc8, fanuc");
+}
+
+TEST(Profiles, FanucAreasAreBytesWithUpperRanges) {
+  const TargetProfile *p = profileNamed("fanuc");
+  ASSERT_NE(p, nullptr);
+  // fanuc-pmc.md 1: T0..T499 and T9000..T9499; D0..D9999; bytes, little-endian (3.1).
+  EXPECT_EQ(p->areaFromName("t"), Area::TimerData);
+  EXPECT_TRUE(p->validIndex(Area::TimerData, 9499));
+  EXPECT_FALSE(p->validIndex(Area::TimerData, 500));
+  EXPECT_EQ(p->elementOffset(Area::TimerData, 9000), p->elementOffset(Area::TimerData, 499) + 1);
+  EXPECT_TRUE(p->validSpan(Area::DataTable, 9998, 2));
+  EXPECT_FALSE(p->validSpan(Area::DataTable, 9999, 2));
+  EXPECT_FALSE(p->validSpan(Area::TimerData, 499, 2)); // T499..T500 crosses out of the range
+  EXPECT_EQ(p->bitWidth(Area::Relay), 8);
 }
 
 TEST(Dialects, ExtensionChoosesTheDialect) {
@@ -48,33 +64,33 @@ TEST(Dialects, ExtensionChoosesTheDialect) {
   EXPECT_EQ(dialectForPath("prog.txt", error), &defaultDialect());
   EXPECT_EQ(dialectForPath("prog", error), &defaultDialect());
   EXPECT_TRUE(error.empty()) << error;
-  EXPECT_EQ(dialectForPath("spindle.pmc", error), nullptr);
-  EXPECT_EQ(error, "spindle.pmc: a .pmc file is dialect 'fanuc', which is not available in this "
-                   "build (known: hnc8; --dialect NAME reads it as another dialect)");
+  EXPECT_EQ(dialectForPath("spindle.pmc", error), dialectNamed("fanuc"));
+  EXPECT_EQ(dialectForPath("SPINDLE.PMC", error), dialectNamed("fanuc"));
   error.clear();
   EXPECT_EQ(dialectForPath("x.il", error), nullptr);
-  EXPECT_NE(error.find("dialect 'iec', which is not available in this build"), std::string::npos);
+  EXPECT_EQ(error, "x.il: a .il file is dialect 'iec', which is not available in this "
+                   "build (known: hnc8, fanuc; --dialect NAME reads it as another dialect)");
 }
 
 TEST(Dialects, OptionNamesTheDialect) {
   std::string error;
   EXPECT_EQ(dialectForOption("hnc8", error), &defaultDialect());
-  EXPECT_EQ(dialectForOption("fanuc", error), nullptr);
-  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(dialectForOption("fanuc", error), dialectNamed("fanuc"));
   EXPECT_EQ(dialectForOption("iec", error), nullptr);
-  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8)");
+  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8, fanuc)");
   EXPECT_EQ(dialectForOption("siemens", error), nullptr);
-  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8)");
+  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc)");
 }
 
 TEST(Dialects, LadderJsonNamesItsDialect) {
   std::string error;
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
             &defaultDialect());
-  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"fanuc"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error), nullptr);
+  EXPECT_EQ(error,
+            "ladder JSON: dialect 'iec' is not available in this build (known: hnc8, fanuc)");
   EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8)");
+  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc)");
 }
 
 std::string tempFile(const std::string &name, const std::string &text) {
@@ -98,11 +114,14 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
   EXPECT_EQ(prog->profile, profileNamed("hnc8")); // the verified program carries its profile
 
   ProgramSource refused;
-  EXPECT_FALSE(readProgramFile(stl, refused, error, "fanuc"));
-  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
-  // --dialect hnc8 reads a .pmc name as HNC-8 STL.
+  EXPECT_FALSE(readProgramFile(stl, refused, error, "iec"));
+  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8, fanuc)");
+  // --dialect hnc8 reads a .pmc name as HNC-8 STL; without it the .pmc is FANUC text.
   const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
-  EXPECT_FALSE(readProgramFile(pmc, refused, error));
+  ProgramSource asFanuc;
+  ASSERT_TRUE(readProgramFile(pmc, asFanuc, error)) << error;
+  EXPECT_EQ(asFanuc.dialect, dialectNamed("fanuc"));
+  EXPECT_FALSE(verifyProgram(asFanuc, 200, diags)); // LD is no PMC instruction
   ProgramSource forced;
   EXPECT_TRUE(readProgramFile(pmc, forced, error, "hnc8")) << error;
 }

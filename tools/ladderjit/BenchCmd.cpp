@@ -56,6 +56,8 @@ struct ScanInputs {
   uint64_t seed = 1;
   const io::Stimulus *stimulus = nullptr;
   size_t nextEvent = 0;
+  /// Random mode for a target laid out in lj_state.mem (FANUC): where its input bytes are.
+  uint32_t memInputOffset = 0, memInputBytes = 0;
 };
 
 /// Random mode: X (all 513 bytes) and 16 F words get new values each scan, from the seed and the
@@ -72,6 +74,11 @@ void applyInputs(lj_state &s, const ScanInputs &in, uint64_t scan,
     for (int k = 0; k < 16; ++k) {
       uint64_t v = rng.next();
       s.img.F[v % LJ_F_COUNT] = static_cast<int16_t>(v >> 32);
+    }
+    auto *bytes = reinterpret_cast<unsigned char *>(&s);
+    for (uint32_t i = 0; i < in.memInputBytes; i += 8) {
+      uint64_t v = rng.next();
+      std::memcpy(bytes + in.memInputOffset + i, &v, std::min<uint32_t>(8, in.memInputBytes - i));
     }
     return;
   }
@@ -275,26 +282,31 @@ int runBench(const BenchArgs &a) {
   io::Stimulus stim;
   ScanInputs in;
   in.seed = a.seed;
-  if (!a.stimulus.empty()) {
-    std::string text;
-    if (!io::readFile(a.stimulus, text, error)) return usageError(error);
-    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error);
-    if (!st) return usageError(error);
-    stim = std::move(*st);
-    in.random = false;
-    in.stimulus = &stim;
-  }
 
   Progress progress;
   int code = kOk;
   ProgramSource src;
   auto tr = Clock::now();
   if (!readProgram(a.program, src, code, a.dialect)) return code;
+  if (!a.stimulus.empty()) { // addresses in the program's dialect
+    std::string text;
+    if (!io::readFile(a.stimulus, text, error)) return usageError(error);
+    std::optional<io::Stimulus> st =
+        io::parseStimulus(text, a.stimulus, error, src.dialect->parseAssignment);
+    if (!st) return usageError(error);
+    stim = std::move(*st);
+    in.random = false;
+    in.stimulus = &stim;
+  }
   FrontTimes ft;
   ft.readUs = usSince(tr);
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
+  if (const AreaInfo &x = prog->profile->area(Area::Input); x.offset >= offsetof(lj_state, mem)) {
+    in.memInputOffset = x.offset;
+    in.memInputBytes = static_cast<uint32_t>(x.count + x.upperCount) * x.bytes;
+  }
   {
     // Parse and verify apart (the program above came from the same two steps in one call).
     const SymbolTable *symbols = src.dit      ? &src.dit->symbols

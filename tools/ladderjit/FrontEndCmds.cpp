@@ -67,10 +67,14 @@ int runFuzz(const FuzzArgs &a) {
   std::string error;
   const io::Dialect *d = io::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
   if (!d) return usageError(error);
-  if (d != &io::defaultDialect())
-    return usageError(std::string("fuzz generates only hnc8 programs, not dialect '") + d->name +
-                      "'");
+  const bool fanuc = std::string_view(d->name) == "fanuc";
+  if (d != &io::defaultDialect() && !fanuc)
+    return usageError(std::string("fuzz generates only hnc8 and fanuc programs, not dialect '") +
+                      d->name + "'");
+  if (fanuc && a.roundTrip)
+    return usageError("fuzz --round-trip reads only hnc8 programs (the ladder round trip is STL)");
   fuzz::FuzzOptions opts;
+  opts.fanuc = fanuc;
   opts.seed = a.seed;
   opts.programs = a.programs;
   opts.ticks = a.ticks;

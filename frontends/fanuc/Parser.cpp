@@ -1,0 +1,609 @@
+// Lexer and parser of FANUC PMC mnemonic text (reference 5: basic instructions; 4: levels,
+// END1/END2/END3/END, SP/SPE; docs/fanuc-pmc.md). One instruction per line; a functional
+// instruction's parameters follow it on its line or on `(PRM) value` lines. The parser tracks the
+// operation-result register ST0..ST7 itself: RD starts a new logic line (depth 1), RD.STK
+// pushes, AND.STK/OR.STK pop; more than eight results is an error, as on the PMC.
+#include "frontends/fanuc/FrontEnd.h"
+#include "frontends/fanuc/ParserInternal.h"
+#include "profiles/fanuc/FanucProfile.h"
+
+#include <array>
+#include <map>
+#include <set>
+
+namespace lj::fanuc {
+
+namespace detail {
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char &c : out)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return out;
+}
+} // namespace detail
+
+namespace {
+
+using detail::Token;
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+std::string quote(std::string_view t) {
+  return "'" + std::string(t.substr(0, 40)) + (t.size() > 40 ? "...'" : "'");
+}
+
+const TargetProfile &tp() { return profile(); }
+
+/// The basic instructions (reference 5) and how each changes ST.
+struct Basic {
+  const char *name;
+  Op op;
+  enum Kind : uint8_t { Read, ReadStk, Combine, Write, Block, Marker } kind;
+};
+constexpr Basic kBasic[] = {
+    {"RD", Op::Load, Basic::Read},           {"RD.NOT", Op::LoadNot, Basic::Read},
+    {"RD.STK", Op::Load, Basic::ReadStk},    {"RD.NOT.STK", Op::LoadNot, Basic::ReadStk},
+    {"AND", Op::And, Basic::Combine},        {"AND.NOT", Op::AndNot, Basic::Combine},
+    {"OR", Op::Or, Basic::Combine},          {"OR.NOT", Op::OrNot, Basic::Combine},
+    {"WRT", Op::Coil, Basic::Write},         {"WRT.NOT", Op::CoilNot, Basic::Write},
+    {"SET", Op::Set, Basic::Write},          {"RST", Op::Reset, Basic::Write},
+    {"AND.STK", Op::AndBlock, Basic::Block}, {"OR.STK", Op::OrBlock, Basic::Block},
+};
+
+const Basic *basicNamed(std::string_view n) {
+  for (const Basic &b : kBasic)
+    if (n == b.name) return &b;
+  return nullptr;
+}
+
+bool isMarkerName(std::string_view n) {
+  return n == "END1" || n == "END2" || n == "END3" || n == "END" || n == "SP" || n == "SPE";
+}
+
+void tokenize(std::string_view line, int32_t lineNo, std::vector<Token> &toks,
+              std::string_view &comment, bool &hasComment) {
+  toks.clear();
+  hasComment = false;
+  size_t end = line.size();
+  for (size_t i = 0; i < line.size(); ++i)
+    if (line[i] == ';' || (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/')) {
+      end = i;
+      hasComment = true;
+      comment = line.substr(i + (line[i] == ';' ? 1 : 2));
+      while (!comment.empty() && isSpace(comment.front())) comment.remove_prefix(1);
+      while (!comment.empty() && isSpace(comment.back())) comment.remove_suffix(1);
+      break;
+    }
+  size_t i = 0;
+  while (i < end) {
+    while (i < end && isSpace(line[i])) ++i;
+    if (i >= end) break;
+    size_t start = i;
+    while (i < end && !isSpace(line[i])) ++i;
+    toks.push_back({line.substr(start, i - start), {lineNo, static_cast<int32_t>(start + 1)}});
+  }
+}
+
+class Parser final : public detail::Emitter {
+public:
+  Parser(ParsedProgram &p, Diagnostics &d) : prog_(p), diags_(d) {}
+
+  void line(const std::vector<Token> &toks, bool hasComment, std::string_view comment) {
+    const std::string head = detail::upper(toks[0].text);
+    if (head == "(PRM)" || head == "PRM") {
+      if (!pending_) {
+        error(toks[0].loc, "parameter line without a functional instruction before it");
+        return;
+      }
+      if (toks.size() != 2) {
+        error(toks[0].loc,
+              "a parameter line holds one value, got " + std::to_string(toks.size() - 1));
+        return;
+      }
+      pending_->params.push_back(toks[1]);
+      return;
+    }
+    flush();
+    const auto next = static_cast<int32_t>(prog_.stmts.size());
+    if (afterEnd_) {
+      error(toks[0].loc, "statement after END (END ends the program)");
+      return;
+    }
+    if (const Basic *b = basicNamed(head)) {
+      basic(*b, toks);
+    } else if (isMarkerName(head)) {
+      marker(head, toks);
+    } else if (head == "SUB" || detail::isFunctionalName(head)) {
+      detail::Functional f;
+      f.head = toks[0];
+      size_t first = 1;
+      if (head == "SUB") {
+        if (toks.size() < 2) {
+          error(toks[0].loc, "SUB needs its instruction number (SUB 24)");
+          return;
+        }
+        f.number = toks[1];
+        first = 2;
+      }
+      for (size_t k = first; k < toks.size(); ++k) f.params.push_back(toks[k]);
+      pending_ = f;
+      pendingComment_ = hasComment ? std::optional<std::string>(comment) : std::nullopt;
+      pendingFirst_ = next;
+      return;
+    } else {
+      error(toks[0].loc, "unknown instruction " + quote(toks[0].text));
+      return;
+    }
+    if (hasComment && static_cast<int32_t>(prog_.stmts.size()) > next)
+      prog_.comments.push_back({toks[0].loc.line, next, true, std::string(comment)});
+  }
+
+  void flush() {
+    if (!pending_) return;
+    detail::Functional f = std::move(*pending_);
+    pending_.reset();
+    detail::emitFunctional(*this, f);
+    if (pendingComment_ && static_cast<int32_t>(prog_.stmts.size()) > pendingFirst_)
+      prog_.comments.push_back({f.head.loc.line, pendingFirst_, true, *pendingComment_});
+    pendingComment_.reset();
+  }
+
+  void finish(int32_t lastLine) {
+    flush();
+    if (!sawEnd1_)
+      error({lastLine, 1}, "program has no END1 (END1 is required, reference 4.1)");
+    else if (!sawEnd2_)
+      error({lastLine, 1}, "program has no END2 (level 2 ends with END2)");
+    else if (!afterEnd_)
+      error({lastLine, 1}, "program has no END (the last instruction)");
+  }
+
+  // ---- Emitter ----
+  void error(SourceLoc at, std::string msg) override { diags_.error(at, std::move(msg)); }
+
+  bool address(const Token &t, Operand &out, int64_t &bit) {
+    std::string_view s = t.text;
+    size_t n = 0;
+    while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
+    std::optional<Area> a = tp().areaFromName(s.substr(0, n));
+    if (n == 0 || !a) {
+      error(t.loc, "unknown address " + quote(s) +
+                       " (areas: X Y F G R E A T C K D; labels L, subroutines P)");
+      return false;
+    }
+    size_t pos = n;
+    int64_t idx = 0;
+    size_t start = pos;
+    while (pos < s.size() && isDigit(s[pos])) {
+      idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
+      ++pos;
+    }
+    bit = -1;
+    bool ok = pos > start;
+    if (ok && pos < s.size() && s[pos] == '.') {
+      ++pos;
+      size_t bs = pos;
+      bit = 0;
+      while (pos < s.size() && isDigit(s[pos]))
+        bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
+      ok = pos > bs;
+    }
+    if (!ok || pos != s.size()) {
+      error(t.loc, "malformed address " + quote(s));
+      return false;
+    }
+    out = Operand{};
+    out.area = *a;
+    out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
+    out.loc = t.loc;
+    if (!tp().validIndex(*a, idx)) {
+      error(t.loc, "address " + quote(s) + " out of range (" + ranges(*a) + ")");
+      return false;
+    }
+    return true;
+  }
+
+  static std::string ranges(Area a) {
+    const AreaInfo &i = tp().area(a);
+    std::string n(i.name);
+    std::string r = n + "0.." + n + std::to_string(i.count - 1);
+    if (i.upperCount > 0)
+      r += ", " + n + std::to_string(i.upperLo) + ".." + n +
+           std::to_string(i.upperLo + i.upperCount - 1);
+    return r;
+  }
+
+  bool bitOperand(const Token &t, bool writes, Operand &out) override {
+    int64_t bit;
+    if (!address(t, out, bit)) return false;
+    if (tp().area(out.area).bytes == 0) {
+      error(t.loc, "expected a bit address (like R0.0), got " + quote(t.text));
+      return false;
+    }
+    if (bit < 0) {
+      error(t.loc, "expected a bit address (like R0.0), got byte " + quote(t.text));
+      return false;
+    }
+    if (bit > 7) {
+      error(t.loc, "bit number " + std::to_string(bit) + " out of range in " + quote(t.text) +
+                       " (bits 0..7)");
+      return false;
+    }
+    if (writes && !tp().area(out.area).writable) {
+      error(t.loc, quote(t.text) + " is read-only (" + tp().area(out.area).name +
+                       " is written by the machine or the CNC)");
+      return false;
+    }
+    out.kind = Operand::Kind::Bit;
+    out.bit = static_cast<int8_t>(bit);
+    return true;
+  }
+
+  bool constant(const Token &t, int64_t lo, int64_t hi, const char *role, int64_t &v) override {
+    std::string_view s = t.text;
+    size_t pos = 0;
+    bool neg = false;
+    if (!s.empty() && (s[0] == '-' || s[0] == '+')) {
+      neg = s[0] == '-';
+      pos = 1;
+    }
+    size_t start = pos;
+    v = 0;
+    while (pos < s.size() && isDigit(s[pos]))
+      v = std::min<int64_t>(v * 10 + (s[pos++] - '0'), int64_t{1} << 40);
+    if (pos == start || pos != s.size()) {
+      error(t.loc, std::string("expected a number as ") + role + ", got " + quote(s));
+      return false;
+    }
+    if (neg) v = -v;
+    if (v < lo || v > hi) {
+      error(t.loc, std::string(role) + " " + quote(s) + " out of range (" + std::to_string(lo) +
+                       ".." + std::to_string(hi) + ")");
+      return false;
+    }
+    return true;
+  }
+
+  bool dataOperand(const Token &t, int width, bool constOk, bool writes, Operand &out) override {
+    std::string_view s = t.text;
+    if (!s.empty() && (isDigit(s[0]) || s[0] == '-' || s[0] == '+')) {
+      if (!constOk) {
+        error(t.loc, "expected an address, got constant " + quote(s));
+        return false;
+      }
+      const int64_t lo = width == 1 ? -128 : width == 2 ? -32768 : INT32_MIN;
+      const int64_t hi = width == 1 ? 255 : width == 2 ? 65535 : INT32_MAX;
+      int64_t v;
+      if (!constant(t, lo, hi, "constant", v)) return false;
+      out = Operand{};
+      out.kind = Operand::Kind::Const;
+      // The constant as the signed value of its `width` bytes (reference 3.1).
+      out.value = width == 1   ? static_cast<int8_t>(v)
+                  : width == 2 ? static_cast<int16_t>(v)
+                               : static_cast<int32_t>(v);
+      out.loc = t.loc;
+      return true;
+    }
+    int64_t bit;
+    if (!address(t, out, bit)) return false;
+    if (bit >= 0 || tp().area(out.area).bytes == 0) {
+      error(t.loc, "expected a byte address (like D100), got " + quote(s));
+      return false;
+    }
+    if (!tp().validSpan(out.area, out.index, width)) {
+      error(t.loc, quote(s) + " as " + std::to_string(width) + " bytes runs past the end of " +
+                       ranges(out.area));
+      return false;
+    }
+    if (writes && !tp().area(out.area).writable) {
+      error(t.loc, quote(s) + " is read-only (" + tp().area(out.area).name +
+                       " is written by the machine or the CNC)");
+      return false;
+    }
+    out.kind = Operand::Kind::Reg;
+    out.width = static_cast<uint8_t>(width);
+    return true;
+  }
+
+  bool labelOperand(const Token &t, Area a, Operand &out) override {
+    int64_t bit;
+    if (!address(t, out, bit) || out.area != a || bit >= 0) {
+      if (out.area != a || bit >= 0)
+        error(t.loc, std::string("expected ") +
+                         (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
+                         quote(t.text));
+      return false;
+    }
+    if (out.index < 1) {
+      error(t.loc, quote(t.text) + ": numbers start at 1");
+      return false;
+    }
+    out.kind = Operand::Kind::Reg;
+    return true;
+  }
+
+  void emit(Op op, SourceLoc loc, std::initializer_list<Operand> ops) override {
+    Stmt s;
+    s.op = op;
+    s.loc = loc;
+    s.operandCount = static_cast<uint8_t>(ops.size());
+    size_t k = 0;
+    for (const Operand &o : ops) s.ops[k++] = o;
+    s.id = static_cast<StmtId>(prog_.stmts.size());
+    prog_.stmts.push_back(s);
+  }
+  int depth() const override { return depth_; }
+  void setDepth(int d) override { depth_ = d; }
+  int level() const override { return level_; }
+  bool claimNumber(char space, int64_t n, SourceLoc at) override {
+    auto [it, fresh] = numbers_.emplace(std::make_pair(space, n), at);
+    if (!fresh)
+      error(at, std::string(space == 'E' ? "edge" : "timer") + " number " + std::to_string(n) +
+                    " is already used on line " + std::to_string(it->second.line));
+    return fresh;
+  }
+
+private:
+  void basic(const Basic &b, const std::vector<Token> &toks) {
+    const bool operand = b.kind != Basic::Block;
+    if (toks.size() != (operand ? 2u : 1u)) {
+      error(toks[0].loc, std::string(b.name) +
+                             (operand ? " takes one bit address" : " takes no operand") + ", got " +
+                             std::to_string(toks.size() - 1));
+      return;
+    }
+    switch (b.kind) {
+    case Basic::Combine:
+    case Basic::Write:
+      if (depth_ < 1) {
+        error(toks[0].loc, std::string(b.name) + " without a logic line (start it with RD)");
+        return;
+      }
+      break;
+    case Basic::ReadStk:
+      if (depth_ < 1) {
+        error(toks[0].loc, std::string(b.name) + " with no logic line to push (use RD)");
+        return;
+      }
+      if (depth_ >= 8) {
+        error(toks[0].loc,
+              std::string(b.name) + " pushes a ninth operation result: the PMC has only ST0..ST7");
+        return;
+      }
+      break;
+    case Basic::Block:
+      if (depth_ < 2) {
+        error(toks[0].loc, std::string(b.name) + " needs two logic lines (ST1 and ST0), found " +
+                               std::to_string(depth_));
+        return;
+      }
+      break;
+    default:
+      break;
+    }
+    if (operand) {
+      Operand o;
+      if (!bitOperand(toks[1], b.kind == Basic::Write, o)) return;
+      emit(b.op, toks[0].loc, {o});
+    } else {
+      emit(b.op, toks[0].loc, {});
+    }
+    switch (b.kind) {
+    case Basic::Read:
+      depth_ = 1;
+      break;
+    case Basic::ReadStk:
+      ++depth_;
+      break;
+    case Basic::Block:
+      --depth_;
+      break;
+    default:
+      break;
+    }
+  }
+
+  void marker(const std::string &head, const std::vector<Token> &toks) {
+    const SourceLoc at = toks[0].loc;
+    const bool takesOperand = head == "SP";
+    if (toks.size() != (takesOperand ? 2u : 1u)) {
+      error(at, head + (takesOperand ? " takes one subroutine (SP P1)" : " takes no operand") +
+                    ", got " + std::to_string(toks.size() - 1));
+      return;
+    }
+    depth_ = 0;
+    if (head == "END1") {
+      if (sawEnd1_) return error(at, "duplicate END1");
+      sawEnd1_ = true;
+      level_ = 2;
+      emit(Op::EndCyclic, at, {});
+    } else if (head == "END2") {
+      if (!sawEnd1_) return error(at, "END2 before END1");
+      if (sawEnd2_) return error(at, "duplicate END2");
+      sawEnd2_ = true;
+      level_ = 3;
+      level3Start_ = static_cast<int32_t>(prog_.stmts.size());
+      emit(Op::EndSliced, at, {});
+    } else if (head == "END3") {
+      if (!sawEnd2_ || level_ != 3)
+        return error(at, "END3 must follow END2 (level 3 is END2..END3)");
+      if (static_cast<int32_t>(prog_.stmts.size()) != level3Start_ + 1)
+        return error(at, "level 3 (END2..END3) is not supported: it must be empty "
+                         "(docs/fanuc-pmc.md, [EXT] levels)");
+      level_ = 4;
+    } else if (head == "END") {
+      if (!sawEnd2_) return error(at, "END before END2");
+      if (inSub_) return error(at, "END inside a subroutine (SP without SPE)");
+      afterEnd_ = true;
+    } else if (head == "SP") {
+      if (!sawEnd2_) return error(at, "SP before END2: subroutines follow END2 (or END3)");
+      if (level_ == 3) level_ = 4;
+      Operand o;
+      if (!labelOperand(toks[1], Area::Subroutine, o)) return;
+      inSub_ = true;
+      emit(Op::SubBegin, at, {o});
+    } else if (head == "SPE") {
+      inSub_ = false;
+      emit(Op::SubEnd, at, {});
+    }
+  }
+
+  ParsedProgram &prog_;
+  Diagnostics &diags_;
+  int depth_ = 0, level_ = 1;
+  int32_t level3Start_ = -1;
+  bool sawEnd1_ = false, sawEnd2_ = false, afterEnd_ = false, inSub_ = false;
+  std::optional<detail::Functional> pending_;
+  std::optional<std::string> pendingComment_;
+  int32_t pendingFirst_ = 0;
+  std::map<std::pair<char, int64_t>, SourceLoc> numbers_;
+};
+
+const char *spell(Op op) {
+  switch (op) {
+  case Op::Load:
+    return "RD";
+  case Op::LoadNot:
+    return "RD.NOT";
+  case Op::LoadTrue:
+    return "(ON)";
+  case Op::And:
+    return "AND";
+  case Op::AndNot:
+    return "AND.NOT";
+  case Op::Or:
+    return "OR";
+  case Op::OrNot:
+    return "OR.NOT";
+  case Op::AndBlock:
+    return "AND.STK";
+  case Op::OrBlock:
+    return "OR.STK";
+  case Op::Coil:
+    return "WRT";
+  case Op::CoilNot:
+    return "WRT.NOT";
+  case Op::Set:
+    return "SET";
+  case Op::Reset:
+    return "RST";
+  case Op::EndInit:
+    return "(INIT)";
+  case Op::EndCyclic:
+    return "END1";
+  case Op::EndSliced:
+    return "END2";
+  case Op::Jump:
+    return "JMPB";
+  case Op::Label:
+    return "LBL";
+  case Op::Call:
+    return "CALL";
+  case Op::SubBegin:
+    return "SP";
+  case Op::SubEnd:
+    return "SPE";
+  case Op::Move:
+    return "MOVB/MOVW/MOVD/MOVN";
+  case Op::BitAnd:
+    return "AND(SUB60)/MOVE";
+  case Op::BitOr:
+    return "OR(SUB61)/MOVOR";
+  case Op::BitXor:
+    return "EOR/NOT";
+  case Op::CompareEq:
+    return "EQB/EQW/EQD";
+  case Op::CompareLt:
+    return "LTx/GTx";
+  case Op::CompareLe:
+    return "LEx/GEx";
+  case Op::OnDelayTimer:
+    return "TMRB";
+  case Op::OffDelayTimer:
+    return "TMRBF";
+  case Op::RisePulse:
+    return "DIFU";
+  case Op::FallPulse:
+    return "DIFD";
+  default:
+    return instrInfo(op).name;
+  }
+}
+
+} // namespace
+
+std::string formatOperand(const Operand &op) {
+  switch (op.kind) {
+  case Operand::Kind::None:
+    return "";
+  case Operand::Kind::Const:
+    return std::to_string(op.value);
+  case Operand::Kind::Reg:
+  case Operand::Kind::Bit: {
+    std::string s = std::string(tp().area(op.area).name) + std::to_string(op.index);
+    if (op.kind == Operand::Kind::Bit) s += "." + std::to_string(op.bit);
+    return s;
+  }
+  }
+  return "";
+}
+
+const DialectText &dialectText() {
+  static constexpr DialectText kText{"fanuc", &spell, &formatOperand};
+  return kText;
+}
+
+ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags) {
+  ParsedProgram prog;
+  prog.file = std::move(file);
+  prog.dialect = &dialectText();
+  prog.profile = &profile();
+  if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  Parser p(prog, diags);
+  std::vector<Token> toks;
+  std::string_view comment;
+  bool hasComment = false;
+  int32_t line = 0;
+  size_t pos = 0;
+  while (pos < text.size()) {
+    size_t nl = text.find('\n', pos);
+    if (nl == std::string_view::npos) nl = text.size();
+    if (line < INT32_MAX) ++line;
+    tokenize(text.substr(pos, nl - pos), line, toks, comment, hasComment);
+    pos = nl + 1;
+    if (toks.empty()) {
+      if (hasComment)
+        prog.comments.push_back(
+            {line, static_cast<int32_t>(prog.stmts.size()), false, std::string(comment)});
+      continue;
+    }
+    p.line(toks, hasComment, comment);
+    if (diags.errorCount() >= 100) {
+      diags.error({line, 1}, "too many errors (100); the rest is not checked");
+      break;
+    }
+    if (prog.stmts.size() > static_cast<size_t>(profile().maxStatements)) {
+      diags.error({line, 1}, "program has more than " + std::to_string(profile().maxStatements) +
+                                 " statements");
+      break;
+    }
+  }
+  p.finish(std::max(line, 1));
+  return prog;
+}
+
+std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  if (symbols && !symbols->symbols().empty()) {
+    diags.error({1, 1}, "symbols are not supported for FANUC PMC programs yet");
+    return std::nullopt;
+  }
+  ParsedProgram parsed = parsePmc(text, std::move(file), diags);
+  if (diags.hasErrors()) return std::nullopt;
+  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
+  if (diags.hasErrors()) return std::nullopt;
+  return prog;
+}
+
+} // namespace lj::fanuc

@@ -1,0 +1,61 @@
+// Internals of the FANUC front end shared by Parser.cpp (lines, basic instructions, operands)
+// and Functional.cpp (the functional instructions: SUB numbers, names, parameters).
+#pragma once
+
+#include "ir/Diagnostics.h"
+#include "ir/Program.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lj::fanuc::detail {
+
+struct Token {
+  std::string_view text;
+  SourceLoc loc;
+};
+
+/// What one functional instruction needs from the parser: its tokens and a way to check and
+/// emit statements.
+class Emitter {
+public:
+  virtual ~Emitter() = default;
+  virtual void error(SourceLoc at, std::string msg) = 0;
+  /// A bit address (`R0.0`); `writes`: must be writable.
+  virtual bool bitOperand(const Token &t, bool writes, Operand &out) = 0;
+  /// A byte address read/written as `width` bytes (`D100`), or with `constOk` a decimal
+  /// constant; `writes`: must be writable.
+  virtual bool dataOperand(const Token &t, int width, bool constOk, bool writes, Operand &out) = 0;
+  /// A decimal constant in [lo, hi].
+  virtual bool constant(const Token &t, int64_t lo, int64_t hi, const char *role, int64_t &v) = 0;
+  /// A label `L1` or a subroutine `P1`.
+  virtual bool labelOperand(const Token &t, Area a, Operand &out) = 0;
+  virtual void emit(Op op, SourceLoc loc, std::initializer_list<Operand> ops) = 0;
+  /// ST0..ST7 entries in use (ACT is ST0).
+  virtual int depth() const = 0;
+  virtual void setDepth(int d) = 0;
+  /// 1, 2 or 3 while in level 1, 2, 3; 4 in the subroutine part.
+  virtual int level() const = 0;
+  /// An edge / timer number used by this program: false (and an error) when used before.
+  virtual bool claimNumber(char space, int64_t n, SourceLoc at) = 0;
+};
+
+/// A functional instruction written `SUB n` or by name, with its parameters (the rest of its
+/// line and the `(PRM)` lines after it).
+struct Functional {
+  Token head;   ///< `SUB` or the name
+  Token number; ///< the SUB number token (empty text when written by name)
+  std::vector<Token> params;
+};
+
+/// Whether `name` (upper case) is a functional instruction this front end knows by name.
+bool isFunctionalName(std::string_view name);
+
+/// Check and emit one functional instruction.
+void emitFunctional(Emitter &e, const Functional &f);
+
+/// `s` in upper case.
+std::string upper(std::string_view s);
+
+} // namespace lj::fanuc::detail

@@ -1,0 +1,247 @@
+// The FANUC random generator (FanucProgram.h). Programs verify by construction: the ST depth
+// is tracked (1..8), timer and edge numbers are used once, jumps go forward to a label of the
+// same level, subroutines are called only from level 2.
+#include "gen/FanucProgram.h"
+
+#include "gen/Rng.h"
+
+#include <cstring>
+
+namespace lj::gen {
+
+namespace {
+
+class Gen {
+public:
+  explicit Gen(uint64_t seed) : r_(seed) {}
+
+  std::vector<std::string> program(int32_t statements) {
+    const int subs = static_cast<int>(r_.range(0, 2));
+    rungs(statements / 4 + 1, 1, subs);
+    out("END1");
+    rungs(statements / 2 + 1, 2, subs);
+    out("END2");
+    for (int p = 1; p <= subs; ++p) {
+      out("SP P" + std::to_string(p));
+      rungs(static_cast<int>(r_.range(1, 4)), 4, 0);
+      out("SPE");
+    }
+    out("END");
+    return std::move(lines_);
+  }
+
+private:
+  void out(std::string s) { lines_.push_back(std::move(s)); }
+  int64_t pick(int64_t lo, int64_t hi) { return r_.range(lo, hi); }
+
+  std::string readBit() {
+    switch (pick(0, 5)) {
+    case 0:
+    case 1:
+      return "X" + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
+    case 2:
+      return "Y" + std::to_string(pick(0, 1)) + "." + std::to_string(pick(0, 7));
+    case 3:
+      return "R9091." + std::to_string(pick(0, 2));
+    default:
+      return writeBit();
+    }
+  }
+  std::string writeBit() {
+    const char *areas[] = {"R", "R", "D", "K", "E", "Y"};
+    return std::string(areas[pick(0, 5)]) + std::to_string(pick(0, 7)) + "." +
+           std::to_string(pick(0, 7));
+  }
+  /// A byte address of the data pools R0..R11, D0..D11 leaving room for `width` bytes.
+  std::string data(int width, bool writable = true) {
+    if (!writable && r_.chance(25)) return "X" + std::to_string(pick(0, 4 - width));
+    return std::string(r_.chance(50) ? "R" : "D") + std::to_string(pick(0, 12 - width));
+  }
+  std::string konst(int width) {
+    const int64_t lim = width == 1 ? 127 : width == 2 ? 32767 : 2147483647;
+    if (r_.chance(20)) return std::to_string(pick(-3, 3));
+    return std::to_string(pick(-lim - 1, lim));
+  }
+  int width() {
+    static constexpr int kW[] = {1, 2, 4};
+    return kW[pick(0, 2)];
+  }
+
+  void logic() {
+    out(std::string(r_.chance(70) ? "RD " : "RD.NOT ") + readBit());
+    int depth = 1;
+    const int n = static_cast<int>(pick(0, 6));
+    for (int k = 0; k < n; ++k) {
+      const int64_t c = pick(0, 9);
+      if (c <= 5) {
+        static const char *ops[] = {"AND ", "AND.NOT ", "OR ", "OR.NOT "};
+        out(ops[pick(0, 3)] + readBit());
+      } else if (c <= 7 && depth < 8) {
+        out(std::string(r_.chance(70) ? "RD.STK " : "RD.NOT.STK ") + readBit());
+        ++depth;
+      } else if (depth >= 2) {
+        out(r_.chance(50) ? "AND.STK" : "OR.STK");
+        --depth;
+      }
+    }
+    while (depth > 1) {
+      out(r_.chance(50) ? "AND.STK" : "OR.STK");
+      --depth;
+    }
+  }
+
+  void rungs(int n, int level, int subs) {
+    for (int i = 0; i < n; ++i) {
+      if (r_.chance(8)) { // a forward jump over a few rungs of the same level
+        const int lbl = ++label_;
+        logic();
+        out("JMPB L" + std::to_string(lbl));
+        const int skip = static_cast<int>(pick(1, 3));
+        for (int k = 0; k < skip; ++k) rung(level, subs);
+        out("LBL L" + std::to_string(lbl));
+        continue;
+      }
+      rung(level, subs);
+    }
+  }
+
+  void rung(int level, int subs) {
+    logic();
+    const int64_t c = pick(0, 19);
+    if (c <= 6) {
+      const int coils = static_cast<int>(pick(1, 3));
+      static const char *ops[] = {"WRT ", "WRT.NOT ", "SET ", "RST "};
+      for (int k = 0; k < coils; ++k) out(ops[pick(0, 3)] + writeBit());
+      return;
+    }
+    switch (c) {
+    case 7:
+    case 8:
+      if (timer_ < 256) {
+        out(std::string(r_.chance(50) ? "TMRB " : "TMRBF ") + std::to_string(++timer_) + " " +
+            std::to_string(pick(1, 30)));
+        out("WRT " + writeBit());
+      }
+      return;
+    case 9:
+      if (edge_ < 511) {
+        out(std::string(r_.chance(50) ? "DIFU " : "DIFD ") + std::to_string(++edge_));
+        out("WRT " + writeBit());
+      }
+      return;
+    case 10: {
+      static const char *mv[] = {"MOVB", "MOVW", "MOVD"};
+      const int k = static_cast<int>(pick(0, 2));
+      const int w = k == 0 ? 1 : k == 1 ? 2 : 4;
+      out(std::string(mv[k]) + " " + data(w, false) + " " + data(w));
+      return;
+    }
+    case 11: {
+      const int n = static_cast<int>(pick(1, 6));
+      out("SUB 45");
+      out("(PRM) " + std::to_string(n));
+      out("(PRM) " + data(n));
+      out("(PRM) " + data(n));
+      return;
+    }
+    case 12: {
+      auto nib = [&] {
+        std::string s;
+        for (int b = 0; b < 4; ++b) s += r_.chance(50) ? '1' : '0';
+        return s;
+      };
+      if (r_.chance(50))
+        out("MOVE " + nib() + " " + nib() + " " + data(1, false) + " " + data(1));
+      else
+        out("MOVOR " + data(1, false) + " " + data(1, false) + " " + data(1));
+      return;
+    }
+    case 13:
+    case 14: {
+      const int w = width();
+      const bool addr = r_.chance(50);
+      const int64_t sub = pick(59, 62);
+      out("SUB " + std::to_string(sub));
+      if (sub == 62) {
+        out("(PRM) 000" + std::to_string(w));
+        out("(PRM) " + data(w, false));
+        out("(PRM) " + data(w));
+        return;
+      }
+      out(std::string("(PRM) ") + (addr ? "1" : "0") + "00" + std::to_string(w));
+      out("(PRM) " + data(w, false));
+      out("(PRM) " + (addr ? data(w, false) : konst(w)));
+      out("(PRM) " + data(w));
+      return;
+    }
+    case 15:
+    case 16:
+    case 17: {
+      static const char *cmp[] = {"EQ", "GT", "LT", "GE", "LE"};
+      const int w = width();
+      const char suffix = w == 1 ? 'B' : w == 2 ? 'W' : 'D';
+      const std::string a = r_.chance(30) ? konst(w) : data(w, false);
+      const std::string b = r_.chance(40) ? konst(w) : data(w, false);
+      out(std::string(cmp[pick(0, 4)]) + suffix + " " + a + " " + b);
+      out("WRT " + writeBit());
+      return;
+    }
+    default:
+      if (level == 2 && subs > 0) {
+        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + std::to_string(pick(1, subs)));
+      } else {
+        out("WRT " + writeBit());
+      }
+      return;
+    }
+  }
+
+  Rng r_;
+  std::vector<std::string> lines_;
+  int label_ = 0, timer_ = 0, edge_ = 0;
+};
+
+} // namespace
+
+std::vector<std::string> generateFanuc(uint64_t seed, int32_t statements) {
+  return Gen(seed).program(statements);
+}
+
+Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
+  Rng r(seed);
+  Stimulus st;
+  uint64_t now = 0;
+  for (int k = 0; k < 4; ++k)
+    st.beforeInit.push_back({Area::Input, k, -1, static_cast<int32_t>(r.range(0, 255))});
+  for (uint32_t t = 0; t < ticks; ++t) {
+    std::vector<HostWrite> w;
+    const int n = static_cast<int>(r.range(0, 3));
+    for (int k = 0; k < n; ++k) {
+      if (r.chance(50))
+        w.push_back({Area::Input, static_cast<int32_t>(r.range(0, 3)), -1,
+                     static_cast<int32_t>(r.range(0, 255))});
+      else
+        w.push_back({Area::Input, static_cast<int32_t>(r.range(0, 3)),
+                     static_cast<int8_t>(r.range(0, 7)), static_cast<int32_t>(r.range(0, 1))});
+    }
+    st.writes.push_back(std::move(w));
+    now +=
+        r.chance(90) ? static_cast<uint64_t>(r.range(1, 8)) : static_cast<uint64_t>(r.range(0, 50));
+    st.nowMs.push_back(now);
+  }
+  return st;
+}
+
+void applyFanucWrites(const TargetProfile &tp, lj_state &s, const std::vector<HostWrite> &ws) {
+  auto *base = reinterpret_cast<unsigned char *>(&s);
+  for (const HostWrite &w : ws) {
+    if (!tp.validIndex(w.area, w.index) || tp.area(w.area).bytes != 1) continue;
+    unsigned char &b = base[tp.elementOffset(w.area, w.index)];
+    if (w.bit >= 0)
+      b = static_cast<unsigned char>((w.value & 1) ? (b | (1u << w.bit)) : (b & ~(1u << w.bit)));
+    else
+      b = static_cast<unsigned char>(w.value);
+  }
+}
+
+} // namespace lj::gen

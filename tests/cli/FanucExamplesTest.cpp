@@ -1,0 +1,55 @@
+// The FANUC examples (examples/fanuc_*.pmc) through `ladderjit run` with their stimulus files;
+// expected values follow from each program's comments (what it is written to do) and the
+// reference's timing (TMRB/TMRBF set times in ms, the 1 s clock R9091.6; fanuc-pmc.md 2, 6.3).
+#include "CliRunner.h"
+
+#include <gtest/gtest.h>
+
+namespace lj::clitest {
+namespace {
+
+TEST(FanucExamples, CoolantLube) {
+  for (const char *engine : {"interp", "jit"}) {
+    CliResult r =
+        runCli({"run", sourcePath("examples/fanuc_coolant.pmc"), "--engine", engine, "--ticks",
+                "1300", "--period-ms", "8", "--stimulus", sourcePath("examples/fanuc_coolant.stim"),
+                "--watch", "Y0.0,Y0.1,Y0.2,G4.3"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 99, "Y0.0"), 0);
+    EXPECT_EQ(csvValue(r.out, 100, "Y0.0"), 1); // M08 strobe at tick 100
+    EXPECT_EQ(csvValue(r.out, 100, "G4.3"), 1); // FIN while the strobe is on
+    EXPECT_EQ(csvValue(r.out, 110, "G4.3"), 0); // strobe off
+    EXPECT_EQ(csvValue(r.out, 899, "Y0.0"), 1);
+    EXPECT_EQ(csvValue(r.out, 900, "Y0.0"), 0); // M09
+    EXPECT_EQ(csvValue(r.out, 0, "Y0.1"), 1);   // lube pump with the E-stop chain closed
+    // no lube pressure for 5 s (tick 625 = 5000 ms): the alarm lamp blinks with the 1 s clock
+    EXPECT_EQ(csvValue(r.out, 624, "Y0.2"), 0);
+    EXPECT_EQ(csvValue(r.out, 625, "Y0.2"), 1);  // 5000 ms: clock ON half
+    EXPECT_EQ(csvValue(r.out, 688, "Y0.2"), 0);  // 5504 ms: OFF half
+    EXPECT_EQ(csvValue(r.out, 1200, "Y0.0"), 1); // the coolant key toggles it on again
+  }
+}
+
+TEST(FanucExamples, ToolChange) {
+  for (const char *engine : {"interp", "jit"}) {
+    CliResult r = runCli({"run", sourcePath("examples/fanuc_tool_change.pmc"), "--engine", engine,
+                          "--ticks", "1000", "--period-ms", "8", "--set", "D14:2=255", "--stimulus",
+                          sourcePath("examples/fanuc_tool_change.stim"), "--watch",
+                          "Y1.0,Y1.1,G4.3,A0.0,R20,D12:2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 10, "R20"), 3);  // T3 latched on the strobe's rising edge
+    EXPECT_EQ(csvValue(r.out, 10, "Y1.0"), 1); // unclamp
+    EXPECT_EQ(csvValue(r.out, 22, "Y1.1"), 0); // rotation waits 100 ms (tick 23 = 104 ms)
+    EXPECT_EQ(csvValue(r.out, 23, "Y1.1"), 1);
+    EXPECT_EQ(csvValue(r.out, 60, "Y1.1"), 0); // position 3 reached
+    EXPECT_EQ(csvValue(r.out, 76, "G4.3"), 0); // FIN 50 ms after clamp confirmation at 70
+    EXPECT_EQ(csvValue(r.out, 77, "G4.3"), 1);
+    EXPECT_EQ(csvValue(r.out, 77, "D12:2"), 3); // recorded by subroutine P2
+    EXPECT_EQ(csvValue(r.out, 774, "A0.0"), 0); // T5 at 150 never arrives: 5 s watchdog
+    EXPECT_EQ(csvValue(r.out, 775, "A0.0"), 1);
+    EXPECT_EQ(csvValue(r.out, 900, "A0.0"), 0); // cleared when the strobe drops
+  }
+}
+
+} // namespace
+} // namespace lj::clitest

@@ -1,0 +1,98 @@
+// The FANUC front end's located diagnostics: one test per rule (docs/fanuc-pmc.md "Rules").
+#include "frontends/fanuc/FrontEnd.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace lj {
+namespace {
+
+std::string diags(const std::string &text) {
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
+  return d.render();
+}
+
+constexpr const char *kEnd = "END1\nEND2\nEND\n";
+
+TEST(FanucDiagnostics, AcceptsAMinimalProgram) { EXPECT_EQ(diags(kEnd), ""); }
+
+TEST(FanucDiagnostics, StackRulesOfSt0ToSt7) {
+  EXPECT_EQ(diags(std::string("RD X0.0\nAND.STK\n") + kEnd),
+            "t.pmc:2:1: error: AND.STK needs two logic lines (ST1 and ST0), found 1\n");
+  EXPECT_EQ(diags(std::string("AND X0.0\n") + kEnd),
+            "t.pmc:1:1: error: AND without a logic line (start it with RD)\n");
+  EXPECT_EQ(diags(std::string("WRT Y0.0\n") + kEnd),
+            "t.pmc:1:1: error: WRT without a logic line (start it with RD)\n");
+  std::string nine = "RD X0.0\n";
+  for (int i = 1; i <= 8; ++i) nine += "RD.STK X0." + std::to_string(i % 8) + "\n";
+  EXPECT_EQ(
+      diags(nine + kEnd),
+      "t.pmc:9:1: error: RD.STK pushes a ninth operation result: the PMC has only ST0..ST7\n");
+}
+
+TEST(FanucDiagnostics, Addresses) {
+  EXPECT_EQ(diags(std::string("RD X0.0\nWRT X0.1\n") + kEnd),
+            "t.pmc:2:5: error: 'X0.1' is read-only (X is written by the machine or the CNC)\n");
+  EXPECT_EQ(diags(std::string("RD R8000.0\n") + kEnd),
+            "t.pmc:1:4: error: address 'R8000.0' out of range (R0..R7999, R9000..R9499)\n");
+  EXPECT_EQ(diags(std::string("RD X0.8\n") + kEnd),
+            "t.pmc:1:4: error: bit number 8 out of range in 'X0.8' (bits 0..7)\n");
+  EXPECT_EQ(diags(std::string("RD Q0.0\n") + kEnd),
+            "t.pmc:1:4: error: unknown address 'Q0.0' (areas: X Y F G R E A T C K D; labels L, "
+            "subroutines P)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nMOVW R0 D9999\n") + kEnd),
+            "t.pmc:2:9: error: 'D9999' as 2 bytes runs past the end of D0..D9999\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nMOVD R7998 R0\n") + kEnd),
+            "t.pmc:2:6: error: 'R7998' as 4 bytes runs past the end of R0..R7999, R9000..R9499\n");
+}
+
+TEST(FanucDiagnostics, LevelsAndEnds) {
+  EXPECT_EQ(diags("RD X0.0\nWRT Y0.0\n"),
+            "t.pmc:2:1: error: program has no END1 (END1 is required, reference 4.1)\n");
+  EXPECT_EQ(diags("END1\nEND2\n"), "t.pmc:2:1: error: program has no END (the last instruction)\n");
+  EXPECT_EQ(diags("END1\nEND2\nEND\nRD X0.0\n"),
+            "t.pmc:4:1: error: statement after END (END ends the program)\n");
+  EXPECT_EQ(diags("END1\nEND2\nRD X0.0\nWRT Y0.0\nEND3\nEND\n"),
+            "t.pmc:5:1: error: level 3 (END2..END3) is not supported: it must be empty "
+            "(docs/fanuc-pmc.md, [EXT] levels)\n");
+  EXPECT_EQ(diags("END1\nEND2\nEND3\nEND\n"), "");
+  EXPECT_EQ(diags("RD X0.0\nCALL P1\nEND1\nEND2\nSP P1\nSPE\nEND\n"),
+            "t.pmc:2:1: error: CALL: level 1 cannot call subroutines (reference 4.2, L877)\n");
+  EXPECT_EQ(diags("SP P1\nSPE\nEND1\nEND2\nEND\n"),
+            "t.pmc:1:1: error: SP before END2: subroutines follow END2 (or END3)\n");
+}
+
+TEST(FanucDiagnostics, FunctionalInstructions) {
+  EXPECT_EQ(diags(std::string("SUB 24\n(PRM) 1\n(PRM) 100\n") + kEnd),
+            "t.pmc:1:1: error: SUB 24 (TMRB) needs its ACT input in ST0 (an RD before it)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 24\n(PRM) 1\n") + kEnd),
+            "t.pmc:2:1: error: SUB 24 (TMRB) takes 2 parameters (timer number, set time (ms)), "
+            "got 1\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 999\n") + kEnd),
+            "t.pmc:2:5: error: unknown functional instruction SUB 999\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 5\n(PRM) 1\n") + kEnd),
+            "t.pmc:2:1: error: SUB 5 (CTR) is not implemented in this build (docs/fanuc-pmc.md "
+            "\"Not yet\")\n");
+  EXPECT_EQ(diags(std::string("(PRM) 1\n") + kEnd),
+            "t.pmc:1:1: error: parameter line without a functional instruction before it\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nDIFU 3\nRD X0.0\nDIFD 3\n") + kEnd),
+            "t.pmc:4:6: error: edge number 3 is already used on line 2\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nTMRB 300 100\n") + kEnd),
+            "t.pmc:2:6: error: timer number '300' out of range (1..256)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nAND 1 2\n") + kEnd),
+            "t.pmc:2:1: error: AND takes one bit address, got 2\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 60\n(PRM) 0003\n(PRM) R0\n(PRM) 1\n(PRM) R1\n") + kEnd),
+            "t.pmc:3:7: error: format '0003': expected 0001/0002/0004 (constant) or "
+            "1001/1002/1004 (address)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nMOVE 0001 2111 X10 R100\n") + kEnd),
+            "t.pmc:2:11: error: a MOVE mask half is 4 binary digits (like 0001), got '2111'\n");
+}
+
+TEST(FanucDiagnostics, UnknownInstruction) {
+  EXPECT_EQ(diags(std::string("LD X0.0\n") + kEnd), "t.pmc:1:1: error: unknown instruction 'LD'\n");
+}
+
+} // namespace
+} // namespace lj
