@@ -2,6 +2,8 @@
 // catch-up policy for late wake-ups, statistics and the program handoff of online change.
 #include "runtime/Executive.h"
 
+#include "hosts/SystemBits.h"
+
 #include <pthread.h>
 #include <sched.h>
 #include <sys/prctl.h>
@@ -233,6 +235,8 @@ void Executive::tickOnce(uint64_t tick) {
   s.now_ms = tick * opts_.periodNs / 1000000;
   takeSwap(); // init of a new version sees this tick's inputs and now_ms
   takeTierUp(tick);
+  // The target's system bits (FANUC R9091 clocks, R9015 first scan), as `run` writes them.
+  if (cur_->prog && cur_->prog->profile) io::writeSystemBits(*cur_->prog->profile, s, tick);
   if (lj_tick(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
   for (IoBinding *io : io_) io->afterTick(s, tick);
   ex_.applyLocks(s);
