@@ -37,11 +37,17 @@ struct Cell {
   bool isSigned;
 };
 
-Cell cellOf(const lj_state &s, Area a, int32_t n) {
-  const AreaInfo &info = hnc8::profile().area(a);
+const TargetProfile &profileOf(const CliAddress &a) {
+  return a.profile ? *a.profile : hnc8::profile();
+}
+
+Cell cellOf(const lj_state &s, const CliAddress &a) {
+  const TargetProfile &tp = profileOf(a);
+  const AreaInfo &info = tp.area(a.area);
   if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
-  const auto *base = reinterpret_cast<const unsigned char *>(&s) + hnc8::profile().stateOffset(a);
-  return {base + static_cast<size_t>(n) * info.bytes, info.bytes, info.isSigned};
+  const auto *base = reinterpret_cast<const unsigned char *>(&s);
+  return {base + tp.elementOffset(a.area, a.index), a.width ? a.width : info.bytes,
+          info.isSigned};
 }
 
 // The element's bits as an unsigned pattern (zero-extended to 32 bits).
@@ -54,6 +60,7 @@ uint32_t rawBits(const Cell &c) {
 int64_t readElement(const Cell &c) {
   uint32_t raw = rawBits(c);
   if (!c.isSigned) return raw;
+  if (c.bytes == 1) return static_cast<int8_t>(raw);
   if (c.bytes == 2) return static_cast<int16_t>(raw);
   return static_cast<int32_t>(raw);
 }
@@ -147,18 +154,18 @@ bool checkWritable(const CliAddress &addr, int64_t value, std::string &error) {
 
 int64_t readAddress(const lj_state &s, const CliAddress &addr) {
   if (addr.area == Area::Timer || addr.area == Area::Counter) {
-    int slot = lj_tc_slot(addr.index);
+    int slot = profileOf(addr).tcSlot(addr.area, addr.index);
     if (addr.area == Area::Timer) return addr.isBit() ? s.T[slot].out : s.T[slot].elapsed_ms;
     return addr.isBit() ? s.C[slot].out : s.C[slot].value;
   }
-  Cell c = cellOf(s, addr.area, addr.index);
+  Cell c = cellOf(s, addr);
   if (addr.isBit()) return (rawBits(c) >> addr.bit) & 1u;
   return readElement(c);
 }
 
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
   if (addr.area == Area::Counter) {
-    lj_counter &k = s.C[lj_tc_slot(addr.index)];
+    lj_counter &k = s.C[profileOf(addr).tcSlot(addr.area, addr.index)];
     if (addr.isBit())
       k.out = static_cast<uint8_t>(value & 1);
     else
@@ -166,7 +173,7 @@ void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
     return;
   }
   if (addr.area == Area::Timer) return; // rejected by checkWritable
-  Cell c = cellOf(s, addr.area, addr.index);
+  Cell c = cellOf(s, addr);
   void *ptr = const_cast<void *>(c.ptr);
   uint32_t raw = rawBits(c);
   if (addr.isBit()) {
@@ -192,8 +199,85 @@ std::optional<Assignment> parseAssignment(std::string_view item, std::string &er
   return Assignment{std::move(*addr), *value};
 }
 
+std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::string_view text,
+                                              std::string &error) {
+  auto fail = [&](const std::string &why) -> std::optional<CliAddress> {
+    error = "bad address '" + std::string(text) + "': " + why;
+    return std::nullopt;
+  };
+  if (text.empty()) return fail("empty");
+  size_t nameLen = 0;
+  while (nameLen < text.size() && !std::isdigit(static_cast<unsigned char>(text[nameLen])))
+    ++nameLen;
+  std::optional<Area> area = tp.areaFromName(text.substr(0, nameLen));
+  std::string known;
+  for (int i = 0; i < kAreaCount; ++i) {
+    const AreaInfo &ai = tp.areas[static_cast<size_t>(i)];
+    if (ai.count > 0 && ai.bytes > 0) known += (known.empty() ? "" : " ") + std::string(ai.name);
+  }
+  if (!area || tp.area(*area).bytes == 0) return fail("unknown area (expected one of " + known + ")");
+  std::string_view rest = text.substr(nameLen), indexPart = rest, tail;
+  size_t sep = rest.find_first_of(".:");
+  if (sep != std::string_view::npos) {
+    indexPart = rest.substr(0, sep);
+    tail = rest.substr(sep + 1);
+  }
+  if (!isDigits(indexPart)) return fail("expected an element number after the area name");
+  const AreaInfo &ai = tp.area(*area);
+  int64_t index = digitsValue(indexPart);
+  CliAddress a;
+  a.area = *area;
+  a.profile = &tp;
+  a.text = std::string(text);
+  int64_t width = ai.bytes;
+  if (sep != std::string_view::npos && rest[sep] == '.') {
+    if (!isDigits(tail)) return fail("expected a bit number after '.'");
+    int64_t b = digitsValue(tail);
+    if (b >= tp.bitWidth(*area))
+      return fail("bit out of range (0.." + std::to_string(tp.bitWidth(*area) - 1) + ")");
+    a.bit = static_cast<int8_t>(b);
+  } else if (sep != std::string_view::npos) {
+    if (ai.bytes != 1) return fail("a width ':N' is only for byte areas");
+    if (tail != "1" && tail != "2" && tail != "4") return fail("width must be 1, 2 or 4 bytes");
+    width = tail[0] - '0';
+    a.width = static_cast<uint8_t>(width);
+  }
+  if (!tp.validSpan(*area, index, ai.bytes == 1 ? width : 1)) {
+    std::string ranges = std::string(ai.name) + "0.." + ai.name + std::to_string(ai.count - 1);
+    if (ai.upperCount > 0)
+      ranges += ", " + std::string(ai.name) + std::to_string(ai.upperLo) + ".." + ai.name +
+                std::to_string(ai.upperLo + ai.upperCount - 1);
+    return fail("element out of range (" + ranges + ")");
+  }
+  a.index = static_cast<int32_t>(index);
+  return a;
+}
+
+std::string formatProfileAddress(const CliAddress &addr) {
+  std::string s(profileOf(addr).area(addr.area).name);
+  s += std::to_string(addr.index);
+  if (addr.isBit()) s += "." + std::to_string(addr.bit);
+  else if (addr.width > 1) s += ":" + std::to_string(addr.width);
+  return s;
+}
+
+std::optional<Assignment> parseProfileAssignment(const TargetProfile &tp, std::string_view item,
+                                                 std::string &error) {
+  size_t eq = item.find('=');
+  if (eq == std::string_view::npos) {
+    error = "bad assignment '" + std::string(item) + "': expected ADDR=VALUE";
+    return std::nullopt;
+  }
+  std::optional<CliAddress> addr = parseProfileAddress(tp, item.substr(0, eq), error);
+  if (!addr) return std::nullopt;
+  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
+  if (!value) return std::nullopt;
+  if (!checkWritable(*addr, *value, error)) return std::nullopt;
+  return Assignment{std::move(*addr), *value};
+}
+
 std::string formatAddress(const CliAddress &addr) {
-  std::string s(1, hnc8::profile().area(addr.area).letter);
+  std::string s(hnc8::profile().area(addr.area).name);
   s += std::to_string(addr.index);
   if (addr.isBit()) s += "." + std::to_string(addr.bit);
   return s;

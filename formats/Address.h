@@ -3,6 +3,7 @@
 #pragma once
 
 #include "ir/Area.h"
+#include "ir/Profile.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -18,6 +19,9 @@ struct CliAddress {
   int32_t index = 0; ///< element number (T/C: the timer/counter number, not its slot)
   int8_t bit = -1;   ///< bit number, -1 for the whole element
   std::string text;  ///< as the user wrote it (used as the watch column name)
+  /// The target whose memory the address names (nullptr: HNC-8, what parseAddress gives).
+  const TargetProfile *profile = nullptr;
+  uint8_t width = 0; ///< element: bytes read/written little-endian (0: the area's width)
 
   bool isBit() const { return bit >= 0; }
 };
@@ -28,6 +32,14 @@ struct CliAddress {
 /// On failure returns nothing and sets `error` to a message naming the address.
 std::optional<CliAddress> parseAddress(std::string_view text, std::string &error);
 
+/// An address of a profile-laid target (FANUC, IEC): the area's name as the profile spells it
+/// (longest match, case-insensitive), the element number, then `.bit` or, where the area's
+/// elements are bytes, `:2` / `:4` for a little-endian signed word starting at that byte
+/// (`R100`, `R100.3`, `D100:4`). The whole element span must exist. Errors name the address.
+std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::string_view text,
+                                              std::string &error);
+/// `addr` written back in its profile's syntax (parseProfileAddress's inverse).
+std::string formatProfileAddress(const CliAddress &addr);
 /// `addr` as the HNC-8 dialect writes it (`X1.0`, `D5`): area letter, index, `.bit` for a bit.
 std::string formatAddress(const CliAddress &addr);
 
@@ -54,5 +66,8 @@ struct Assignment {
   int64_t value = 0;
 };
 std::optional<Assignment> parseAssignment(std::string_view item, std::string &error);
+/// `addr=value` for a profile-laid target (parseProfileAddress syntax).
+std::optional<Assignment> parseProfileAssignment(const TargetProfile &tp, std::string_view item,
+                                                 std::string &error);
 
 } // namespace lj::io

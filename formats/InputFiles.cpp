@@ -51,7 +51,8 @@ std::string where(const std::string &file, int32_t line) {
 } // namespace
 
 std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
-                                      std::string &error) {
+                                      std::string &error, AssignmentParser assign) {
+  if (!assign) assign = parseAssignment;
   Stimulus stim;
   bool ok = forEachLine(text, [&](int32_t lineNo, std::string_view line) {
     std::vector<std::string_view> items = splitBlanks(line);
@@ -104,7 +105,7 @@ std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &
         return false;
       }
       std::string why;
-      std::optional<Assignment> a = parseAssignment(items[i], why);
+      std::optional<Assignment> a = assign(items[i], why);
       if (!a) {
         error = where(file, lineNo) + why;
         return false;

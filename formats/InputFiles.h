@@ -33,8 +33,10 @@ struct Stimulus {
 /// smaller than the previous line's (equal ticks are applied in file order); a line needs at
 /// least one assignment, or exactly one NC command `nc.NAME key=value ...` instead
 /// (docs/simulated-nc.md). `file` names the source in errors (`file:line: ...`).
+/// `assign` parses one `ADDR=VALUE` item in the program's dialect (Dialect::parseAssignment).
+using AssignmentParser = std::optional<Assignment> (*)(std::string_view item, std::string &error);
 std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
-                                      std::string &error);
+                                      std::string &error, AssignmentParser assign = nullptr);
 
 /// Parse a parameter file: one `Pn=VALUE` per line (spaces around `=` allowed), `#` comments,
 /// blank lines ignored; only whole P elements. Later lines win for the same Pn.

@@ -2,6 +2,7 @@
 #include "formats/StateJson.h"
 
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 
 namespace lj::io {
@@ -94,6 +95,44 @@ nlohmann::ordered_json stateToJson(const lj_state &s) {
   j["alt_state"] = array(s.alt_state);
   j["edge"] = array(s.edge);
   j["inst_word"] = array(s.inst_word);
+  return j;
+}
+
+nlohmann::ordered_json stateToJson(const lj_state &s, const TargetProfile &tp) {
+  nlohmann::ordered_json j = stateToJson(s);
+  bool inMem = false;
+  for (const AreaInfo &ai : tp.areas)
+    inMem = inMem || (ai.count > 0 && ai.bytes > 0 && ai.offset >= offsetof(lj_state, mem));
+  if (!inMem) return j;
+  const auto *base = reinterpret_cast<const unsigned char *>(&s);
+  nlohmann::ordered_json areas;
+  for (int a = 0; a < kAreaCount; ++a) {
+    const AreaInfo &ai = tp.areas[static_cast<size_t>(a)];
+    if (ai.count <= 0 || ai.bytes == 0) continue;
+    auto values = [&](int64_t lo, int64_t n) {
+      nlohmann::ordered_json out = nlohmann::ordered_json::array();
+      for (int64_t k = lo; k < lo + n; ++k) {
+        const unsigned char *p = base + tp.elementOffset(static_cast<Area>(a), k);
+        uint32_t raw = 0;
+        std::memcpy(&raw, p, ai.bytes);
+        int64_t v = raw;
+        if (ai.isSigned)
+          v = ai.bytes == 1 ? int64_t{static_cast<int8_t>(raw)}
+              : ai.bytes == 2 ? int64_t{static_cast<int16_t>(raw)}
+                              : int64_t{static_cast<int32_t>(raw)};
+        out.push_back(v);
+      }
+      return out;
+    };
+    areas[ai.name] = values(0, ai.count);
+    if (ai.upperCount > 0)
+      areas[std::string(ai.name) + "@" + std::to_string(ai.upperLo)] =
+          values(ai.upperLo, ai.upperCount);
+  }
+  j["areas"] = std::move(areas);
+  int64_t nonzero = 0;
+  for (uint8_t b : s.mem) nonzero += b != 0;
+  j["mem_nonzero"] = nonzero;
   return j;
 }
 

@@ -2,6 +2,7 @@
 // PLS/PLF/ALT state, fault counter and the tick bookkeeping.
 #pragma once
 
+#include "ir/Profile.h"
 #include "ladderjit/abi.h"
 
 #include <nlohmann/json.hpp>
@@ -29,5 +30,11 @@ bool isUtf8(std::string_view s);
 ///   "counters": [{"n", "value", "out", "prev"}, ...]
 ///   "pls_prev", "plf_prev", "alt_prev", "alt_state": [512 x 0/1], "edge": [16384 x 0/1]}`.
 nlohmann::ordered_json stateToJson(const lj_state &s);
+
+/// The state of a program of target `tp`: as above for a target on HNC-8's image; for a target
+/// laid out in lj_state.mem (FANUC, IEC) "areas" holds each of its areas by its own name, one
+/// value per element (bytes for FANUC; both ranges, in number order, with "<name>@<lo>" for an
+/// upper range such as "T@9000"), and "mem_nonzero" the count of non-zero bytes of lj_state.mem.
+nlohmann::ordered_json stateToJson(const lj_state &s, const TargetProfile &tp);
 
 } // namespace lj::io

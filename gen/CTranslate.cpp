@@ -65,7 +65,7 @@ bool supported(Op op) {
 /// Byte offset and mask of a bit operand (as interp decode()).
 void bitRef(const TargetProfile &tp, const Operand &o, uint32_t &off, unsigned &mask) {
   if (o.area == Area::Timer || o.area == Area::Counter) {
-    int slot = lj_tc_slot(o.index);
+    int slot = tp.tcSlot(o.area, o.index);
     off = o.area == Area::Timer
               ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
                                       offsetof(lj_timer, out))
@@ -74,8 +74,7 @@ void bitRef(const TargetProfile &tp, const Operand &o, uint32_t &off, unsigned &
     mask = 1;
     return;
   }
-  off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * tp.area(o.area).bytes +
-        static_cast<uint32_t>(o.bit / 8);
+  off = tp.elementOffset(o.area, o.index) + static_cast<uint32_t>(o.bit / 8);
   mask = 1u << (o.bit % 8);
 }
 
@@ -100,7 +99,7 @@ std::string valueRead(const TargetProfile &tp, const Operand &o) {
     return o.value == INT32_MIN ? "(-2147483647 - 1)" : "(" + std::to_string(o.value) + ")";
   if (o.kind == Operand::Kind::Bit) return "(int32_t)" + bitRead(tp, o);
   uint32_t bytes = tp.area(o.area).bytes;
-  std::string off = std::to_string(tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+  std::string off = std::to_string(tp.elementOffset(o.area, o.index));
   if (bytes == 1) return "(int32_t)B(" + off + ")";
   if (bytes == 2) return "(int32_t)I16(" + off + ")";
   return "I32(" + off + ")";
@@ -108,7 +107,7 @@ std::string valueRead(const TargetProfile &tp, const Operand &o) {
 
 std::string valueWrite(const TargetProfile &tp, const Operand &o, const std::string &v) {
   uint32_t bytes = tp.area(o.area).bytes;
-  std::string off = std::to_string(tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes);
+  std::string off = std::to_string(tp.elementOffset(o.area, o.index));
   if (bytes == 1) return "B(" + off + ") = (unsigned char)(uint32_t)(" + v + ");";
   if (bytes == 2) return "I16(" + off + ") = (int16_t)(uint16_t)(uint32_t)(" + v + ");";
   return "I32(" + off + ") = (" + v + ");";

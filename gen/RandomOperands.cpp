@@ -118,7 +118,7 @@ std::string RandomGen::regAddress(AreaMask mask, bool writes) {
   Area a = pickArea(mask);
   int32_t idx = pickIndex(rng_, a);
   if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
-  return std::string(1, hnc8::profile().area(a).letter) + std::to_string(idx);
+  return std::string(hnc8::profile().area(a).name) + std::to_string(idx);
 }
 
 std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
@@ -129,7 +129,7 @@ std::string RandomGen::bitAddress(AreaMask mask, bool writes) {
   std::array<int, 11> w{};
   for (int i = 0; i < 11; ++i) w[i] = hasArea(mask, kBits[i]) ? kWeight[i] : 0;
   Area a = kBits[rng_.weighted(w)];
-  std::string s(1, hnc8::profile().area(a).letter);
+  std::string s(hnc8::profile().area(a).name);
   if (a == Area::Timer || a == Area::Counter) return s + std::to_string(tcNumber(rng_)) + ".0";
   int32_t idx = pickIndex(rng_, a);
   if (writes && a == Area::DWord && idx >= kGuardFirst) idx %= poolSize(Area::DWord);
@@ -228,7 +228,7 @@ std::string RandomGen::range(AreaMask mask, bool writes, int32_t n) {
   int32_t limit = rangeLimit(a, writes);
   int32_t idx = pickIndex(rng_, a);
   if (idx + n > limit) idx = limit - n;
-  return std::string(1, hnc8::profile().area(a).letter) + std::to_string(idx);
+  return std::string(hnc8::profile().area(a).name) + std::to_string(idx);
 }
 
 /// Operands of a long BMOV (functions-2 2.3, memmove semantics): mostly source and destination
@@ -249,7 +249,7 @@ std::string RandomGen::longBmov(const InstrInfo &in) {
                        : rng_.chance(70) ? std::min<int32_t>(pickIndex(rng_, a) % poolSize(a), room)
                                          : static_cast<int32_t>(rng_.range(0, room));
     const bool up = rng_.chance(50);
-    const std::string l(1, hnc8::profile().area(a).letter);
+    const std::string l(hnc8::profile().area(a).name);
     return l + std::to_string(up ? lo : lo + shift) + " " + l +
            std::to_string(up ? lo + shift : lo) + " " + std::to_string(n);
   }
@@ -262,7 +262,7 @@ std::string RandomGen::longBmov(const InstrInfo &in) {
 std::string RandomGen::longZone(bool bits) {
   Area a = pickFitting(kDstAreas, true, bits ? 35 : 33);
   const int32_t limit = rangeLimit(a, true);
-  const std::string l(1, hnc8::profile().area(a).letter);
+  const std::string l(hnc8::profile().area(a).name);
   if (!bits) {
     const int32_t n = longCount(limit);
     const int32_t idx = rng_.chance(60) ? 0 : static_cast<int32_t>(rng_.range(0, limit - n));
@@ -282,7 +282,7 @@ std::string RandomGen::zone() {
   if (longRange()) return longZone(rng_.chance(50));
   Area a = pickArea(kDstAreas);
   int32_t limit = rangeLimit(a, true);
-  std::string l(1, hnc8::profile().area(a).letter);
+  std::string l(hnc8::profile().area(a).name);
   if (rng_.chance(50)) {
     int32_t n = static_cast<int32_t>(rng_.range(1, 4));
     int32_t idx = pickIndex(rng_, a);
@@ -370,7 +370,7 @@ bool RandomGen::specialOperands(const InstrInfo &in, std::string &s) {
     int32_t n = small(8);
     int32_t idx = pickIndex(rng_, a);
     if (idx + n > limit) idx = limit - n;
-    std::string l(1, hnc8::profile().area(a).letter);
+    std::string l(hnc8::profile().area(a).name);
     s += " " + l + std::to_string(idx) + " " + l + std::to_string(idx + n - 1) + " " +
          operand(in, 2);
     return true;

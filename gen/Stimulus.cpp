@@ -185,7 +185,7 @@ void applyWrites(lj_state &s, const std::vector<HostWrite> &writes) {
 }
 
 std::string formatAddress(const HostWrite &w) {
-  std::string s(1, hnc8::profile().area(w.area).letter);
+  std::string s(hnc8::profile().area(w.area).name);
   s += std::to_string(w.index);
   if (w.bit >= 0) s += "." + std::to_string(w.bit);
   return s;

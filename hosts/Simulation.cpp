@@ -1,5 +1,6 @@
 // The simulation loop of `ladderjit run` (DIALECT.md 4: inputs between ticks, now_ms per tick).
 #include "hosts/Simulation.h"
+#include "hosts/SystemBits.h"
 
 namespace lj::io {
 
@@ -54,6 +55,7 @@ uint32_t Simulation::step(WatchRow &row) {
     nc_->beforeTick(s_, tick_);
   }
   s_.now_ms = tick_ * opts_.periodMs;
+  if (opts_.profile) writeSystemBits(*opts_.profile, s_, tick_);
   uint32_t fault = lj_tick(&s_, &entries_);
   if (nc_) nc_->afterTick(s_, tick_);
   row.tick = tick_;

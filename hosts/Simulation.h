@@ -24,6 +24,7 @@ struct SimOptions {
   std::vector<Assignment> sets;        ///< `--set`, applied after params, before init
   Stimulus stimulus;                   ///< applied before the scan of each event's tick
   std::vector<CliAddress> watch;       ///< read after every tick
+  const TargetProfile *profile = nullptr; ///< whose system bits are written before each tick
 };
 
 /// One watch row: the tick number, the fault of that tick and the watched values in order.

@@ -19,7 +19,7 @@ namespace lj::interp {
 
 /// An operand decoded once: a constant, an element (read rule by width) or one bit.
 struct Ref {
-  enum class Kind : uint8_t { None, Const, U8, I16, I32, Bit } kind = Kind::None;
+  enum class Kind : uint8_t { None, Const, U8, I16, I32, Bit, I8, U16 } kind = Kind::None;
   uint8_t mask = 0;  ///< Bit: mask inside the byte at `off`
   uint32_t off = 0;  ///< byte offset inside lj_state
   int32_t value = 0; ///< Const
@@ -81,17 +81,20 @@ inline Ref decode(const TargetProfile &tp, const Operand &o) {
     r.value = o.value;
     return r;
   case Operand::Kind::Reg: {
-    uint32_t bytes = tp.area(o.area).bytes;
-    if (bytes == 0) return r; // L, S: handled through StmtInfo::target
-    r.kind = bytes == 1 ? Ref::Kind::U8 : bytes == 2 ? Ref::Kind::I16 : Ref::Kind::I32;
-    r.off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * bytes;
+    const AreaInfo &ai = tp.area(o.area);
+    if (ai.bytes == 0) return r; // L, S: handled through StmtInfo::target
+    const uint32_t bytes = o.width ? o.width : ai.bytes;
+    r.kind = bytes == 1   ? (ai.isSigned ? Ref::Kind::I8 : Ref::Kind::U8)
+             : bytes == 2 ? (ai.isSigned ? Ref::Kind::I16 : Ref::Kind::U16)
+                          : Ref::Kind::I32;
+    r.off = tp.elementOffset(o.area, o.index);
     return r;
   }
   case Operand::Kind::Bit: {
     r.kind = Ref::Kind::Bit;
     if (o.area == Area::Timer || o.area == Area::Counter) {
       // Tn.0 / Cn.0 read the output bit of the timer / counter (dialect-notes "Function blocks").
-      int slot = lj_tc_slot(o.index);
+      int slot = tp.tcSlot(o.area, o.index);
       assert(slot >= 0 && o.bit == 0);
       r.off = o.area == Area::Timer
                   ? static_cast<uint32_t>(offsetof(lj_state, T) + slot * sizeof(lj_timer) +
@@ -101,8 +104,7 @@ inline Ref decode(const TargetProfile &tp, const Operand &o) {
       r.mask = 1;
       return r;
     }
-    r.off = tp.stateOffset(o.area) + static_cast<uint32_t>(o.index) * tp.area(o.area).bytes +
-            static_cast<uint32_t>(o.bit / 8);
+    r.off = tp.elementOffset(o.area, o.index) + static_cast<uint32_t>(o.bit / 8);
     r.mask = static_cast<uint8_t>(1u << (o.bit % 8));
     return r;
   }
@@ -120,6 +122,13 @@ inline int32_t readValue(lj_state *s, const Ref &r) {
     return r.value;
   case Ref::Kind::U8:
     return *p;
+  case Ref::Kind::I8:
+    return static_cast<int8_t>(*p);
+  case Ref::Kind::U16: {
+    uint16_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
   case Ref::Kind::I16: {
     int16_t v;
     std::memcpy(&v, p, sizeof v);
@@ -144,8 +153,10 @@ inline void writeValue(lj_state *s, const Ref &r, int32_t v) {
   unsigned char *p = bytes(s) + r.off;
   switch (r.kind) {
   case Ref::Kind::U8:
+  case Ref::Kind::I8:
     *p = static_cast<uint8_t>(static_cast<uint32_t>(v) & 0xFFu);
     return;
+  case Ref::Kind::U16:
   case Ref::Kind::I16: {
     uint16_t w = static_cast<uint16_t>(static_cast<uint32_t>(v) & 0xFFFFu);
     std::memcpy(p, &w, sizeof w);

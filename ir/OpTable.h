@@ -274,15 +274,23 @@ inline bool isContact(Op op) {
          r.operands[0].isBit;
 }
 
-// Area groups used by the table and by tests.
+// Area groups used by the table and by tests. The roles only byte-addressed targets have
+// (kByteRoles) are in every group: a profile without them gives them count 0, so no operand of
+// its programs can name them; whether one is writable is the profile's AreaInfo::writable.
+constexpr AreaMask kByteRoles =
+    areas(Area::KeepRelay, Area::ExtraRelay, Area::MessageBits, Area::TimerData,
+          Area::CounterData, Area::DataTable, Area::SystemBits, Area::SystemWords, Area::ConstWords);
 constexpr AreaMask kContactAreas =
     areas(Area::Input, Area::Output, Area::NcStatus, Area::NcControl, Area::Relay, Area::Word,
-          Area::DWord, Area::Retained, Area::Param, Area::Timer, Area::Counter);
+          Area::DWord, Area::Retained, Area::Param, Area::Timer, Area::Counter) |
+    kByteRoles;
 constexpr AreaMask kCoilAreas =
-    areas(Area::Output, Area::NcControl, Area::Relay, Area::Word, Area::DWord, Area::Retained);
+    areas(Area::Output, Area::NcControl, Area::Relay, Area::Word, Area::DWord, Area::Retained) |
+    kByteRoles;
 constexpr AreaMask kSrcAreas =
     areas(Area::Input, Area::Output, Area::NcStatus, Area::NcControl, Area::Relay, Area::Word,
-          Area::DWord, Area::Retained, Area::Param);
+          Area::DWord, Area::Retained, Area::Param) |
+    kByteRoles;
 constexpr AreaMask kDstAreas = kCoilAreas;
 
 } // namespace lj

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string_view>
 
 namespace lj {
 
@@ -47,6 +48,21 @@ struct CncLayout {
   int32_t partCountWord; ///< GC word of the part count
 };
 
+/// A system bit the runtime writes before every tick (FANUC R9091 / R9015, IEC %S): where it is
+/// and what it holds. hosts/SystemBits.h applies a profile's list.
+struct SystemBit {
+  enum class Kind : uint8_t {
+    Zero,      ///< always 0
+    One,       ///< always 1 (also "running": the program runs whenever a tick runs)
+    FirstScan, ///< 1 during the first tick after power-up / start, else 0
+    Clock,     ///< 1 for halfPeriodMs, then 0 for halfPeriodMs, from now_ms = 0
+  };
+  uint32_t offset; ///< byte inside lj_state
+  uint8_t bit;     ///< bit 0..7 of that byte
+  Kind kind;
+  uint32_t halfPeriodMs = 0; ///< Clock
+};
+
 struct TargetProfile {
   const char *name;                               ///< "hnc8"
   std::array<AreaInfo, kAreaCount + 1> areas;     ///< by Area (Area::None last)
@@ -68,32 +84,77 @@ struct TargetProfile {
   std::span<const cnc::CncRow> cncRows;
   /// Mode code (F/G channel word bits 0-3) of one-hot mode bit i (ModeSet / ModeGet actions).
   std::array<int32_t, 7> modeCode;
+  /// System bits the runtime writes before every tick (empty: none).
+  std::span<const SystemBit> systemBits;
 
   /// The facts of area `a`.
   constexpr const AreaInfo &area(Area a) const { return areas[static_cast<int>(a)]; }
 
-  /// Area the dialect writes as `c` (case-insensitive), if any.
+  /// Area the dialect writes as the one-letter name `c` (case-insensitive), if any.
   constexpr std::optional<Area> areaFromLetter(char c) const {
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    for (int i = 0; i < kAreaCount; ++i)
-      if (areas[i].letter == c) return static_cast<Area>(i);
+    const char t[2] = {c, 0};
+    return areaFromName(std::string_view(t, 1));
+  }
+
+  /// Area the dialect writes as `n` (ASCII case-insensitive, "X", "%MW"), if any.
+  constexpr std::optional<Area> areaFromName(std::string_view n) const {
+    auto up = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; };
+    for (int i = 0; i < kAreaCount; ++i) {
+      std::string_view an = areas[i].name ? std::string_view(areas[i].name) : std::string_view();
+      if (an.empty() || an.size() != n.size() || areas[i].count <= 0) continue;
+      bool same = true;
+      for (size_t k = 0; k < n.size() && same; ++k) same = up(an[k]) == up(n[k]);
+      if (same) return static_cast<Area>(i);
+    }
     return std::nullopt;
   }
 
   /// Whether element `n` exists in area `a` (timers/counters: the number spaces).
   constexpr bool validIndex(Area a, int64_t n) const {
     if (n < 0) return false;
-    if (a == Area::Timer || a == Area::Counter) {
-      for (const NumberRange &r : a == Area::Timer ? timerNumbers : counterNumbers)
-        if (r.contains(n)) return true;
-      return false;
-    }
-    return n < area(a).count;
+    if (a == Area::Timer || a == Area::Counter) return tcSlot(a, n) >= 0;
+    const AreaInfo &i = area(a);
+    return n < i.count || (i.upperCount > 0 && n >= i.upperLo && n < int64_t(i.upperLo) + i.upperCount);
+  }
+
+  /// Whether elements n .. n + len - 1 all exist in one range of area `a` (a multi-byte access).
+  constexpr bool validSpan(Area a, int64_t n, int64_t len) const {
+    if (len <= 0 || !validIndex(a, n) || !validIndex(a, n + len - 1)) return false;
+    const AreaInfo &i = area(a);
+    return (n < i.count) == (n + len - 1 < i.count);
   }
 
   /// Byte offset of element 0 of a numeric area inside lj_state (abi.h); 0 for the other
-  /// areas. Element n is at stateOffset(a) + n * area(a).bytes.
+  /// areas. Element n is at elementOffset(a, n).
   constexpr uint32_t stateOffset(Area a) const { return area(a).offset; }
+
+  /// Byte offset inside lj_state of element `n` (a valid index) of numeric area `a`: the upper
+  /// range (AreaInfo::upperLo) follows the first `count` elements.
+  constexpr uint32_t elementOffset(Area a, int64_t n) const {
+    const AreaInfo &i = area(a);
+    int64_t k = n < i.count ? n : i.count + (n - i.upperLo);
+    return i.offset + static_cast<uint32_t>(k) * i.bytes;
+  }
+
+  /// Timer (a == Area::Timer) or counter slot of number n: its position in the concatenated
+  /// number ranges (HNC-8: abi.h lj_tc_slot), or -1 when n is not a valid number.
+  constexpr int tcSlot(Area a, int64_t n) const {
+    int base = 0;
+    for (const NumberRange &r : a == Area::Timer ? timerNumbers : counterNumbers) {
+      if (r.contains(n)) return base + static_cast<int>(n - r.lo);
+      base += r.hi - r.lo + 1;
+    }
+    return -1;
+  }
+
+  /// The number of slot k (inverse of tcSlot), or -1.
+  constexpr int64_t tcNumber(Area a, int k) const {
+    for (const NumberRange &r : a == Area::Timer ? timerNumbers : counterNumbers) {
+      if (k <= r.hi - r.lo) return r.lo + k;
+      k -= r.hi - r.lo + 1;
+    }
+    return -1;
+  }
 
   /// Number of bits of one element (8, 16, 32), or 1 for timers/counters whose only bit is .0.
   constexpr int bitWidth(Area a) const {

@@ -27,6 +27,12 @@ struct SourceLoc {
 struct Operand {
   enum class Kind : uint8_t { None, Const, Reg, Bit } kind = Kind::None;
   Area area = Area::None; ///< for Reg/Bit (L and S operands are Reg in area L / S)
+  /// Reg: bytes read or written at the element's offset, little-endian (1, 2, 4; FANUC's
+  /// byte-addressed areas): 0 = the area's element width. Bit: ignored.
+  uint8_t width = 0;
+  /// Reg: the bytes hold BCD digits (2 per byte); the instruction decides what an invalid digit
+  /// does (front ends set it; engines honour it through the instruction's semantics).
+  bool bcd = false;
   int32_t index = 0;      ///< element number (Reg/Bit)
   int8_t bit = -1;        ///< bit number (Bit)
   int16_t symbol = -1;    ///< written as a symbol: index into the program's `symbols`

@@ -3,6 +3,8 @@
 // and is read back only if every length fits, the key matches and the checksum is right.
 #include "jit/ObjectCache.h"
 
+#include "ir/Profile.h"
+
 #include <llvm/ADT/ArrayRef.h>
 #include <llvm/Config/llvm-config.h>
 #include <llvm/Support/SHA256.h>
@@ -149,6 +151,7 @@ bool decode(std::string_view f, const std::string &key, std::vector<std::string>
 std::string programDigest(const VerifiedProgram &p) {
   std::string s;
   s.reserve(p.stmts.size() * 160);
+  putStr(s, p.profile ? p.profile->name : ""); // the same statements lay out differently per target
   put<uint64_t>(s, p.stmts.size());
   for (const Stmt &st : p.stmts) {
     put(s, static_cast<uint8_t>(st.op));
@@ -158,6 +161,8 @@ std::string programDigest(const VerifiedProgram &p) {
     for (const Operand &o : st.ops) {
       put(s, static_cast<uint8_t>(o.kind));
       put(s, static_cast<uint8_t>(o.area));
+      put(s, o.width);
+      put(s, static_cast<uint8_t>(o.bcd));
       put(s, o.index);
       put(s, o.bit);
       put(s, o.value);

@@ -346,7 +346,7 @@ std::string partOf(const VerifiedProgram &p, int32_t i) {
   if (in(p.plc2, Op::EndSliced)) return "PLC2";
   for (const Subroutine &s : p.subs)
     if (i >= s.spIndex && i <= s.body.end)
-      return p.profile->area(Area::Subroutine).letter + std::to_string(s.number);
+      return std::string(p.profile->area(Area::Subroutine).name) + std::to_string(s.number);
   return "PLC1";
 }
 

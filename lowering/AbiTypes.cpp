@@ -34,6 +34,7 @@ enum StateIdx : uint32_t {
   kStFaultDivzero,
   kStPad,
   kStInstWord,
+  kStMem,
   kStHost
 };
 
@@ -59,7 +60,8 @@ llvm::StructType *buildState(llvm::LLVMContext &ctx) {
                      {image, arr(timer, LJ_TC_SLOTS), arr(counter, LJ_TC_SLOTS),
                       arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_BLOCK_SLOTS),
                       arr(i8, LJ_BLOCK_SLOTS), arr(i8, LJ_EDGE_SLOTS), i64, i64, i64, i32, i32, i32,
-                      i32, i32, i32, arr(i32, LJ_INST_WORDS), llvm::PointerType::getUnqual(ctx)},
+                      i32, i32, i32, arr(i32, LJ_INST_WORDS), arr(i8, LJ_MEM_BYTES),
+                      llvm::PointerType::getUnqual(ctx)},
                      "lj_state");
 }
 
@@ -105,6 +107,7 @@ llvm::Error checkLayout(llvm::StructType *st, const llvm::DataLayout &dl) {
       {{kStFaultIndex}, offsetof(lj_state, fault_index), "fault_index"},
       {{kStFaultDivzero}, offsetof(lj_state, fault_divzero), "fault_divzero"},
       {{kStInstWord}, offsetof(lj_state, inst_word), "inst_word"},
+      {{kStMem}, offsetof(lj_state, mem), "mem"},
       {{kStHost}, offsetof(lj_state, host), "host"},
   };
   llvm::Type *i32 = llvm::Type::getInt32Ty(st->getContext());
@@ -278,6 +281,21 @@ StateLoc StateLayout::edge(int32_t slot) const {
   loc.path = {kStEdge, static_cast<uint32_t>(slot)};
   if (names_) loc.name = "edge" + std::to_string(slot);
   return loc;
+}
+
+StateLoc StateLayout::memBytes(uint32_t offset, unsigned width, std::string name) const {
+  StateLoc loc;
+  loc.offset = offset;
+  loc.type = llvm::Type::getIntNTy(*ctx_, width * 8);
+  loc.path = {kStMem, static_cast<uint32_t>(offset - offsetof(lj_state, mem))};
+  loc.align = 1;
+  loc.span = static_cast<uint8_t>(width);
+  if (names_) loc.name = std::move(name);
+  return loc;
+}
+
+bool StateLayout::inMem(uint32_t offset) {
+  return offset >= offsetof(lj_state, mem) && offset < offsetof(lj_state, mem) + LJ_MEM_BYTES;
 }
 
 StateLoc StateLayout::instWord(int32_t slot) const {

@@ -22,6 +22,9 @@ struct StateLoc {
   llvm::Type *type = nullptr;
   llvm::SmallVector<uint32_t, 4> path; ///< indices after the leading 0
   std::string name;                    ///< readable IR name ("X1", "T3.out", "edge7")
+  uint8_t align = 0; ///< access alignment in bytes; 0 = the type's own (lj_state.mem: 1)
+  /// Bytes the access covers (0: a field of its own type that no other StateLoc overlaps).
+  uint8_t span = 0;
 };
 
 /// Fields of lj_timer / lj_counter, in struct order.
@@ -52,6 +55,11 @@ public:
   StateLoc counter(int32_t slot, CounterField f) const;
   StateLoc block(BlockArray a, int32_t index) const;
   StateLoc edge(int32_t slot) const;
+  /// `width` bytes (1, 2, 4, 8) at byte `offset` of lj_state inside the byte region mem (ABI v3),
+  /// little-endian, alignment 1; such locations may overlap one another (ImageCache copes).
+  StateLoc memBytes(uint32_t offset, unsigned width, std::string name = {}) const;
+  /// Whether byte `offset` lies in lj_state.mem.
+  static bool inMem(uint32_t offset);
   /// Per-instance word `slot` (lj_state.inst_word).
   StateLoc instWord(int32_t slot) const;
   StateLoc scalar(Scalar s) const;

@@ -7,20 +7,29 @@
 
 namespace lj::lower {
 
+StateLoc FunctionEmitter::areaLoc(const Operand &op, unsigned width) {
+  const uint32_t off = tp().elementOffset(op.area, op.index);
+  if (!StateLayout::inMem(off)) return mc_.layout.area(op.area, op.index);
+  if (width == 0) width = op.width ? op.width : tp().area(op.area).bytes;
+  std::string name;
+  if (mc_.opts.readableNames) name = std::string(tp().area(op.area).name) + std::to_string(op.index);
+  return mc_.layout.memBytes(off, width, std::move(name));
+}
+
 llvm::Value *FunctionEmitter::readBit(const Operand &op) {
   std::string name;
   if (mc_.opts.readableNames)
-    name = std::string(1, tp().area(op.area).letter) + std::to_string(op.index) + "." +
+    name = std::string(tp().area(op.area).name) + std::to_string(op.index) + "." +
            std::to_string(op.bit);
   if (op.area == Area::Timer || op.area == Area::Counter) {
     // Tn.0 / Cn.0: the timer's / counter's output byte (dialect-notes "Function blocks").
-    int slot = lj_tc_slot(op.index);
+    int slot = tp().tcSlot(op.area, op.index);
     llvm::Value *out = op.area == Area::Timer
                            ? cache_.load(mc_.layout.timer(slot, TimerField::Out))
                            : cache_.load(mc_.layout.counter(slot, CounterField::Out));
     return b_.CreateICmpNE(out, llvm::ConstantInt::get(out->getType(), 0), name);
   }
-  llvm::Value *v = cache_.load(mc_.layout.area(op.area, op.index));
+  llvm::Value *v = cache_.load(areaLoc(op, tp().area(op.area).bytes));
   if (op.bit == 0) return b_.CreateTrunc(v, b_.getInt1Ty(), name);
   // (v & 1 << k) != 0: the canonical bit test, so InstCombine has nothing to rewrite.
   llvm::Value *mask = llvm::ConstantInt::get(
@@ -30,14 +39,14 @@ llvm::Value *FunctionEmitter::readBit(const Operand &op) {
 
 llvm::Value *FunctionEmitter::readInt(const Operand &op) {
   if (op.kind == Operand::Kind::Const) return b_.getInt32(static_cast<uint32_t>(op.value));
-  llvm::Value *v = cache_.load(mc_.layout.area(op.area, op.index));
+  llvm::Value *v = cache_.load(areaLoc(op));
   if (v->getType()->getIntegerBitWidth() == 32) return v;
   return tp().area(op.area).isSigned ? b_.CreateSExt(v, b_.getInt32Ty())
                                      : b_.CreateZExt(v, b_.getInt32Ty());
 }
 
 void FunctionEmitter::writeInt(const Operand &op, llvm::Value *v, llvm::Value *en) {
-  StateLoc loc = mc_.layout.area(op.area, op.index);
+  StateLoc loc = areaLoc(op);
   llvm::Value *nv = b_.CreateTrunc(v, loc.type); // a write keeps the low 8/16/32 bits
   if (en) nv = b_.CreateSelect(en, nv, cache_.load(loc));
   cache_.store(loc, nv);
@@ -140,9 +149,9 @@ llvm::Error FunctionEmitter::emitCoil(int32_t i) {
   const Stmt &s = prog_.stmts[i];
   const Operand &op = s.ops[0];
   if (st_.empty()) return fail(i, "coil with an empty ST");
-  if (op.kind != Operand::Kind::Bit || !hasArea(kCoilAreas, op.area))
+  if (op.kind != Operand::Kind::Bit || !hasArea(kCoilAreas, op.area) || !tp().area(op.area).writable)
     return fail(i, "coil operand is not a writable bit");
-  StateLoc loc = mc_.layout.area(op.area, op.index);
+  StateLoc loc = areaLoc(op, tp().area(op.area).bytes);
   llvm::Type *ty = loc.type;
   llvm::Value *old = cache_.load(loc);
   llvm::Value *st0 = st_.back();

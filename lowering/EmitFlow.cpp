@@ -36,7 +36,7 @@ llvm::BasicBlock *FunctionEmitter::labelBlock(int32_t lblIndex) {
   auto [it, fresh] = labels_.try_emplace(lblIndex, nullptr);
   if (fresh) {
     it->second = llvm::BasicBlock::Create(fn_->getContext(),
-                                          std::string(1, tp().area(Area::Label).letter) +
+                                          std::string(tp().area(Area::Label).name) +
                                               std::to_string(prog_.stmts[lblIndex].ops[0].index),
                                           fn_);
   }

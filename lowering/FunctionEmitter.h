@@ -109,6 +109,9 @@ private:
   llvm::Error fail(int32_t i, const std::string &what) const;
 
   // EmitBasic.cpp: operands, contacts, coils, stack instructions.
+  /// Where operand `op` (a Reg or Bit of a numeric area) lives: its image field, or `width`
+  /// bytes (0: the operand's access width) of lj_state.mem for a profile-laid area.
+  StateLoc areaLoc(const Operand &op, unsigned width = 0);
   llvm::Value *readBit(const Operand &op);
   llvm::Value *readInt(const Operand &op);
   /// Write the low bits of `v` (i32) into register `op`; only when `en` is 1 if given.

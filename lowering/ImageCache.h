@@ -13,8 +13,10 @@
 
 namespace lj::lower {
 
-/// Per-basic-block cache of lj_state fields, keyed by byte offset. Every field is always accessed
-/// with the same type (AbiTypes.h guarantees one StateLoc per offset), so entries never overlap.
+/// Per-basic-block cache of lj_state fields, keyed by byte offset. Every field outside the byte
+/// region is always accessed with the same type (one StateLoc per offset), so those entries never
+/// overlap; byte-region locations (StateLoc::span > 0: R100 as a byte, R100..R101 as a word) may,
+/// and an access drops every other entry it overlaps.
 class ImageCache {
 public:
   ImageCache(const StateLayout &layout, llvm::IRBuilderBase &b, llvm::Value *state)
@@ -29,6 +31,7 @@ public:
   void flush();
 
 private:
+  void dropOverlaps(const StateLoc &loc);
   struct Entry {
     StateLoc loc;
     llvm::Value *value;

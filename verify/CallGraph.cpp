@@ -8,7 +8,7 @@ namespace lj::verifier {
 namespace {
 
 std::string subName(const Context &cx, int32_t sub) {
-  return std::string(1, cx.tp.area(Area::Subroutine).letter) +
+  return std::string(cx.tp.area(Area::Subroutine).name) +
          std::to_string(cx.prog.subs[static_cast<size_t>(sub)].number);
 }
 

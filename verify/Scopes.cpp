@@ -15,7 +15,7 @@ namespace {
 std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
 /// A label as the dialect writes it ("L3").
 std::string label(const Context &cx, int32_t n) {
-  return std::string(1, cx.tp.area(Area::Label).letter) + std::to_string(n);
+  return std::string(cx.tp.area(Area::Label).name) + std::to_string(n);
 }
 
 class UnitChecker {

@@ -31,15 +31,16 @@ std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line
 void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, Area area) {
   const Stmt &s = cx.stmt(i);
   int32_t n = s.ops[0].value;
-  int slot = lj_tc_slot(n);
-  const char letter = cx.tp.area(area).letter;
-  std::string name = std::string(1, letter) + std::to_string(n);
+  int slot = cx.tp.tcSlot(area, n);
+  if (slot >= LJ_TC_SLOTS) slot = -1; // a profile with more numbers than lj_state has slots
+  const std::string letter = cx.tp.area(area).name;
+  std::string name = letter + std::to_string(n);
   if (slot < 0) {
     // The number spaces of the profile, e.g. "T0..T127, T300..T427".
     const TargetProfile &tp = cx.tp;
     std::string spaces;
     for (const NumberRange &r : area == Area::Timer ? tp.timerNumbers : tp.counterNumbers)
-      spaces += (spaces.empty() ? "" : ", ") + std::string(1, letter) + std::to_string(r.lo) +
+      spaces += (spaces.empty() ? "" : ", ") + letter + std::to_string(r.lo) +
                 ".." + letter + std::to_string(r.hi);
     cx.error(s.ops[0].loc, std::string(family) + " number " + std::to_string(n) +
                                " is not valid (" + spaces + ")");

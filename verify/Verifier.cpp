@@ -19,7 +19,7 @@ std::string lineOf(const Stmt &s) { return "line " + std::to_string(s.loc.line);
 
 /// A subroutine as the dialect writes it ("S7").
 std::string subText(const Context &cx, int32_t n) {
-  return std::string(1, cx.tp.area(Area::Subroutine).letter) + std::to_string(n);
+  return std::string(cx.tp.area(Area::Subroutine).name) + std::to_string(n);
 }
 
 /// The part markers in the order the profile runs the parts ("IEND, 1END, 2END").

@@ -10,7 +10,7 @@ namespace lj::verifier {
 namespace {
 
 std::string addr(const Context &cx, Area a, int64_t index) {
-  return std::string(1, cx.tp.area(a).letter) + std::to_string(index);
+  return std::string(cx.tp.area(a).name) + std::to_string(index);
 }
 
 std::string range(const ValueRange &r) {
@@ -37,7 +37,7 @@ void checkStmt(Context &cx, const Stmt &s) {
     if (!cx.tp.validIndex(o.area, last))
       cx.error(o.loc, mn + " output bytes " + addr(cx, o.area, o.index) + ".." +
                           addr(cx, o.area, last) + " run past the end of " +
-                          cx.tp.area(o.area).letter + " (" + addr(cx, o.area, 0) + ".." +
+                          cx.tp.area(o.area).name + " (" + addr(cx, o.area, 0) + ".." +
                           lastOf(cx, o.area) + ")");
     break;
   }
@@ -48,7 +48,7 @@ void checkStmt(Context &cx, const Stmt &s) {
     if (!cx.tp.validIndex(Area::Param, last))
       cx.error(p.loc, mn + " parameter block " + addr(cx, Area::Param, p.index) + ".." +
                           addr(cx, Area::Param, last) + " runs past the end of " +
-                          cx.tp.area(Area::Param).letter + " (" + addr(cx, Area::Param, 0) + ".." +
+                          cx.tp.area(Area::Param).name + " (" + addr(cx, Area::Param, 0) + ".." +
                           lastOf(cx, Area::Param) + ")");
     break;
   }

@@ -10,7 +10,7 @@ namespace lj::verifier {
 namespace {
 
 std::string addr(const Context &cx, Area a, int64_t index) {
-  return std::string(1, cx.tp.area(a).letter) + std::to_string(index);
+  return std::string(cx.tp.area(a).name) + std::to_string(index);
 }
 
 std::string addr(const Context &cx, const Operand &o) {
@@ -28,7 +28,7 @@ void checkRange(Context &cx, const Stmt &s, const Operand &start, int64_t count,
   if (cx.tp.validIndex(start.area, last)) return;
   cx.error(start.loc, std::string(cx.spell(s.op)) + " " + what + " " + addr(cx, start) + ".." +
                           addr(cx, start.area, last) + " runs past the end of " +
-                          cx.tp.area(start.area).letter + " (" + addr(cx, start.area, 0) + ".." +
+                          cx.tp.area(start.area).name + " (" + addr(cx, start.area, 0) + ".." +
                           addr(cx, start.area, cx.tp.area(start.area).count - 1) + ")");
 }
 

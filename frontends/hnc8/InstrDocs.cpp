@@ -489,9 +489,10 @@ static_assert(docsInOrder(), "entries are in Op order");
 std::string areaList(AreaMask m) {
   std::string s;
   for (int a = 0; a < kAreaCount; ++a) {
-    if (!hasArea(m, static_cast<Area>(a))) continue;
+    if (!hasArea(m, static_cast<Area>(a)) || hnc8::profile().area(static_cast<Area>(a)).count <= 0)
+      continue;
     if (!s.empty()) s += ' ';
-    s += hnc8::profile().area(static_cast<Area>(a)).letter;
+    s += hnc8::profile().area(static_cast<Area>(a)).name;
   }
   return s;
 }

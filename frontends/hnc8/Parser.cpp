@@ -48,11 +48,14 @@ bool readDecimal(std::string_view t, size_t &pos, int64_t &value) {
 std::string areaList(AreaMask m) {
   std::string out;
   int n = 0, total = 0;
-  for (int a = 0; a < kAreaCount; ++a) total += hasArea(m, static_cast<Area>(a)) ? 1 : 0;
+  auto has = [&](int a) {
+    return hasArea(m, static_cast<Area>(a)) && hnc8::profile().area(static_cast<Area>(a)).count > 0;
+  };
+  for (int a = 0; a < kAreaCount; ++a) total += has(a) ? 1 : 0;
   for (int a = 0; a < kAreaCount; ++a) {
-    if (!hasArea(m, static_cast<Area>(a))) continue;
+    if (!has(a)) continue;
     if (n > 0) out += (n == total - 1) ? " or " : ", ";
-    out += hnc8::profile().area(static_cast<Area>(a)).letter;
+    out += hnc8::profile().area(static_cast<Area>(a)).name;
     ++n;
   }
   return out;
@@ -60,7 +63,7 @@ std::string areaList(AreaMask m) {
 
 /// "X0..X512", or the two ranges of T/C.
 std::string indexRange(Area a) {
-  std::string l(1, hnc8::profile().area(a).letter);
+  std::string l(hnc8::profile().area(a).name);
   if (a == Area::Timer || a == Area::Counter)
     return l + "0.." + l + "127, " + l + "300.." + l + "427";
   return l + "0.." + l + std::to_string(hnc8::profile().area(a).count - 1);
@@ -222,7 +225,7 @@ private:
   }
 
   static std::string addrText(const RawOperand &r) {
-    std::string s(1, hnc8::profile().area(r.area).letter);
+    std::string s(hnc8::profile().area(r.area).name);
     s += std::to_string(r.index);
     if (r.bit >= 0) {
       s += '.'; // appended separately: GCC 12 -O3 warns (-Wrestrict) on "." + std::string
@@ -240,7 +243,7 @@ private:
       return false;
     }
     if (!hasArea(spec.areas, r.area)) {
-      error(t, std::string("area ") + hnc8::profile().area(r.area).letter + " is not allowed as " +
+      error(t, std::string("area ") + hnc8::profile().area(r.area).name + " is not allowed as " +
                    spec.role + " of " + hnc8::mnemonicOf(info.op) +
                    " (allowed: " + areaList(spec.areas) + ")");
       return false;
@@ -275,7 +278,7 @@ private:
       }
       if (!checkArea(info, spec, t, r)) return false;
       if (r.bit >= hnc8::profile().bitWidth(r.area)) {
-        std::string l(1, hnc8::profile().area(r.area).letter);
+        std::string l(hnc8::profile().area(r.area).name);
         error(t,
               "bit number " + std::to_string(r.bit) + " out of range in " + quote(t.text) + " (" +
                   l +

@@ -15,9 +15,9 @@ std::string formatOperand(const Operand &op) {
   case Operand::Kind::Const:
     return std::to_string(op.value);
   case Operand::Kind::Reg:
-    return hnc8::profile().area(op.area).letter + std::to_string(op.index);
+    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index);
   case Operand::Kind::Bit:
-    return hnc8::profile().area(op.area).letter + std::to_string(op.index) + "." +
+    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index) + "." +
            std::to_string(op.bit);
   }
   return "";

@@ -64,16 +64,16 @@ std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error
     error = "bad address " + quote(t) + ": expected an area letter, a number and an optional .bit";
     return {};
   }
-  char letter = hnc8::profile().area(*area).letter;
+  const std::string letter = hnc8::profile().area(*area).name;
   if (!hnc8::profile().validIndex(*area, index)) {
-    error = "address " + quote(t) + " out of range for area " + std::string(1, letter);
+    error = "address " + quote(t) + " out of range for area " + letter;
     return {};
   }
   if (bit >= 0 && bit >= hnc8::profile().bitWidth(*area)) {
     error = "bit number out of range in address " + quote(t);
     return {};
   }
-  std::string out(1, letter);
+  std::string out(letter);
   out += std::to_string(index);
   if (bit >= 0) {
     out += '.';

@@ -28,20 +28,30 @@ constexpr const char *kHostServices[] = {"var_get",     "var_set",     "mpg_inpu
 constexpr TargetProfile kHnc8{
     "hnc8",
     {{
-        LJ_AREA('X', X, false, false),
-        LJ_AREA('Y', Y, false, true),
-        LJ_AREA('F', F, true, false),
-        LJ_AREA('G', G, true, true),
-        LJ_AREA('R', R, false, true),
-        LJ_AREA('W', W, true, true),
-        LJ_AREA('D', D, true, true),
-        LJ_AREA('B', B, true, true),
-        LJ_AREA('P', P, true, false),
-        {'T', 428, 0, false, false, true, 0}, // only Tn.0, the output bit (contacts)
-        {'C', 428, 0, false, false, true, 0},
-        {'L', 10000, 0, false, false, false, 0},
-        {'S', 512, 0, false, false, false, 0},
-        {'?', 0, 0, false, false, false, 0},
+        LJ_AREA("X", X, false, false),
+        LJ_AREA("Y", Y, false, true),
+        LJ_AREA("F", F, true, false),
+        LJ_AREA("G", G, true, true),
+        LJ_AREA("R", R, false, true),
+        LJ_AREA("W", W, true, true),
+        LJ_AREA("D", D, true, true),
+        LJ_AREA("B", B, true, true),
+        LJ_AREA("P", P, true, false),
+        {"T", 428, 0, false, false, true, 0}, // only Tn.0, the output bit (contacts)
+        {"C", 428, 0, false, false, true, 0},
+        {"L", 10000, 0, false, false, false, 0},
+        {"S", 512, 0, false, false, false, 0},
+        // roles HNC-8 does not have
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"", 0, 0, false, false},
+        {"?", 0, 0, false, false, false, 0},
     }},
     {{{0, 127}, {300, 427}}},
     {{{0, 127}, {300, 427}}},
@@ -62,6 +72,7 @@ constexpr TargetProfile kHnc8{
     kHostServices,
     cnc::kRows,
     {1, 7, 2, 3, 5, 4, 6},
+    {},
 };
 
 #undef LJ_AREA
@@ -82,6 +93,15 @@ constexpr bool numberSpacesFillSlots() {
   return n == LJ_TC_SLOTS;
 }
 static_assert(numberSpacesFillSlots(), "timer numbers map one to one onto lj_state.T slots");
+constexpr bool slotsAreAbiSlots() {
+  for (int32_t n = -1; n < 500; ++n)
+    // abi.h lj_tc_slot, spelled out (C inline functions are not constexpr)
+    if (const int abi = n >= 0 && n < 128 ? n : n >= 300 && n < 428 ? n - 300 + 128 : -1;
+        kHnc8.tcSlot(Area::Timer, n) != abi || kHnc8.tcSlot(Area::Counter, n) != abi)
+      return false;
+  return true;
+}
+static_assert(slotsAreAbiSlots(), "the profile's slot mapping is abi.h's lj_tc_slot");
 static_assert(kHnc8.cnc.channelBase + kHnc8.cnc.channels * kHnc8.cnc.blockWords <= LJ_F_COUNT);
 
 static_assert(kHnc8.cnc.blockWords == cnc::kBlockWords &&

@@ -21,11 +21,11 @@ namespace {
 constexpr size_t kRunNcLogLimit = 10000;
 
 // Every user input of `run`, parsed and checked.
-bool parseInputs(const RunArgs &a, io::SimOptions &sim, std::string &error) {
+bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, std::string &error) {
   sim.ticks = a.ticks;
   sim.periodMs = a.periodMs;
   for (const std::string &item : a.sets) {
-    std::optional<io::Assignment> as = io::parseAssignment(item, error);
+    std::optional<io::Assignment> as = d.parseAssignment(item, error);
     if (!as) {
       error = "--set: " + error;
       return false;
@@ -41,7 +41,7 @@ bool parseInputs(const RunArgs &a, io::SimOptions &sim, std::string &error) {
         error = "--watch: empty address in '" + list + "'";
         return false;
       }
-      std::optional<io::CliAddress> addr = io::parseAddress(item, error);
+      std::optional<io::CliAddress> addr = d.parseAddress(item, error);
       if (!addr) {
         error = "--watch: " + error;
         return false;
@@ -54,7 +54,7 @@ bool parseInputs(const RunArgs &a, io::SimOptions &sim, std::string &error) {
   std::string text;
   if (!a.stimulus.empty()) {
     if (!io::readFile(a.stimulus, text, error)) return false;
-    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error);
+    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error, d.parseAssignment);
     if (!st) return false;
     sim.stimulus = std::move(*st);
   }
@@ -126,9 +126,9 @@ public:
     if (!file_) error = "--dump: cannot write '" + path + "'";
     return static_cast<bool>(file_);
   }
-  bool write(const lj_state &s, const io::SimNc &nc, std::string &error) {
+  bool write(const lj_state &s, const io::SimNc &nc, const TargetProfile &tp, std::string &error) {
     if (path_.empty()) return true;
-    nlohmann::ordered_json j = io::stateToJson(s);
+    nlohmann::ordered_json j = io::stateToJson(s, tp);
     j["nc"] = nc.toJson(); // the simulated NC (docs/simulated-nc.md "Dump")
     std::string text = j.dump() + "\n";
     if (path_ == "-") {
@@ -159,11 +159,11 @@ int runRun(const RunArgs &a) {
 
   io::SimOptions sim;
   std::string error;
-  if (!parseInputs(a, sim, error)) return usageError(error);
-
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code, a.dialect)) return code;
+  // Addresses (--set, --watch, the stimulus) are written in the program's dialect.
+  if (!parseInputs(a, *src.dialect, sim, error)) return usageError(error);
   if (src.dit) {
     // A container's parameters are defaults: its P values go first so --params and --set
     // override them; its period counts unless --period-ms was given (docs/plc-dit.md "run").
@@ -173,6 +173,7 @@ int runRun(const RunArgs &a) {
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
+  sim.profile = prog->profile;
 
   engines::EngineOptions eo;
   io::TrustedKeys trust;
@@ -227,7 +228,7 @@ int runRun(const RunArgs &a) {
     if (table) table->row(row);
   }
   if (table) table->flush();
-  if (!dump.write(*state, *nc, error)) return usageError(error);
+  if (!dump.write(*state, *nc, *prog->profile, error)) return usageError(error);
   return kOk;
 }
 

@@ -1,4 +1,4 @@
-/* ladderjit runtime ABI v1: the process image, per-instance state, fault counters and the
+/* ladderjit runtime ABI v3: the process image, per-instance state, fault counters and the
  * scan-entry signatures shared by the interpreter, the JIT and AOT shared objects.
  *
  * Everything a program touches lives in one host-owned `lj_state`, so code can be swapped at a
@@ -15,7 +15,7 @@
 extern "C" {
 #endif
 
-#define LJ_ABI_VERSION 2u
+#define LJ_ABI_VERSION 3u
 
 /* Element counts of every area (DIALECT.md section 1). */
 #define LJ_X_COUNT 513
@@ -38,6 +38,12 @@ extern "C" {
 /* Per-instance words of stateful CNC blocks (TOOLLIFE install counters), indices assigned by the
  * verifier like edge slots. */
 #define LJ_INST_WORDS 1024
+
+/* Bytes of the profile-laid region lj_state.mem (ABI v3): the areas of targets whose memory is
+ * not HNC-8's lj_image (FANUC PMC byte-addressed areas, IEC objects) and their hidden state, at
+ * offsets the target profile gives (ir/Profile.h TargetProfile::elementOffset). HNC-8 programs
+ * do not use it. */
+#define LJ_MEM_BYTES 65536
 
 /* Fault codes returned by scan entries and recorded in lj_state.last_fault. */
 #define LJ_FAULT_NONE 0
@@ -95,6 +101,8 @@ typedef struct lj_state {
   uint32_t pad_;
   /* ---- ABI v2 additions (after every v1 field, so v1 offsets are unchanged) ---- */
   int32_t inst_word[LJ_INST_WORDS]; /* per-instance words (TOOLLIFE counters) */
+  /* ---- ABI v3 addition ---- */
+  uint8_t mem[LJ_MEM_BYTES]; /* profile-laid byte region (see LJ_MEM_BYTES), little-endian */
   /* The NC host the CNC blocks call (see lj_host). Set by the host after lj_state_reset; NULL
    * (or a NULL callback) gives the documented default. Not program state: engines compare
    * states over the first LJ_STATE_COMPARED_BYTES bytes only. */
@@ -161,7 +169,8 @@ typedef struct lj_entries {
   uint32_t plc2_slice_count; /* >= 1 */
 } lj_entries;
 
-/** Timer / counter slot of number n, or -1 when n is not a valid T/C number. */
+/** HNC-8 timer / counter slot of number n, or -1 when n is not a valid T/C number. Engines take
+ * the slot from the program's profile (TargetProfile::tcSlot), which for HNC-8 is this. */
 static inline int lj_tc_slot(int32_t n) {
   if (n >= 0 && n < 128) return (int)n;
   if (n >= 300 && n < 428) return (int)(n - 300 + 128);
@@ -209,11 +218,15 @@ LJ_STATIC_ASSERT(offsetof(lj_state, now_ms) == 15712 + 256 * 24 + 256 * 8 + 4 * 
                  "state now_ms");
 LJ_STATIC_ASSERT(offsetof(lj_state, inst_word) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48,
                  "state inst_word");
-LJ_STATIC_ASSERT(offsetof(lj_state, host) ==
+LJ_STATIC_ASSERT(offsetof(lj_state, mem) ==
                      15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 + 4 * LJ_INST_WORDS,
+                 "state mem");
+LJ_STATIC_ASSERT(offsetof(lj_state, mem) % 16 == 0, "mem is 16-byte aligned");
+LJ_STATIC_ASSERT(offsetof(lj_state, host) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 +
+                                                 4 * LJ_INST_WORDS + LJ_MEM_BYTES,
                  "state host");
-LJ_STATIC_ASSERT(sizeof(lj_state) ==
-                     15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 + 4 * LJ_INST_WORDS + 8,
+LJ_STATIC_ASSERT(sizeof(lj_state) == 15712 + 256 * 24 + 256 * 8 + 4 * 512 + 16384 + 48 +
+                                         4 * LJ_INST_WORDS + LJ_MEM_BYTES + 8,
                  "state size");
 
 #endif /* LADDERJIT_ABI_H */
