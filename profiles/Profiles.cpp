@@ -2,11 +2,12 @@
 #include "profiles/Profiles.h"
 
 #include "profiles/hnc8/Hnc8Profile.h"
+#include "profiles/iec/IecProfile.h"
 
 namespace lj {
 
 std::span<const TargetProfile *const> allProfiles() {
-  static const TargetProfile *const kAll[] = {&hnc8::profile()};
+  static const TargetProfile *const kAll[] = {&hnc8::profile(), &iec::profile()};
   return kAll;
 }
 
