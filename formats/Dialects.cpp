@@ -3,6 +3,8 @@
 #include "formats/Dialects.h"
 
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/iec/FrontEnd.h"
+#include "frontends/iec/Objects.h"
 #include "profiles/Profiles.h"
 
 #include <nlohmann/json.hpp>
@@ -25,7 +27,71 @@ constexpr const char *kHnc8Extensions[] = {".stl", ".dit"};
 const Dialect kHnc8{"hnc8",       kHnc8Extensions, profileNamed("hnc8"), compileHnc8,
                     parseAddress, parseAssignment, formatAddress};
 
-const Dialect *const kDialects[] = {&kHnc8};
+// IEC IL (Neza): `%I0.1`-style objects (frontends/iec/Objects.h) on the command line, in
+// stimulus files, --watch and --dump (docs/iec-il.md "Command line").
+std::optional<VerifiedProgram> compileIec(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  if (symbols && !symbols->empty()) {
+    diags.error({}, "an IEC IL program takes no symbol table");
+    return std::nullopt;
+  }
+  return iec::compileIl(text, std::move(file), opts, diags);
+}
+
+std::optional<CliAddress> parseIecAddress(std::string_view text, std::string &error) {
+  std::string why;
+  std::optional<iec::Object> obj = iec::parseObject(text, why);
+  if (!obj) {
+    error = "bad address " + why;
+    return std::nullopt;
+  }
+  if (obj->op.kind != Operand::Kind::Bit && obj->op.kind != Operand::Kind::Reg) {
+    error = "bad address '" + std::string(text.substr(0, 40)) + "': not an object";
+    return std::nullopt;
+  }
+  if (obj->op.area == Area::Label || obj->op.area == Area::Subroutine) {
+    error = "bad address '" + std::string(text.substr(0, 40)) +
+            "': labels and subroutines hold no value";
+    return std::nullopt;
+  }
+  CliAddress a;
+  a.area = obj->op.area;
+  a.index = obj->op.index;
+  a.bit = obj->op.kind == Operand::Kind::Bit ? obj->op.bit : int8_t{-1};
+  a.text = std::string(text);
+  return a;
+}
+
+std::optional<Assignment> parseIecAssignment(std::string_view item, std::string &error) {
+  size_t eq = item.find('=');
+  if (eq == std::string_view::npos) {
+    error = "bad assignment '" + std::string(item.substr(0, 40)) + "': expected ADDR=VALUE";
+    return std::nullopt;
+  }
+  std::optional<CliAddress> addr = parseIecAddress(item.substr(0, eq), error);
+  if (!addr) return std::nullopt;
+  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
+  if (!value) return std::nullopt;
+  if (!checkWritable(*addr, *value, error)) return std::nullopt;
+  return Assignment{std::move(*addr), *value};
+}
+
+std::string formatIecAddress(const CliAddress &addr) {
+  Operand o;
+  o.kind = addr.isBit() ? Operand::Kind::Bit : Operand::Kind::Reg;
+  o.area = addr.area;
+  o.index = addr.index;
+  o.bit = addr.bit;
+  return iec::formatOperand(o);
+}
+
+constexpr const char *kIecExtensions[] = {".il"};
+
+const Dialect kIec{"iec",           kIecExtensions,     profileNamed("iec"), compileIec,
+                   parseIecAddress, parseIecAssignment, formatIecAddress};
+
+const Dialect *const kDialects[] = {&kHnc8, &kIec};
 
 /// Dialects ladderjit plans (docs/architecture.md "Adding a dialect") and the extensions that
 /// name them; a build without one says so instead of reading the file as HNC-8.
@@ -33,7 +99,7 @@ struct Planned {
   const char *name;
   const char *extension;
 };
-constexpr Planned kPlanned[] = {{"fanuc", ".pmc"}, {"iec", ".il"}};
+constexpr Planned kPlanned[] = {{"fanuc", ".pmc"}};
 
 std::string quoted(std::string_view s) {
   std::string out = "'";

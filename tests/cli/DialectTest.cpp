@@ -15,7 +15,7 @@ namespace lj::io {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
-  ASSERT_EQ(allProfiles().size(), 1u);
+  ASSERT_EQ(allProfiles().size(), 2u);
   const TargetProfile *p = profileNamed("hnc8");
   ASSERT_NE(p, nullptr);
   EXPECT_STREQ(p->name, "hnc8");
@@ -31,12 +31,24 @@ TEST(Profiles, RegistryHoldsHnc8ByName) {
   EXPECT_EQ(p->cncRow(Op::Coil), nullptr);
 }
 
-TEST(Dialects, OnlyHnc8IsRegisteredAndItUsesTheHnc8Profile) {
-  ASSERT_EQ(allDialects().size(), 1u);
+TEST(Profiles, IecProfileHasPerObjectEdgesAndNoCncTable) {
+  const TargetProfile *p = profileNamed("iec");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->edgePolicy, EdgePolicy::PerObject); // modicon-neza.md 2.1, 12.1
+  EXPECT_EQ(p->maxBranchDepth, 8);                 // MPS depth, L979
+  EXPECT_EQ(p->cncRow(Op::ChannelModeSet), nullptr);
+  EXPECT_TRUE(p->validIndex(Area::Timer, 31)); // %TM0..%TM31 (L1269)
+  EXPECT_FALSE(p->validIndex(Area::Timer, 32));
+}
+
+TEST(Dialects, Hnc8AndIecAreRegisteredWithTheirProfiles) {
+  ASSERT_EQ(allDialects().size(), 2u);
   EXPECT_EQ(dialectNamed("hnc8"), &defaultDialect());
   EXPECT_EQ(defaultDialect().profile, profileNamed("hnc8"));
+  ASSERT_NE(dialectNamed("iec"), nullptr);
+  EXPECT_EQ(dialectNamed("iec")->profile, profileNamed("iec"));
   EXPECT_EQ(dialectNamed("HNC8"), nullptr); // names are exact
-  EXPECT_EQ(knownDialects(), "hnc8");
+  EXPECT_EQ(knownDialects(), "hnc8, iec");
 }
 
 TEST(Dialects, ExtensionChoosesTheDialect) {
@@ -50,21 +62,20 @@ TEST(Dialects, ExtensionChoosesTheDialect) {
   EXPECT_TRUE(error.empty()) << error;
   EXPECT_EQ(dialectForPath("spindle.pmc", error), nullptr);
   EXPECT_EQ(error, "spindle.pmc: a .pmc file is dialect 'fanuc', which is not available in this "
-                   "build (known: hnc8; --dialect NAME reads it as another dialect)");
+                   "build (known: hnc8, iec; --dialect NAME reads it as another dialect)");
   error.clear();
-  EXPECT_EQ(dialectForPath("x.il", error), nullptr);
-  EXPECT_NE(error.find("dialect 'iec', which is not available in this build"), std::string::npos);
+  EXPECT_EQ(dialectForPath("x.il", error), dialectNamed("iec"));
+  EXPECT_EQ(dialectForPath("X.IL", error), dialectNamed("iec"));
 }
 
 TEST(Dialects, OptionNamesTheDialect) {
   std::string error;
   EXPECT_EQ(dialectForOption("hnc8", error), &defaultDialect());
   EXPECT_EQ(dialectForOption("fanuc", error), nullptr);
-  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
-  EXPECT_EQ(dialectForOption("iec", error), nullptr);
-  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8)");
+  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8, iec)");
+  EXPECT_EQ(dialectForOption("iec", error), dialectNamed("iec"));
   EXPECT_EQ(dialectForOption("siemens", error), nullptr);
-  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8)");
+  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, iec)");
 }
 
 TEST(Dialects, LadderJsonNamesItsDialect) {
@@ -72,9 +83,10 @@ TEST(Dialects, LadderJsonNamesItsDialect) {
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
             &defaultDialect());
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"fanuc"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(error,
+            "ladder JSON: dialect 'fanuc' is not available in this build (known: hnc8, iec)");
   EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8)");
+  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, iec)");
 }
 
 std::string tempFile(const std::string &name, const std::string &text) {
@@ -99,7 +111,7 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
 
   ProgramSource refused;
   EXPECT_FALSE(readProgramFile(stl, refused, error, "fanuc"));
-  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8)");
+  EXPECT_EQ(error, "dialect 'fanuc' is not available in this build (known: hnc8, iec)");
   // --dialect hnc8 reads a .pmc name as HNC-8 STL.
   const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
   EXPECT_FALSE(readProgramFile(pmc, refused, error));
