@@ -2,6 +2,8 @@
 // the first field of lj_state where they part.
 #include "fuzz/Differential.h"
 
+#include "frontends/iec/FrontEnd.h"
+
 #include "frontends/hnc8/FrontEnd.h"
 #include "hosts/TestHost.h"
 
@@ -106,10 +108,11 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   Outcome r;
   std::string text;
   for (const std::string &l : c.lines) text += l + "\n";
-  Diagnostics diags("fuzz.stl");
+  Diagnostics diags(c.iec ? "fuzz.il" : "fuzz.stl");
   VerifyOptions vo;
   vo.plc2Nvalue = c.plc2Nvalue;
-  std::optional<VerifiedProgram> prog = compileFrontEnd(text, "fuzz.stl", vo, diags);
+  std::optional<VerifiedProgram> prog = c.iec ? iec::compileIl(text, "fuzz.il", vo, diags)
+                                              : compileFrontEnd(text, "fuzz.stl", vo, diags);
   if (!prog) {
     r.kind = Outcome::Kind::NotVerified;
     r.detail = diags.render();

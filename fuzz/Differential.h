@@ -25,6 +25,8 @@ struct Case {
   /// Content seed of the recording NC host (hosts/TestHost.h) each engine gets a copy
   /// of; 0 = empty content.
   uint64_t hostSeed = 0;
+  /// The program's dialect: false HNC-8 STL, true IEC IL (frontends/iec, gen/IlGenerator.h).
+  bool iec = false;
 };
 
 /// What running a case on both engines gave.

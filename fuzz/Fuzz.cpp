@@ -4,6 +4,7 @@
 #include "fuzz/Differential.h"
 #include "fuzz/RoundTrip.h"
 
+#include "gen/IlGenerator.h"
 #include "gen/Rng.h"
 
 #include <chrono>
@@ -70,11 +71,15 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     gen::RandomOptions ro;
     ro.seed = rng.fork();
     ro.statements = static_cast<int32_t>(rng.range(opts.statements / 4 + 1, opts.statements));
-    gen::GenProgram gp = gen::generateRandom(ro);
+    gen::GenProgram gp =
+        opts.iec ? gen::generateIl(ro.seed, ro.statements) : gen::generateRandom(ro);
     Case c;
+    c.iec = opts.iec;
     c.lines = std::move(gp.lines);
     c.plc2Nvalue = gp.plc2Nvalue;
-    c.stim = gen::generateStimulus(rng.fork(), opts.ticks);
+    const uint64_t stimSeed = rng.fork();
+    c.stim = opts.iec ? gen::generateIlStimulus(stimSeed, opts.ticks)
+                      : gen::generateStimulus(stimSeed, opts.ticks);
     c.fastTier = opts.tiers == TierMode::Fast || (opts.tiers == TierMode::Mixed && rng.chance(50));
     c.hostSeed = rng.next() | 1; // never 0: the host serves seeded variables, deltas, pockets
     ++(c.fastTier ? st.fastPrograms : st.optimizingPrograms);

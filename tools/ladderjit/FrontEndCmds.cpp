@@ -63,14 +63,18 @@ int runEmitLlvm(const EmitArgs &a) {
 }
 
 int runFuzz(const FuzzArgs &a) {
-  // The generator writes HNC-8 STL: another dialect has no generator yet.
+  // The generators write HNC-8 STL (gen/RandomProgram.cpp) and IEC IL (gen/IlGenerator.cpp).
   std::string error;
   const io::Dialect *d = io::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
   if (!d) return usageError(error);
-  if (d != &io::defaultDialect())
-    return usageError(std::string("fuzz generates only hnc8 programs, not dialect '") + d->name +
-                      "'");
+  const bool iec = std::string_view(d->name) == "iec";
+  if (d != &io::defaultDialect() && !iec)
+    return usageError(std::string("fuzz generates only hnc8 and iec programs, not dialect '") +
+                      d->name + "'");
+  if (iec && a.roundTrip)
+    return usageError("fuzz --round-trip compares STL with its ladder round trip: hnc8 only");
   fuzz::FuzzOptions opts;
+  opts.iec = iec;
   opts.seed = a.seed;
   opts.programs = a.programs;
   opts.ticks = a.ticks;
