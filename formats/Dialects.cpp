@@ -6,6 +6,7 @@
 #include "frontends/iec/FrontEnd.h"
 #include "frontends/iec/Objects.h"
 #include "profiles/Profiles.h"
+#include "profiles/iec/IecProfile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -60,6 +61,7 @@ std::optional<CliAddress> parseIecAddress(std::string_view text, std::string &er
   a.index = obj->op.index;
   a.bit = obj->op.kind == Operand::Kind::Bit ? obj->op.bit : int8_t{-1};
   a.text = std::string(text);
+  a.profile = &iec::profile(); // the objects live in lj_state.mem (profiles/iec)
   return a;
 }
 

@@ -3,6 +3,7 @@
 #include "gen/IlGenerator.h"
 
 #include "gen/Rng.h"
+#include "profiles/iec/IecProfile.h"
 
 #include <string>
 #include <vector>
@@ -232,20 +233,22 @@ GenProgram generateIl(uint64_t seed, int32_t statements) { return IlGen(seed, st
 Stimulus generateIlStimulus(uint64_t seed, uint32_t ticks) {
   Rng rng(seed);
   Stimulus st;
+  const TargetProfile *tp = &iec::profile();
   for (int k = 0; k < 4; ++k)
-    st.beforeInit.push_back({Area::NcStatus, k, -1, static_cast<int32_t>(rng.range(-40, 40))});
+    st.beforeInit.push_back(
+        {Area::ConstWords, k, -1, static_cast<int32_t>(rng.range(-40, 40)), tp});
   for (int b = 0; b < 8; ++b)
-    st.beforeInit.push_back({Area::Input, b, -1, static_cast<int32_t>(rng.below(256))});
+    st.beforeInit.push_back({Area::Input, b, -1, static_cast<int32_t>(rng.below(256)), tp});
   for (uint32_t t = 0; t < ticks; ++t) {
     std::vector<HostWrite> w;
     const int n = static_cast<int>(rng.below(4));
     for (int i = 0; i < n; ++i) {
       if (rng.chance(10))
-        w.push_back({Area::NcStatus, static_cast<int32_t>(rng.below(4)), -1,
-                     static_cast<int32_t>(rng.range(-40, 40))});
+        w.push_back({Area::ConstWords, static_cast<int32_t>(rng.below(4)), -1,
+                     static_cast<int32_t>(rng.range(-40, 40)), tp});
       else
         w.push_back({Area::Input, rng.chance(70) ? 0 : static_cast<int32_t>(rng.below(8)),
-                     static_cast<int8_t>(rng.below(8)), static_cast<int32_t>(rng.below(2))});
+                     static_cast<int8_t>(rng.below(8)), static_cast<int32_t>(rng.below(2)), tp});
     }
     st.writes.push_back(std::move(w));
     st.nowMs.push_back(t + 1);

@@ -23,14 +23,18 @@ void emitEdgeImageEntry(ModuleContext &mc, llvm::Function *entry, llvm::Function
     StateLoc src;
     int bit = o.bit;
     if (o.area == Area::Timer || o.area == Area::Counter) {
-      const int slot = lj_tc_slot(o.index);
+      const int slot = mc.prog.profile->tcSlot(o.area, o.index);
       src = o.area == Area::Timer ? mc.layout.timer(slot, TimerField::Out)
                                   : mc.layout.counter(slot, CounterField::Out);
       bit = 0;
     } else {
-      src = mc.layout.area(o.area, o.index);
+      const TargetProfile &tp = *mc.prog.profile;
+      const uint32_t off = tp.elementOffset(o.area, o.index);
+      src = StateLayout::inMem(off) ? mc.layout.memBytes(off, tp.area(o.area).bytes)
+                                    : mc.layout.area(o.area, o.index);
     }
-    llvm::Value *v = b.CreateLoad(src.type, mc.layout.address(b, state, src));
+    llvm::LoadInst *v = b.CreateLoad(src.type, mc.layout.address(b, state, src));
+    if (src.align) v->setAlignment(llvm::Align(src.align));
     llvm::Value *on = b.CreateICmpNE(
         b.CreateAnd(v, llvm::ConstantInt::get(src.type, llvm::APInt::getOneBitSet(
                                                             src.type->getIntegerBitWidth(), bit))),

@@ -22,17 +22,17 @@ void Emitter::emit(Op op, SourceLoc loc, std::initializer_list<Operand> operands
 Operand Emitter::scratch(SourceLoc loc) {
   Operand o;
   o.kind = Operand::Kind::Bit;
-  o.area = Area::Relay;
+  o.area = Area::ExtraRelay;
   if (scratchUsed_ >= kScratchBytes * 8) {
     if (scratchUsed_ == kScratchBytes * 8)
       diags_.error(loc, "too many N / XOR / OPEN / SHORT instructions (more than " +
                             std::to_string(kScratchBytes * 8) + " scratch bits)");
     ++scratchUsed_;
-    o.index = kScratchFirstByte;
+    o.index = 0;
     o.bit = 0;
     return o;
   }
-  o.index = kScratchFirstByte + scratchUsed_ / 8;
+  o.index = scratchUsed_ / 8;
   o.bit = static_cast<int8_t>(scratchUsed_ % 8);
   ++scratchUsed_;
   o.loc = loc;

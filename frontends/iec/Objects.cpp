@@ -141,9 +141,9 @@ std::optional<Object> parseObject(std::string_view text, std::string &error) {
     if (*n >= limit) return fail("bit number out of range " + range("", limit - 1));
     obj.number = static_cast<int32_t>(*n);
     if (kind->cls == ObjClass::SystemBit)
-      obj.op = bitOp(Area::DWord, obj.number / 32, obj.number % 32);
+      obj.op = bitOp(Area::SystemBits, obj.number / 8, obj.number % 8);
     else if (obj.number < kRetainedBits)
-      obj.op = bitOp(Area::Retained, obj.number / 32, obj.number % 32);
+      obj.op = bitOp(Area::KeepRelay, obj.number / 8, obj.number % 8);
     else
       obj.op =
           bitOp(Area::Relay, (obj.number - kRetainedBits) / 8, (obj.number - kRetainedBits) % 8);
@@ -159,10 +159,10 @@ std::optional<Object> parseObject(std::string_view text, std::string &error) {
     break;
   }
   // Words: %MWi, %KWi, %SWi, optionally :Xk.
-  const Area area = kind->cls == ObjClass::ConstWord ? Area::NcStatus
-                    : sysWord                        ? Area::NcControl
+  const Area area = kind->cls == ObjClass::ConstWord ? Area::ConstWords
+                    : sysWord                        ? Area::SystemWords
                                                      : Area::Word;
-  const int32_t limit = area == Area::NcStatus ? kConstWords : sysWord ? kSystemWords : kWords;
+  const int32_t limit = area == Area::ConstWords ? kConstWords : sysWord ? kSystemWords : kWords;
   if (*n >= limit) return fail("word number out of range " + range("", limit - 1));
   obj.number = static_cast<int32_t>(*n);
   if (s.empty()) {
@@ -191,9 +191,9 @@ std::string formatOperand(const Operand &op) {
       return "%L" + std::to_string(op.index);
     case Area::Subroutine:
       return "SR" + std::to_string(op.index);
-    case Area::NcStatus:
+    case Area::ConstWords:
       return "%KW" + std::to_string(op.index);
-    case Area::NcControl:
+    case Area::SystemWords:
       return "%SW" + std::to_string(op.index);
     default:
       return "%MW" + std::to_string(op.index);
@@ -209,18 +209,17 @@ std::string formatOperand(const Operand &op) {
     return std::string(op.area == Area::Input ? "%I" : "%Q") +
            std::to_string(point / kPointsPerUnit) + "." + std::to_string(point % kPointsPerUnit);
   }
-  case Area::Retained:
-    return "%M" + std::to_string(op.index * 32 + op.bit);
-  case Area::Relay: {
-    const int32_t n = op.index * 8 + op.bit;
-    if (op.index >= kScratchFirstByte) return "%~" + std::to_string(n - kScratchFirstByte * 8);
-    return "%M" + std::to_string(kRetainedBits + n);
-  }
-  case Area::DWord:
-    return "%S" + std::to_string(op.index * 32 + op.bit);
-  case Area::NcStatus:
+  case Area::KeepRelay:
+    return "%M" + std::to_string(op.index * 8 + op.bit);
+  case Area::Relay:
+    return "%M" + std::to_string(kRetainedBits + op.index * 8 + op.bit);
+  case Area::ExtraRelay:
+    return "%~" + std::to_string(op.index * 8 + op.bit);
+  case Area::SystemBits:
+    return "%S" + std::to_string(op.index * 8 + op.bit);
+  case Area::ConstWords:
     return "%KW" + std::to_string(op.index) + ":X" + k;
-  case Area::NcControl:
+  case Area::SystemWords:
     return "%SW" + std::to_string(op.index) + ":X" + k;
   case Area::Word:
     return "%MW" + std::to_string(op.index) + ":X" + k;

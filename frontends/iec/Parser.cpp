@@ -642,7 +642,7 @@ private:
     if (!obj) return;
     const bool ok = obj->cls == ObjClass::OutputBit || obj->cls == ObjClass::MemoryBit ||
                     obj->cls == ObjClass::SystemBit ||
-                    (obj->cls == ObjClass::WordBit && obj->op.area != Area::NcStatus);
+                    (obj->cls == ObjClass::WordBit && obj->op.area != Area::ConstWords);
     if (!ok) {
       error(opLoc, mnem + " needs a writable bit (%Q, %M, %S, %MWi:Xk), found '" +
                        std::string(text) + "'" +

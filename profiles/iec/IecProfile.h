@@ -12,8 +12,8 @@ namespace lj::iec {
 /// The IEC IL (Neza) profile.
 const TargetProfile &profile();
 
-/// Where each Neza object lives (interim layout on the lj_image areas, docs/iec-il.md
-/// "Process image"). Counts are the seed's where it gives them (modicon-neza.md 1.1, 1.2).
+/// How many of each Neza object there are (docs/iec-il.md "Process image": all of them live in
+/// lj_state.mem, abi.h v3). Counts are the seed's where it gives them (modicon-neza.md 1.1, 1.2).
 constexpr int32_t kUnits = 4;           ///< %Ii.j / %Qi.j: i = 0 base PLC, 1..3 expansion units
 constexpr int32_t kPointsPerUnit = 16;  ///< j = 0..15 (assumption: 2 bytes per unit)
 constexpr int32_t kMemoryBits = 128;    ///< %M0..%M127 (L542)
@@ -29,9 +29,8 @@ constexpr int32_t kParenDepth = 8;      ///< AND( / OR( nesting (L925)
 constexpr int32_t kMpsDepth = 8;        ///< MPS stack (L979)
 /// Label the front end ends the scan at (END, ENDC, ENDCN): one past the user's labels.
 constexpr int32_t kEndLabel = kLabels;
-/// Relay bytes after %M64..%M127: scratch bits of the N / XOR / OPEN / SHORT expansions, one
-/// bit per use, never named by a program (docs/iec-il.md "Instructions").
-constexpr int32_t kScratchFirstByte = (kMemoryBits - kRetainedBits) / 8;
+/// The ExtraRelay bytes: scratch bits of the N / XOR / OPEN / SHORT expansions, one bit per use,
+/// never named by a program (docs/iec-il.md "The accumulator on the IR").
 constexpr int32_t kScratchBytes = 300;
 
 } // namespace lj::iec
