@@ -51,7 +51,7 @@ const Case kCases[] = {
     {"PointOutOfRange", "LD %I0.16\nST %Q0.0\n", "point 16 is out of range (0..15)"},
     {"MemoryOutOfRange", "LD %M128\nST %Q0.0\n", "bit number out of range (0..127)"},
     {"UnknownInstruction", "LDX %I0.0\n", "1:1: error: unknown instruction 'LDX'"},
-    {"MissingLabel", "LD %I0.0\nJMPC %L3\n", "error: missing label L3"},
+    {"MissingLabel", "LD %I0.0\nJMPC %L3\n", "2:6: error: missing label %L3"},
     {"FunctionBlock", "BLK %C8\nLDF %I1.1\nR\nEND_BLK\n",
      "1:1: error: BLK: function blocks (%TMi timers, %Ci counters, BLK ... END_BLK) are not"},
     {"TimerObject", "LD %TM0.Q\nST %Q0.0\n",
@@ -60,6 +60,7 @@ const Case kCases[] = {
     {"CodeAfterEnd", "LD %I0.0\nST %Q0.0\nEND\nLD %I0.1\nST %Q0.1\n",
      "4:1: error: instruction after END outside a subroutine"},
     {"RetOutsideSub", "LD %I0.0\nRETC\n", "2:1: error: RETC outside a subroutine"},
+    {"DuplicateLabel", "%L2 :\nLD %I0.0\nST %Q0.0\n%L2 :\n", "4:1: error: duplicate label %L2"},
     {"UnclosedComment", "LD %I0.0 (* open\nST %Q0.0\n", "1:10: error: comment '(*' is not closed"},
 };
 

@@ -45,7 +45,9 @@ protected:
     std::optional<VerifiedProgram> p = compileIlOrFail(text);
     if (!p) return nullptr;
     std::unique_ptr<Machine> m = Machine::create(*p, GetParam());
-    if (m) EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
+    if (m) {
+      EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
+    }
     return m;
   }
   static void set(Machine &m, std::string_view addr, int64_t v) {
