@@ -4,11 +4,15 @@
 
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/iec/FrontEnd.h"
+#include "frontends/iec/Objects.h"
 #include "profiles/Profiles.h"
+#include "profiles/iec/IecProfile.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 
 namespace lj::io {
@@ -37,7 +41,72 @@ constexpr const char *kFanucExtensions[] = {".pmc"};
 const Dialect kFanuc{"fanuc",      kFanucExtensions, profileNamed("fanuc"), fanuc::compilePmc,
                      fanucAddress, fanucAssignment,  formatProfileAddress};
 
-const Dialect *const kDialects[] = {&kHnc8, &kFanuc};
+// IEC IL (Neza): `%I0.1`-style objects (frontends/iec/Objects.h) on the command line, in
+// stimulus files, --watch and --dump (docs/iec-il.md "Command line").
+std::optional<VerifiedProgram> compileIec(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  if (symbols && !symbols->empty()) {
+    diags.error({}, "an IEC IL program takes no symbol table");
+    return std::nullopt;
+  }
+  return iec::compileIl(text, std::move(file), opts, diags);
+}
+
+std::optional<CliAddress> parseIecAddress(std::string_view text, std::string &error) {
+  std::string why;
+  std::optional<iec::Object> obj = iec::parseObject(text, why);
+  if (!obj) {
+    error = "bad address " + why;
+    return std::nullopt;
+  }
+  if (obj->op.kind != Operand::Kind::Bit && obj->op.kind != Operand::Kind::Reg) {
+    error = "bad address '" + std::string(text.substr(0, 40)) + "': not an object";
+    return std::nullopt;
+  }
+  if (obj->op.area == Area::Label || obj->op.area == Area::Subroutine) {
+    error = "bad address '" + std::string(text.substr(0, 40)) +
+            "': labels and subroutines hold no value";
+    return std::nullopt;
+  }
+  CliAddress a;
+  a.area = obj->op.area;
+  a.index = obj->op.index;
+  a.bit = obj->op.kind == Operand::Kind::Bit ? obj->op.bit : int8_t{-1};
+  a.text = std::string(text);
+  a.profile = &iec::profile(); // the objects live in lj_state.mem (profiles/iec)
+  return a;
+}
+
+std::optional<Assignment> parseIecAssignment(std::string_view item, std::string &error) {
+  size_t eq = item.find('=');
+  if (eq == std::string_view::npos) {
+    error = "bad assignment '" + std::string(item.substr(0, 40)) + "': expected ADDR=VALUE";
+    return std::nullopt;
+  }
+  std::optional<CliAddress> addr = parseIecAddress(item.substr(0, eq), error);
+  if (!addr) return std::nullopt;
+  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
+  if (!value) return std::nullopt;
+  if (!checkWritable(*addr, *value, error)) return std::nullopt;
+  return Assignment{std::move(*addr), *value};
+}
+
+std::string formatIecAddress(const CliAddress &addr) {
+  Operand o;
+  o.kind = addr.isBit() ? Operand::Kind::Bit : Operand::Kind::Reg;
+  o.area = addr.area;
+  o.index = addr.index;
+  o.bit = addr.bit;
+  return iec::formatOperand(o);
+}
+
+constexpr const char *kIecExtensions[] = {".il"};
+
+const Dialect kIec{"iec",           kIecExtensions,     profileNamed("iec"), compileIec,
+                   parseIecAddress, parseIecAssignment, formatIecAddress};
+
+const Dialect *const kDialects[] = {&kHnc8, &kFanuc, &kIec};
 
 /// Dialects ladderjit plans (docs/architecture.md "Adding a dialect") and the extensions that
 /// name them; a build without one says so instead of reading the file as HNC-8.
@@ -45,7 +114,8 @@ struct Planned {
   const char *name;
   const char *extension;
 };
-constexpr Planned kPlanned[] = {{"iec", ".il"}};
+// None at present: hnc8, fanuc and iec are all built.
+constexpr std::array<Planned, 0> kPlanned{};
 
 std::string quoted(std::string_view s) {
   std::string out = "'";

@@ -40,9 +40,9 @@ const Dialect *dialectNamed(std::string_view name);
 /// The default dialect (HNC-8): plc.dit containers and files with an unknown extension.
 const Dialect &defaultDialect();
 
-/// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'fanuc' is not
-/// available in this build (known: hnc8)" for a dialect ladderjit plans but this build lacks
-/// (fanuc, iec), "unknown dialect 'x' (known: hnc8)" otherwise.
+/// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'NAME' is not
+/// available in this build (known: hnc8, fanuc, iec)" for a dialect ladderjit plans but this
+/// build lacks (none today: kPlanned is empty), "unknown dialect 'x' (known: ...)" otherwise.
 const Dialect *dialectForOption(std::string_view name, std::string &error);
 
 /// The dialect PROGRAM `path` is written in, by its extension: `.stl` and `.dit` hnc8, `.pmc`

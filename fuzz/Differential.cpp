@@ -4,6 +4,7 @@
 
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "frontends/iec/FrontEnd.h"
 #include "gen/FanucProgram.h"
 #include "hosts/SystemBits.h"
 #include "hosts/TestHost.h"
@@ -173,11 +174,12 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   Outcome r;
   std::string text;
   for (const std::string &l : c.lines) text += l + "\n";
-  Diagnostics diags(c.fanuc ? "fuzz.pmc" : "fuzz.stl");
+  Diagnostics diags(c.fanuc ? "fuzz.pmc" : c.iec ? "fuzz.il" : "fuzz.stl");
   VerifyOptions vo;
   vo.plc2Nvalue = c.plc2Nvalue;
   std::optional<VerifiedProgram> prog =
       c.fanuc ? fanuc::compilePmc(text, "fuzz.pmc", vo, diags, nullptr)
+      : c.iec ? iec::compileIl(text, "fuzz.il", vo, diags)
               : compileFrontEnd(text, "fuzz.stl", vo, diags);
   if (!prog) {
     r.kind = Outcome::Kind::NotVerified;

@@ -49,6 +49,8 @@ struct Case {
   bool trace = false;
   /// The lines are FANUC PMC text (gen/FanucProgram.h) and the stimulus names FANUC areas.
   bool fanuc = false;
+  /// The program's dialect: false HNC-8 STL, true IEC IL (frontends/iec, gen/IlGenerator.h).
+  bool iec = false;
 };
 
 /// The JIT built traced into `trace` (ir/Trace.h), for Case::trace.

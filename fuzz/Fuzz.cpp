@@ -6,6 +6,7 @@
 #include "fuzz/RoundTrip.h"
 #include "gen/FanucProgram.h"
 
+#include "gen/IlGenerator.h"
 #include "gen/Rng.h"
 
 #include <algorithm>
@@ -116,6 +117,12 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
       c.lines = gen::generateFanuc(ro.seed, ro.statements);
       c.plc2Nvalue = static_cast<int32_t>(rng.chance(30) ? 0 : rng.range(1, 40));
       c.stim = gen::generateFanucStimulus(rng.fork(), opts.ticks);
+    } else if (opts.iec) {
+      c.iec = true;
+      gen::GenProgram gp = gen::generateIl(ro.seed, ro.statements);
+      c.lines = std::move(gp.lines);
+      c.plc2Nvalue = gp.plc2Nvalue;
+      c.stim = gen::generateIlStimulus(rng.fork(), opts.ticks);
     } else {
       gen::GenProgram gp = gen::generateRandom(ro);
       c.lines = std::move(gp.lines);

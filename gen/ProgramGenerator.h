@@ -4,6 +4,7 @@
 
 #include "ir/Area.h"
 #include "ir/OpTable.h"
+#include "ir/Profile.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
@@ -76,6 +77,8 @@ struct HostWrite {
   int32_t index = 0;
   int8_t bit = -1;
   int32_t value = 0;
+  /// The target whose layout (area, index) is in (nullptr: HNC-8's lj_image).
+  const TargetProfile *profile = nullptr;
 };
 
 /// What the host does around a run: initial P/B (parameters and the retain store) and X/F

@@ -2,6 +2,8 @@
 // rendering in the CLI stimulus-file format (CLI.md `--stimulus`).
 #include "gen/GenPools.h"
 #include "gen/ProgramGenerator.h"
+
+#include "frontends/iec/Objects.h"
 #include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cstring>
@@ -171,7 +173,14 @@ Stimulus generateStimulus(uint64_t seed, uint32_t ticks) {
 void applyWrites(lj_state &s, const std::vector<HostWrite> &writes) {
   for (const HostWrite &w : writes) {
     int bytes = 0;
-    void *p = elementPtr(s, w.area, w.index, bytes);
+    void *p = nullptr;
+    if (w.profile) { // a profile-laid target (IEC): the element's bytes in lj_state
+      bytes = w.profile->area(w.area).bytes;
+      if (bytes > 0 && w.profile->validIndex(w.area, w.index))
+        p = reinterpret_cast<unsigned char *>(&s) + w.profile->elementOffset(w.area, w.index);
+    } else {
+      p = elementPtr(s, w.area, w.index, bytes);
+    }
     if (!p) continue;
     uint32_t cur = 0;
     std::memcpy(&cur, p, static_cast<size_t>(bytes)); // little-endian host (DIALECT.md 1)
@@ -185,6 +194,14 @@ void applyWrites(lj_state &s, const std::vector<HostWrite> &writes) {
 }
 
 std::string formatAddress(const HostWrite &w) {
+  if (w.profile && std::string_view(w.profile->name) == "iec") {
+    Operand o;
+    o.kind = w.bit >= 0 ? Operand::Kind::Bit : Operand::Kind::Reg;
+    o.area = w.area;
+    o.index = w.index;
+    o.bit = w.bit;
+    return iec::formatOperand(o); // %I0.3, %KW1
+  }
   std::string s(hnc8::profile().area(w.area).name);
   s += std::to_string(w.index);
   if (w.bit >= 0) s += "." + std::to_string(w.bit);

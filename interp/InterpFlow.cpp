@@ -64,10 +64,10 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
       f.push(true);
       break;
     case Op::LoadRise: // the edge memory is updated with the real bit even when forced
-      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), true)));
+      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), true, edgeUpdates)));
       break;
     case Op::LoadFall:
-      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false)));
+      f.push(contact(edgeSample(s, c.slot, readBit(s, c.a), false, edgeUpdates)));
       break;
     case Op::And: { // the contact is evaluated (and traced) whatever ST0 is
       bool v = contact(readBit(s, c.a));
@@ -91,22 +91,22 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
     }
     // Edge combines sample first: they must update m whatever ST0 is (no short-circuit).
     case Op::AndRise: {
-      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true, edgeUpdates));
       f.setTop(f.top() && e);
       break;
     }
     case Op::AndFall: {
-      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false, edgeUpdates));
       f.setTop(f.top() && e);
       break;
     }
     case Op::OrRise: {
-      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true));
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), true, edgeUpdates));
       f.setTop(f.top() || e);
       break;
     }
     case Op::OrFall: {
-      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false));
+      bool e = contact(edgeSample(s, c.slot, readBit(s, c.a), false, edgeUpdates));
       f.setTop(f.top() || e);
       break;
     }

@@ -71,6 +71,10 @@ Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces, i
            (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
     assert(c.op != Op::Call || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));
   }
+  edgeUpdates = p.profile->edgePolicy == EdgePolicy::PerInstance;
+  for (size_t k = 0; k < p.edgeObjects.size(); ++k)
+    if (p.edgeObjects[k].kind == Operand::Kind::Bit)
+      edgeImage.emplace_back(static_cast<int32_t>(k), decode(*prog.profile, p.edgeObjects[k]));
   // Stack capacity per scope: the deepest "depth before" in the scope, plus one because a
   // statement raises the depth by at most one.
   auto need = [&](StmtRange r, int32_t &st, int32_t &ms) {
@@ -121,7 +125,12 @@ Interpreter::~Interpreter() = default;
 
 uint32_t Interpreter::runInit(lj_state *s) { return impl_->runPart(s, impl_->prog.init, 0); }
 
-uint32_t Interpreter::runPlc1(lj_state *s) { return impl_->runPart(s, impl_->prog.plc1, 0); }
+uint32_t Interpreter::runPlc1(lj_state *s) {
+  uint32_t r = impl_->runPart(s, impl_->prog.plc1, 0);
+  // EdgePolicy::PerObject: the previous-scan image, sampled once per scan (ir/Profile.h).
+  for (const auto &[slot, bit] : impl_->edgeImage) s->edge[slot] = readBit(s, bit);
+  return r;
+}
 
 uint32_t Interpreter::runPlc2Slice(lj_state *s, uint32_t slice) {
   const VerifiedProgram &p = impl_->prog;

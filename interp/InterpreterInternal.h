@@ -214,10 +214,11 @@ namespace lj::interp {
 /// How a statement range ended.
 enum class Flow { Done, Return, Watchdog };
 
-/// Edge contact on one instance's memory m (DIALECT.md 3): always updates m.
-inline bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising) {
+/// Edge contact on memory m (DIALECT.md 3): updates m when it is the instance's own
+/// (EdgePolicy::PerInstance); an object's previous-scan image (PerObject) is only read here.
+inline bool edgeSample(lj_state *s, int32_t slot, bool cur, bool rising, bool update) {
   bool m = s->edge[slot] != 0;
-  s->edge[slot] = cur;
+  if (update) s->edge[slot] = cur;
   return rising ? (cur && !m) : (!cur && m);
 }
 
@@ -234,6 +235,10 @@ struct Interpreter::Impl {
   Op unimplemented = Op::Count_;
   // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
   std::vector<std::vector<uint8_t>> stStore, msStore;
+  /// EdgePolicy::PerInstance: edge contacts update their memory.
+  bool edgeUpdates = true;
+  /// EdgePolicy::PerObject: (slot, object bit) sampled at the end of every PLC1 run.
+  std::vector<std::pair<int32_t, interp::Ref>> edgeImage;
 
   /// A traced build (ir/Trace.h): the buffer the statements record into, and where.
   int32_t *trace = nullptr;

@@ -25,7 +25,10 @@ struct NumberRange {
 };
 
 /// Who owns an edge memory: each instruction instance (HNC-8: two LDP X1.0 see the same edge
-/// independently), or the addressed object (IEC IL: two LDR %M5 in one scan share it).
+/// independently; the contact updates its memory on every execution), or the addressed object
+/// (IEC IL: two LDR %M5 in one scan share it). PerObject: one slot per object
+/// (VerifiedProgram::edgeObjects), the previous-scan image, which the engines sample at the end of
+/// every run of the cyclic part; an edge contact compares the object with it and writes nothing.
 enum class EdgePolicy : uint8_t { PerInstance, PerObject };
 
 /// One program part in execution order: its end marker and how it is scheduled.

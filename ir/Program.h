@@ -144,7 +144,12 @@ struct VerifiedProgram {
   std::vector<StmtRange> slices;
   /// ST depth at the start of each slice (entries left by the previous slice are dead).
   std::vector<int32_t> sliceDepth;
-  int32_t edgeSlots = 0;    ///< edge slots used (<= LJ_EDGE_SLOTS)
+  int32_t edgeSlots = 0; ///< edge slots used (<= LJ_EDGE_SLOTS)
+  /// EdgePolicy::PerObject (ir/Profile.h): the object whose previous-scan image edge slot k
+  /// holds (kind None: a slot of its own instruction, not an object's). The engines copy each
+  /// object's bit into its slot at the end of every run of the cyclic part; edge contacts only
+  /// compare with it. Empty under EdgePolicy::PerInstance.
+  std::vector<Operand> edgeObjects;
   int32_t wordSlots = 0;    ///< inst_word entries used (<= LJ_INST_WORDS)
   int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
   int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)

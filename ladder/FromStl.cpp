@@ -320,7 +320,8 @@ Element elementOf(const VerifiedProgram &p, int32_t i) {
   e.op = s.op;
   for (int k = 0; k < s.operandCount; ++k) {
     const Operand &o = s.ops[static_cast<size_t>(k)];
-    e.operands.push_back(formatOperand(o));
+    // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).
+    e.operands.push_back(p.dialect ? p.dialect->formatOperand(o) : formatOperand(o));
     e.symbols.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < p.symbols.size()
                             ? p.symbols[static_cast<size_t>(o.symbol)].name
                             : std::string());
@@ -357,6 +358,7 @@ const char *mnemonic(Op op) { return hnc8::mnemonicOf(op); }
 Networks fromProgram(const VerifiedProgram &prog) {
   Networks nets;
   nets.file = prog.file;
+  if (prog.dialect) nets.dialect = prog.dialect->name; // the JSON reader accepts only hnc8 back
   nets.symbols = prog.symbols;
   auto n = static_cast<int32_t>(prog.stmts.size());
   std::vector<Element> elems;

@@ -54,10 +54,12 @@ void FunctionEmitter::writeInt(const Operand &op, llvm::Value *v, llvm::Value *e
 }
 
 std::pair<llvm::Value *, llvm::Value *> FunctionEmitter::edge(int32_t slot, llvm::Value *cur) {
-  // DIALECT.md 3: rise = cur & !m, fall = !cur & m, then m = cur -- on every execution.
+  // DIALECT.md 3: rise = cur & !m, fall = !cur & m, then m = cur -- on every execution. Under
+  // EdgePolicy::PerObject m is the object's previous-scan image, written only by EdgeImage.cpp.
   StateLoc loc = mc_.layout.edge(slot);
   llvm::Value *m = b_.CreateICmpNE(cache_.load(loc), b_.getInt8(0), "m");
-  cache_.store(loc, b_.CreateZExt(cur, b_.getInt8Ty()));
+  if (tp().edgePolicy == EdgePolicy::PerInstance)
+    cache_.store(loc, b_.CreateZExt(cur, b_.getInt8Ty()));
   return {b_.CreateAnd(cur, notV(m), "rise"), b_.CreateAnd(notV(cur), m, "fall")};
 }
 

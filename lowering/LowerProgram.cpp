@@ -1,5 +1,6 @@
 // Assembles the module of one program: a function per subroutine, the init / PLC1 entries, one
 // function per PLC2 slice behind the lj_plc2 switch, and long bodies cut into chunk functions.
+#include "lowering/EdgeImage.h"
 #include "lowering/FunctionEmitter.h"
 #include "lowering/Lower.h"
 
@@ -276,7 +277,14 @@ lowerModule(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Dat
   }
   if (mine(unit++)) {
     llvm::Function *plc1 = makeFunction(*mod, kPlc1Symbol, FnKind::Entry);
-    if (llvm::Error e = lowerTopBody(mc, plc1, prog.plc1, 0, false, namer)) return e;
+    if (hasEdgeImage(prog)) { // EdgePolicy::PerObject: the body, then the edge image
+      llvm::Function *body = makeFunction(*mod, "lj_plc1.body", FnKind::Entry);
+      body->setLinkage(llvm::GlobalValue::InternalLinkage);
+      if (llvm::Error e = lowerTopBody(mc, body, prog.plc1, 0, false, namer)) return e;
+      emitEdgeImageEntry(mc, plc1, body);
+    } else if (llvm::Error e = lowerTopBody(mc, plc1, prog.plc1, 0, false, namer)) {
+      return e;
+    }
   }
 
   std::vector<StmtRange> slices = prog.slices;

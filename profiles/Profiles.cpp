@@ -3,11 +3,12 @@
 
 #include "profiles/fanuc/FanucProfile.h"
 #include "profiles/hnc8/Hnc8Profile.h"
+#include "profiles/iec/IecProfile.h"
 
 namespace lj {
 
 std::span<const TargetProfile *const> allProfiles() {
-  static const TargetProfile *const kAll[] = {&hnc8::profile(), &fanuc::profile()};
+  static const TargetProfile *const kAll[] = {&hnc8::profile(), &fanuc::profile(), &iec::profile()};
   return kAll;
 }
 

@@ -59,7 +59,7 @@ private:
         int32_t n = s.ops[0].index;
         auto [it, fresh] = labels_.try_emplace(n, i);
         if (!fresh)
-          cx_.error(s.ops[0].loc, "duplicate label L" + std::to_string(n) + " (first on " +
+          cx_.error(s.ops[0].loc, "duplicate label " + label(cx_, n) + " (first on " +
                                       lineText(cx_.stmt(it->second)) + ")");
       }
     }
@@ -75,7 +75,7 @@ private:
     int32_t n = s.ops[0].index;
     auto it = labels_.find(n);
     if (it == labels_.end()) {
-      cx_.error(s.ops[0].loc, "missing label L" + std::to_string(n));
+      cx_.error(s.ops[0].loc, "missing label " + label(cx_, n));
       return;
     }
     int32_t lbl = it->second;

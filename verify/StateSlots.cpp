@@ -8,8 +8,10 @@
 #include "ladderjit/abi.h"
 
 #include <array>
+#include <map>
 #include <span>
 #include <string>
+#include <tuple>
 
 namespace lj::verifier {
 
@@ -76,13 +78,11 @@ std::string spellAll(const Context &cx, std::span<const Op> ops) {
 } // namespace
 
 void assignSlots(Context &cx) {
-  // Edge memory per instruction instance is the one policy the engines implement (HNC-8); a
-  // per-object policy (IEC IL) would key the edge slots by address here.
-  if (cx.tp.edgePolicy != EdgePolicy::PerInstance) {
-    cx.error({},
-             std::string("target ") + cx.tp.name + ": edge memory per object is not implemented");
-    return;
-  }
+  // PerObject (ir/Profile.h EdgePolicy): the edge contacts of one object share its slot.
+  const bool perObject = cx.tp.edgePolicy == EdgePolicy::PerObject;
+  std::map<std::tuple<int, int32_t, int>, int32_t> objectSlot;
+  std::vector<Operand> &objects = cx.prog.edgeObjects;
+  objects.clear();
   SlotUsers timers, counters, pls, plf, alt;
   int32_t edges = 0, words = 0;
   auto n = static_cast<int32_t>(cx.prog.stmts.size());
@@ -93,8 +93,19 @@ void assignSlots(Context &cx) {
     case StateKind::None:
       break;
     case StateKind::Edge:
-      // One edge bit per instruction instance, in statement order.
-      cx.info(i).slot = edges++;
+      if (perObject && isContact(s.op)) {
+        const Operand &o = s.ops[0];
+        auto [it, fresh] = objectSlot.try_emplace(
+            std::tuple<int, int32_t, int>{static_cast<int>(o.area), o.index, o.bit}, edges);
+        cx.info(i).slot = it->second;
+        if (!fresh) break;
+        objects.push_back(o);
+      } else if (perObject) {
+        objects.push_back(Operand{}); // a slot of this instruction alone
+      }
+      // One edge bit per instruction instance (per object: per new object), in statement order.
+      if (!perObject || !isContact(s.op)) cx.info(i).slot = edges;
+      ++edges;
       if (edges == LJ_EDGE_SLOTS + 1)
         cx.error(s.loc, "too many edge instructions (more than " + std::to_string(LJ_EDGE_SLOTS) +
                             " " + spellAll(cx, kEdgeOps) + ")");

@@ -1,6 +1,6 @@
 // The dialect and profile registries (formats/Dialects.h, profiles/Profiles.h): which dialect a
 // PROGRAM is read in (--dialect, else its extension, else HNC-8; a ladder JSON names its own),
-// and the usage errors for a dialect this build does not have (CLI.md, docs/architecture.md).
+// and the usage errors for an unknown dialect (CLI.md, docs/architecture.md).
 #include "formats/Dialects.h"
 #include "formats/ProgramFile.h"
 #include "profiles/Profiles.h"
@@ -15,11 +15,11 @@ namespace lj::io {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
-  ASSERT_EQ(allProfiles().size(), 2u); // hnc8, fanuc
+  ASSERT_EQ(allProfiles().size(), 3u); // hnc8, fanuc, iec
   const TargetProfile *p = profileNamed("hnc8");
   ASSERT_NE(p, nullptr);
   EXPECT_STREQ(p->name, "hnc8");
-  EXPECT_EQ(profileNamed("iec"), nullptr);
+  EXPECT_EQ(profileNamed("siemens"), nullptr);
   EXPECT_EQ(profileNamed(""), nullptr);
   // DIALECT.md 1: X is the input area, D the 32-bit registers; T numbers 0..127 and 300..427.
   EXPECT_EQ(p->areaFromLetter('x'), Area::Input);
@@ -31,14 +31,16 @@ TEST(Profiles, RegistryHoldsHnc8ByName) {
   EXPECT_EQ(p->cncRow(Op::Coil), nullptr);
 }
 
-TEST(Dialects, Hnc8AndFanucAreRegisteredWithTheirProfiles) {
-  ASSERT_EQ(allDialects().size(), 2u);
+TEST(Dialects, Hnc8FanucAndIecAreRegisteredWithTheirProfiles) {
+  ASSERT_EQ(allDialects().size(), 3u);
   EXPECT_EQ(dialectNamed("hnc8"), &defaultDialect());
   EXPECT_EQ(defaultDialect().profile, profileNamed("hnc8"));
   ASSERT_NE(dialectNamed("fanuc"), nullptr);
   EXPECT_EQ(dialectNamed("fanuc")->profile, profileNamed("fanuc"));
+  ASSERT_NE(dialectNamed("iec"), nullptr);
+  EXPECT_EQ(dialectNamed("iec")->profile, profileNamed("iec"));
   EXPECT_EQ(dialectNamed("HNC8"), nullptr); // names are exact
-  EXPECT_EQ(knownDialects(), "hnc8, fanuc");
+  EXPECT_EQ(knownDialects(), "hnc8, fanuc, iec");
 }
 
 TEST(Profiles, FanucAreasAreBytesWithUpperRanges) {
@@ -55,6 +57,16 @@ TEST(Profiles, FanucAreasAreBytesWithUpperRanges) {
   EXPECT_EQ(p->bitWidth(Area::Relay), 8);
 }
 
+TEST(Profiles, IecProfileHasPerObjectEdgesAndNoCncTable) {
+  const TargetProfile *p = profileNamed("iec");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(p->edgePolicy, EdgePolicy::PerObject); // modicon-neza.md 2.1, 12.1
+  EXPECT_EQ(p->maxBranchDepth, 8);                 // MPS depth, L979
+  EXPECT_EQ(p->cncRow(Op::ChannelModeSet), nullptr);
+  EXPECT_TRUE(p->validIndex(Area::Timer, 31)); // %TM0..%TM31 (L1269)
+  EXPECT_FALSE(p->validIndex(Area::Timer, 32));
+}
+
 TEST(Dialects, ExtensionChoosesTheDialect) {
   std::string error;
   EXPECT_EQ(dialectForPath("a/b/prog.stl", error), &defaultDialect());
@@ -66,31 +78,28 @@ TEST(Dialects, ExtensionChoosesTheDialect) {
   EXPECT_TRUE(error.empty()) << error;
   EXPECT_EQ(dialectForPath("spindle.pmc", error), dialectNamed("fanuc"));
   EXPECT_EQ(dialectForPath("SPINDLE.PMC", error), dialectNamed("fanuc"));
-  error.clear();
-  EXPECT_EQ(dialectForPath("x.il", error), nullptr);
-  EXPECT_EQ(error, "x.il: a .il file is dialect 'iec', which is not available in this "
-                   "build (known: hnc8, fanuc; --dialect NAME reads it as another dialect)");
+  EXPECT_EQ(dialectForPath("x.il", error), dialectNamed("iec"));
+  EXPECT_EQ(dialectForPath("X.IL", error), dialectNamed("iec"));
+  EXPECT_TRUE(error.empty()) << error;
 }
 
 TEST(Dialects, OptionNamesTheDialect) {
   std::string error;
   EXPECT_EQ(dialectForOption("hnc8", error), &defaultDialect());
   EXPECT_EQ(dialectForOption("fanuc", error), dialectNamed("fanuc"));
-  EXPECT_EQ(dialectForOption("iec", error), nullptr);
-  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8, fanuc)");
+  EXPECT_EQ(dialectForOption("iec", error), dialectNamed("iec"));
   EXPECT_EQ(dialectForOption("siemens", error), nullptr);
-  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc)");
+  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc, iec)");
 }
 
 TEST(Dialects, LadderJsonNamesItsDialect) {
   std::string error;
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
             &defaultDialect());
-  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error), nullptr);
-  EXPECT_EQ(error,
-            "ladder JSON: dialect 'iec' is not available in this build (known: hnc8, fanuc)");
+  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error),
+            dialectNamed("iec"));
   EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc)");
+  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec)");
 }
 
 std::string tempFile(const std::string &name, const std::string &text) {
@@ -114,8 +123,8 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
   EXPECT_EQ(prog->profile, profileNamed("hnc8")); // the verified program carries its profile
 
   ProgramSource refused;
-  EXPECT_FALSE(readProgramFile(stl, refused, error, "iec"));
-  EXPECT_EQ(error, "dialect 'iec' is not available in this build (known: hnc8, fanuc)");
+  EXPECT_FALSE(readProgramFile(stl, refused, error, "cobol"));
+  EXPECT_EQ(error, "unknown dialect 'cobol' (known: hnc8, fanuc, iec)");
   // --dialect hnc8 reads a .pmc name as HNC-8 STL; without it the .pmc is FANUC text.
   const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
   ProgramSource asFanuc;

@@ -63,18 +63,22 @@ int runEmitLlvm(const EmitArgs &a) {
 }
 
 int runFuzz(const FuzzArgs &a) {
-  // The generator writes HNC-8 STL: another dialect has no generator yet.
+  // The generators write HNC-8 STL (gen/RandomProgram.cpp), FANUC PMC (gen/FanucProgram.cpp) and
+  // IEC IL (gen/IlGenerator.cpp).
   std::string error;
   const io::Dialect *d = io::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
   if (!d) return usageError(error);
   const bool fanuc = std::string_view(d->name) == "fanuc";
-  if (d != &io::defaultDialect() && !fanuc)
-    return usageError(std::string("fuzz generates only hnc8 and fanuc programs, not dialect '") +
-                      d->name + "'");
-  if (fanuc && a.roundTrip)
+  const bool iec = std::string_view(d->name) == "iec";
+  if (d != &io::defaultDialect() && !fanuc && !iec)
+    return usageError(
+        std::string("fuzz generates only hnc8, fanuc and iec programs, not dialect '") + d->name +
+        "'");
+  if ((fanuc || iec) && a.roundTrip)
     return usageError("fuzz --round-trip reads only hnc8 programs (the ladder round trip is STL)");
   fuzz::FuzzOptions opts;
   opts.fanuc = fanuc;
+  opts.iec = iec;
   opts.seed = a.seed;
   opts.programs = a.programs;
   opts.ticks = a.ticks;

@@ -43,7 +43,7 @@ CLI::Option *lastWins(CLI::Option *o) {
 const char *const kProgramHelp = "STL file, plc.dit container or ladder JSON (.json)";
 const char *const kDialectHelp = "dialect of PROGRAM: hnc8 | fanuc | iec (default: by extension, "
                                  ".stl/.dit hnc8, .pmc fanuc, .il iec, .json as it names; "
-                                 "other names hnc8); this build has hnc8 and fanuc";
+                                 "other names hnc8); this build has hnc8, fanuc and iec";
 
 int mainImpl(int argc, char **argv) {
   CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "

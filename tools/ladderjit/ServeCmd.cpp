@@ -246,8 +246,12 @@ int runServe(const ServeArgs &a) {
     if (!ps) return usageError(error);
     powerUp = std::move(*ps);
   }
+  // --set addresses in the program's dialect (CLI.md): --dialect, else the extension.
+  const io::Dialect *setDialect = a.dialect.empty() ? io::dialectForPath(a.program, error)
+                                                    : io::dialectForOption(a.dialect, error);
+  if (!setDialect) return usageError(error);
   for (const std::string &item : a.sets) {
-    std::optional<io::Assignment> as = io::parseAssignment(item, error);
+    std::optional<io::Assignment> as = setDialect->parseAssignment(item, error);
     if (!as || !io::checkWritable(as->addr, as->value, error)) return usageError("--set: " + error);
     powerUp.push_back(*as);
   }
