@@ -21,7 +21,9 @@ protected:
       return nullptr;
     }
     std::unique_ptr<Machine> m = Machine::create(*p, GetParam());
-    if (m) EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
+    if (m) {
+      EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
+    }
     return m;
   }
   static io::CliAddress addr(std::string_view a) {
