@@ -201,9 +201,9 @@ std::string programDigest(const VerifiedProgram &p) {
   return sha256Hex(s);
 }
 
-std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in) {
-  std::string s;
-  putStr(s, "ladderjit-object-cache 1");
+/// What every cache key starts with: its kind, the build and the target the code is for.
+static void putTargetIdentity(std::string &s, std::string_view kind, const CacheKeyInputs &in) {
+  putStr(s, kind);
   putStr(s, LADDERJIT_VERSION);
   putStr(s, buildIdentity());
   putStr(s, LLVM_VERSION_STRING);
@@ -212,6 +212,11 @@ std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in
   putStr(s, in.features);
   put(s, in.tier);
   put(s, in.chunkStatements);
+}
+
+std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in) {
+  std::string s;
+  putTargetIdentity(s, "ladderjit-object-cache 1", in);
   put(s, in.partitions);
   // Forces by statement position (ids are not in the digest): the code a force makes.
   const std::vector<int8_t> forced = forceTable(prog, in.forces);
@@ -224,15 +229,7 @@ std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in
 std::string leafCacheKey(const CacheKeyInputs &in, std::string_view profile,
                          std::string_view leafBytes) {
   std::string s;
-  putStr(s, "ladderjit-leaf-cache 1");
-  putStr(s, LADDERJIT_VERSION);
-  putStr(s, buildIdentity());
-  putStr(s, LLVM_VERSION_STRING);
-  putStr(s, in.triple);
-  putStr(s, in.cpu);
-  putStr(s, in.features);
-  put(s, in.tier);
-  put(s, in.chunkStatements);
+  putTargetIdentity(s, "ladderjit-leaf-cache 1", in);
   putStr(s, profile);
   putStr(s, leafBytes);
   return sha256Hex(s);
