@@ -42,7 +42,7 @@ constexpr Profile kProfiles[] = {
 
 RandomGen::RandomGen(const RandomOptions &o) : o_(o), rng_(o.seed) {
   for (const InstrInfo &in : instrTable())
-    if (!isPlanned(in)) generic_[static_cast<int>(in.stack)].push_back(&in);
+    if (hnc8::spells(in.op) && !isPlanned(in)) generic_[static_cast<int>(in.stack)].push_back(&in);
   for (const InstrInfo *in : generic_[static_cast<int>(StackRule::Block)])
     if (in->inputs > 1) multi_.push_back(in);
 }
@@ -108,7 +108,7 @@ void RandomGen::emitPush() {
 
 void RandomGen::emitGeneric(const InstrInfo &in) {
   std::string s = hnc8::mnemonicOf(in.op);
-  if (in.op == Op::Coil && rng_.chance(5)) s = hnc8::mnemonicRow(in.op).alias; // DIALECT.md 2
+  if (in.op == Op::Coil && rng_.chance(5)) s = hnc8::mnemonicRow(in.op)->alias; // DIALECT.md 2
   if (!specialOperands(in, s))
     for (int i = 0; i < in.operandCount; ++i) s += " " + operand(in, i);
   emit(std::move(s));

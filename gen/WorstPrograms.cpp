@@ -91,7 +91,7 @@ bool flowShape(Op op, int32_t n, std::vector<std::string> &l) {
 std::vector<std::string> worstCaseNames() {
   std::vector<std::string> names;
   for (const InstrInfo &in : instrTable())
-    if (!unrepeatable(in.op)) names.push_back(hnc8::mnemonicOf(in.op));
+    if (hnc8::spells(in.op) && !unrepeatable(in.op)) names.push_back(hnc8::mnemonicOf(in.op));
   return names;
 }
 

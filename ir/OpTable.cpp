@@ -1,6 +1,7 @@
 // The rows of the semantic instruction table, one per operation, from hnc8-core.md and
-// hnc8-functions-1/-2.md (summary tables). Adding an instruction = one row here + its spelling in
-// each front end's mnemonic table + its two semantics (interpreter, lowering) + tests.
+// hnc8-functions-1/-2.md (summary tables), then the dialect-only rows (ir/OpTable.h). Adding an
+// instruction = one row here + its spelling in the front ends that have it + its two semantics
+// (interpreter, lowering) + tests.
 #include "ir/OpTable.h"
 
 namespace lj {

@@ -1,7 +1,15 @@
 // The semantic instruction set as a table (STYLE.md 7): what each operation does to the stacks,
 // its operands and state, read by the verifier, the interpreter, the lowering, the generator and
 // the front ends. No dialect spelling here: a front end maps its mnemonics onto these rows
-// (frontends/hnc8/Mnemonics.cpp for HNC-8).
+// (frontends/hnc8/Mnemonics.cpp for HNC-8) and spells them through its DialectText (ir/Program.h).
+//
+// Dialect-only rows: a row is spelled by at least one dialect, not necessarily HNC-8
+// (tests/catalogue checks "every row is spelled by some front end; the HNC-8 ones are in the
+// HNC-8 manual"). To add an operation only FANUC or IEC has: append the enumerator and its row
+// (InstrInfo::name is the neutral name every dump and diagnostic falls back to), return its
+// mnemonic from that front end's DialectText::spell, and leave the HNC-8 mnemonic table, its
+// docs and its generator alone (they cover only what hnc8::spells()). A dialect's spelling of any
+// op: spelling(&dialect, op) (never null); whether it has one: spells(dialect, op).
 #pragma once
 
 #include "ir/Area.h"
@@ -11,8 +19,8 @@
 
 namespace lj {
 
-/// Every operation the engines run, named by what it does (the HNC-8 spelling of each is in
-/// frontends/hnc8/Mnemonics.cpp).
+/// Every operation the engines run, named by what it does (the HNC-8 spelling of each HNC-8 op is
+/// in frontends/hnc8/Mnemonics.cpp; dialect-only ops are appended in blocks after ResetClear).
 enum class Op : uint8_t {
   // basic (hnc8-core.md 4.2)
   Load,
@@ -243,7 +251,8 @@ inline bool inValueSet(const OperandSpec &spec, int64_t v) {
 /// One row of the instruction table.
 struct InstrInfo {
   Op op;
-  const char *name; ///< the semantic name (the enumerator), for dumps and messages
+  const char *name; ///< the neutral name (the enumerator), for dumps and messages of a dialect
+                    ///< without a spelling of the op
   Family family;    ///< which part of the engines implements it
   StackRule stack;
   InputRule input;

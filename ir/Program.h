@@ -67,13 +67,20 @@ struct Comment {
 /// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
 struct DialectText {
   const char *name;                              ///< "hnc8"
-  const char *(*spell)(Op);                      ///< the mnemonic of an operation
+  /// The mnemonic of an operation, or nullptr when the dialect does not spell it (ir/OpTable.h
+  /// "dialect-only rows"); callers go through spelling(), which never returns null.
+  const char *(*spell)(Op);
   std::string (*formatOperand)(const Operand &); ///< an operand as source text
 };
 
-/// The mnemonic of `op` in `d`, or its semantic name without a dialect.
+/// Whether dialect `d` spells `op`.
+inline bool spells(const DialectText &d, Op op) { return d.spell(op) != nullptr; }
+
+/// The mnemonic of `op` in `d`, or its neutral name (InstrInfo::name) without a dialect or
+/// when `d` has no spelling for it.
 inline const char *spelling(const DialectText *d, Op op) {
-  return d ? d->spell(op) : instrInfo(op).name;
+  const char *s = d ? d->spell(op) : nullptr;
+  return s ? s : instrInfo(op).name;
 }
 
 /// A line the parser dropped although its mnemonic was known (bad operands or count). The

@@ -526,7 +526,7 @@ const char *spell(Op op) {
   case Op::FallPulse:
     return "DIFD";
   default:
-    return instrInfo(op).name;
+    return nullptr; // not spelled in this dialect: spelling() prints the neutral name
   }
 }
 

@@ -18,10 +18,10 @@ struct InstrDoc {
   const char *effect;    ///< what the example does, with concrete values
 };
 
-/// The documentation of `op`.
-const InstrDoc &instrDoc(Op op);
+/// The documentation of `op`, or nullptr when HNC-8 does not spell it.
+const InstrDoc *instrDoc(Op op);
 
-/// All entries, in Op order (one per table row).
+/// All entries, in Op order (one per operation HNC-8 spells).
 std::span<const InstrDoc> instrDocs();
 
 /// The whole docs/instructions.md text (deterministic).

@@ -160,20 +160,36 @@ constexpr MnemonicRow kRows[] = {
     {Op::ResetClear, "RSTCLR", nullptr},
 };
 
-static_assert(sizeof(kRows) / sizeof(kRows[0]) == kOpCount, "one spelling per Op");
+constexpr int kRowCount = static_cast<int>(sizeof(kRows) / sizeof(kRows[0]));
 
 constexpr bool rowsInOrder() {
-  for (int i = 0; i < kOpCount; ++i)
-    if (static_cast<int>(kRows[i].op) != i) return false;
+  for (int i = 1; i < kRowCount; ++i)
+    if (static_cast<int>(kRows[i - 1].op) >= static_cast<int>(kRows[i].op)) return false;
   return true;
 }
-static_assert(rowsInOrder(), "rows are in Op order");
+static_assert(rowsInOrder(), "rows are in Op order, one per spelled operation");
+
+/// Row index of each operation, -1 where HNC-8 has no spelling.
+struct RowIndex {
+  int16_t at[kOpCount];
+};
+constexpr RowIndex buildRowIndex() {
+  RowIndex x{};
+  for (int i = 0; i < kOpCount; ++i) x.at[i] = -1;
+  for (int i = 0; i < kRowCount; ++i) x.at[static_cast<int>(kRows[i].op)] = static_cast<int16_t>(i);
+  return x;
+}
+constexpr RowIndex kRowIndex = buildRowIndex();
 
 } // namespace
 
-std::span<const MnemonicRow> mnemonicTable() { return {kRows, static_cast<size_t>(kOpCount)}; }
+std::span<const MnemonicRow> mnemonicTable() { return {kRows, static_cast<size_t>(kRowCount)}; }
 
-const MnemonicRow &mnemonicRow(Op op) { return kRows[static_cast<int>(op)]; }
+const MnemonicRow *mnemonicRow(Op op) {
+  auto i = static_cast<int>(op);
+  if (i < 0 || i >= kOpCount || kRowIndex.at[i] < 0) return nullptr;
+  return &kRows[kRowIndex.at[i]];
+}
 
 namespace {
 
@@ -206,7 +222,7 @@ bool lookupMnemonic(std::string_view m, Op &out) {
 }
 
 const DialectText &dialectText() {
-  static constexpr DialectText kText{"hnc8", &mnemonicOf, &formatOperand};
+  static constexpr DialectText kText{"hnc8", &spellingOf, &formatOperand};
   return kText;
 }
 

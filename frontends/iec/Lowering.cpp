@@ -147,7 +147,7 @@ const char *spell(Op op) {
   case Op::CompareEq:
     return "=";
   default:
-    return instrInfo(op).name;
+    return nullptr; // not spelled in this dialect: spelling() prints the neutral name
   }
 }
 

@@ -93,7 +93,9 @@ TEST(RandomGenerator, ABatchCoversEveryRowOfTheTable) {
     for (const Stmt &s : pp.stmts) seen.insert(s.op);
   }
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
+    if (hnc8::spells(in.op)) { // the HNC-8 generator: rows HNC-8 spells
+      EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
+    }
 }
 
 TEST(RandomGenerator, LongRangesReachTheLoweringLoops) {

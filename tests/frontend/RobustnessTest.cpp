@@ -82,14 +82,14 @@ TEST(Robustness, RandomTokenPrograms) {
   const char *operands[] = {"X1.0", "Y0.1", "R3.7", "D5", "D6", "L1",   "L2",   "S1",
                             "S2",   "S3",   "5",    "0",  "-1", "T5.0", "C1.0", "W2",
                             "0x10", "300",  "2",    "1",  "P3", "G7.15"};
-  auto table = instrTable();
+  auto table = hnc8::mnemonicTable();
   for (int iter = 0; iter < 3000; ++iter) {
     std::string text;
     int lines = static_cast<int>(rng() % 40);
     for (int l = 0; l < lines; ++l) {
-      const InstrInfo &row = table[rng() % table.size()];
-      text += hnc8::mnemonicOf(row.op);
-      int ops = row.operandCount + (rng() % 10 == 0 ? 1 : 0);
+      const hnc8::MnemonicRow &row = table[rng() % table.size()];
+      text += row.spelling;
+      int ops = instrInfo(row.op).operandCount + (rng() % 10 == 0 ? 1 : 0);
       for (int k = 0; k < ops; ++k) {
         text += ' ';
         text += operands[rng() % std::size(operands)];

@@ -77,7 +77,9 @@ TEST(StressJitPrograms, CoverEveryRowAndStructure) {
   for (uint64_t seed = kFirstSeed; seed <= kLastSeed; ++seed) scan(seed, kStressStatements);
   for (uint64_t seed = 101; seed <= 112; ++seed) scan(seed, 1500);
   for (const InstrInfo &in : instrTable())
-    EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
+    if (hnc8::spells(in.op)) { // the HNC-8 generator: rows HNC-8 spells
+      EXPECT_TRUE(seen.count(in.op)) << hnc8::mnemonicOf(in.op) << " never generated";
+    }
   EXPECT_GE(maxDepth, 8);
   EXPECT_GE(maxMs, 3);
   EXPECT_GE(maxLoopNest, 2);
