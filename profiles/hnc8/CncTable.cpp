@@ -203,7 +203,8 @@ constexpr bool rowsComplete() {
     if (static_cast<int>(r.op) != static_cast<int>(Op::ChannelModeSet) + n) return false;
     ++n;
   }
-  return n == static_cast<int>(Op::Count_) - static_cast<int>(Op::ChannelModeSet);
+  // ResetClear is the last Cnc op; dialect-only ops follow it (ir/OpTable.h).
+  return n == static_cast<int>(Op::ResetClear) - static_cast<int>(Op::ChannelModeSet) + 1;
 }
 static_assert(rowsComplete(), "one CNC row per family-Cnc Op, in Op order");
 

@@ -22,7 +22,7 @@ constexpr int32_t kModeCode[7] = {1, 7, 2, 3, 5, 4, 6};
 
 /// One row per family-Cnc Op, in Op order (TargetProfile::cncRows of the HNC-8 profile).
 constexpr size_t kRowCount =
-    static_cast<size_t>(Op::Count_) - static_cast<size_t>(Op::ChannelModeSet);
+    static_cast<size_t>(Op::ResetClear) - static_cast<size_t>(Op::ChannelModeSet) + 1;
 extern const CncRow kRows[kRowCount];
 
 /// The row of `op`, or nullptr when `op` is not driven by this table.
