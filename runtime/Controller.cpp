@@ -2,6 +2,8 @@
 // "ok" and either the result or "error" (docs/serve.md "Control").
 #include "runtime/Controller.h"
 
+#include "formats/Dialects.h"
+
 #include "formats/InputFiles.h"
 #include "formats/PlcDit.h"
 
@@ -131,14 +133,23 @@ std::string formatAssignment(const io::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
-// A write or lock item: parsed and checked for writability (formats/Address.h).
-std::optional<io::Assignment> writable(const std::string &item, std::string &err) {
-  std::optional<io::Assignment> a = io::parseAssignment(item, err);
+// A write or lock item in the running program's dialect: parsed and checked for writability
+// (formats/Address.h, formats/Dialects.h).
+std::optional<io::Assignment> writable(const io::Dialect &d, const std::string &item,
+                                       std::string &err) {
+  std::optional<io::Assignment> a = d.parseAssignment(item, err);
   if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;
   return a;
 }
 
 } // namespace
+
+const io::Dialect &Controller::dialect() const {
+  std::shared_ptr<ProgramVersion> cur = exec_.current();
+  const io::Dialect *d =
+      cur && cur->prog && cur->prog->profile ? io::dialectNamed(cur->prog->profile->name) : nullptr;
+  return d ? *d : io::defaultDialect();
+}
 
 Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,
                        Log log, std::string so, ControllerOptions opts)
@@ -365,7 +376,7 @@ json Controller::doRead(const json &req) {
   if (!strings(req, "addrs", items, err)) return fail(err);
   std::vector<io::CliAddress> addrs;
   for (const std::string &t : items) {
-    std::optional<io::CliAddress> a = io::parseAddress(t, err);
+    std::optional<io::CliAddress> a = dialect().parseAddress(t, err);
     if (!a) return fail(err);
     addrs.push_back(*a);
   }
@@ -383,7 +394,7 @@ json Controller::doWrite(const json &req) {
   if (!strings(req, "writes", items, err)) return fail(err);
   std::vector<io::Assignment> writes;
   for (const std::string &t : items) {
-    std::optional<io::Assignment> a = writable(t, err);
+    std::optional<io::Assignment> a = writable(dialect(), t, err);
     if (!a) return fail(err);
     writes.push_back(*a);
   }
@@ -452,12 +463,12 @@ json Controller::doLock(const json &req) {
   if (cmd == "lock") {
     if (!req.contains("item") || !req["item"].is_string())
       return fail("lock needs \"item\" ADDR=VALUE");
-    std::optional<io::Assignment> a = writable(req["item"].get<std::string>(), err);
+    std::optional<io::Assignment> a = writable(dialect(), req["item"].get<std::string>(), err);
     if (!a) return fail(err);
     ex_.lock(*a);
   } else if (cmd == "unlock") {
     if (!req.contains("addr") || !req["addr"].is_string()) return fail("unlock needs \"addr\"");
-    std::optional<io::CliAddress> a = io::parseAddress(req["addr"].get<std::string>(), err);
+    std::optional<io::CliAddress> a = dialect().parseAddress(req["addr"].get<std::string>(), err);
     if (!a) return fail(err);
     if (!ex_.unlock(*a)) return fail("'" + a->text + "' is not locked");
   }

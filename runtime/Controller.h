@@ -9,6 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
+namespace lj::io {
+struct Dialect;
+}
+
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -83,6 +87,8 @@ public:
   ChangeStats changeStats() const;
 
 private:
+  /// The running program's dialect: the syntax of read / write / force / lock addresses.
+  const io::Dialect &dialect() const;
   nlohmann::json doRead(const nlohmann::json &req);
   nlohmann::json doWrite(const nlohmann::json &req);
   nlohmann::json doForce(const nlohmann::json &req);

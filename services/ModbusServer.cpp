@@ -17,85 +17,10 @@
 namespace lj::io {
 namespace {
 
-/// How one block of addresses maps onto an area.
-enum class Kind { Bit, Byte, Word16, Word32 };
-enum class Access { ReadOnly, ReadWrite, InputWrite }; // InputWrite: only with writeInputs
+using Kind = MbBlock::Kind;
+using Access = MbBlock::Access;
 
-struct Block {
-  MbTable table;
-  uint16_t base;
-  Area area;
-  int elements;
-  Kind kind;
-  Access access;
-};
-
-/// Registers or bits one element takes.
-int width(Kind k) { return k == Kind::Bit ? 8 : k == Kind::Word32 ? 2 : 1; }
-
-// The map of docs/modbus-map.md. T and C are indexed by slot (T0..T127 = 0..127, T300..T427 =
-// 128..255), as in lj_state.
-constexpr Block kBlocks[] = {
-    {MbTable::Coils, 0, Area::Output, LJ_Y_COUNT, Kind::Bit, Access::ReadWrite},
-    {MbTable::Coils, 5000, Area::Relay, LJ_R_COUNT, Kind::Bit, Access::ReadWrite},
-    {MbTable::Coils, 10000, Area::Input, LJ_X_COUNT, Kind::Bit, Access::InputWrite},
-    {MbTable::DiscreteInputs, 0, Area::Input, LJ_X_COUNT, Kind::Bit, Access::ReadOnly},
-    {MbTable::HoldingRegisters, 0, Area::Word, LJ_W_COUNT, Kind::Word16, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 1000, Area::DWord, LJ_D_COUNT, Kind::Word32, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 2000, Area::Retained, LJ_B_COUNT, Kind::Word32, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 3000, Area::NcControl, LJ_G_COUNT, Kind::Word16, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 7000, Area::Output, LJ_Y_COUNT, Kind::Byte, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 8000, Area::Relay, LJ_R_COUNT, Kind::Byte, Access::ReadWrite},
-    {MbTable::HoldingRegisters, 9000, Area::Input, LJ_X_COUNT, Kind::Byte, Access::InputWrite},
-    {MbTable::HoldingRegisters, 10000, Area::NcStatus, LJ_F_COUNT, Kind::Word16,
-     Access::InputWrite},
-    {MbTable::InputRegisters, 0, Area::NcStatus, LJ_F_COUNT, Kind::Word16, Access::ReadOnly},
-    {MbTable::InputRegisters, 4000, Area::Input, LJ_X_COUNT, Kind::Byte, Access::ReadOnly},
-    {MbTable::InputRegisters, 5000, Area::Param, LJ_P_COUNT, Kind::Word32, Access::ReadOnly},
-    {MbTable::InputRegisters, 6000, Area::Timer, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
-    {MbTable::InputRegisters, 7000, Area::Counter, LJ_TC_SLOTS, Kind::Word32, Access::ReadOnly},
-};
-
-/// One address resolved: the block, the element, and the bit (Bit) or word half (Word32).
-struct Cell {
-  const Block *block = nullptr;
-  int element = 0;
-  int part = 0;
-};
-
-bool resolve(MbTable table, uint32_t addr, Cell &c) {
-  for (const Block &b : kBlocks) {
-    if (b.table != table || addr < b.base) continue;
-    uint32_t off = addr - b.base;
-    int w = width(b.kind);
-    // Bits: element n, bit k at 8n + k; Word32: element n at 2n (low) and 2n + 1 (high).
-    if (b.kind == Kind::Bit || b.kind == Kind::Word32) {
-      if (off >= static_cast<uint32_t>(b.elements * w)) continue;
-      c = {&b, static_cast<int>(off) / w, static_cast<int>(off) % w};
-    } else {
-      if (off >= static_cast<uint32_t>(b.elements)) continue;
-      c = {&b, static_cast<int>(off), 0};
-    }
-    return true;
-  }
-  return false;
-}
-
-/// The CLI address of an element (timers/counters: slot -> number), as Address.h uses it.
-CliAddress elementAddress(const Block &b, int element, int bit) {
-  CliAddress a;
-  a.area = b.area;
-  a.index = element;
-  if (b.area == Area::Timer || b.area == Area::Counter)
-    a.index = element < 128 ? element : element - 128 + 300;
-  a.bit = static_cast<int8_t>(bit);
-  static const char letters[] = "XYFGRWDBPTC";
-  a.text = std::string(1, letters[static_cast<int>(b.area)]) + std::to_string(a.index);
-  if (bit >= 0) a.text += "." + std::to_string(bit);
-  return a;
-}
-
-bool writable(const Block &b, bool writeInputs) {
+bool writable(const MbBlock &b, bool writeInputs) {
   return b.access == Access::ReadWrite || (b.access == Access::InputWrite && writeInputs);
 }
 
@@ -105,67 +30,92 @@ uint16_t be16(const uint8_t *p) { return static_cast<uint16_t>(p[0] << 8 | p[1])
 
 namespace mbmap {
 
-uint8_t readBits(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
-                 std::vector<uint8_t> &out) {
+uint8_t readBits(const ModbusMap &map, MbTable table, uint16_t addr, uint16_t count,
+                 const lj_state &s, std::vector<uint8_t> &out) {
   out.clear();
   for (uint32_t i = 0; i < count; ++i) {
-    Cell c;
-    if (!resolve(table, uint32_t{addr} + i, c)) return kMbIllegalDataAddress;
-    out.push_back(
-        static_cast<uint8_t>(readAddress(s, elementAddress(*c.block, c.element, c.part))));
+    uint32_t el = 0;
+    int part = 0;
+    const MbBlock *b = map.resolve(table, uint32_t{addr} + i, el, part);
+    if (!b) return kMbIllegalDataAddress;
+    out.push_back(static_cast<uint8_t>(readAddress(s, b->element(el)) ? 1 : 0));
   }
   return 0;
 }
 
-uint8_t readRegisters(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
-                      std::vector<uint16_t> &out) {
+uint8_t readRegisters(const ModbusMap &map, MbTable table, uint16_t addr, uint16_t count,
+                      const lj_state &s, std::vector<uint16_t> &out) {
   out.clear();
   for (uint32_t i = 0; i < count; ++i) {
-    Cell c;
-    if (!resolve(table, uint32_t{addr} + i, c)) return kMbIllegalDataAddress;
-    uint32_t v = static_cast<uint32_t>(readAddress(s, elementAddress(*c.block, c.element, -1)));
+    uint32_t el = 0;
+    int part = 0;
+    const MbBlock *b = map.resolve(table, uint32_t{addr} + i, el, part);
+    if (!b) return kMbIllegalDataAddress;
+    uint32_t v = static_cast<uint32_t>(readAddress(s, b->element(el)));
+    if (b->kind == Kind::Byte) v &= 0xFF; // bytes read 0..255, whatever their signedness
     // 32-bit elements: low word at the lower address (docs/modbus-map.md "Word order").
-    out.push_back(static_cast<uint16_t>(c.part == 1 ? v >> 16 : v & 0xFFFF));
+    out.push_back(static_cast<uint16_t>(part == 1 ? v >> 16 : v & 0xFFFF));
   }
   return 0;
 }
 
-uint8_t planCoilWrite(uint16_t addr, const std::vector<uint8_t> &bits, bool writeInputs,
-                      std::vector<Assignment> &out) {
+uint8_t planCoilWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint8_t> &bits,
+                      bool writeInputs, std::vector<Assignment> &out, bool &retained) {
   out.clear();
+  retained = false;
   for (size_t i = 0; i < bits.size(); ++i) {
-    Cell c;
-    if (!resolve(MbTable::Coils, uint32_t{addr} + static_cast<uint32_t>(i), c) ||
-        !writable(*c.block, writeInputs))
-      return kMbIllegalDataAddress;
-    out.push_back({elementAddress(*c.block, c.element, c.part), bits[i] ? 1 : 0});
+    uint32_t el = 0;
+    int part = 0;
+    const MbBlock *b =
+        map.resolve(MbTable::Coils, uint32_t{addr} + static_cast<uint32_t>(i), el, part);
+    if (!b || !writable(*b, writeInputs)) return kMbIllegalDataAddress;
+    if (b->retained) retained = true;
+    out.push_back({b->element(el), bits[i] ? 1 : 0});
   }
   return 0;
 }
 
-uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool writeInputs,
-                          std::vector<Assignment> &out, bool &retained) {
+uint8_t planRegisterWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint16_t> &regs,
+                          bool writeInputs, std::vector<Assignment> &out, bool &retained) {
   out.clear();
   retained = false;
   for (size_t i = 0; i < regs.size(); ++i) {
-    Cell c;
-    if (!resolve(MbTable::HoldingRegisters, uint32_t{addr} + static_cast<uint32_t>(i), c) ||
-        !writable(*c.block, writeInputs))
-      return kMbIllegalDataAddress;
-    const Block &b = *c.block;
+    uint32_t el = 0;
+    int part = 0;
+    const MbBlock *b =
+        map.resolve(MbTable::HoldingRegisters, uint32_t{addr} + static_cast<uint32_t>(i), el, part);
+    if (!b || !writable(*b, writeInputs)) return kMbIllegalDataAddress;
     int64_t value = regs[i];
-    if (b.kind == Kind::Word32) {
+    if (b->kind == Kind::Word32) {
       // Both halves in one request, low word first: a half write would race the program.
-      if (c.part != 0 || i + 1 >= regs.size()) return kMbIllegalDataAddress;
+      if (part != 0 || i + 1 >= regs.size()) return kMbIllegalDataAddress;
       value = static_cast<int64_t>(uint32_t{regs[i]} | uint32_t{regs[i + 1]} << 16);
       ++i;
-    } else if (b.kind == Kind::Byte && value > 0xFF) {
+    } else if (b->kind == Kind::Byte && value > 0xFF) {
       return kMbIllegalDataValue;
     }
-    if (b.area == Area::Retained) retained = true;
-    out.push_back({elementAddress(b, c.element, -1), value});
+    if (b->retained) retained = true;
+    out.push_back({b->element(el), value});
   }
   return 0;
+}
+
+uint8_t readBits(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
+                 std::vector<uint8_t> &out) {
+  return readBits(ModbusMap::hnc8(), table, addr, count, s, out);
+}
+uint8_t readRegisters(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
+                      std::vector<uint16_t> &out) {
+  return readRegisters(ModbusMap::hnc8(), table, addr, count, s, out);
+}
+uint8_t planCoilWrite(uint16_t addr, const std::vector<uint8_t> &bits, bool writeInputs,
+                      std::vector<Assignment> &out) {
+  bool retained = false;
+  return planCoilWrite(ModbusMap::hnc8(), addr, bits, writeInputs, out, retained);
+}
+uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool writeInputs,
+                          std::vector<Assignment> &out, bool &retained) {
+  return planRegisterWrite(ModbusMap::hnc8(), addr, regs, writeInputs, out, retained);
 }
 
 } // namespace mbmap
@@ -427,8 +377,8 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
     if (!be_.snapshot || !be_.snapshot(snap)) return fail(kMbServerDeviceFailure);
     std::vector<uint8_t> bv;
     std::vector<uint16_t> rv;
-    exc = bits ? mbmap::readBits(table, addr, count, snap, bv)
-               : mbmap::readRegisters(table, addr, count, snap, rv);
+    exc = bits ? mbmap::readBits(map(), table, addr, count, snap, bv)
+               : mbmap::readRegisters(map(), table, addr, count, snap, rv);
     if (exc) return fail(exc);
     modbus_mapping_t *m = modbus_mapping_new_start_address(
         fc == 1 ? addr : 0, fc == 1 ? count : 0, fc == 2 ? addr : 0, fc == 2 ? count : 0,
@@ -456,9 +406,11 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
     if (fc == 5) {
       uint16_t v = be16(d + 2);
       if (v != 0xFF00 && v != 0x0000) return fail(kMbIllegalDataValue);
-      exc = mbmap::planCoilWrite(addr, {static_cast<uint8_t>(v ? 1 : 0)}, cfg_.writeInputs, writes);
+      exc = mbmap::planCoilWrite(map(), addr, {static_cast<uint8_t>(v ? 1 : 0)}, cfg_.writeInputs,
+                                 writes, retained);
     } else if (fc == 6) {
-      exc = mbmap::planRegisterWrite(addr, {be16(d + 2)}, cfg_.writeInputs, writes, retained);
+      exc =
+          mbmap::planRegisterWrite(map(), addr, {be16(d + 2)}, cfg_.writeInputs, writes, retained);
     } else {
       count = be16(d + 2);
       int bytes = dlen >= 5 ? d[4] : -1;
@@ -470,16 +422,16 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
       if (coils) {
         std::vector<uint8_t> bv(count);
         for (int i = 0; i < count; ++i) bv[i] = (d[5 + i / 8] >> (i % 8)) & 1;
-        exc = mbmap::planCoilWrite(addr, bv, cfg_.writeInputs, writes);
+        exc = mbmap::planCoilWrite(map(), addr, bv, cfg_.writeInputs, writes, retained);
       } else {
         std::vector<uint16_t> rv(count);
         for (int i = 0; i < count; ++i) rv[i] = be16(d + 5 + 2 * i);
-        exc = mbmap::planRegisterWrite(addr, rv, cfg_.writeInputs, writes, retained);
+        exc = mbmap::planRegisterWrite(map(), addr, rv, cfg_.writeInputs, writes, retained);
       }
     }
     if (exc) return fail(exc);
     if (!be_.post || !be_.waitVisible) return fail(kMbServerDeviceFailure);
-    // Acknowledge only what is applied (and, for B, durably saved): docs/retain.md.
+    // Acknowledge only what is applied (and, for retained areas, durably saved): docs/retain.md.
     uint64_t seq = be_.post(std::move(writes));
     if (!be_.waitVisible(seq, cfg_.writeTimeout)) return fail(kMbServerDeviceFailure);
     if (retained && be_.commitRetained && !be_.commitRetained(cfg_.writeTimeout))

@@ -4,12 +4,14 @@
 
 #include "formats/Address.h"
 #include "ladderjit/abi.h"
+#include "services/ModbusMap.h"
 
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <list>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -25,12 +27,20 @@ enum : uint8_t {
   kMbServerDeviceFailure = 0x04,
 };
 
-/// The four Modbus data tables.
-enum class MbTable { Coils, DiscreteInputs, HoldingRegisters, InputRegisters };
-
 /// Pure map logic (docs/modbus-map.md), separate from the sockets so it is unit-tested alone.
-/// Every function returns 0 or a Modbus exception code.
+/// Every function returns 0 or a Modbus exception code. The overloads without a map use the
+/// built-in HNC-8 map (ModbusMap::hnc8()).
 namespace mbmap {
+uint8_t readBits(const ModbusMap &map, MbTable table, uint16_t addr, uint16_t count,
+                 const lj_state &s, std::vector<uint8_t> &out);
+uint8_t readRegisters(const ModbusMap &map, MbTable table, uint16_t addr, uint16_t count,
+                      const lj_state &s, std::vector<uint16_t> &out);
+/// `retained` is set when an element of a retentive area is written (the write then waits
+/// for a durable retain save).
+uint8_t planCoilWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint8_t> &bits,
+                      bool writeInputs, std::vector<Assignment> &out, bool &retained);
+uint8_t planRegisterWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint16_t> &regs,
+                          bool writeInputs, std::vector<Assignment> &out, bool &retained);
 /// Read `count` bits of `table` (Coils or DiscreteInputs) starting at `addr` into `out` (0/1).
 uint8_t readBits(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
                  std::vector<uint8_t> &out);
@@ -70,6 +80,7 @@ struct ModbusConfig {
   std::chrono::milliseconds requestTimeout{2000}; ///< a frame must be whole this long after
                                                   ///< its first byte, else the connection closes
   std::function<void(const std::string &)> log;   ///< default: stderr
+  std::shared_ptr<const ModbusMap> map;           ///< null: the built-in HNC-8 map
 };
 
 /// Counters for the log and the tests.
@@ -112,6 +123,7 @@ private:
   /// Handle one request ADU; false when the connection must be closed.
   bool handle(void *ctx, const uint8_t *req, int len);
   void logLine(const std::string &line) const;
+  const ModbusMap &map() const { return cfg_.map ? *cfg_.map : ModbusMap::hnc8(); }
 
   ModbusConfig cfg_;
   ModbusBackend be_;

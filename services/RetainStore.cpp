@@ -3,6 +3,7 @@
 #include "services/RetainStore.h"
 
 #include "formats/PlcDit.h"
+#include "profiles/Profiles.h"
 
 #include <algorithm>
 #include <bit>
@@ -31,7 +32,7 @@ constexpr int kFresh = 4; // middle_ flag: the middle slot holds a capture the w
 // Writer poll interval: flags set on the scan thread (which never notifies) are seen this late.
 constexpr auto kPoll = std::chrono::milliseconds(2);
 
-/// The fixed file header (docs/retain.md "File format").
+/// The file header of format 1 (HNC-8, docs/retain.md "File format").
 struct FileHeader {
   char magic[8];
   uint32_t formatVersion;
@@ -51,6 +52,26 @@ struct FileHeader {
 };
 static_assert(sizeof(FileHeader) == 144, "retain file header layout");
 
+/// The file header of format 2 (profile-laid targets, docs/retain.md "Format 2"), followed by
+/// spanCount (offset, bytes) pairs, the payload and the digest.
+struct FileHeader2 {
+  char magic[8];
+  uint32_t formatVersion; // 2
+  uint32_t headerBytes;   // 144
+  uint32_t abiVersion;
+  uint32_t spanCount;
+  uint32_t payloadBytes;
+  uint32_t timerSpan; // index of the lj_timer span, 0xFFFFFFFF: none
+  char profile[16];   // NUL padded
+  uint64_t saveSeq;
+  uint64_t tick;
+  uint64_t nowMs;
+  char programHash[kHashField];
+};
+static_assert(sizeof(FileHeader2) == 144, "retain file header 2 layout");
+constexpr uint32_t kFormat2 = 2;
+constexpr uint32_t kMaxSpans = 64;
+
 constexpr uint32_t kPayloadBytes = sizeof(int32_t) * LJ_B_COUNT +
                                    sizeof(lj_timer) * kRetainedTcCount +
                                    sizeof(lj_counter) * kRetainedTcCount;
@@ -68,6 +89,37 @@ FileHeader expectedHeader() {
   h.counterBytes = sizeof(lj_counter);
   h.payloadBytes = kPayloadBytes;
   return h;
+}
+
+FileHeader2 expectedHeader2(const RetainLayout &l) {
+  FileHeader2 h{};
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.formatVersion = kFormat2;
+  h.headerBytes = sizeof(FileHeader2);
+  h.abiVersion = LJ_ABI_VERSION;
+  h.spanCount = static_cast<uint32_t>(l.spans.size());
+  h.payloadBytes = l.payloadBytes();
+  h.timerSpan = l.timerSpan < 0 ? 0xFFFFFFFFu : static_cast<uint32_t>(l.timerSpan);
+  std::snprintf(h.profile, sizeof h.profile, "%s", l.profile.c_str());
+  return h;
+}
+
+/// Bytes of a whole file of layout `l`.
+size_t fileBytes(const RetainLayout &l) {
+  return (l.format1 ? sizeof(FileHeader) : sizeof(FileHeader2) + 8 * l.spans.size()) +
+         l.payloadBytes() + kDigestBytes;
+}
+
+std::string describe2(const FileHeader2 &h, const unsigned char *spans) {
+  std::string out = "profile " + std::string(h.profile, strnlen(h.profile, sizeof h.profile)) +
+                    ", ABI " + std::to_string(h.abiVersion) + ", spans";
+  for (uint32_t i = 0; i < h.spanCount && i < kMaxSpans; ++i) {
+    uint32_t o, b;
+    std::memcpy(&o, spans + 8 * i, 4);
+    std::memcpy(&b, spans + 8 * i + 4, 4);
+    out += " " + std::to_string(o) + "+" + std::to_string(b);
+  }
+  return out;
 }
 
 std::array<unsigned char, kDigestBytes> sha256(const unsigned char *data, size_t n) {
@@ -116,17 +168,105 @@ bool sameLayout(const FileHeader &h, std::string &why) {
   return false;
 }
 
+const TargetProfile &profileForHnc8() { return *profileNamed("hnc8"); }
+
 } // namespace
 
-void copyRetained(const lj_state &from, lj_state &to) {
-  std::memcpy(to.img.B, from.img.B, sizeof to.img.B);
-  std::memcpy(&to.T[kRetainedTcFirstSlot], &from.T[kRetainedTcFirstSlot],
-              sizeof(lj_timer) * kRetainedTcCount);
-  std::memcpy(&to.C[kRetainedTcFirstSlot], &from.C[kRetainedTcFirstSlot],
-              sizeof(lj_counter) * kRetainedTcCount);
+uint32_t RetainLayout::payloadBytes() const {
+  uint32_t n = 0;
+  for (const RetainSpan &sp : spans) n += sp.bytes;
+  return n;
 }
 
-RetainStore::RetainStore(RetainConfig config) : cfg_(std::move(config)) {}
+RetainLayout retainLayoutOf(const TargetProfile &tp) {
+  RetainLayout l;
+  l.profile = tp.name;
+  std::vector<RetainSpan> spans;
+  uint32_t timerOffset = 0, timerBytes = 0;
+  for (int i = 0; i < kAreaCount; ++i) {
+    const Area a = static_cast<Area>(i);
+    const AreaInfo &info = tp.area(a);
+    if (!(tp.retentiveAreas & bit(a)) || info.bytes == 0 || info.count <= 0) continue;
+    // Both ranges of the area: the upper one is laid right after the first (elementOffset).
+    const uint32_t n = static_cast<uint32_t>(info.count + info.upperCount);
+    spans.push_back({info.offset, n * info.bytes});
+  }
+  auto tcSpan = [&](Area a, NumberRange r, uint32_t base, uint32_t size) -> RetainSpan {
+    if (r.hi < r.lo) return {};
+    int first = tp.tcSlot(a, r.lo), last = tp.tcSlot(a, r.hi);
+    if (first < 0 || last < first) return {};
+    return {base + static_cast<uint32_t>(first) * size,
+            static_cast<uint32_t>(last - first + 1) * size};
+  };
+  RetainSpan t = tcSpan(Area::Timer, tp.retentiveTimers,
+                        static_cast<uint32_t>(offsetof(lj_state, T)), sizeof(lj_timer));
+  if (t.bytes) {
+    spans.push_back(t);
+    timerOffset = t.offset;
+    timerBytes = t.bytes;
+  }
+  RetainSpan c = tcSpan(Area::Counter, tp.retentiveCounters,
+                        static_cast<uint32_t>(offsetof(lj_state, C)), sizeof(lj_counter));
+  if (c.bytes) spans.push_back(c);
+  std::sort(spans.begin(), spans.end(),
+            [](const RetainSpan &x, const RetainSpan &y) { return x.offset < y.offset; });
+  for (const RetainSpan &sp : spans) {
+    // Merge adjacent ranges, but never into the timer span (its slots are rebased on restore).
+    bool isTimer = timerBytes && sp.offset == timerOffset;
+    bool prevTimer = !l.spans.empty() && l.timerSpan == static_cast<int>(l.spans.size()) - 1;
+    if (!l.spans.empty() && !isTimer && !prevTimer &&
+        l.spans.back().offset + l.spans.back().bytes == sp.offset) {
+      l.spans.back().bytes += sp.bytes;
+      continue;
+    }
+    if (isTimer) l.timerSpan = static_cast<int>(l.spans.size());
+    l.spans.push_back(sp);
+  }
+  // HNC-8 keeps the file format it always had: B, T300..T427, C300..C427.
+  const RetainSpan b{static_cast<uint32_t>(offsetof(lj_state, img.B)),
+                     sizeof(int32_t) * LJ_B_COUNT};
+  const RetainSpan ht{
+      static_cast<uint32_t>(offsetof(lj_state, T) + sizeof(lj_timer) * kRetainedTcFirstSlot),
+      sizeof(lj_timer) * kRetainedTcCount};
+  const RetainSpan hc{
+      static_cast<uint32_t>(offsetof(lj_state, C) + sizeof(lj_counter) * kRetainedTcFirstSlot),
+      sizeof(lj_counter) * kRetainedTcCount};
+  l.format1 = l.profile == "hnc8" && l.spans == std::vector<RetainSpan>{b, ht, hc};
+  return l;
+}
+
+void copyRetained(const RetainLayout &layout, const lj_state &from, lj_state &to) {
+  const auto *src = reinterpret_cast<const unsigned char *>(&from);
+  auto *dst = reinterpret_cast<unsigned char *>(&to);
+  for (const RetainSpan &sp : layout.spans) std::memcpy(dst + sp.offset, src + sp.offset, sp.bytes);
+}
+
+RetainStore::RetainStore(RetainConfig config)
+    : cfg_(std::move(config)),
+      layout_(retainLayoutOf(cfg_.profile ? *cfg_.profile : profileForHnc8())) {
+  // Every buffer the scan thread fills is sized here, so afterTick never allocates.
+  for (RetainImage &img : slots_) img.bytes.assign(layout_.payloadBytes(), 0);
+  last_.bytes.assign(layout_.payloadBytes(), 0);
+}
+
+bool RetainStore::sameAs(const RetainImage &img, const lj_state &s) const {
+  const auto *src = reinterpret_cast<const unsigned char *>(&s);
+  const unsigned char *p = img.bytes.data();
+  for (const RetainSpan &sp : layout_.spans) {
+    if (std::memcmp(p, src + sp.offset, sp.bytes) != 0) return false;
+    p += sp.bytes;
+  }
+  return true;
+}
+
+void RetainStore::capture(RetainImage &img, const lj_state &s) const {
+  const auto *src = reinterpret_cast<const unsigned char *>(&s);
+  unsigned char *p = img.bytes.data();
+  for (const RetainSpan &sp : layout_.spans) {
+    std::memcpy(p, src + sp.offset, sp.bytes);
+    p += sp.bytes;
+  }
+}
 
 RetainStore::~RetainStore() {
   {
@@ -190,9 +330,9 @@ void RetainStore::logLine(const std::string &line) const {
     std::fprintf(stderr, "%s\n", line.c_str());
 }
 
-RetainStore::ReadResult RetainStore::readFile(const std::string &path, RetainImage &out,
-                                              uint64_t &saveSeq, std::string &savedHash,
-                                              std::string &error) {
+RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const std::string &path,
+                                              RetainImage &out, uint64_t &saveSeq,
+                                              std::string &savedHash, std::string &error) {
   // O_NONBLOCK: a FIFO in the file's place never blocks the start (it is refused below).
   int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) {
@@ -206,9 +346,12 @@ RetainStore::ReadResult RetainStore::readFile(const std::string &path, RetainIma
     ::close(fd);
     return ReadResult::Corrupt;
   }
-  // Read at most one byte more than a valid file so trailing garbage is detected.
-  const size_t want = sizeof(FileHeader) + kPayloadBytes + kDigestBytes;
-  std::vector<unsigned char> buf(want + 1);
+  // Read at most one byte more than the largest file any layout writes, so trailing garbage is
+  // detected; the size of this layout's file is checked below.
+  const size_t want = fileBytes(layout);
+  const size_t cap =
+      std::max<size_t>(want, sizeof(FileHeader2) + 8 * kMaxSpans + sizeof(lj_state) + kDigestBytes);
+  std::vector<unsigned char> buf(cap + 1);
   size_t got = 0;
   while (got < buf.size()) {
     ssize_t r = ::read(fd, buf.data() + got, buf.size() - got);
@@ -240,30 +383,77 @@ RetainStore::ReadResult RetainStore::readFile(const std::string &path, RetainIma
                                       " bytes, checksum mismatch)");
     return ReadResult::Corrupt;
   }
-  FileHeader h;
-  std::memcpy(&h, buf.data(), sizeof h);
-  if (h.formatVersion != kFormatVersion || h.headerBytes != sizeof(FileHeader)) {
-    error = path + ": retain file format " + std::to_string(h.formatVersion) +
-            ", this build reads format " + std::to_string(kFormatVersion);
+  uint32_t format = 0, headerBytes = 0;
+  std::memcpy(&format, buf.data() + 8, 4);
+  std::memcpy(&headerBytes, buf.data() + 12, 4);
+  const uint32_t ours = layout.format1 ? kFormatVersion : kFormat2;
+  if ((format != kFormatVersion && format != kFormat2) || headerBytes != sizeof(FileHeader)) {
+    error = path + ": retain file format " + std::to_string(format) +
+            ", this build reads formats 1 and 2";
     return ReadResult::Layout;
   }
-  std::string why;
-  if (!sameLayout(h, why) || got != want) {
-    error = path + ": " + (why.empty() ? "unexpected size " + std::to_string(got) : why);
+  const FileHeader2 e2 = expectedHeader2(layout);
+  std::vector<unsigned char> ourSpans(8 * layout.spans.size());
+  for (size_t i = 0; i < layout.spans.size(); ++i) {
+    std::memcpy(ourSpans.data() + 8 * i, &layout.spans[i].offset, 4);
+    std::memcpy(ourSpans.data() + 8 * i + 4, &layout.spans[i].bytes, 4);
+  }
+  const std::string ourText = layout.format1 ? "format 1 (HNC-8 B, T300..T427, C300..C427)"
+                                             : "format 2, " + describe2(e2, ourSpans.data());
+  uint64_t seq = 0, tick = 0, nowMs = 0;
+  const char *hash = nullptr;
+  if (format != ours) {
+    std::string saved =
+        format == kFormatVersion ? "format 1 (HNC-8 B, T300..T427, C300..C427)" : "format 2";
+    if (format == kFormat2) {
+      FileHeader2 h2;
+      std::memcpy(&h2, buf.data(), sizeof h2);
+      if (sizeof h2 + 8ull * std::min(h2.spanCount, kMaxSpans) <= got)
+        saved += ", " + describe2(h2, buf.data() + sizeof h2);
+    }
+    error = path + ": saved with another layout (" + saved + "; this program: " + ourText + ")";
     return ReadResult::Layout;
   }
-  const unsigned char *p = buf.data() + sizeof(FileHeader);
-  std::memcpy(out.B, p, sizeof out.B);
-  p += sizeof out.B;
-  std::memcpy(out.T, p, sizeof out.T);
-  p += sizeof out.T;
-  std::memcpy(out.C, p, sizeof out.C);
-  out.tick = h.tick;
-  out.nowMs = h.nowMs;
+  if (layout.format1) {
+    FileHeader h;
+    std::memcpy(&h, buf.data(), sizeof h);
+    std::string why;
+    if (!sameLayout(h, why) || got != want) {
+      error = path + ": " + (why.empty() ? "unexpected size " + std::to_string(got) : why);
+      return ReadResult::Layout;
+    }
+    seq = h.saveSeq;
+    tick = h.tick;
+    nowMs = h.nowMs;
+    std::memcpy(buf.data() + offsetof(FileHeader, programHash) + kHashField - 1, "", 1);
+    hash = reinterpret_cast<const char *>(buf.data() + offsetof(FileHeader, programHash));
+  } else {
+    FileHeader2 h;
+    std::memcpy(&h, buf.data(), sizeof h);
+    bool same = h.abiVersion == e2.abiVersion && h.spanCount == e2.spanCount &&
+                h.payloadBytes == e2.payloadBytes && h.timerSpan == e2.timerSpan &&
+                std::memcmp(h.profile, e2.profile, sizeof h.profile) == 0 && got == want &&
+                std::memcmp(buf.data() + sizeof h, ourSpans.data(), ourSpans.size()) == 0;
+    if (!same) {
+      std::string saved = "format 2";
+      if (sizeof h + 8ull * std::min(h.spanCount, kMaxSpans) <= got)
+        saved += ", " + describe2(h, buf.data() + sizeof h);
+      error = path + ": saved with another layout (" + saved + "; this program: " + ourText + ")";
+      return ReadResult::Layout;
+    }
+    seq = h.saveSeq;
+    tick = h.tick;
+    nowMs = h.nowMs;
+    std::memcpy(buf.data() + offsetof(FileHeader2, programHash) + kHashField - 1, "", 1);
+    hash = reinterpret_cast<const char *>(buf.data() + offsetof(FileHeader2, programHash));
+  }
+  const size_t payloadAt = want - kDigestBytes - layout.payloadBytes();
+  out.bytes.assign(buf.data() + payloadAt, buf.data() + payloadAt + layout.payloadBytes());
+  out.tick = tick;
+  out.nowMs = nowMs;
   out.index = 0;
-  saveSeq = h.saveSeq;
-  h.programHash[kHashField - 1] = '\0';
-  savedHash = h.programHash;
+  saveSeq = seq;
+  savedHash = hash;
   return ReadResult::Ok;
 }
 
@@ -273,14 +463,14 @@ RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
   RetainImage img;
   uint64_t seq = 0;
   std::string savedHash, errMain, errPrev;
-  ReadResult rMain = readFile(cfg_.path, img, seq, savedHash, errMain);
+  ReadResult rMain = readFile(layout_, cfg_.path, img, seq, savedHash, errMain);
   ReadResult rPrev = ReadResult::Missing;
   std::string loadedFrom;
   if (rMain == ReadResult::Ok) {
     loadedFrom = cfg_.path;
     rep.status = RestoreStatus::Restored;
   } else if (rMain != ReadResult::Layout) {
-    rPrev = readFile(prev, img, seq, savedHash, errPrev);
+    rPrev = readFile(layout_, prev, img, seq, savedHash, errPrev);
     if (rPrev == ReadResult::Ok) {
       loadedFrom = prev;
       rep.status = RestoreStatus::RestoredPrev;
@@ -322,15 +512,22 @@ RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
     logLine(rep.message);
     return rep;
   }
-  std::memcpy(s.img.B, img.B, sizeof img.B);
-  // A retained timer keeps the age it had when saved: time while the controller was off does
-  // not count (docs/retain.md "Timers").
-  for (int i = 0; i < kRetainedTcCount; ++i) {
-    lj_timer t = img.T[i];
-    int64_t age = static_cast<int64_t>(img.nowMs) - t.start_ms;
-    t.start_ms = static_cast<int64_t>(nowMs) - age;
-    s.T[kRetainedTcFirstSlot + i] = t;
-    s.C[kRetainedTcFirstSlot + i] = img.C[i];
+  auto *dst = reinterpret_cast<unsigned char *>(&s);
+  const unsigned char *p = img.bytes.data();
+  for (size_t k = 0; k < layout_.spans.size(); ++k) {
+    const RetainSpan &sp = layout_.spans[k];
+    std::memcpy(dst + sp.offset, p, sp.bytes);
+    p += sp.bytes;
+    if (static_cast<int>(k) != layout_.timerSpan) continue;
+    // A retained timer keeps the age it had when saved: time while the controller was off
+    // does not count (docs/retain.md "Timers").
+    for (uint32_t off = 0; off + sizeof(lj_timer) <= sp.bytes; off += sizeof(lj_timer)) {
+      lj_timer t;
+      std::memcpy(&t, dst + sp.offset + off, sizeof t);
+      int64_t age = static_cast<int64_t>(img.nowMs) - t.start_ms;
+      t.start_ms = static_cast<int64_t>(nowMs) - age;
+      std::memcpy(dst + sp.offset + off, &t, sizeof t);
+    }
   }
   saveSeq_ = seq;
   rep.saveSeq = seq;
@@ -355,19 +552,17 @@ void RetainStore::start() {
 
 void RetainStore::afterTick(const lj_state &s, uint64_t tick) {
   bool force = forceCapture_.exchange(false, std::memory_order_acq_rel);
-  const lj_timer *t = &s.T[kRetainedTcFirstSlot];
-  const lj_counter *c = &s.C[kRetainedTcFirstSlot];
-  if (!force && haveLast_ && std::memcmp(last_.B, s.img.B, sizeof last_.B) == 0 &&
-      std::memcmp(last_.T, t, sizeof last_.T) == 0 && std::memcmp(last_.C, c, sizeof last_.C) == 0)
-    return;
+  if (!force && haveLast_ && sameAs(last_, s)) return;
   RetainImage &dst = slots_[back_];
-  std::memcpy(dst.B, s.img.B, sizeof dst.B);
-  std::memcpy(dst.T, t, sizeof dst.T);
-  std::memcpy(dst.C, c, sizeof dst.C);
+  capture(dst, s);
   dst.tick = tick;
   dst.nowMs = s.now_ms;
   dst.index = captures_.load(std::memory_order_relaxed) + 1;
-  std::memcpy(&last_, &dst, sizeof last_);
+  // Same sizes (set in the constructor): the copy assignment reuses last_'s buffer.
+  std::memcpy(last_.bytes.data(), dst.bytes.data(), dst.bytes.size());
+  last_.tick = dst.tick;
+  last_.nowMs = dst.nowMs;
+  last_.index = dst.index;
   haveLast_ = true;
   back_ = middle_.exchange(back_ | kFresh, std::memory_order_acq_rel) & ~kFresh;
   // Published after the slot: a commit() that reads this count knows the capture is taken.
@@ -448,23 +643,35 @@ void RetainStore::writerLoop() {
 }
 
 bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
-  FileHeader h = expectedHeader();
-  h.saveSeq = saveSeq_ + 1;
-  h.tick = img.tick;
-  h.nowMs = img.nowMs;
-  std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
-  std::vector<unsigned char> buf(sizeof h + kPayloadBytes + kDigestBytes);
+  std::vector<unsigned char> buf(fileBytes(layout_));
   unsigned char *p = buf.data();
-  std::memcpy(p, &h, sizeof h);
-  p += sizeof h;
-  std::memcpy(p, img.B, sizeof img.B);
-  p += sizeof img.B;
-  std::memcpy(p, img.T, sizeof img.T);
-  p += sizeof img.T;
-  std::memcpy(p, img.C, sizeof img.C);
-  p += sizeof img.C;
+  if (layout_.format1) {
+    FileHeader h = expectedHeader();
+    h.saveSeq = saveSeq_ + 1;
+    h.tick = img.tick;
+    h.nowMs = img.nowMs;
+    std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
+    std::memcpy(p, &h, sizeof h);
+    p += sizeof h;
+  } else {
+    FileHeader2 h = expectedHeader2(layout_);
+    h.saveSeq = saveSeq_ + 1;
+    h.tick = img.tick;
+    h.nowMs = img.nowMs;
+    std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
+    std::memcpy(p, &h, sizeof h);
+    p += sizeof h;
+    for (const RetainSpan &sp : layout_.spans) {
+      std::memcpy(p, &sp.offset, 4);
+      std::memcpy(p + 4, &sp.bytes, 4);
+      p += 8;
+    }
+  }
+  std::memcpy(p, img.bytes.data(), img.bytes.size());
+  p += img.bytes.size();
   auto digest = sha256(buf.data(), static_cast<size_t>(p - buf.data()));
   std::memcpy(p, digest.data(), kDigestBytes);
+  const uint64_t nextSeq = saveSeq_ + 1;
 
   // A new file with a random name (O_CREAT | O_EXCL, mode 0600): a symlink or file planted
   // under any predictable name is never followed or written.
@@ -509,7 +716,7 @@ bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
   }
   ::close(dfd);
   mainIsGood_ = true;
-  saveSeq_ = h.saveSeq;
+  saveSeq_ = nextSeq;
   return true;
 }
 

@@ -1,7 +1,9 @@
-// The retentive store of `ladderjit serve`: B0..B49, timers T300..T427 and counters C300..C427
-// persisted crash-safely to one file (format and guarantees: docs/retain.md).
+// The retentive store of `ladderjit serve` and the HAL component: the retentive part of a
+// target's state (HNC-8: B0..B49, timers T300..T427, counters C300..C427; FANUC: K, T, C, D;
+// IEC: %M0..%M63) persisted crash-safely to one file (format and guarantees: docs/retain.md).
 #pragma once
 
+#include "ir/Profile.h"
 #include "ladderjit/abi.h"
 
 #include <array>
@@ -13,6 +15,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace lj::io {
 
@@ -20,18 +23,36 @@ namespace lj::io {
 inline constexpr int kRetainedTcFirstSlot = 128;
 inline constexpr int kRetainedTcCount = 128;
 
-/// The retained part of an lj_state, as captured at the end of one tick.
-struct RetainImage {
-  uint64_t tick = 0;  ///< tick whose end state this is
-  uint64_t nowMs = 0; ///< now_ms of that tick (timer timestamps are relative to it)
-  uint64_t index = 0; ///< capture number, 1, 2, ... (0 = nothing captured)
-  int32_t B[LJ_B_COUNT] = {};
-  lj_timer T[kRetainedTcCount] = {};
-  lj_counter C[kRetainedTcCount] = {};
+/// One retained byte range of lj_state.
+struct RetainSpan {
+  uint32_t offset = 0; ///< byte offset inside lj_state
+  uint32_t bytes = 0;
+  bool operator==(const RetainSpan &) const = default;
 };
 
-/// Copy the retained fields (B, T300..T427, C300..C427) of `from` into `to`.
-void copyRetained(const lj_state &from, lj_state &to);
+/// What a target retains: byte ranges of lj_state in offset order (adjacent ranges merged),
+/// taken from its profile (retentiveAreas, retentiveTimers, retentiveCounters).
+struct RetainLayout {
+  std::string profile;           ///< the profile's name ("hnc8", "fanuc", "iec")
+  std::vector<RetainSpan> spans; ///< the payload, in this order
+  int timerSpan = -1;            ///< index of the span holding retained lj_timer slots, or -1
+  bool format1 = false;          ///< HNC-8: the file is format 1 (docs/retain.md)
+  uint32_t payloadBytes() const;
+};
+
+/// The layout of `tp` (HNC-8: B, T300..T427, C300..C427, written as format 1).
+RetainLayout retainLayoutOf(const TargetProfile &tp);
+
+/// The retained part of an lj_state, as captured at the end of one tick.
+struct RetainImage {
+  uint64_t tick = 0;                ///< tick whose end state this is
+  uint64_t nowMs = 0;               ///< now_ms of that tick (timer timestamps are relative to it)
+  uint64_t index = 0;               ///< capture number, 1, 2, ... (0 = nothing captured)
+  std::vector<unsigned char> bytes; ///< the spans of the layout, concatenated
+};
+
+/// Copy the retained fields of `layout` from `from` into `to`.
+void copyRetained(const RetainLayout &layout, const lj_state &from, lj_state &to);
 
 /// What restore() found.
 enum class RestoreStatus {
@@ -56,6 +77,7 @@ struct RetainConfig {
   std::chrono::milliseconds period{100};        ///< minimum gap between periodic saves
   bool force = false;                           ///< --retain-force (see RestoreStatus)
   std::string programHash;                      ///< "sha256:..." when known, else empty
+  const TargetProfile *profile = nullptr;       ///< what is retained; nullptr: HNC-8
   std::function<void(const std::string &)> log; ///< one line per event; default: stderr
 };
 
@@ -108,21 +130,30 @@ public:
   void stop(const lj_state &finalState, uint64_t tick);
 
   RetainStats stats() const;
+  const RetainLayout &layout() const { return layout_; }
+  /// Copy the retained fields of this store's layout from `from` into `to`.
+  void copyRetained(const lj_state &from, lj_state &to) const {
+    io::copyRetained(layout_, from, to);
+  }
 
   /// Outcome of reading one file.
   enum class ReadResult { Ok, Missing, Corrupt, Layout };
   /// Read and check one store file (no fallback): the image, its save number and the program
   /// hash it was saved with, or `error` naming the problem. Used by restore() and the tests.
-  static ReadResult readFile(const std::string &path, RetainImage &out, uint64_t &saveSeq,
-                             std::string &savedHash, std::string &error);
+  static ReadResult readFile(const RetainLayout &layout, const std::string &path, RetainImage &out,
+                             uint64_t &saveSeq, std::string &savedHash, std::string &error);
 
 private:
   void writerLoop();
   bool takeLatest(); ///< writer: make slots_[front_] the newest capture; false if none is new
   bool writeFile(const RetainImage &img, std::string &error);
   void logLine(const std::string &line) const;
+  /// Whether the retained spans of `s` equal `img`'s bytes.
+  bool sameAs(const RetainImage &img, const lj_state &s) const;
+  void capture(RetainImage &img, const lj_state &s) const;
 
   RetainConfig cfg_;
+  RetainLayout layout_;
   // Triple buffer: the scan thread fills slots_[back_], then swaps it with middle_; the writer
   // swaps front_ with middle_ when the fresh bit is set. Neither side ever waits.
   std::array<RetainImage, 3> slots_;

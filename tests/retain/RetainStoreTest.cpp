@@ -2,10 +2,13 @@
 // safety and fallbacks, group commit and rate limiting (docs/retain.md).
 #include "services/RetainStore.h"
 
+#include "profiles/Profiles.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -22,6 +25,18 @@ using lj::io::RetainImage;
 using lj::io::RetainStore;
 
 namespace {
+
+const lj::io::RetainLayout &hnc8Layout() {
+  static const lj::io::RetainLayout l = lj::io::retainLayoutOf(*lj::profileNamed("hnc8"));
+  return l;
+}
+
+/// Bn in a format-1 payload (B0..B49 come first, docs/retain.md "File format").
+int32_t bInFile(const RetainImage &img, int n) {
+  int32_t v = 0;
+  std::memcpy(&v, img.bytes.data() + 4 * n, 4);
+  return v;
+}
 
 class RetainTest : public ::testing::Test {
 protected:
@@ -124,12 +139,15 @@ TEST_F(RetainTest, SecondSaveRotatesFirstIntoPrev) {
   RetainImage img;
   uint64_t seq = 0;
   std::string hash, err;
-  ASSERT_EQ(RetainStore::readFile(path, img, seq, hash, err), RetainStore::ReadResult::Ok) << err;
-  EXPECT_EQ(img.B[1], 2);
-  EXPECT_EQ(seq, 2u);
-  ASSERT_EQ(RetainStore::readFile(path + ".prev", img, seq, hash, err), RetainStore::ReadResult::Ok)
+  ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path, img, seq, hash, err),
+            RetainStore::ReadResult::Ok)
       << err;
-  EXPECT_EQ(img.B[1], 1);
+  EXPECT_EQ(bInFile(img, 1), 2);
+  EXPECT_EQ(seq, 2u);
+  ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path + ".prev", img, seq, hash, err),
+            RetainStore::ReadResult::Ok)
+      << err;
+  EXPECT_EQ(bInFile(img, 1), 1);
   EXPECT_EQ(seq, 1u);
   EXPECT_EQ(hash, "sha256:" + std::string(64, 'a'));
   EXPECT_FALSE(fs::exists(path + ".tmp"));
@@ -160,11 +178,12 @@ TEST_F(RetainTest, CorruptedFileFallsBackToPrev) {
   RetainImage img;
   uint64_t seq = 0;
   std::string hash, err;
-  ASSERT_EQ(RetainStore::readFile(path + ".prev", img, seq, hash, err),
+  ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path + ".prev", img, seq, hash, err),
             RetainStore::ReadResult::Ok);
-  EXPECT_EQ(img.B[2], 11);
-  ASSERT_EQ(RetainStore::readFile(path, img, seq, hash, err), RetainStore::ReadResult::Ok);
-  EXPECT_EQ(img.B[2], 33);
+  EXPECT_EQ(bInFile(img, 2), 11);
+  ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path, img, seq, hash, err),
+            RetainStore::ReadResult::Ok);
+  EXPECT_EQ(bInFile(img, 2), 33);
 }
 
 TEST_F(RetainTest, TruncatedFileFallsBackToPrev) {
@@ -277,8 +296,9 @@ TEST_F(RetainTest, CommitMakesAppliedWritesDurable) {
     RetainImage img;
     uint64_t seq = 0;
     std::string hash, err;
-    ASSERT_EQ(RetainStore::readFile(path, img, seq, hash, err), RetainStore::ReadResult::Ok);
-    EXPECT_EQ(img.B[0], k);
+    ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path, img, seq, hash, err),
+              RetainStore::ReadResult::Ok);
+    EXPECT_EQ(bInFile(img, 0), k);
   }
   stop = true;
   scan.join();
@@ -313,8 +333,9 @@ TEST_F(RetainTest, RequestSaveWritesOutsideTheRateLimit) {
   RetainImage img;
   uint64_t seq = 0;
   std::string hash, err;
-  ASSERT_EQ(RetainStore::readFile(path, img, seq, hash, err), RetainStore::ReadResult::Ok);
-  EXPECT_EQ(img.B[6], 49);
+  ASSERT_EQ(RetainStore::readFile(hnc8Layout(), path, img, seq, hash, err),
+            RetainStore::ReadResult::Ok);
+  EXPECT_EQ(bInFile(img, 6), 49);
   EXPECT_EQ(img.tick, 50u);
 }
 

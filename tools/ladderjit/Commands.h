@@ -167,6 +167,7 @@ struct ServeArgs {
   bool plc2NvalueGiven = false;
   uint64_t maxBackwardSteps = 1000000;
   std::string modbus;             ///< [HOST:]PORT, empty = no Modbus server
+  std::string modbusMap;          ///< map file (docs/modbus-map.md), empty = the HNC-8 map
   std::string http;               ///< [HOST:]PORT of the live view, empty = none
   std::string httpTokenFile;      ///< the live view's token, from this file
   bool httpReadOnly = false;      ///< the live view changes nothing

@@ -224,6 +224,9 @@ int mainImpl(int argc, char **argv) {
                             "watchdog limit per tick (default 1000000)")
                ->check(kUnsigned));
   lastWins(cServe->add_option("--modbus", serve.modbus, "Modbus TCP server on [HOST:]PORT"));
+  lastWins(cServe->add_option("--modbus-map", serve.modbusMap,
+                              "Modbus map file of the program's addresses (docs/modbus-map.md; "
+                              "needed for FANUC and IEC programs)"));
   lastWins(cServe->add_option("--http", serve.http,
                               "the live ladder view on [HOST:]PORT (HOST defaults to 127.0.0.1)"));
   lastWins(cServe->add_option("--http-token-file", serve.httpTokenFile,

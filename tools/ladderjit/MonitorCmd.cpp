@@ -3,6 +3,8 @@
 // problem (bad arguments, no server, a refused request) exits 2 with a message.
 #include "tools/ladderjit/Commands.h"
 
+#include "formats/Dialects.h"
+
 #include "formats/Address.h"
 #include "formats/StateJson.h"
 #include "runtime/ControlPath.h"
@@ -27,13 +29,25 @@ bool findControl(const std::string &given, std::string &path, std::string &error
   return rt::checkControlSocket(path, error);
 }
 
-// Check the addresses / assignments locally, so a typo never reaches the server.
+// Check the addresses / assignments locally, so a typo never reaches the server: an item must
+// be valid in some dialect of this build (the server checks it against the running program's).
 bool checkItems(const std::vector<std::string> &items, bool assignments, std::string &error) {
   for (const std::string &it : items) {
-    if (assignments) {
-      std::optional<io::Assignment> as = io::parseAssignment(it, error);
-      if (!as || !io::checkWritable(as->addr, as->value, error)) return false;
-    } else if (!io::parseAddress(it, error)) {
+    std::string first;
+    bool ok = false;
+    for (const io::Dialect *d : io::allDialects()) {
+      std::string why;
+      if (assignments) {
+        std::optional<io::Assignment> as = d->parseAssignment(it, why);
+        ok = as && io::checkWritable(as->addr, as->value, why);
+      } else {
+        ok = d->parseAddress(it, why).has_value();
+      }
+      if (ok) break;
+      if (first.empty()) first = why; // HNC-8's message (the default dialect comes first)
+    }
+    if (!ok) {
+      error = first;
       return false;
     }
   }

@@ -215,6 +215,8 @@ int runServe(const ServeArgs &a) {
   int modbusPort = -1;
   if (!a.modbus.empty() && !splitHostPort(a.modbus, modbusHost, modbusPort, error))
     return usageError(error);
+  if (!a.modbusMap.empty() && a.modbus.empty())
+    return usageError("--modbus-map needs --modbus [HOST:]PORT");
   // --http (docs/serve.md "Live view"): loopback unless HOST is given; the token of every
   // change from the page is --http-token-file's, else a fresh one printed below.
   LiveViewConfig live;
@@ -250,6 +252,19 @@ int runServe(const ServeArgs &a) {
   const io::Dialect *setDialect = a.dialect.empty() ? io::dialectForPath(a.program, error)
                                                     : io::dialectForOption(a.dialect, error);
   if (!setDialect) return usageError(error);
+  // The Modbus map (docs/modbus-map.md "Map files"): the program's dialect's addresses.
+  std::shared_ptr<const io::ModbusMap> modbusMap;
+  if (!a.modbusMap.empty()) {
+    std::string text;
+    if (!io::readFile(a.modbusMap, text, error)) return usageError("--modbus-map: " + error);
+    std::optional<io::ModbusMap> m = io::ModbusMap::parse(text, a.modbusMap, *setDialect, error);
+    if (!m) return usageError("--modbus-map: " + error);
+    modbusMap = std::make_shared<const io::ModbusMap>(std::move(*m));
+  } else if (!a.modbus.empty() && std::string_view(setDialect->name) != "hnc8") {
+    return usageError(std::string("--modbus: a ") + setDialect->name +
+                      " program needs --modbus-map FILE (the built-in map is HNC-8's; "
+                      "docs/modbus-map.md \"Map files\")");
+  }
   for (const std::string &item : a.sets) {
     std::optional<io::Assignment> as = setDialect->parseAssignment(item, error);
     if (!as || !io::checkWritable(as->addr, as->value, error)) return usageError("--set: " + error);
@@ -356,6 +371,7 @@ int runServe(const ServeArgs &a) {
     rc.period = std::chrono::milliseconds(a.retainPeriodMs);
     rc.force = a.retainForce;
     rc.programHash = first->hash;
+    rc.profile = first->prog->profile; // what the target retains (docs/retain.md)
     rc.log = logLine;
     retain = std::make_unique<io::RetainStore>(rc);
     // Checked at start, once: a missing directory, a FIFO or symlink in the file's place, a
@@ -367,7 +383,8 @@ int runServe(const ServeArgs &a) {
     io::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
     if (rep.status == io::RestoreStatus::LayoutMismatch)
       return usageError("--retain: " + a.retain + " belongs to another layout (see above)");
-    exec.addStartHook([r = restored.get()](lj_state &s) { io::copyRetained(*r, s); });
+    exec.addStartHook(
+        [r = restored.get(), st = retain.get()](lj_state &s) { st->copyRetained(*r, s); });
     exec.addAfterTickHook(
         [st = retain.get()](const lj_state &s, uint64_t tick) { st->afterTick(s, tick); });
     exec.addStopHook(
@@ -434,6 +451,7 @@ int runServe(const ServeArgs &a) {
     mc.idleTimeout = std::chrono::seconds(a.clientIdleS);
     mc.requestTimeout = std::chrono::milliseconds(a.requestTimeoutMs);
     mc.log = logLine;
+    mc.map = modbusMap;
     modbus = std::make_unique<io::ModbusServer>(mc, modbusBackend(exchange, retain.get()));
     if (!modbus->start(error)) {
       exec.requestStop();
