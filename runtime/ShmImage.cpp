@@ -6,8 +6,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cstddef>
 #include <cstring>
 #include <thread>
 
@@ -73,6 +75,7 @@ bool ShmMapping::create(const std::string &name, bool hostOwnsF, uint64_t period
   h->imageSize = sizeof(lj_image);
   h->flags = hostOwnsF ? kShmHostOwnsF : 0;
   h->periodNs = periodNs;
+  h->memSize = LJ_MEM_BYTES;
   return true;
 }
 
@@ -99,7 +102,8 @@ bool ShmMapping::open(const std::string &name, std::string &error) {
   }
   const ShmHeader *h = header();
   if (std::memcmp(h->magic, kShmMagic, sizeof h->magic) != 0 || h->abiVersion != LJ_ABI_VERSION ||
-      h->headerSize != sizeof(ShmHeader) || h->imageSize != sizeof(lj_image)) {
+      h->headerSize != sizeof(ShmHeader) || h->imageSize != sizeof(lj_image) ||
+      h->memSize != LJ_MEM_BYTES) {
     error = "shm '" + name_ + "' is not a ladderjit image of ABI version " +
             std::to_string(LJ_ABI_VERSION);
     return false;
@@ -134,7 +138,87 @@ uint64_t shmReadOutputs(const ShmMapping &m, lj_image &out) {
   }
 }
 
+void shmWriteMem(ShmMapping &m, uint32_t offset, const void *data, size_t n) {
+  if (offset > LJ_MEM_BYTES || n > LJ_MEM_BYTES - offset) return;
+  auto s = seq(m.header()->inSeq);
+  s.fetch_add(1, std::memory_order_acq_rel); // odd: inputs in flux
+  std::atomic_thread_fence(std::memory_order_release);
+  std::memcpy(m.mem() + offset, data, n);
+  s.fetch_add(1, std::memory_order_release); // even: consistent
+}
+
+uint64_t shmReadMem(const ShmMapping &m, uint8_t *out) {
+  auto s = seq(m.header()->outSeq);
+  for (;;) {
+    uint64_t a = s.load(std::memory_order_acquire);
+    if ((a & 1) == 0) {
+      std::memcpy(out, m.mem(), LJ_MEM_BYTES);
+      uint64_t tick = m.header()->outTick;
+      std::atomic_thread_fence(std::memory_order_acquire);
+      if (s.load(std::memory_order_relaxed) == a) return tick;
+    }
+    std::this_thread::yield();
+  }
+}
+
+std::vector<MemSpan> shmInputSpans(const TargetProfile &tp, bool hostOwnsF) {
+  std::vector<MemSpan> out;
+  const uint32_t mem = static_cast<uint32_t>(offsetof(lj_state, mem));
+  for (Area a : {Area::Input, Area::NcStatus}) {
+    if (a == Area::NcStatus && !hostOwnsF) continue;
+    const AreaInfo &i = tp.area(a);
+    if (i.bytes == 0 || i.count <= 0 || i.offset < mem) continue; // HNC-8: in lj_image
+    out.push_back({i.offset - mem, static_cast<uint32_t>(i.count + i.upperCount) * i.bytes});
+  }
+  std::sort(out.begin(), out.end(),
+            [](const MemSpan &x, const MemSpan &y) { return x.offset < y.offset; });
+  return out;
+}
+
+ShmImage::ShmImage(ShmMapping &m, bool hostOwnsF, const TargetProfile *profile)
+    : m_(m), hostOwnsF_(hostOwnsF) {
+  if (!profile) return;
+  inMem_ = shmInputSpans(*profile, hostOwnsF);
+  // A profile with areas in the region publishes it, except the host's spans.
+  bool usesMem = false;
+  for (const AreaInfo &i : profile->areas)
+    usesMem = usesMem || (i.bytes && i.offset >= offsetof(lj_state, mem));
+  if (!usesMem) return;
+  uint32_t at = 0, total = 0;
+  for (const MemSpan &sp : inMem_) {
+    if (sp.offset > at) outMem_.push_back({at, sp.offset - at});
+    at = std::max(at, sp.offset + sp.bytes);
+    total += sp.bytes;
+  }
+  if (at < LJ_MEM_BYTES) outMem_.push_back({at, LJ_MEM_BYTES - at});
+  memIn_.assign(total, 0);
+}
+
 void ShmImage::beforeTick(lj_state &s, uint64_t) {
+  if (!inMem_.empty()) {
+    // The same seqlock as X: a torn copy is replaced by the last consistent one.
+    auto q = seq(m_.header()->inSeq);
+    uint64_t a = q.load(std::memory_order_acquire);
+    bool ok = false;
+    if ((a & 1) == 0) {
+      for (const MemSpan &sp : inMem_)
+        std::memcpy(s.mem + sp.offset, m_.mem() + sp.offset, sp.bytes);
+      std::atomic_thread_fence(std::memory_order_acquire);
+      ok = q.load(std::memory_order_relaxed) == a;
+    }
+    uint8_t *p = memIn_.data();
+    for (const MemSpan &sp : inMem_) {
+      if (ok)
+        std::memcpy(p, s.mem + sp.offset, sp.bytes);
+      else
+        std::memcpy(s.mem + sp.offset, p, sp.bytes);
+      p += sp.bytes;
+    }
+  }
+  beforeTickImage(s);
+}
+
+void ShmImage::beforeTickImage(lj_state &s) {
   auto q = seq(m_.header()->inSeq);
   uint64_t a = q.load(std::memory_order_acquire);
   if ((a & 1) == 0) {
@@ -166,6 +250,7 @@ void ShmImage::publish(const lj_state &s, uint64_t tick) {
   std::memcpy(img->W, s.img.W, sizeof img->W);
   std::memcpy(img->Y, s.img.Y, sizeof img->Y);
   std::memcpy(img->R, s.img.R, sizeof img->R);
+  for (const MemSpan &sp : outMem_) std::memcpy(m_.mem() + sp.offset, s.mem + sp.offset, sp.bytes);
   h->outTick = tick;
   q.fetch_add(1, std::memory_order_release);
 }

@@ -103,8 +103,20 @@ class Modbus:
         return [(r[2 + i // 8] >> (i % 8)) & 1 for i in range(count)]
 
 
+SHM_MEM = 64 + 15712  # docs/serve.md "Shared-memory image": header, lj_image, then lj_state.mem
+FANUC_K_IN_MEM = 21648  # profiles/fanuc/Areas.cpp: K0 at mem + 21648
+
+
+def shm_region(name):
+    """The published lj_state.mem of a serve --shm NAME (read without the seqlock: a test)."""
+    with open("/dev/shm/" + name, "rb") as f:
+        data = f.read()
+    mem_size = struct.unpack_from("<I", data, 56)[0]
+    return mem_size, data[SHM_MEM:SHM_MEM + mem_size]
+
+
 class Server:
-    def __init__(self, lj, workdir, program, mapfile, retain, name):
+    def __init__(self, lj, workdir, program, mapfile, retain, name, extra=()):
         self.lj = lj
         self.sock = os.path.join(workdir, name + ".sock")
         self.out = open(os.path.join(workdir, name + ".out"), "w+")
@@ -112,7 +124,7 @@ class Server:
         self.proc = subprocess.Popen(
             [lj, "serve", program, "--engine", "interp", "--retain", retain,
              "--retain-period-ms", "50", "--modbus", "0", "--modbus-map", mapfile,
-             "--control", self.sock, "--duration", "60"],
+             "--control", self.sock, "--duration", "60", *extra],
             stdout=self.out, stderr=self.err)
         self.port = None
         deadline = time.time() + 30
@@ -167,7 +179,9 @@ def run_target(lj, workdir, tag, src, mapping, before, after):
     before(srv)
     time.sleep(0.5)  # ten periodic save periods: the inputs' SET bits reach the file
     srv.kill9()
-    srv = Server(lj, workdir, program, mapfile, retain, tag + "-2")
+    shm = "ljprof%d" % os.getpid()
+    srv = Server(lj, workdir, program, mapfile, retain, tag + "-2", ("--shm", shm))
+    srv.shm = shm
     log = srv.log()
     check("retain: restored " + retain + " (save #" in log and "WARNING" not in log,
           tag + ": the restart restores the main file: " + log)
@@ -195,6 +209,10 @@ def fanuc_after(srv):
     check(srv.read("R0.0") == 0, "fanuc: R0.0 is volatile: 0 after the restart")
     check(srv.mb.read_regs(0, 2) == [1234, 0xFFFE], "fanuc: Modbus reads D100:2, D102:2 back")
     check(srv.mb.read_coils(0, 8) == [0, 1, 0, 0, 0, 1, 0, 0], "fanuc: Modbus reads K0.0..K0.7")
+    size, region = shm_region(srv.shm)
+    check(size == 65536 and region[FANUC_K_IN_MEM] == 0x22,
+          "fanuc: the shm image publishes K0 = 0x22 in the region (size %d, K0 %s)"
+          % (size, region[FANUC_K_IN_MEM] if len(region) > FANUC_K_IN_MEM else None))
 
 
 def iec_before(srv):
@@ -245,6 +263,10 @@ def main():
     fanuc_prog, _ = run_target(lj, workdir, "fanuc", FANUC, FANUC_MAP, fanuc_before, fanuc_after)
     _, iec_retain = run_target(lj, workdir, "iec", IEC, IEC_MAP, iec_before, iec_after)
     usage_errors(lj, workdir, fanuc_prog, iec_retain)
+    try:
+        os.unlink("/dev/shm/ljprof%d" % os.getpid())  # left by the SIGKILLed server
+    except FileNotFoundError:
+        pass
     print("profile_serve: %d failure(s) in %.1f s" % (len(FAILURES), time.time() - started))
     if FAILURES:
         print("logs kept in " + workdir)

@@ -354,7 +354,7 @@ int runServe(const ServeArgs &a) {
   std::unique_ptr<rt::ShmImage> shm;
   if (!a.shm.empty()) {
     if (!shmMap.create(a.shm, a.io == "shm", eo.periodNs, error)) return usageError(error);
-    shm = std::make_unique<rt::ShmImage>(shmMap, a.io == "shm");
+    shm = std::make_unique<rt::ShmImage>(shmMap, a.io == "shm", first->prog->profile);
     exec.addIo(shm.get());
     exec.addAfterTickHook([s = shm.get()](const lj_state &st, uint64_t t) { s->publish(st, t); });
   }
