@@ -2,7 +2,8 @@
 """ClassicLadder (classicladder_rt) against the ladderjit HAL component in one HAL thread.
 
 For each size N (default 100, 1000, 3000, 5000 rungs) this generates an equivalent program twice,
-a ClassicLadder project (.clp) and HNC-8 STL, then under one `halrun`:
+a ClassicLadder project (.clp) and a ladderjit program (FANUC PMC by default, `--dialect hnc8`
+for HNC-8 STL), then under one `halrun`:
   1. loads classicladder_rt (sized for N rungs) and the program with `classicladder --nogui`,
      and the ladderjit component with the compiled, signed .so;
   2. adds both refresh functions to the same HAL thread, connects the same 16 input signals to
@@ -11,16 +12,18 @@ a ClassicLadder project (.clp) and HNC-8 STL, then under one `halrun`:
   3. samples both functions' `*.refresh.time` pins (HAL's own per-function measurement, in
      rtapi_get_clocks() units) SAMPLES times, and ladderjit's scan-time-ns pin.
 
-Beyond 3,332 rungs the STL (3 statements a rung) exceeds the HNC-8 limit of 10,000 statements
-per program (DIALECT.md), which `ladderjit compile` enforces: those sizes run ClassicLadder alone
-(its outputs checked against the rung definition).
+The program limits are 24,000 statements for FANUC (profiles/fanuc) and 10,000 for HNC-8
+(DIALECT.md), which `ladderjit compile` enforces; a rung is 3 statements, so HNC-8 stops at
+3,332 rungs (larger sizes then run ClassicLadder alone, its outputs checked against the rung
+definition) and FANUC at 7,999.
 
 Rung k (0-based): contact in[k mod 16] AND NOT coil[k-1] (rung 0: NOT in[1]) -> coil[k];
 the last 16 rungs' coils are the outputs, the others memory bits.
   ClassicLadder: %I(k mod 16), %B(k) / %Q(j), one row of the 10x6 grid per rung.
-  ladderjit:     X0.0..X1.7, G(k/16).(k%16) / Y0.0..Y1.7, three statements per rung.
+  FANUC:         X0.0..X1.7, R(k/8).(k%8) / Y0.0..Y1.7: RD, AND.NOT, WRT per rung.
+  HNC-8:         X0.0..X1.7, G(k/16).(k%16) / Y0.0..Y1.7: LD, ANI, OUT per rung.
 Usage: classicladder_vs_ladderjit.py LADDERJIT MODULE [--sizes 100,1000,3000,5000]
-       [--steps 40] [--samples 100] [--period-ns 10000000]
+       [--steps 40] [--samples 100] [--period-ns 10000000] [--dialect fanuc|hnc8]
 """
 import argparse
 import os
@@ -34,7 +37,8 @@ from halrig import Rig, RigError, gets_values  # noqa: E402
 
 NIN = 16
 NOUT = 16
-STMT_LIMIT = 10000  # statements of one HNC-8 program (DIALECT.md); a rung here is 3
+STMT_LIMIT = {"hnc8": 10000, "fanuc": 24000}  # statements of one program; a rung here is 3
+DIALECT = "fanuc"  # --dialect
 VAR_MEM_BIT, VAR_PHYS_INPUT, VAR_PHYS_OUTPUT = 0, 50, 60  # ClassicLadder classicladder.h
 ELE_FREE, ELE_INPUT, ELE_INPUT_NOT, ELE_CONNECTION, ELE_OUTPUT = 0, 1, 2, 9, 50
 
@@ -44,6 +48,8 @@ def coil(n, k):
     if k >= n - NOUT:
         j = k - (n - NOUT)
         return (VAR_PHYS_OUTPUT, j), f"Y{j // 8}.{j % 8}"
+    if DIALECT == "fanuc":
+        return (VAR_MEM_BIT, k), f"R{k // 8}.{k % 8}"
     return (VAR_MEM_BIT, k), f"G{k // 16}.{k % 16}"
 
 
@@ -58,6 +64,16 @@ def make_stl(n):
         prev = xin(1) if k == 0 else coil(n, k - 1)[1]
         lines += [f"LD {xin(k % NIN)}", f"ANI {prev}", f"OUT {coil(n, k)[1]}"]
     lines += ["1END", "2END"]
+    return "\n".join(lines) + "\n"
+
+
+def make_pmc(n):
+    lines = [f"; {n} rungs: in[k mod 16] AND NOT coil[k-1] -> coil[k] "
+             "(bench/classicladder_vs_ladderjit.py)"]
+    for k in range(n):
+        prev = xin(1) if k == 0 else coil(n, k - 1)[1]
+        lines += [f"RD {xin(k % NIN)}", f"AND.NOT {prev}", f"WRT {coil(n, k)[1]}"]
+    lines += ["END1", "END2", "END"]
     return "\n".join(lines) + "\n"
 
 
@@ -97,7 +113,7 @@ def expected(n, inputs):
 
 
 def fits(n):
-    return 3 * n + 2 <= STMT_LIMIT
+    return 3 * n + 3 <= STMT_LIMIT[DIALECT]
 
 
 def run_size(rig, n, steps, samples, period_ns):
@@ -105,8 +121,9 @@ def run_size(rig, n, steps, samples, period_ns):
     with_lj = fits(n)
     clp = rig.write(f"bench{n}.clp", make_clp(n))
     if with_lj:
-        stl = rig.write(f"bench{n}.stl", make_stl(n))
-        so = rig.compile(stl, rig.path(f"bench{n}.so"))
+        ext, text = (".pmc", make_pmc(n)) if DIALECT == "fanuc" else (".stl", make_stl(n))
+        src = rig.write(f"bench{n}{ext}", text)
+        so = rig.compile(src, rig.path(f"bench{n}.so"))
     rng = random.Random(n)
     vectors = [[rng.randint(0, 1) for _ in range(NIN)] for _ in range(steps)]
     hal = [f"loadrt classicladder_rt numRungs={n} numBits={n} numWords=4 numTimers=1 "
@@ -174,7 +191,10 @@ def main():
     ap.add_argument("--steps", type=int, default=40)
     ap.add_argument("--samples", type=int, default=100)
     ap.add_argument("--period-ns", type=int, default=10000000)
+    ap.add_argument("--dialect", choices=("fanuc", "hnc8"), default="fanuc")
     a = ap.parse_args()
+    global DIALECT
+    DIALECT = a.dialect
     try:
         rig = Rig(a.ladderjit, a.module)
     except RigError as e:
@@ -186,8 +206,8 @@ def main():
             rows.append(run_size(rig, n, a.steps, a.samples, a.period_ns))
             r = rows[-1]
             if r["lj"] is None:
-                print(f"{n} rungs: ClassicLadder only ({3 * n + 2} statements exceed the HNC-8 "
-                      f"limit of {STMT_LIMIT}); outputs vs the rung definition mismatching in "
+                print(f"{n} rungs: ClassicLadder only ({3 * n + 3} statements exceed the "
+                      f"{DIALECT} limit of {STMT_LIMIT[DIALECT]}); outputs vs the rung definition mismatching in "
                       f"{r['ref_mism']}/{r['steps']} steps; median refresh.time "
                       f"{r['cl']:.0f}, tmax {r['cl_max']}", flush=True)
                 continue
@@ -209,7 +229,7 @@ def main():
     for r in rows:
         if r["lj"] is None:
             print(f"| {r['n']:,} | CL only: {r['steps'] - r['ref_mism']}/{r['steps']} as defined "
-                  f"| {r['cl']:,.0f} | over the 10,000-statement limit | | | "
+                  f"| {r['cl']:,.0f} | over the {STMT_LIMIT[DIALECT]:,}-statement limit | | | "
                   f"{r['cl_max']:,} / - |")
             continue
         print(f"| {r['n']:,} | {r['steps'] - r['mism']}/{r['steps']} | {r['cl']:,.0f} | "

@@ -5,6 +5,7 @@
 #include "engines/AotTrust.h"
 #include "formats/InputFiles.h"
 #include "formats/ProgramFile.h"
+#include "hosts/SystemBits.h"
 #include "services/RetainStore.h"
 
 #include <cstdlib>
@@ -39,7 +40,7 @@ std::vector<std::string> splitComma(const std::string &s) {
 std::string sourceBeside(const std::string &soPath) {
   std::string base = soPath;
   if (base.size() > 3 && base.compare(base.size() - 3, 3, ".so") == 0) base.resize(base.size() - 3);
-  for (const char *ext : {".dit", ".stl", ".json"})
+  for (const char *ext : {".dit", ".stl", ".json", ".pmc", ".il"})
     if (exists(base + ext)) return base + ext;
   return {};
 }
@@ -54,7 +55,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   inst->sourcePath_ = opt.source.empty() ? sourceBeside(opt.program) : opt.source;
   if (inst->sourcePath_.empty()) {
     error = "'" + opt.program +
-            "': no program source beside it (.dit, .stl or .json of the same "
+            "': no program source beside it (.dit, .stl, .json, .pmc or .il of the same "
             "name); give source=PROGRAM (the file it was compiled from)";
     return nullptr;
   }
@@ -80,11 +81,12 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   if (!inst->engine_) return nullptr;
   inst->entries_ = inst->engine_->entries();
 
-  inst->pins_ = defaultPins(*prog);
+  inst->profile_ = prog->profile;
+  inst->pins_ = defaultPins(*prog, *src.dialect);
   if (!opt.map.empty()) {
     std::string text;
     if (!io::readFile(opt.map, text, error)) return nullptr;
-    if (!applyMap(text, opt.map, inst->pins_, error)) return nullptr;
+    if (!applyMap(text, opt.map, inst->pins_, error, *src.dialect)) return nullptr;
   }
   if (!checkPins(inst->pins_, prefix, error)) return nullptr;
 
@@ -106,6 +108,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
     io::RetainConfig cfg;
     cfg.path = opt.retain;
     cfg.programHash = inst->programHash_;
+    cfg.profile = prog->profile; // what the target retains (docs/retain.md)
     cfg.log = opt.log;
     inst->retain_ = std::make_unique<io::RetainStore>(cfg);
     if (!inst->retain_->prepare(error)) {
@@ -133,6 +136,9 @@ uint32_t Instance::tick(uint64_t periodNs) {
     inited_ = true;
     lj_run_init(state_, &entries_);
   }
+  // The target's system bits (FANUC R9091 constants and clocks, R9015 first scan) before every
+  // tick, after init, as `run` and `serve` write them (hosts/SystemBits.h).
+  if (profile_) io::writeSystemBits(*profile_, *state_, ticks_);
   uint32_t fault = lj_tick(state_, &entries_);
   if (retain_) retain_->afterTick(*state_, ticks_);
   elapsedNs_ += periodNs;

@@ -32,8 +32,8 @@ struct Options {
   std::function<void(const std::string &)> log; ///< RTAPI log (one line per call)
 };
 
-/// The source beside an AOT .so: PATH without `.so` plus `.dit`, `.stl` or `.json`, the first
-/// that exists; empty when none does.
+/// The source beside an AOT .so: PATH without `.so` plus `.dit`, `.stl`, `.json`, `.pmc` or
+/// `.il`, the first that exists; empty when none does.
 std::string sourceBeside(const std::string &soPath);
 
 class Instance {
@@ -74,6 +74,7 @@ private:
   lj_entries entries_{};
   lj_state *state_ = nullptr;
   std::vector<PinSpec> pins_;
+  const TargetProfile *profile_ = nullptr; ///< the program's target (system bits)
   std::unique_ptr<io::RetainStore> retain_;
   std::string soPath_, sourcePath_, programHash_;
   uint64_t ticks_ = 0;

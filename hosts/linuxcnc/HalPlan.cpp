@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
 #include <map>
 #include <set>
 #include <sstream>
@@ -17,8 +18,10 @@ namespace {
 constexpr int kBitsPerByte = 8;
 
 std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char &c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string out;
+  // IEC objects are written `%I0.3`: the pin is `i0.3` (a `%` is awkward in HAL files).
+  for (char c : s)
+    if (c != '%') out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
 }
 
@@ -31,12 +34,15 @@ bool halFriendly(std::string_view name) {
   });
 }
 
-io::CliAddress bitAddress(Area area, int32_t index, int bit) {
+io::CliAddress bitAddress(const io::Dialect &d, const TargetProfile *tp, Area area, int32_t index,
+                          int bit) {
   io::CliAddress a;
   a.area = area;
   a.index = index;
   a.bit = static_cast<int8_t>(bit);
-  a.text = io::formatAddress(a);
+  // Profile-laid targets (FANUC, IEC) address lj_state.mem through their profile.
+  if (tp && tp->area(area).offset >= offsetof(lj_state, mem)) a.profile = tp;
+  a.text = d.formatAddress(a);
   return a;
 }
 
@@ -67,7 +73,7 @@ bool parseType(std::string_view t, PinType &type) {
 
 } // namespace
 
-std::vector<PinSpec> defaultPins(const VerifiedProgram &prog) {
+std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const io::Dialect &dialect) {
   std::set<BitKey> reads, writes;
   for (const Stmt &st : prog.stmts) {
     const InstrInfo &info = instrInfo(st.op);
@@ -86,7 +92,7 @@ std::vector<PinSpec> defaultPins(const VerifiedProgram &prog) {
   auto add = [&](const std::set<BitKey> &bits, Area area, bool out) {
     for (const auto &[index, bit] : bits) {
       PinSpec p;
-      p.addr = bitAddress(area, index, bit);
+      p.addr = bitAddress(dialect, prog.profile, area, index, bit);
       p.out = out;
       auto it = symbolOf.find(p.addr.text);
       p.name = it != symbolOf.end() ? it->second : lower(p.addr.text);
@@ -104,7 +110,7 @@ std::vector<PinSpec> defaultPins(const VerifiedProgram &prog) {
 }
 
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
-              std::string &error) {
+              std::string &error, const io::Dialect &dialect) {
   std::vector<PinSpec> mapped;
   bool noDefaults = false;
   std::istringstream in{std::string(text)};
@@ -136,7 +142,7 @@ bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpe
       return fail("direction '" + w[0] + "' is not `in` or `out`");
     if (!parseType(w[1], p.type)) return fail("type '" + w[1] + "' is not bit, s32, u32 or float");
     std::string why;
-    std::optional<io::CliAddress> addr = io::parseAddress(w[2], why);
+    std::optional<io::CliAddress> addr = dialect.parseAddress(w[2], why);
     if (!addr) return fail(why);
     if (addr->area == Area::Timer || addr->area == Area::Counter)
       return fail("'" + w[2] +
@@ -146,7 +152,7 @@ bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpe
       return fail("'" + w[2] + "': a bit pin needs a bit address (X1.0), a " + w[1] +
                   " pin a whole element (D5)");
     p.addr = *addr;
-    p.addr.text = io::formatAddress(p.addr);
+    p.addr.text = dialect.formatAddress(p.addr);
     p.name = lower(p.addr.text);
     for (size_t i = 3; i < w.size(); ++i) {
       if (w[i].rfind("scale=", 0) == 0) {

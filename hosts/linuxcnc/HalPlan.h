@@ -5,6 +5,7 @@
 #pragma once
 
 #include "formats/Address.h"
+#include "formats/Dialects.h"
 #include "ir/Program.h"
 
 #include <cstdint>
@@ -33,16 +34,19 @@ inline constexpr size_t kHalNameLen = 47;
 /// a register) becomes an input bit pin, every Y bit it writes an output bit pin, in address
 /// order. Named after the symbol of that address when the program has one whose name is a
 /// HAL-friendly ASCII name (letters, digits, `_`, `-`; lowercased), else after the address
-/// (`x484.5`, `y0.1`).
-std::vector<PinSpec> defaultPins(const VerifiedProgram &prog);
+/// (`x484.5`, `y0.1`; FANUC `x0.0`, `y200.1`; IEC `i0.3`, `q0.1`: the dialect's spelling,
+/// lowercased, without `%`). `dialect` spells the addresses (default: HNC-8).
+std::vector<PinSpec> defaultPins(const VerifiedProgram &prog,
+                                 const io::Dialect &dialect = io::defaultDialect());
 
 /// Parse a map file (format: docs/linuxcnc.md "Map file") and merge it with `defaults`: a line
 /// for an address and direction already in the list replaces that pin, other lines add pins
 /// (one element may feed several output pins, never two input pins); a `nodefaults` line drops
 /// every default pin. `file` names the source in errors (`file:line: ...`). False
 /// (with `error`) on any bad line, a duplicate name or address, or a name HAL would refuse.
+/// Addresses are `dialect`'s (FANUC `D100:2`, IEC `%MW10`).
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
-              std::string &error);
+              std::string &error, const io::Dialect &dialect = io::defaultDialect());
 
 /// Check the final list against HAL's rules with `prefix` ("ladderjit"): names unique and at
 /// most kHalNameLen long. False (with `error`) otherwise.
