@@ -6,7 +6,9 @@
 // size, ELF checks, sealed memfd), builds the pin plan (HalPlan.h), creates the pins and exports
 // `ladderjit.refresh`. refresh (real-time) copies input pins into the image, runs one tick
 // (PLC1 + the next PLC2 slice, lj_tick), copies the image to output pins: no allocation, no
-// lock, no system call besides the clock read.
+// lock, no system call besides the clock read. A rising edge on `ladderjit.reload` asks the
+// component's loader thread to load program= again; refresh swaps the prepared program in at
+// its start (online change, state kept).
 #include "hosts/linuxcnc/HalInstance.h"
 
 #include "hal.h"
@@ -67,13 +69,22 @@ struct Status {
   hal_u32_t *fault;
   hal_u32_t *watchdog;
   hal_bit_t *resetMax;
+  hal_bit_t *reload;         ///< rising edge: online change (load program= again)
+  hal_u32_t *reloads;        ///< online changes swapped in
+  hal_u32_t *reloadFailures; ///< online changes refused (RTAPI log says why)
 };
 
 HalPtr *halPins = nullptr;
 Status *status = nullptr;
+bool lastReload = false; // refresh only
 
 void refresh(void *arg, long period) {
   auto *inst = static_cast<lj::hal::Instance *>(arg);
+  // Online change: the request goes to the component's loader thread; the prepared program is
+  // swapped in by Instance::tick at the start of a later refresh (a thread boundary).
+  const bool reload = *status->reload;
+  if (reload && !lastReload) inst->requestReload();
+  lastReload = reload;
   const std::vector<lj::hal::PinSpec> &pins = inst->pins();
   lj_state &s = inst->state();
   for (size_t i = 0; i < pins.size(); ++i) {
@@ -123,6 +134,8 @@ void refresh(void *arg, long period) {
   *status->ticks = static_cast<uint32_t>(inst->ticks());
   *status->fault = fault;
   *status->watchdog = s.fault_watchdog;
+  *status->reloads = inst->reloads();
+  *status->reloadFailures = inst->reloadFailures();
 }
 
 int makePin(const lj::hal::PinSpec &p, HalPtr &ptr) {
@@ -181,7 +194,14 @@ int start() {
   if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->fault, compId, "%s.fault", kName);
   if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->watchdog, compId, "%s.watchdog-faults", kName);
   if (!r) r = hal_pin_bit_newf(HAL_IN, &status->resetMax, compId, "%s.scan-time-max-reset", kName);
+  if (!r) r = hal_pin_bit_newf(HAL_IN, &status->reload, compId, "%s.reload", kName);
+  if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->reloads, compId, "%s.reloads", kName);
+  if (!r)
+    r = hal_pin_u32_newf(HAL_OUT, &status->reloadFailures, compId, "%s.reload-failures", kName);
   if (r) return fail("cannot create the status pins (" + std::to_string(r) + ")");
+  *status->reload = 0;
+  *status->reloads = 0;
+  *status->reloadFailures = 0;
   *status->scanNs = 0;
   *status->scanMaxNs = 0;
   *status->ticks = 0;
@@ -193,6 +213,7 @@ int start() {
   if (int e = hal_export_funct(fn.c_str(), refresh, instance, 1, 0, compId); e != 0)
     return fail("cannot export " + fn + " (" + std::to_string(e) + ")");
   instance->startRetain();
+  instance->startLoader();
   rtapi_print_msg(RTAPI_MSG_INFO, "%s: %s\n", kName, instance->summary().c_str());
   return hal_ready(compId);
 }
@@ -210,6 +231,7 @@ extern "C" int rtapi_app_main(void) {
 extern "C" void rtapi_app_exit(void) {
   // HAL has stopped calling refresh (threads stopped or the function unlinked) when a
   // component is unloaded: the retain store's final save takes the last state.
+  if (instance) instance->stopLoader();
   if (instance) instance->stopRetain();
   if (compId >= 0) hal_exit(compId);
   compId = -1;

@@ -8,9 +8,11 @@
 #include "hosts/SystemBits.h"
 #include "services/RetainStore.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <new>
 #include <sys/stat.h>
+#include <thread>
 
 namespace lj::hal {
 
@@ -37,6 +39,39 @@ std::vector<std::string> splitComma(const std::string &s) {
 
 } // namespace
 
+bool loadProgram(const Options &opt, const std::string &sourcePath, const std::string &prefix,
+                 Loaded &out, std::string &error) {
+  io::ProgramSource src;
+  if (!io::readProgramFile(sourcePath, src, error)) return false;
+  int32_t nvalue =
+      io::effectiveNvalue(src, opt.plc2Nvalue < 0 ? 200 : opt.plc2Nvalue, opt.plc2Nvalue >= 0);
+  std::string diags;
+  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diags);
+  if (!prog) {
+    size_t nl = diags.find('\n');
+    error = "'" + sourcePath + "' has errors: " + diags.substr(0, nl);
+    return false;
+  }
+  io::TrustedKeys keys;
+  if (!io::loadTrustedKeys(splitComma(opt.trust), keys, error)) {
+    error = "trusted keys: " + error;
+    return false;
+  }
+  io::AotExpect expect = io::aotExpectOf(src, nvalue);
+  out.hash = expect.program;
+  out.engine = io::loadAot(opt.program, expect, keys, error);
+  if (!out.engine) return false;
+  out.entries = out.engine->entries();
+  out.profile = prog->profile;
+  out.pins = defaultPins(*prog, *src.dialect);
+  if (!opt.map.empty()) {
+    std::string text;
+    if (!io::readFile(opt.map, text, error)) return false;
+    if (!applyMap(text, opt.map, out.pins, error, *src.dialect)) return false;
+  }
+  return checkPins(out.pins, prefix, error);
+}
+
 std::string sourceBeside(const std::string &soPath) {
   std::string base = soPath;
   if (base.size() > 3 && base.compare(base.size() - 3, 3, ".so") == 0) base.resize(base.size() - 3);
@@ -59,36 +94,15 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
             "name); give source=PROGRAM (the file it was compiled from)";
     return nullptr;
   }
-  io::ProgramSource src;
-  if (!io::readProgramFile(inst->sourcePath_, src, error)) return nullptr;
-  int32_t nvalue =
-      io::effectiveNvalue(src, opt.plc2Nvalue < 0 ? 200 : opt.plc2Nvalue, opt.plc2Nvalue >= 0);
-  std::string diags;
-  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diags);
-  if (!prog) {
-    size_t nl = diags.find('\n');
-    error = "'" + inst->sourcePath_ + "' has errors: " + diags.substr(0, nl);
-    return nullptr;
-  }
-  io::TrustedKeys keys;
-  if (!io::loadTrustedKeys(splitComma(opt.trust), keys, error)) {
-    error = "trusted keys: " + error;
-    return nullptr;
-  }
-  io::AotExpect expect = io::aotExpectOf(src, nvalue);
-  inst->programHash_ = expect.program;
-  inst->engine_ = io::loadAot(opt.program, expect, keys, error);
-  if (!inst->engine_) return nullptr;
-  inst->entries_ = inst->engine_->entries();
-
-  inst->profile_ = prog->profile;
-  inst->pins_ = defaultPins(*prog, *src.dialect);
-  if (!opt.map.empty()) {
-    std::string text;
-    if (!io::readFile(opt.map, text, error)) return nullptr;
-    if (!applyMap(text, opt.map, inst->pins_, error, *src.dialect)) return nullptr;
-  }
-  if (!checkPins(inst->pins_, prefix, error)) return nullptr;
+  inst->opt_ = opt;
+  inst->prefix_ = prefix;
+  Loaded first;
+  if (!loadProgram(opt, inst->sourcePath_, prefix, first, error)) return nullptr;
+  inst->engine_ = std::move(first.engine);
+  inst->entries_ = first.entries;
+  inst->pins_ = std::move(first.pins);
+  inst->profile_ = first.profile;
+  inst->programHash_ = first.hash;
 
   inst->state_ = new (std::nothrow) lj_state;
   if (!inst->state_) {
@@ -108,7 +122,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
     io::RetainConfig cfg;
     cfg.path = opt.retain;
     cfg.programHash = inst->programHash_;
-    cfg.profile = prog->profile; // what the target retains (docs/retain.md)
+    cfg.profile = inst->profile_; // what the target retains (docs/retain.md)
     cfg.log = opt.log;
     inst->retain_ = std::make_unique<io::RetainStore>(cfg);
     if (!inst->retain_->prepare(error)) {
@@ -125,13 +139,33 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
 }
 
 Instance::~Instance() {
+  stopLoader();
+  delete pending_.exchange(nullptr);
+  delete retired_.exchange(nullptr);
   retain_.reset();
   engine_.reset();
   delete state_;
 }
 
+bool Instance::takePending() {
+  if (!pending_.load(std::memory_order_acquire) || retired_.load(std::memory_order_acquire))
+    return false;
+  Loaded *next = pending_.exchange(nullptr, std::memory_order_acq_rel);
+  // Swap the code, keep the state (and with it every retained value): `next` now holds the
+  // old engine, which the loader thread frees (no free() on the real-time thread).
+  std::swap(engine_, next->engine);
+  std::swap(entries_, next->entries);
+  programHash_.swap(next->hash);
+  retired_.store(next, std::memory_order_release);
+  reloads_.fetch_add(1, std::memory_order_relaxed);
+  return true;
+}
+
 uint32_t Instance::tick(uint64_t periodNs) {
   state_->now_ms = elapsedNs_ / 1000000u;
+  // Online change at the thread boundary (docs/linuxcnc.md): the new program's init runs on
+  // the kept state, before this tick, as `serve` does.
+  if (takePending()) inited_ = false;
   if (!inited_) {
     inited_ = true;
     lj_run_init(state_, &entries_);
@@ -158,6 +192,58 @@ void Instance::stopRetain() {
     retain_->stop(*state_, ticks_ ? ticks_ - 1 : 0);
     retainStarted_ = false;
   }
+}
+
+void Instance::requestReload() { reloadRequested_.store(true, std::memory_order_release); }
+
+void Instance::startLoader() {
+  if (loader_.joinable()) return;
+  loader_ = std::thread([this] { loaderLoop(); });
+}
+
+void Instance::stopLoader() {
+  stopLoader_.store(true, std::memory_order_release);
+  if (loader_.joinable()) loader_.join();
+}
+
+void Instance::loaderLoop() {
+  while (!stopLoader_.load(std::memory_order_acquire)) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    delete retired_.exchange(nullptr, std::memory_order_acq_rel); // the old engine, swapped out
+    if (pending_.load(std::memory_order_acquire) ||
+        !reloadRequested_.exchange(false, std::memory_order_acq_rel))
+      continue;
+    auto next = std::make_unique<Loaded>();
+    std::string error;
+    bool ok = loadProgram(opt_, sourcePath_, prefix_, *next, error);
+    if (ok && next->profile != profile_) {
+      ok = false;
+      error = "the new program is for another target (" + std::string(next->profile->name) +
+              ", running " + profile_->name + ")";
+    }
+    if (ok && !samePins(next->pins, pins_)) {
+      ok = false;
+      error = "the new program needs other pins than the running one (HAL pins cannot change "
+              "while the component runs: unload and load it instead)";
+    }
+    if (!ok) {
+      reloadFailures_.fetch_add(1, std::memory_order_relaxed);
+      if (opt_.log) opt_.log("online change refused, the old program keeps running: " + error);
+      continue;
+    }
+    if (opt_.log)
+      opt_.log("online change: " + next->hash + " ready, swapped in at the next refresh");
+    pending_.store(next.release(), std::memory_order_release);
+  }
+}
+
+bool samePins(const std::vector<PinSpec> &a, const std::vector<PinSpec> &b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].name != b[i].name || a[i].type != b[i].type || a[i].out != b[i].out ||
+        a[i].addr.text != b[i].addr.text || a[i].scale != b[i].scale)
+      return false;
+  return true;
 }
 
 std::string Instance::summary() const {

@@ -7,11 +7,13 @@
 #include "ir/Engine.h"
 #include "ladderjit/abi.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace lj::io {
@@ -31,6 +33,23 @@ struct Options {
   int32_t plc2Nvalue = -1;
   std::function<void(const std::string &)> log; ///< RTAPI log (one line per call)
 };
+
+/// One loaded program: its engine (an AOT .so), entries, pin plan, target and identity.
+struct Loaded {
+  std::unique_ptr<Engine> engine;
+  lj_entries entries{};
+  std::vector<PinSpec> pins;
+  const TargetProfile *profile = nullptr;
+  std::string hash; ///< "sha256:..." of the program source
+};
+
+/// Read and verify `sourcePath`, load `opt.program` through the trusted AOT loader, and plan
+/// the pins (with `prefix`). False with `error` naming the file and the problem.
+bool loadProgram(const Options &opt, const std::string &sourcePath, const std::string &prefix,
+                 Loaded &out, std::string &error);
+
+/// Whether two pin plans are the same pins (name, type, direction, address, scale, in order).
+bool samePins(const std::vector<PinSpec> &a, const std::vector<PinSpec> &b);
 
 /// The source beside an AOT .so: PATH without `.so` plus `.dit`, `.stl`, `.json`, `.pmc` or
 /// `.il`, the first that exists; empty when none does.
@@ -63,6 +82,15 @@ public:
     return std::lround(x);
   }
 
+  /// Online change (docs/linuxcnc.md "Online change"). Real-time: ask the loader thread to
+  /// load program= and its source again (an atomic flag, nothing else).
+  void requestReload();
+  /// Not real-time: start / stop the loader thread (after hal_ready / before unloading).
+  void startLoader();
+  void stopLoader();
+  uint32_t reloads() const { return reloads_.load(std::memory_order_relaxed); }
+  uint32_t reloadFailures() const { return reloadFailures_.load(std::memory_order_relaxed); }
+
   void startRetain();
   /// The final save of the retentive fields (after HAL stopped calling tick).
   void stopRetain();
@@ -70,6 +98,9 @@ public:
 
 private:
   Instance() = default;
+  /// Real-time: swap in a prepared program (pointer and entries only). True when swapped.
+  bool takePending();
+  void loaderLoop();
   std::unique_ptr<Engine> engine_;
   lj_entries entries_{};
   lj_state *state_ = nullptr;
@@ -81,6 +112,17 @@ private:
   uint64_t elapsedNs_ = 0;
   bool inited_ = false;
   bool retainStarted_ = false;
+  // Online change: the loader thread fills pending_, refresh swaps it in and leaves the old
+  // engine in retired_ for the loader thread to free.
+  Options opt_;
+  std::string prefix_;
+  std::thread loader_;
+  std::atomic<bool> stopLoader_{false};
+  std::atomic<bool> reloadRequested_{false};
+  std::atomic<Loaded *> pending_{nullptr};
+  std::atomic<Loaded *> retired_{nullptr};
+  std::atomic<uint32_t> reloads_{0};
+  std::atomic<uint32_t> reloadFailures_{0};
 };
 
 } // namespace lj::hal

@@ -10,6 +10,12 @@
            turns Y0.0 on 400 ms of *thread time* after X0.0, that is 100 ticks of a 4 ms thread
            and 400 ticks of a 1 ms thread (now_ms = ticks x period, docs/linuxcnc.md).
 
+  reload   online change: A runs (Y0.0 follows X0.0, X0.1 SETs K0.1 shown on Y0.1); B is
+           compiled over it and `ladderjit.reload` rises: B (Y0.0 = NOT X0.0) is swapped in
+           at a thread boundary with the state kept (Y0.1 still shows K0.1 = 1), `reloads` = 1;
+           then C, which needs another pin (X0.2), is refused: B keeps running,
+           `reload-failures` = 1 and the RTAPI log says why.
+
 Usage: hal_profile_test.py MODE LADDERJIT MODULE REPO"""
 import os
 import sys
@@ -39,6 +45,88 @@ END1
 END2
 END
 """
+
+
+RELOAD_A = """; tests/hal/hal_profile_test.py reload: A
+RD X0.0
+WRT Y0.0
+RD X0.1
+SET K0.1
+RD K0.1
+WRT Y0.1
+END1
+END2
+END
+"""
+RELOAD_B = """; tests/hal/hal_profile_test.py reload: B (the same pins)
+RD.NOT X0.0
+WRT Y0.0
+RD X0.1
+AND.NOT X0.1
+WRT R0.0
+RD K0.1
+WRT Y0.1
+END1
+END2
+END
+"""
+RELOAD_C = """; tests/hal/hal_profile_test.py reload: C (one more input pin)
+RD X0.2
+WRT Y0.0
+RD X0.1
+WRT R0.0
+RD K0.1
+WRT Y0.1
+END1
+END2
+END
+"""
+
+
+def test_reload(rig):
+    first = load(rig, "p", RELOAD_A)
+    for name, text in (("b", RELOAD_B), ("c", RELOAD_C)):
+        rig.write(name + ".pmc", text)
+
+    def recompile(name):
+        # halcmd has no quoting for `loadusr sh -c`: the steps go into a script file.
+        script = rig.write(f"compile-{name}.sh", "set -e\n"
+                           f"cp {rig.path(name + '.pmc')} {rig.path('p.pmc')}\n"
+                           f"{os.path.abspath(rig.ladderjit)} compile {rig.path('p.pmc')} "
+                           f"-o {rig.path('p.so')}\n"
+                           f"chmod 644 {rig.path('p.so')} {rig.path('p.pmc')}\n")
+        return f"loadusr -w sh {script}"
+
+    lines = [first, "loadrt threads name1=plc period1=1000000", "addf ladderjit.refresh plc",
+             "net x0 ladderjit.x0.0", "net x1 ladderjit.x0.1", "net rl ladderjit.reload",
+             "start", "sets x0 1", "sets x1 1", "loadusr -w sleep 0.2", "sets x1 0",
+             "loadusr -w sleep 0.1",
+             "getp ladderjit.y0.0", "getp ladderjit.y0.1",      # A: TRUE TRUE
+             recompile("b"), "sets rl 1", "loadusr -w sleep 3", "sets rl 0",
+             "getp ladderjit.reloads", "getp ladderjit.y0.0", "getp ladderjit.y0.1",  # 1 F T
+             recompile("c"), "sets rl 1", "loadusr -w sleep 3", "sets rl 0",
+             "getp ladderjit.reloads", "getp ladderjit.reload-failures",
+             "getp ladderjit.y0.0", "stop"]                      # 1 1 FALSE
+    r = rig.halfile("reload.hal", "\n".join(lines) + "\n", timeout=180, check=False)
+    vals = gets_values(r.stdout)
+    want = ["TRUE", "TRUE", "1", "FALSE", "TRUE", "1", "1", "FALSE"]
+    what = ["A: Y0.0 follows X0.0", "A: K0.1 set, on Y0.1", "reloads after B",
+            "B: Y0.0 = NOT X0.0", "B: K0.1 kept across the change", "reloads after C",
+            "reload-failures after C", "B still runs after C was refused"]
+    got = [str(int(v, 0)) if v.startswith("0x") else v for v in vals]
+    fails = 0
+    for i, (w, name) in enumerate(zip(want, what)):
+        g = got[i] if i < len(got) else None
+        fails += g != w
+        print(f"reload: {name}: {g} ({'ok' if g == w else 'expected ' + w})")
+    out = r.stdout + r.stderr
+    if "online change refused" not in out or "other pins" not in out:
+        fails += 1
+        print("reload: the refusal of C is not in the RTAPI log:\n" + out[-3000:])
+    if len(got) != len(want) or r.returncode != 0:
+        fails += 1
+        print(f"reload: halrun rc {r.returncode}, values {got}\n{out[-3000:]}")
+    return 1 if fails else 0
 
 
 def load(rig, name, text):
@@ -136,7 +224,7 @@ def main():
         print(__doc__)
         return 2
     mode, ladderjit, module, _repo = sys.argv[1:]
-    tests = {"sysbits": test_sysbits, "timer": test_timer}
+    tests = {"sysbits": test_sysbits, "timer": test_timer, "reload": test_reload}
     try:
         rig = Rig(ladderjit, module)
     except RigError as e:

@@ -168,6 +168,7 @@ LATHE_PINS = {
     "scan-time-ns": ("u32", "OUT"), "scan-time-max-ns": ("u32", "OUT"),
     "scan-time-max-reset": ("bit", "IN"), "ticks": ("u32", "OUT"), "fault": ("u32", "OUT"),
     "watchdog-faults": ("u32", "OUT"), "refresh.time": ("s32", "OUT"),
+    "reload": ("bit", "IN"), "reloads": ("u32", "OUT"), "reload-failures": ("u32", "OUT"),
 }
 
 
