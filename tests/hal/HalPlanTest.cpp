@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 namespace {
 
 using lj::hal::PinSpec;
@@ -105,6 +107,53 @@ TEST(HalPlan, SymbolsNameDefaultPinsWhenHalFriendly) {
   prog.symbols = {{"Start_Key", "X0.0", ""}, {"主轴", "X0.1", ""}, {"LAMP", "Y0.0", ""}};
   EXPECT_EQ(names(lj::hal::defaultPins(prog)),
             (std::vector<std::string>{"in start_key", "in x0.1", "out lamp"}));
+}
+
+} // namespace
+
+namespace {
+
+lj::VerifiedProgram verifyIn(const char *dialect, const char *path, const std::string &text) {
+  lj::io::ProgramSource src;
+  src.path = path;
+  src.text = text;
+  src.dialect = lj::io::dialectNamed(dialect);
+  std::string diags;
+  auto prog = lj::io::verifyProgram(src, 200, diags);
+  EXPECT_TRUE(prog.has_value()) << diags;
+  return *prog;
+}
+
+TEST(HalPlan, FanucPinsAndMapUseFanucAddresses) {
+  // Reads X0.0 and X200.3 (the second X range), writes Y0.1; R only internal: no pin.
+  auto prog =
+      verifyIn("fanuc", "t.pmc", "RD X0.0\nAND X200.3\nWRT Y0.1\nWRT R5.0\nEND1\nEND2\nEND\n");
+  const lj::io::Dialect &d = *lj::io::dialectNamed("fanuc");
+  std::vector<PinSpec> pins = lj::hal::defaultPins(prog, d);
+  EXPECT_EQ(names(pins), (std::vector<std::string>{"in x0.0", "in x200.3", "out y0.1"}));
+  // The pin writes the FANUC byte X200 in lj_state.mem, not HNC-8's X200 in lj_image.
+  auto s = std::make_unique<lj_state>();
+  lj_state_reset(s.get());
+  lj::io::writeAddress(*s, pins[1].addr, 1);
+  std::string err;
+  auto x200 = d.parseAddress("X200.3", err);
+  ASSERT_TRUE(x200) << err;
+  EXPECT_EQ(lj::io::readAddress(*s, *x200), 1);
+  EXPECT_EQ(s->img.X[200], 0);
+  std::string error;
+  ASSERT_TRUE(lj::hal::applyMap("in s32 D100:2 preset\nout bit K0.1\n", "m.map", pins, error, d))
+      << error;
+  EXPECT_EQ(pins[3].name, "preset");
+  EXPECT_EQ(pins[3].addr.width, 2);
+  EXPECT_EQ(pins[4].name, "k0.1");
+  EXPECT_FALSE(lj::hal::applyMap("in s32 D9999:2\n", "m.map", pins, error, d));
+  EXPECT_NE(error.find("m.map:1: bad address 'D9999:2'"), std::string::npos) << error;
+}
+
+TEST(HalPlan, IecPinsDropThePercentSign) {
+  auto prog = verifyIn("iec", "t.il", "000 LD %I0.2\n001 ST %Q0.1\n");
+  EXPECT_EQ(names(lj::hal::defaultPins(prog, *lj::io::dialectNamed("iec"))),
+            (std::vector<std::string>{"in i0.2", "out q0.1"}));
 }
 
 } // namespace
