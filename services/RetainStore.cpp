@@ -110,6 +110,12 @@ size_t fileBytes(const RetainLayout &l) {
          l.payloadBytes() + kDigestBytes;
 }
 
+static_assert(offsetof(FileHeader, saveSeq) == offsetof(FileHeader2, saveSeq) &&
+                  offsetof(FileHeader, tick) == offsetof(FileHeader2, tick) &&
+                  offsetof(FileHeader, nowMs) == offsetof(FileHeader2, nowMs) &&
+                  offsetof(FileHeader, programHash) == offsetof(FileHeader2, programHash),
+              "the two headers share their tail");
+
 std::string describe2(const FileHeader2 &h, const unsigned char *spans) {
   std::string out = "profile " + std::string(h.profile, strnlen(h.profile, sizeof h.profile)) +
                     ", ABI " + std::to_string(h.abiVersion) + ", spans";
@@ -169,6 +175,14 @@ bool sameLayout(const FileHeader &h, std::string &why) {
 }
 
 const TargetProfile &profileForHnc8() { return *profileNamed("hnc8"); }
+
+/// "format 2, profile ..., spans ..." of a saved format-2 file of `got` bytes in `buf`.
+std::string savedFormat2(const FileHeader2 &h, const unsigned char *buf, size_t got) {
+  std::string saved = "format 2";
+  if (sizeof h + 8ull * std::min(h.spanCount, kMaxSpans) <= got)
+    saved += ", " + describe2(h, buf + sizeof h);
+  return saved;
+}
 
 } // namespace
 
@@ -400,16 +414,13 @@ RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const 
   }
   const std::string ourText = layout.format1 ? "format 1 (HNC-8 B, T300..T427, C300..C427)"
                                              : "format 2, " + describe2(e2, ourSpans.data());
-  uint64_t seq = 0, tick = 0, nowMs = 0;
-  const char *hash = nullptr;
   if (format != ours) {
     std::string saved =
         format == kFormatVersion ? "format 1 (HNC-8 B, T300..T427, C300..C427)" : "format 2";
     if (format == kFormat2) {
       FileHeader2 h2;
       std::memcpy(&h2, buf.data(), sizeof h2);
-      if (sizeof h2 + 8ull * std::min(h2.spanCount, kMaxSpans) <= got)
-        saved += ", " + describe2(h2, buf.data() + sizeof h2);
+      saved = savedFormat2(h2, buf.data(), got);
     }
     error = path + ": saved with another layout (" + saved + "; this program: " + ourText + ")";
     return ReadResult::Layout;
@@ -422,11 +433,6 @@ RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const 
       error = path + ": " + (why.empty() ? "unexpected size " + std::to_string(got) : why);
       return ReadResult::Layout;
     }
-    seq = h.saveSeq;
-    tick = h.tick;
-    nowMs = h.nowMs;
-    std::memcpy(buf.data() + offsetof(FileHeader, programHash) + kHashField - 1, "", 1);
-    hash = reinterpret_cast<const char *>(buf.data() + offsetof(FileHeader, programHash));
   } else {
     FileHeader2 h;
     std::memcpy(&h, buf.data(), sizeof h);
@@ -435,18 +441,17 @@ RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const 
                 std::memcmp(h.profile, e2.profile, sizeof h.profile) == 0 && got == want &&
                 std::memcmp(buf.data() + sizeof h, ourSpans.data(), ourSpans.size()) == 0;
     if (!same) {
-      std::string saved = "format 2";
-      if (sizeof h + 8ull * std::min(h.spanCount, kMaxSpans) <= got)
-        saved += ", " + describe2(h, buf.data() + sizeof h);
-      error = path + ": saved with another layout (" + saved + "; this program: " + ourText + ")";
+      error = path + ": saved with another layout (" + savedFormat2(h, buf.data(), got) +
+              "; this program: " + ourText + ")";
       return ReadResult::Layout;
     }
-    seq = h.saveSeq;
-    tick = h.tick;
-    nowMs = h.nowMs;
-    std::memcpy(buf.data() + offsetof(FileHeader2, programHash) + kHashField - 1, "", 1);
-    hash = reinterpret_cast<const char *>(buf.data() + offsetof(FileHeader2, programHash));
   }
+  // Both headers keep the save number, tick, now_ms and program hash at the same offsets.
+  FileHeader tail;
+  std::memcpy(&tail, buf.data(), sizeof tail);
+  tail.programHash[kHashField - 1] = '\0';
+  const uint64_t seq = tail.saveSeq, tick = tail.tick, nowMs = tail.nowMs;
+  const std::string hash = tail.programHash;
   const size_t payloadAt = want - kDigestBytes - layout.payloadBytes();
   out.bytes.assign(buf.data() + payloadAt, buf.data() + payloadAt + layout.payloadBytes());
   out.tick = tick;
