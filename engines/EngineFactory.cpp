@@ -2,10 +2,7 @@
 // session) and AOT shared objects (loaded, or built into a temp file and loaded).
 #include "engines/AotLoader.h"
 #include "engines/EngineSpec.h"
-
-#include "jit/Aot.h"
-#include "jit/Jit.h"
-#include "jit/ObjectCache.h"
+#include "engines/LlvmBackend.h"
 
 #include <atomic>
 #include <cstdio>
@@ -24,13 +21,15 @@ Status engineFailed(std::string message) {
 /// file is unlinked at once (the mapping stays valid).
 Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
                                                 const EngineOptions &opts) {
+  std::string error;
+  const LlvmBackend *llvm = llvmBackend(error);
+  if (!llvm) return engineFailed(error);
   static std::atomic<uint64_t> counter{0};
   const char *tmp = std::getenv("TMPDIR");
   jit::AotOptions o;
   o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-aot-" +
              std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
-  o.programHash = "sha256:" + jit::programDigest(prog);
-  std::string error;
+  o.programHash = "sha256:" + llvm->programDigest(prog);
   io::SigningKey ownKey;
   io::TrustedKeys ownTrust;
   const io::TrustedKeys *trust = opts.aotTrust;
@@ -41,7 +40,7 @@ Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
     o.signingKey = &ownKey;
     trust = &ownTrust;
   }
-  if (!jit::compileSharedObject(prog, o, error)) return engineFailed(error);
+  if (!llvm->compileSharedObject(prog, o, error)) return engineFailed(error);
   std::unique_ptr<Engine> e = io::loadAot(o.output, {o.programHash}, *trust, error);
   std::remove(o.output.c_str());
   if (!e) return engineFailed(error);
@@ -87,15 +86,18 @@ Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const Verifie
   case EngineKind::Interp:
     return makeInterpreterEngine(prog, opts.forces, opts.trace);
   case EngineKind::Jit: {
+    const LlvmBackend *llvm = llvmBackend(error);
+    if (!llvm) return engineFailed(error);
     jit::JitOptions jo;
     jo.forces = opts.forces;
     jo.trace = opts.trace;
     jo.tier = opts.fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
     if (opts.session) {
-      e = opts.session->compile(prog, jo, error);
+      e = llvm->compileInSession(*opts.session, prog, jo, error);
     } else {
       jo.cache = opts.cache;
-      e = jit::compile(prog, jo, error);
+      if (!jo.cache && opts.cacheFromEnvironment) jo.cache = llvm->cacheFromEnvironment();
+      e = llvm->compile(prog, jo, error);
     }
     break;
   }

@@ -45,6 +45,9 @@ Result<EngineSpec> parseEngineSpec(std::string_view text);
 struct EngineOptions {
   bool fastTier = false;                   ///< Jit: Tier::Fast instead of Tier::Optimizing
   std::shared_ptr<jit::ObjectCache> cache; ///< Jit without a session: reuse objects (null: never)
+  /// Jit without a session and without `cache`: the cache the environment asks for
+  /// (jit::ObjectCache::fromEnvironment, docs/aot.md "Object cache"), made with the engine.
+  bool cacheFromEnvironment = false;
   /// Jit: compile as a new version in this session (serve keeps one for all versions; the
   /// session's tier applies). Null: a session of its own per engine.
   jit::Session *session = nullptr;

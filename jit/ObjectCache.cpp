@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
@@ -70,14 +71,25 @@ void putRange(std::string &out, const StmtRange &r) {
   put(out, r.end);
 }
 
-/// Identity of this build of ladderjit: inode, size and mtime of the running executable.
+std::string fileIdentity(const char *path) {
+  struct stat st {};
+  if (stat(path, &st) != 0) return "unknown";
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" +
+         std::to_string(st.st_size) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
+         std::to_string(st.st_mtim.tv_nsec);
+}
+
+/// Identity of this build of ladderjit: inode, size and mtime of the running executable and of
+/// the file this code is in, when that is another one (the LLVM module libladderjit_llvm.so,
+/// engines/LlvmBackend.h, is rebuilt without the driver when only jit/ or lowering/ change).
 const std::string &buildIdentity() {
   static const std::string id = [] {
-    struct stat st {};
-    if (stat("/proc/self/exe", &st) != 0) return std::string("exe:unknown");
-    return "exe:" + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" +
-           std::to_string(st.st_size) + ":" + std::to_string(st.st_mtim.tv_sec) + "." +
-           std::to_string(st.st_mtim.tv_nsec);
+    std::string s = "exe:" + fileIdentity("/proc/self/exe");
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void *>(&fileIdentity), &info) != 0 && info.dli_fname &&
+        *info.dli_fname)
+      s += " code:" + fileIdentity(info.dli_fname);
+    return s;
   }();
   return id;
 }

@@ -3,9 +3,9 @@
 #include "runtime/ProgramLoader.h"
 
 #include "engines/EngineSpec.h"
+#include "engines/LlvmBackend.h"
 #include "formats/ProgramFile.h"
 #include "ir/Trace.h"
-#include "jit/Jit.h"
 
 #include <chrono>
 
@@ -81,11 +81,14 @@ std::shared_ptr<ProgramVersion> ProgramLoader::loadInterpreted(const std::string
 jit::Session *ProgramLoader::session(bool fast, std::string &error) {
   std::shared_ptr<jit::Session> &s = fast ? fastSession_ : session_;
   if (!s) {
-    s = jit::Session::create(fast ? jit::Tier::Fast : jit::Tier::Optimizing, error);
+    // The LLVM module loads here (engines/LlvmBackend.h): on the tiering thread when the
+    // program starts on the interpreter, so the first tick never waits for libLLVM.
+    const engines::LlvmBackend *llvm = engines::llvmBackend(error);
+    if (!llvm) return nullptr;
     // The optimizing session compiles incrementally (docs/incremental.md): its first build
     // fills the per-group cache (the program already runs on the interpreter or the fast
     // JIT meanwhile), so an online change or a force recompiles only the groups it touches.
-    if (s && !fast) s->enableIncremental();
+    s = llvm->createSession(fast ? jit::Tier::Fast : jit::Tier::Optimizing, !fast, error);
   }
   return s.get();
 }

@@ -67,13 +67,15 @@ std::string sourcePath(const std::string &rel) {
   return std::string(LADDERJIT_SOURCE_DIR) + "/" + rel;
 }
 
-CliResult runCli(const std::vector<std::string> &args) {
+CliResult runCli(const std::vector<std::string> &args) { return runBinary(LADDERJIT_BIN, args); }
+
+CliResult runBinary(const std::string &binary, const std::vector<std::string> &args) {
   static int counter = 0;
   std::string base = scratchDir() + "/run" + std::to_string(++counter);
   std::string outPath = base + ".out", errPath = base + ".err";
 
   std::vector<std::string> argvStore;
-  argvStore.push_back(LADDERJIT_BIN);
+  argvStore.push_back(binary);
   argvStore.insert(argvStore.end(), args.begin(), args.end());
   std::vector<char *> argv;
   for (std::string &a : argvStore) argv.push_back(a.data());

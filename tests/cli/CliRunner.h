@@ -17,6 +17,9 @@ struct CliResult {
 /// Run `ladderjit args...` (no shell involved).
 CliResult runCli(const std::vector<std::string> &args);
 
+/// Run `binary args...` the same way (a copy of the driver in another directory).
+CliResult runBinary(const std::string &binary, const std::vector<std::string> &args);
+
 /// Absolute path of a file in the source tree (`examples/lathe_panel.stl`).
 std::string sourcePath(const std::string &rel);
 

@@ -9,12 +9,11 @@
 
 #include "engines/AotLoader.h"
 #include "engines/AotTrust.h"
+#include "engines/LlvmBackend.h"
 #include "formats/Address.h"
 #include "formats/InputFiles.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "gen/Rng.h"
-#include "jit/Aot.h"
-#include "jit/ObjectCache.h"
 #include "ladder/Json.h"
 
 #include <sys/stat.h>
@@ -130,11 +129,11 @@ Phases phasesOf(const jit::CompileTimes &t, double totalUs) {
   return p;
 }
 
-bool addJitLane(const VerifiedProgram &prog, bool fast, bool useCache, std::vector<Lane> &lanes,
-                std::string &error, bool traced = false) {
+bool addJitLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog, bool fast,
+                bool useCache, std::vector<Lane> &lanes, std::string &error, bool traced = false) {
   jit::JitOptions o;
   o.tier = fast ? jit::Tier::Fast : jit::Tier::Optimizing;
-  if (useCache) o.cache = jit::ObjectCache::fromEnvironment();
+  if (useCache) o.cache = llvm.cacheFromEnvironment();
   // --trace: the traced build of the live view (ir/Trace.h), recording into its own buffer.
   std::shared_ptr<std::vector<int32_t>> buf;
   if (traced) {
@@ -143,7 +142,7 @@ bool addJitLane(const VerifiedProgram &prog, bool fast, bool useCache, std::vect
   }
   jit::CompileTimes t;
   auto t0 = Clock::now();
-  std::unique_ptr<Engine> e = jit::compile(prog, o, error, &t);
+  std::unique_ptr<Engine> e = llvm.compile(prog, o, error, &t);
   if (!e) return false;
   Lane l;
   l.name = std::string(fast ? "jit-fast" : "jit-opt") + (traced ? "-traced" : "");
@@ -159,8 +158,9 @@ bool addJitLane(const VerifiedProgram &prog, bool fast, bool useCache, std::vect
 
 /// `ladderjit compile` into the private directory, signed with the default key, then loaded by
 /// the trusted loader with the default trust (as `run --engine aot:` would).
-bool addAotLane(const VerifiedProgram &prog, const ProgramSource &src, int32_t nvalue,
-                const std::string &dir, std::vector<Lane> &lanes, std::string &error) {
+bool addAotLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog,
+                const ProgramSource &src, int32_t nvalue, const std::string &dir,
+                std::vector<Lane> &lanes, std::string &error) {
   io::SigningKey key;
   std::string keyPath;
   bool created = false;
@@ -182,7 +182,7 @@ bool addAotLane(const VerifiedProgram &prog, const ProgramSource &src, int32_t n
   jit::CompileTimes t;
   o.times = &t;
   auto t0 = Clock::now();
-  if (!jit::compileSharedObject(prog, o, error)) return false;
+  if (!llvm.compileSharedObject(prog, o, error)) return false;
   struct stat st {};
   uint64_t soBytes = ::stat(o.output.c_str(), &st) == 0 ? static_cast<uint64_t>(st.st_size) : 0;
   auto tl = Clock::now();
@@ -339,13 +339,19 @@ int runBench(const BenchArgs &a) {
                     "state is checked against");
   TempDir dir;
   const bool fast = a.tier != "opt", opt = a.tier != "fast";
+  // The LLVM module loads before any compile is timed (engines/LlvmBackend.h).
+  const engines::LlvmBackend *llvm = nullptr;
+  if (wantJit || (wantAot && opt)) {
+    llvm = engines::llvmBackend(error);
+    if (!llvm) return usageError(std::string(wantJit ? "jit: " : "aot: ") + error);
+  }
   if (wantJit && fast) {
     progress.show("bench: compiling jit-fast ...");
-    if (!addJitLane(*prog, true, a.cache, lanes, error)) return usageError("jit: " + error);
+    if (!addJitLane(*llvm, *prog, true, a.cache, lanes, error)) return usageError("jit: " + error);
   }
   if (wantJit && opt) {
     progress.show("bench: compiling jit-opt ...");
-    if (!addJitLane(*prog, false, a.cache, lanes, error)) return usageError("jit: " + error);
+    if (!addJitLane(*llvm, *prog, false, a.cache, lanes, error)) return usageError("jit: " + error);
   }
   if (a.trace) { // the live view's traced builds beside the untraced ones (docs/BENCHMARKS.md)
     Lane l;
@@ -358,16 +364,17 @@ int runBench(const BenchArgs &a) {
     l.keepAlive = buf;
     l.entries = l.engine_->entries();
     lanes.push_back(std::move(l));
-    if (wantJit && fast && !addJitLane(*prog, true, false, lanes, error, true))
+    if (wantJit && fast && !addJitLane(*llvm, *prog, true, false, lanes, error, true))
       return usageError("jit: " + error);
-    if (wantJit && opt && !addJitLane(*prog, false, false, lanes, error, true))
+    if (wantJit && opt && !addJitLane(*llvm, *prog, false, false, lanes, error, true))
       return usageError("jit: " + error);
   }
   if ((wantAot && opt) || a.cBaseline)
     if (!dir.make(error)) return usageError(error);
   if (wantAot && opt) {
     progress.show("bench: building aot ...");
-    if (!addAotLane(*prog, src, nvalue, dir.path, lanes, error)) return usageError("aot: " + error);
+    if (!addAotLane(*llvm, *prog, src, nvalue, dir.path, lanes, error))
+      return usageError("aot: " + error);
   } else if (wantAot) {
     notes.push_back("aot skipped: it has only the optimizing tier");
   }

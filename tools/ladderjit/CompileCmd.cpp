@@ -5,7 +5,7 @@
 
 #include "engines/AotLoader.h"
 #include "engines/AotTrust.h"
-#include "jit/Aot.h"
+#include "engines/LlvmBackend.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -58,6 +58,8 @@ int runCompile(const CompileArgs &a) {
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
   std::string error;
+  const engines::LlvmBackend *llvm = engines::llvmBackend(error);
+  if (!llvm) return usageError("compile: " + error);
   io::SigningKey key;
   if (a.signKey.empty()) {
     std::string keyPath;
@@ -88,7 +90,7 @@ int runCompile(const CompileArgs &a) {
   o.plc2Nvalue = nvalue;
   o.signingKey = &key;
   o.genericCpu = a.cpu == "generic";
-  bool ok = jit::compileSharedObject(*prog, o, error);
+  bool ok = llvm->compileSharedObject(*prog, o, error);
   if (ok && !outputReplaceable(a.output, error)) ok = false;
   if (ok && std::rename(tmp.c_str(), a.output.c_str()) != 0) {
     error = "cannot write '" + a.output + "': " + std::strerror(errno);

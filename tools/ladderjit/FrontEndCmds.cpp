@@ -3,10 +3,10 @@
 #include "tools/ladderjit/Commands.h"
 #include "tools/ladderjit/Progress.h"
 
+#include "engines/LlvmBackend.h"
 #include "frontends/hnc8/FrontEnd.h"
 
 #include "fuzz/Fuzz.h"
-#include "jit/Jit.h"
 
 #include <cstdio>
 #include <iostream>
@@ -57,7 +57,10 @@ int runEmitLlvm(const EmitArgs &a) {
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
   std::string ir, error;
-  if (!jit::emitLlvm(*prog, a.optLevel, ir, error)) return usageError("emit-llvm failed: " + error);
+  const engines::LlvmBackend *llvm = engines::llvmBackend(error);
+  if (!llvm) return usageError("emit-llvm: " + error);
+  if (!llvm->emitLlvm(*prog, a.optLevel, ir, error))
+    return usageError("emit-llvm failed: " + error);
   std::cout << ir << std::flush;
   return kOk;
 }

@@ -7,7 +7,6 @@
 #include "formats/StateJson.h"
 #include "hosts/Simulation.h"
 #include "ir/Engine.h"
-#include "jit/ObjectCache.h"
 #include "runtime/TierUp.h"
 
 #include <charconv>
@@ -156,15 +155,14 @@ private:
 // background thread while the interpreter runs the first ticks.
 class BackgroundJit {
 public:
-  BackgroundJit(const VerifiedProgram &prog, std::vector<rt::EngineTier> tiers,
-                std::shared_ptr<jit::ObjectCache> cache)
+  BackgroundJit(const VerifiedProgram &prog, std::vector<rt::EngineTier> tiers)
       : tiers_(std::move(tiers)) {
     built_.resize(tiers_.size());
-    thread_ = std::thread([this, &prog, cache = std::move(cache)] {
+    thread_ = std::thread([this, &prog] {
       for (size_t i = 0; i < tiers_.size(); ++i) {
         engines::EngineOptions eo;
         eo.fastTier = tiers_[i] == rt::EngineTier::JitFast;
-        eo.cache = cache;
+        eo.cacheFromEnvironment = true; // docs/aot.md "Object cache"
         Result<std::unique_ptr<Engine>> made =
             engines::makeEngine(engines::EngineSpec{engines::EngineKind::Jit, {}}, prog, eo);
         std::lock_guard<std::mutex> g(mu_);
@@ -295,7 +293,7 @@ int runRun(const RunArgs &a) {
   engines::EngineOptions eo;
   io::TrustedKeys trust;
   if (spec->kind == engines::EngineKind::Jit)
-    eo.cache = jit::ObjectCache::fromEnvironment(); // docs/aot.md "Object cache"
+    eo.cacheFromEnvironment = true; // docs/aot.md "Object cache"
   if (spec->kind == engines::EngineKind::Aot) {
     // The signers `--trust-key` names (none: the default public key), docs/aot.md "Trust".
     if (!io::loadTrustedKeys(a.trustKeys, trust, error))
@@ -335,7 +333,7 @@ int runRun(const RunArgs &a) {
   auto nc = std::make_unique<io::SimNc>(ncConfig);
   io::Simulation run(engine->entries(), *state, sim, nc.get());
   std::unique_ptr<BackgroundJit> background;
-  if (!tiers.empty()) background = std::make_unique<BackgroundJit>(*prog, tiers, eo.cache);
+  if (!tiers.empty()) background = std::make_unique<BackgroundJit>(*prog, tiers);
   size_t nextTier = 0;
   // Before each tick: switch to every tier that is due (its --tier-switch-tick reached, waiting
   // for its build) or, without a given tick, already built. Only the code changes.
