@@ -709,7 +709,9 @@ private:
   /// 2).
   void directBlock(const std::string &mnem, const Object &blk, SourceLoc loc, SourceLoc opLoc) {
     afterMain(loc);
-    if (!outsideBlock(loc, mnem + " " + formatOperand(blk.op)) || !needSequence(loc, mnem) ||
+    const std::string name =
+        (blk.cls == ObjClass::Timer ? "%TM" : "%C") + std::to_string(blk.number);
+    if (!outsideBlock(loc, mnem + " " + name) || !needSequence(loc, mnem) ||
         !outsideParens(loc, mnem))
       return;
     blocks_.direct(mnem, blk, loc, opLoc);

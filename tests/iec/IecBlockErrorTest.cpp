@@ -29,7 +29,7 @@ const Case kCases[] = {
     {"NestedBlocks", "BLK %C0\nLD %I0.0\nCU\nBLK %TM1\nEND_BLK\n",
      "4:1: error: BLK inside BLK %C0 (line 1): blocks do not nest"},
     {"BlockInstructionInsideBlock", "BLK %C0\nLD %I0.0\nCU\nOUT_BLK\nLD D\nIN %TM1\nEND_BLK\n",
-     "6:1: error: IN %TM1.V inside BLK %C0 (line 1)"},
+     "6:1: error: IN %TM1 inside BLK %C0 (line 1)"},
     {"StoreInInputSection", "BLK %C0\nLD %I0.0\nST %Q0.0\nCU\nEND_BLK\n",
      "3:1: error: ST between BLK and OUT_BLK (BLK %C0 (line 1)): only test instructions"},
     {"MpsInInputSection", "BLK %C0\nLD %I0.0\nMPS\nCU\nEND_BLK\n",
