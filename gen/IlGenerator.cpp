@@ -18,6 +18,7 @@ public:
 
   GenProgram run() {
     subs_ = static_cast<int>(rng_.below(4));
+    configure();
     if (rng_.chance(20)) {
       line("LD %S1"); // the start-up idiom (L581-582)
       line("ENDC");
@@ -55,7 +56,39 @@ private:
   std::string wordBit() {
     return "%MW" + std::to_string(rng_.below(8)) + ":X" + std::to_string(rng_.below(16));
   }
-  std::string systemBit() { return "%S" + std::to_string(rng_.range(10, 40)); }
+  /// A system bit: any of %S0..%S40 to read (the runtime's %S0, %S1, %S4..%S7, %S13 too), one
+  /// the program may write (%S20..%S40) otherwise.
+  std::string systemBit(bool write = false) {
+    return "%S" + std::to_string(write ? rng_.range(20, 40) : rng_.range(0, 40));
+  }
+  std::string timer() { return "%TM" + std::to_string(rng_.below(kTimersUsed)); }
+  std::string counter() { return "%C" + std::to_string(rng_.below(kCountersUsed)); }
+  /// A function-block output bit (%TMi.Q, %Ci.E / .D / .F).
+  std::string blockBit() {
+    static const char *const kOut[] = {".E", ".D", ".F"};
+    return rng_.chance(50) ? timer() + ".Q" : counter() + kOut[rng_.below(3)];
+  }
+  /// A function-block word (.V, .P).
+  std::string blockWord() {
+    return (rng_.chance(50) ? timer() : counter()) + (rng_.chance(50) ? ".V" : ".P");
+  }
+
+  /// CONFIG lines for some of the timers and counters the program may use (the others keep
+  /// TON, 1 min, 9999); presets small enough to run out within a fuzz run.
+  void configure() {
+    static const char *const kType[] = {"TON", "TOF", "TP"};
+    for (int t = 0; t < kTimersUsed; ++t) {
+      if (!rng_.chance(80)) continue;
+      static const char *const kTb[] = {"10MS", "10MS", "100MS", "1S", "1MIN"};
+      const std::string tb = t < 2 && rng_.chance(50) ? "1MS" : kTb[rng_.below(5)];
+      line("CONFIG %TM" + std::to_string(t) + " " + kType[rng_.below(3)] + " TB=" + tb +
+           " P=" + std::to_string(rng_.chance(90) ? rng_.below(12) : rng_.below(10000)));
+    }
+    for (int c = 0; c < kCountersUsed; ++c)
+      if (rng_.chance(70))
+        line("CONFIG %C" + std::to_string(c) +
+             " P=" + std::to_string(rng_.chance(90) ? rng_.below(6) : rng_.below(10000)));
+  }
 
   /// A bit to test: any readable bit; `edge`: %I or %M0..31 only.
   std::string testBit(bool edge) {
@@ -68,7 +101,7 @@ private:
     case 3:
       return memory(false);
     case 4:
-      return rng_.chance(50) ? output() : systemBit();
+      return rng_.chance(40) ? output() : rng_.chance(50) ? systemBit() : blockBit();
     default:
       return rng_.chance(50)
                  ? wordBit()
@@ -84,13 +117,15 @@ private:
     case 3:
       return memory(false);
     default:
-      return rng_.chance(50) ? wordBit() : systemBit();
+      return rng_.chance(50) ? wordBit() : systemBit(true);
     }
   }
   std::string word() {
-    switch (rng_.below(4)) {
+    switch (rng_.below(5)) {
     case 0:
       return "%KW" + std::to_string(rng_.below(4));
+    case 4:
+      return blockWord();
     case 1:
       return std::to_string(rng_.range(-40, 40));
     default:
@@ -152,12 +187,7 @@ private:
         static const char *const kC[] = {"ST", "STN", "S", "R"};
         line(std::string(kC[rng_.below(4)]) + " " + coilBit());
       } else if (k < 10) {
-        static const char *const kOp[] = {"+", "-", "*", "/"};
-        const std::string dst = "%MW" + std::to_string(rng_.below(8));
-        if (rng_.chance(40))
-          line("[" + dst + " := " + word() + "]");
-        else
-          line("[" + dst + " := " + word() + kOp[rng_.below(4)] + word() + "]");
+        operation();
       } else if (k == 10 && labels_ < 60) {
         const int l = labels_++;
         pending_.push_back(l);
@@ -168,10 +198,80 @@ private:
         line("SR" + std::to_string(rng_.range(sub + 1, subs_ - 1)));
       } else if (k == 13 && sub >= 0 && rng_.chance(30)) {
         line(rng_.chance(50) ? "RETC" : "RETCN");
+      } else if (rng_.chance(40)) {
+        directBlock();
       } else {
         line("ST " + output());
       }
     }
+  }
+
+  /// An operation block; a preset destination takes a constant 0..9999 or a word.
+  void operation() {
+    static const char *const kOp[] = {"+", "-", "*", "/"};
+    if (rng_.chance(15)) {
+      const std::string dst = (rng_.chance(50) ? timer() : counter()) + ".P";
+      line("[" + dst + " := " +
+           (rng_.chance(50) ? std::to_string(rng_.below(12))
+                            : "%MW" + std::to_string(rng_.below(8))) +
+           "]");
+      return;
+    }
+    const std::string dst = "%MW" + std::to_string(rng_.below(8));
+    if (rng_.chance(40))
+      line("[" + dst + " := " + word() + "]");
+    else
+      line("[" + dst + " := " + word() + kOp[rng_.below(4)] + word() + "]");
+  }
+
+  /// The instruction form of a block input: IN %TMi, R / S / CU / CD %Ci.
+  void directBlock() {
+    static const char *const kPin[] = {"R", "S", "CU", "CD"};
+    if (rng_.chance(40))
+      line("IN " + timer());
+    else
+      line(std::string(kPin[rng_.below(4)]) + " " + counter());
+  }
+
+  /// Actions allowed in a block's output section (no jumps, calls, END, blocks).
+  void blockActions() {
+    const int n = static_cast<int>(rng_.range(1, 3));
+    for (int i = 0; i < n; ++i) {
+      if (rng_.chance(75)) {
+        static const char *const kC[] = {"ST", "STN", "S", "R"};
+        line(std::string(kC[rng_.below(4)]) + " " + coilBit());
+      } else {
+        operation();
+      }
+    }
+  }
+
+  /// BLK %TMi / %Ci with its inputs, sometimes an output section with the bare outputs.
+  void block() {
+    const bool isTimer = rng_.chance(45);
+    line("BLK " + (isTimer ? timer() : counter()));
+    static const char *const kPin[] = {"R", "S", "CU", "CD"};
+    int order[4] = {0, 1, 2, 3};
+    const int pins = isTimer ? 1 : static_cast<int>(rng_.range(1, 4));
+    for (int i = 3; i > 0; --i)
+      std::swap(order[i], order[rng_.below(static_cast<uint64_t>(i) + 1)]);
+    for (int p = 0; p < pins; ++p) {
+      load();
+      tests(0, static_cast<int>(rng_.below(3)));
+      line(isTimer ? "IN" : kPin[order[p]]);
+    }
+    if (rng_.chance(60)) {
+      line("OUT_BLK");
+      static const char *const kOut[] = {"E", "D", "F"};
+      const int outs = static_cast<int>(rng_.range(1, 2));
+      for (int o = 0; o < outs; ++o) {
+        const std::string bare = isTimer ? "Q" : kOut[rng_.below(3)];
+        line((rng_.chance(70) ? "LD " : "LDN ") + (rng_.chance(80) ? bare : testBit(false)));
+        tests(0, static_cast<int>(rng_.below(3)));
+        blockActions();
+      }
+    }
+    line("END_BLK");
   }
 
   void placeLabels(bool all) {
@@ -188,6 +288,10 @@ private:
       pending_.push_back(l);
       line("JMP %L" + std::to_string(l));
       placeLabels(false); // sometimes right away: the jumped-over part may be empty
+      return;
+    }
+    if (rng_.chance(8)) {
+      block();
       return;
     }
     load();
@@ -218,6 +322,8 @@ private:
     actions(sub);
   }
 
+  static constexpr int kTimersUsed = 6, kCountersUsed = 4;
+
   Rng rng_;
   int32_t budget_;
   int subs_ = 0;
@@ -239,6 +345,7 @@ Stimulus generateIlStimulus(uint64_t seed, uint32_t ticks) {
         {Area::ConstWords, k, -1, static_cast<int32_t>(rng.range(-40, 40)), tp});
   for (int b = 0; b < 8; ++b)
     st.beforeInit.push_back({Area::Input, b, -1, static_cast<int32_t>(rng.below(256)), tp});
+  uint64_t now = 0;
   for (uint32_t t = 0; t < ticks; ++t) {
     std::vector<HostWrite> w;
     const int n = static_cast<int>(rng.below(4));
@@ -251,7 +358,8 @@ Stimulus generateIlStimulus(uint64_t seed, uint32_t ticks) {
                      static_cast<int8_t>(rng.below(8)), static_cast<int32_t>(rng.below(2)), tp});
     }
     st.writes.push_back(std::move(w));
-    st.nowMs.push_back(t + 1);
+    now += rng.range(0, 12); // uneven scan times for the timers (never backwards)
+    st.nowMs.push_back(now);
   }
   return st;
 }

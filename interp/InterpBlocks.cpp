@@ -227,6 +227,12 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     f.output(s->alt_state[c.slot] != 0);
     return;
   }
+  case Op::IecTimer: // the Neza blocks (InterpIec.cpp)
+    iecTimer(s, f, c);
+    return;
+  case Op::IecCounter:
+    iecCounter(s, f, c);
+    return;
   default:
     assert(false && "instruction without interpreter semantics");
     return;

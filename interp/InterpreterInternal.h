@@ -113,6 +113,10 @@ inline Ref decode(const TargetProfile &tp, const Operand &o) {
   return r;
 }
 
+/// The Neza function blocks %TMi / %Ci (InterpIec.cpp, docs/iec-il.md "Function blocks").
+void iecTimer(lj_state *s, Frame &f, const Code &c);
+void iecCounter(lj_state *s, Frame &f, const Code &c);
+
 inline unsigned char *bytes(lj_state *s) { return reinterpret_cast<unsigned char *>(s); }
 
 /// Read rule of DIALECT.md 1: X/Y/R zero-extend, F/G/W sign-extend, D/B/P as is.

@@ -178,6 +178,10 @@ enum class Op : uint8_t {
   Alarm,
   ResetRequested,
   ResetClear,
+  // iec3 (issue 16): the Neza function blocks %TMi / %Ci (modicon-neza.md 3, docs/iec-il.md
+  // "Function blocks"); their whole state lives in the block's words (TimerData / CounterData)
+  IecTimer,
+  IecCounter,
   Count_
 };
 

@@ -59,6 +59,10 @@ llvm::Error FunctionEmitter::emitBlock(int32_t i) {
   case Op::FallPulse:
   case Op::Toggle:
     return emitPulse(i);
+  case Op::IecTimer: // the Neza blocks (EmitIec.cpp)
+    return emitIecTimer(i);
+  case Op::IecCounter:
+    return emitIecCounter(i);
   default:
     return fail(i, "not a function block");
   }

@@ -129,6 +129,9 @@ private:
   llvm::Error emitCounter(int32_t i);
   llvm::Error emitTimer(int32_t i);
   llvm::Error emitPulse(int32_t i);
+  // EmitIec.cpp: the Neza function blocks %TMi / %Ci (ir/IecBlocks.h).
+  llvm::Error emitIecTimer(int32_t i);
+  llvm::Error emitIecCounter(int32_t i);
 
   // EmitData.cpp: family Data (XMOV .. NTP). Helpers of that file go in this section.
   llvm::Error emitDataBlock(int32_t i);

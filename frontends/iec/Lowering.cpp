@@ -146,6 +146,10 @@ const char *spell(Op op) {
     return "<=";
   case Op::CompareEq:
     return "=";
+  case Op::IecTimer:
+    return "BLK %TMi";
+  case Op::IecCounter:
+    return "BLK %Ci";
   default:
     return nullptr; // not spelled in this dialect: spelling() prints the neutral name
   }

@@ -1,6 +1,7 @@
 // Neza objects <-> IR operands on the IEC profile's layout (profiles/iec/IecProfile.h).
 #include "frontends/iec/Objects.h"
 
+#include "ir/IecBlocks.h"
 #include "profiles/iec/IecProfile.h"
 
 #include <cctype>
@@ -51,6 +52,54 @@ std::string range(const char *what, int64_t hi) {
   return w + (w.empty() ? "" : " ") + "(0.." + std::to_string(hi) + ")";
 }
 
+/// %TMi, %TMi.Q/.V/.P, %Ci, %Ci.E/.D/.F/.V/.P (modicon-neza.md 1.2); `s` after the '%'.
+template <class Fail> std::optional<Object> blockObject(std::string_view s, Fail &fail) {
+  const bool timer = startsWithCi(s, "TM");
+  s.remove_prefix(timer ? 2 : 1);
+  std::optional<int64_t> n = digits(s);
+  if (!n)
+    return fail(timer ? "expected a timer number after %TM"
+                      : "expected a counter number "
+                        "after %C");
+  const int32_t limit = timer ? kTimers : kCounters;
+  if (*n >= limit)
+    return fail(std::string(timer ? "timer" : "counter") + " number out of range " +
+                range("", limit - 1));
+  Object obj;
+  obj.number = static_cast<int32_t>(*n);
+  const Area area = timer ? Area::TimerData : Area::CounterData;
+  const int32_t base = obj.number * (timer ? iec::kTimerWords : iec::kCounterWords);
+  if (s.empty()) {
+    obj.cls = timer ? ObjClass::Timer : ObjClass::Counter;
+    obj.op = regOp(area, base);
+    return obj;
+  }
+  if (s.size() != 2 || s[0] != '.')
+    return fail(timer ? "expected %TMi, %TMi.Q, %TMi.V or %TMi.P"
+                      : "expected %Ci, %Ci.E, %Ci.D, %Ci.F, %Ci.V or %Ci.P");
+  const char f = static_cast<char>(std::toupper(static_cast<unsigned char>(s[1])));
+  if (f == 'V' || f == 'P') {
+    obj.cls = ObjClass::BlockWord;
+    obj.writable = f == 'P';
+    obj.op = regOp(area, base + (f == 'V' ? 0 : 1)); // kTimerV / kCounterV, then P
+    return obj;
+  }
+  const int32_t status = base + (timer ? int32_t{iec::kTimerStatus} : int32_t{iec::kCounterStatus});
+  obj.cls = ObjClass::BlockBit;
+  if (timer && f == 'Q') {
+    obj.op = bitOp(area, status, iec::kTimerQ);
+    return obj;
+  }
+  if (!timer && (f == 'E' || f == 'D' || f == 'F')) {
+    obj.op = bitOp(area, status,
+                   f == 'E'   ? iec::kCounterE
+                   : f == 'D' ? iec::kCounterD
+                              : iec::kCounterF);
+    return obj;
+  }
+  return fail(timer ? "a timer has the outputs Q, V and P" : "a counter has E, D, F, V and P");
+}
+
 } // namespace
 
 std::optional<Object> parseObject(std::string_view text, std::string &error) {
@@ -99,17 +148,20 @@ std::optional<Object> parseObject(std::string_view text, std::string &error) {
                              {"Q", ObjClass::OutputBit}, {"M", ObjClass::MemoryBit},
                              {"S", ObjClass::SystemBit}, {"L", ObjClass::Label}};
   const Kind *kind = nullptr;
+  if (startsWithCi(s, "SBR") || startsWithCi(s, "SC"))
+    return fail("the function blocks %SBRi and %SCi are not supported (their pages are missing "
+                "from the seed; docs/iec-il.md)");
   for (const Kind &k : kKinds)
     if (startsWithCi(s, k.prefix)) {
       kind = &k;
       break;
     }
   if (!kind) {
-    if (startsWithCi(s, "TM") || startsWithCi(s, "C") || startsWithCi(s, "R") ||
-        startsWithCi(s, "DR"))
-      return fail("function-block objects (%TMi, %Ci, %Ri, %DRi) are not supported in this build "
-                  "(docs/iec-il.md)");
-    return fail("unknown object type (expected %I, %Q, %M, %S, %MW, %KW, %SW or %L)");
+    if (startsWithCi(s, "TM") || startsWithCi(s, "C")) return blockObject(s, fail);
+    if (startsWithCi(s, "R") || startsWithCi(s, "DR"))
+      return fail("the function blocks %Ri and %DRi are not supported (their pages are missing "
+                  "from the seed; docs/iec-il.md)");
+    return fail("unknown object type (expected %I, %Q, %M, %S, %MW, %KW, %SW, %TM, %C or %L)");
   }
   const bool sysWord = std::string_view(kind->prefix) == "SW";
   s.remove_prefix(std::string_view(kind->prefix).size());
@@ -195,6 +247,16 @@ std::string formatOperand(const Operand &op) {
       return "%KW" + std::to_string(op.index);
     case Area::SystemWords:
       return "%SW" + std::to_string(op.index);
+    case Area::TimerData:
+    case Area::CounterData: {
+      const bool t = op.area == Area::TimerData;
+      const int32_t per = t ? iec::kTimerWords : iec::kCounterWords;
+      const int32_t w = op.index % per;
+      return std::string(t ? "%TM" : "%C") + std::to_string(op.index / per) +
+             (w == 0   ? ".V"
+              : w == 1 ? ".P"
+                       : ".W" + std::to_string(w));
+    }
     default:
       return "%MW" + std::to_string(op.index);
     }
@@ -223,6 +285,14 @@ std::string formatOperand(const Operand &op) {
     return "%SW" + std::to_string(op.index) + ":X" + k;
   case Area::Word:
     return "%MW" + std::to_string(op.index) + ":X" + k;
+  case Area::TimerData:
+    return "%TM" + std::to_string(op.index / iec::kTimerWords) + (op.bit == 0 ? ".Q" : ".X" + k);
+  case Area::CounterData:
+    return "%C" + std::to_string(op.index / iec::kCounterWords) +
+           (op.bit == iec::kCounterE   ? ".E"
+            : op.bit == iec::kCounterD ? ".D"
+            : op.bit == iec::kCounterF ? ".F"
+                                       : ".X" + k);
   default:
     return "%?" + std::to_string(op.index) + "." + k;
   }

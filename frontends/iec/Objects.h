@@ -23,12 +23,17 @@ enum class ObjClass : uint8_t {
   ConstWord, ///< %KWi
   Label,     ///< %Li
   Sub,       ///< SRi
+  Timer,     ///< %TMi (BLK %TMi, IN %TMi); op: its first word
+  Counter,   ///< %Ci (BLK %Ci, CU %Ci ...); op: its first word
+  BlockBit,  ///< %TMi.Q, %Ci.E, %Ci.D, %Ci.F: read-only (L1133-1159)
+  BlockWord, ///< %TMi.V, %Ci.V (read-only), %TMi.P, %Ci.P (writable, 0..9999)
 };
 
 struct Object {
   ObjClass cls = ObjClass::Immediate;
-  int32_t number = 0; ///< %Mi: i; %Ii.j: i * 16 + j; words: i
-  Operand op;         ///< the IR operand (loc not set)
+  int32_t number = 0;    ///< %Mi: i; %Ii.j: i * 16 + j; words, blocks: i
+  bool writable = false; ///< BlockWord: the preset %TMi.P / %Ci.P
+  Operand op;            ///< the IR operand (loc not set)
 };
 
 /// Parse one object (case-insensitive, leading zeros accepted). Fails with `error` naming the

@@ -2,10 +2,12 @@
 // subroutine entries, `[ ... ]` operation blocks, `(* ... *)` comments (modicon-neza.md 1.3, 7),
 // with every restriction the seed states as a located error (2.8, 2.9, 9) and the
 // non-reversible forms (9 rule 3, rule 8) as warnings. The IR mapping is Emitter.h's.
+#include "frontends/iec/Blocks.h"
 #include "frontends/iec/Emitter.h"
 #include "frontends/iec/FrontEnd.h"
 #include "frontends/iec/Objects.h"
 
+#include "ir/IecBlocks.h"
 #include "profiles/iec/IecProfile.h"
 
 #include <cctype>
@@ -43,14 +45,13 @@ Op loadOp(Mod m) {
 
 class Parser {
 public:
-  Parser(ParsedProgram &prog, Diagnostics &diags) : prog_(prog), diags_(diags), em_(prog, diags) {}
+  Parser(ParsedProgram &prog, Diagnostics &diags)
+      : prog_(prog), diags_(diags), em_(prog, diags), blocks_(em_, diags) {}
 
   void run(std::string_view text) {
     if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-    // Power-up: %S1 is 1 during the first scan (the init part sets it, the end of every scan
-    // clears it; docs/iec-il.md "Assumptions").
-    em_.emit(Op::LoadTrue, {1, 1});
-    em_.emit(Op::Set, {1, 1}, {startBit()});
+    // The init part: the block presets go before its end marker once the program is read (the
+    // runtime writes %S0 / %S1 and the clocks: profiles/iec/Areas.cpp).
     em_.emit(Op::EndInit, {1, 1});
     int32_t lineNo = 0;
     size_t pos = 0;
@@ -65,18 +66,24 @@ public:
     }
     const SourceLoc end{lineNo, 1};
     if (inComment_) diags_.error(commentLoc_, "comment '(*' is not closed by '*)'");
+    blocks_.mustBeClosed(end, "the end of the program");
     closeSequence(end, "the end of the program");
     if (!mainDone_) finishMain(end);
     if (sub_ >= 0) em_.emit(Op::SubEnd, end);
+    insertPresets();
   }
 
 private:
   static constexpr int kMaxErrors = 100;
 
-  Operand startBit() const {
-    std::string err;
-    Operand o = parseObject("%S1", err)->op;
-    return o;
+  /// The block presets (FunctionBlocks::presets) at the start of the init part; statement ids
+  /// and comment positions move with them.
+  void insertPresets() {
+    std::vector<Stmt> pre = blocks_.presets({1, 1});
+    if (pre.empty()) return;
+    prog_.stmts.insert(prog_.stmts.begin(), pre.begin(), pre.end());
+    for (size_t i = 0; i < prog_.stmts.size(); ++i) prog_.stmts[i].id = static_cast<StmtId>(i);
+    for (Comment &c : prog_.comments) c.stmt += static_cast<int32_t>(pre.size());
   }
 
   void error(SourceLoc loc, const std::string &msg) { diags_.error(loc, msg); }
@@ -260,14 +267,12 @@ private:
   }
 
   void finishMain(SourceLoc loc) {
-    // END / ENDC / ENDCN jump here; then %S1 (first scan) is cleared.
+    // END / ENDC / ENDCN jump here.
     Operand end;
     end.kind = Operand::Kind::Reg;
     end.area = Area::Label;
     end.index = kEndLabel;
     em_.emit(Op::Label, loc, {end});
-    em_.emit(Op::LoadTrue, loc);
-    em_.emit(Op::Reset, loc, {startBit()});
     mainDone_ = true;
   }
 
@@ -278,6 +283,7 @@ private:
       error(loc, obj ? "expected %Li : or SRi :" : err);
       return;
     }
+    blocks_.mustBeClosed(loc, obj->cls == ObjClass::Label ? "a label" : "a subroutine");
     closeSequence(loc, obj->cls == ObjClass::Label ? "a label" : "a subroutine");
     seq_ = false;
     Operand op = obj->op;
@@ -301,19 +307,26 @@ private:
       error(loc, mnem + " needs an operand");
       return std::nullopt;
     }
+    bool isBare = false;
+    std::optional<Object> obj = blocks_.bare(text, loc, isBare);
+    if (isBare) {
+      if (obj) obj->op.loc = loc;
+      return obj;
+    }
     std::string err;
-    std::optional<Object> obj = parseObject(text, err);
+    obj = parseObject(text, err);
     if (!obj) {
       error(loc, mnem + ": " + err);
       return std::nullopt;
     }
+    blocks_.use(*obj);
     obj->op.loc = loc;
     return obj;
   }
 
   static bool isBitObject(ObjClass c) {
     return c == ObjClass::InputBit || c == ObjClass::OutputBit || c == ObjClass::MemoryBit ||
-           c == ObjClass::SystemBit || c == ObjClass::WordBit;
+           c == ObjClass::SystemBit || c == ObjClass::WordBit || c == ObjClass::BlockBit;
   }
 
   /// A test operand of `mnem` with modifier `mod`; `immediate`: 0/1 accepted.
@@ -334,7 +347,8 @@ private:
       return obj;
     }
     if (!isBitObject(obj->cls)) {
-      error(loc, mnem + " needs a bit object (%I, %Q, %M, %S or %MWi:Xk), found '" +
+      error(loc, mnem +
+                     " needs a bit object (%I, %Q, %M, %S, %MWi:Xk, %TMi.Q, %Ci.E/D/F), found '" +
                      std::string(text) + "'");
       return std::nullopt;
     }
@@ -390,11 +404,18 @@ private:
     while (!t.empty() && blank(t.back())) t.remove_suffix(1);
     std::optional<Object> obj = object(t, loc, mnem);
     if (!obj) return std::nullopt;
-    const bool word = obj->cls == ObjClass::Word || obj->cls == ObjClass::ConstWord;
-    if (dest ? obj->cls != ObjClass::Word : !(word || obj->cls == ObjClass::Immediate)) {
-      error(loc,
-            mnem + ": '" + std::string(t) + "' is not " +
-                (dest ? "a writable word (%MWi, %SWi)" : "a word (%MWi, %KWi, %SWi) or a number"));
+    const bool word = obj->cls == ObjClass::Word || obj->cls == ObjClass::ConstWord ||
+                      obj->cls == ObjClass::BlockWord;
+    const bool writable =
+        obj->cls == ObjClass::Word || (obj->cls == ObjClass::BlockWord && obj->writable);
+    if (dest ? !writable : !(word || obj->cls == ObjClass::Immediate)) {
+      error(loc, mnem + ": '" + std::string(t) + "' is not " +
+                     (dest ? "a writable word (%MWi, %SWi, %TMi.P, %Ci.P)" +
+                                 std::string(obj->cls == ObjClass::BlockWord
+                                                 ? " (the current value .V is read-only, "
+                                                   "modicon-neza.md 1.2)"
+                                                 : "")
+                           : "a word (%MWi, %KWi, %SWi, %TMi.V/.P, %Ci.V/.P) or a number"));
       return std::nullopt;
     }
     return obj->op;
@@ -422,8 +443,16 @@ private:
     if (!push && neg) em_.emit(Op::AndBlock, loc);
   }
 
+  static bool isPreset(const Operand &o) {
+    return o.area == Area::TimerData || o.area == Area::CounterData; // only .P is writable
+  }
+
   void operationBlock(std::string_view text, SourceLoc loc) {
     afterMain(loc);
+    if (blocks_.section() == FunctionBlocks::Section::Inputs) {
+      inputSection(loc, "an operation block");
+      return;
+    }
     if (text.back() != ']') {
       error(loc, "operation block: expected ']' at the end");
       return;
@@ -454,6 +483,12 @@ private:
       }
     if (p == std::string_view::npos) {
       std::optional<Operand> src = wordOperand(expr, loc, ":=", false);
+      if (dst && src && isPreset(*dst) && src->kind == Operand::Kind::Const &&
+          (src->value < 0 || src->value > kPresetMax)) {
+        error(loc, ":=: preset " + std::to_string(src->value) +
+                       " out of range (0 <= P <= 9999; modicon-neza.md 3.3, L1276-1278)");
+        return;
+      }
       if (dst && src) em_.emit(Op::Move, loc, {*src, *dst});
       return;
     }
@@ -507,6 +542,11 @@ private:
         {"LD", Mod::Plain}, {"LDN", Mod::Not}, {"LDR", Mod::Rise}, {"LDF", Mod::Fall}};
     static const std::pair<const char *, Mod> kMods[] = {
         {"", Mod::Plain}, {"N", Mod::Not}, {"R", Mod::Rise}, {"F", Mod::Fall}};
+    if (!paren && blockInstruction(mnem, text, loc, opLoc)) return;
+    if (blocks_.section() == FunctionBlocks::Section::Inputs && !paren && !testInstruction(mnem)) {
+      inputSection(loc, mnem);
+      return;
+    }
     if (paren) {
       if (mnem != "AND" && mnem != "OR") {
         error(loc, "only AND( and OR( open a parenthesis, found '" + mnem + "('");
@@ -579,15 +619,102 @@ private:
       if (!text.empty()) error(opLoc, "NOP takes no operand");
       return;
     }
-    static const char *const kBlocks[] = {"BLK", "OUT_BLK", "END_BLK", "IN", "CU",
-                                          "CD",  "I",       "O",       "DS", "RET_BLK"};
+    static const char *const kBlocks[] = {"I", "O", "DS", "RET_BLK"};
     for (const char *b : kBlocks)
       if (mnem == b) {
-        error(loc, mnem + ": function blocks (%TMi timers, %Ci counters, BLK ... END_BLK) are not "
-                          "supported in this build (docs/iec-il.md \"Not supported\")");
+        error(loc, mnem + ": an input of the %Ri / %DRi / %SBRi / %SCi blocks, which are not "
+                          "supported (their pages are missing from the seed; docs/iec-il.md)");
         return;
       }
     error(loc, "unknown instruction '" + mnem + "'");
+  }
+
+  // ---- function blocks (Blocks.h) -----------------------------------------------------------
+
+  /// The instructions allowed between BLK and OUT_BLK besides the block's inputs: tests only
+  /// (modicon-neza.md 3.1, L1244-1246).
+  static bool testInstruction(const std::string &m) {
+    for (const char *fam : {"LD", "AND", "OR", "XOR"})
+      for (const char *suffix : {"", "N", "R", "F"})
+        if (m == std::string(fam) + suffix) return true;
+    return m == "N" || m == "NOP";
+  }
+
+  void inputSection(SourceLoc loc, const std::string &what) {
+    error(loc, what + " between BLK and OUT_BLK (" + blocks_.openBlock() +
+                   "): only test instructions and the block's inputs are allowed there "
+                   "(modicon-neza.md 3.1, L1244-1246)");
+  }
+
+  /// Not inside a BLK structure at all (jumps, calls, END, other blocks).
+  bool outsideBlock(SourceLoc loc, const std::string &what) {
+    if (blocks_.section() == FunctionBlocks::Section::None) return true;
+    error(loc, what + " inside " + blocks_.openBlock() + " (before its END_BLK): not allowed");
+    return false;
+  }
+
+  /// CONFIG, BLK, OUT_BLK, END_BLK, the inputs IN / CU / CD / R / S; false when `mnem` is none.
+  bool blockInstruction(const std::string &mnem, std::string_view text, SourceLoc loc,
+                        SourceLoc opLoc) {
+    if (mnem == "CONFIG") {
+      if (stmtCount_ - 1 != configLines_)
+        error(loc, "CONFIG lines come before the first instruction of the program");
+      ++configLines_;
+      blocks_.config(text, loc);
+      return true;
+    }
+    if (mnem == "BLK") {
+      afterMain(loc);
+      if (blocks_.section() == FunctionBlocks::Section::None) {
+        closeSequence(loc, "BLK");
+        seq_ = false;
+      }
+      blocks_.begin(text, loc, opLoc);
+      return true;
+    }
+    if (mnem == "OUT_BLK" || mnem == "END_BLK") {
+      if (!text.empty()) error(opLoc, mnem + " takes no operand");
+      closeSequence(loc, mnem);
+      seq_ = false;
+      if (mnem == "OUT_BLK")
+        blocks_.outputs(loc);
+      else
+        blocks_.end(loc);
+      return true;
+    }
+    const bool input = mnem == "IN" || mnem == "CU" || mnem == "CD";
+    if (!input && !((mnem == "R" || mnem == "S") && text.empty())) return false;
+    if (text.empty()) {
+      if (blocks_.section() != FunctionBlocks::Section::Inputs) {
+        error(loc, mnem +
+                       " without an operand is a function-block input: it stands between "
+                       "BLK and OUT_BLK (or END_BLK); elsewhere write " +
+                       mnem + " %TMi / %Ci");
+        return true;
+      }
+      if (needSequence(loc, mnem) && outsideParens(loc, mnem)) blocks_.pin(mnem, loc);
+      return true;
+    }
+    std::optional<Object> blk = object(text, opLoc, mnem);
+    if (!blk) return true;
+    if (!FunctionBlocks::isBlock(*blk)) {
+      error(opLoc, mnem + " needs a function block (%TMi, %Ci), found '" + std::string(text) + "'");
+      return true;
+    }
+    directBlock(mnem, *blk, loc, opLoc);
+    return true;
+  }
+
+  /// The instruction form `IN %TMi`, `CU %Ci`, `R %Ci`... (not reversible, modicon-neza.md 9 rule
+  /// 2).
+  void directBlock(const std::string &mnem, const Object &blk, SourceLoc loc, SourceLoc opLoc) {
+    afterMain(loc);
+    const std::string name =
+        (blk.cls == ObjClass::Timer ? "%TM" : "%C") + std::to_string(blk.number);
+    if (!outsideBlock(loc, mnem + " " + name) || !needSequence(loc, mnem) ||
+        !outsideParens(loc, mnem))
+      return;
+    blocks_.direct(mnem, blk, loc, opLoc);
   }
 
   void nonReversible(SourceLoc loc, const std::string &mnem) {
@@ -632,14 +759,24 @@ private:
   }
 
   void coil(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
-    if (text.empty() && mnem == "R") {
-      error(loc, "R without an operand is a function-block input: function blocks are not "
-                 "supported in this build");
-      return;
-    }
     if (!needSequence(loc, mnem) || !outsideParens(loc, mnem)) return;
     std::optional<Object> obj = object(text, opLoc, mnem);
     if (!obj) return;
+    if (FunctionBlocks::isBlock(*obj) && (mnem == "R" || mnem == "S")) {
+      directBlock(mnem, *obj, loc, opLoc);
+      return;
+    }
+    if (obj->cls == ObjClass::SystemBit && runtimeBit(obj->number)) {
+      error(opLoc, mnem + " %S" + std::to_string(obj->number) +
+                       ": the runtime writes this system bit before every scan; the program may "
+                       "only read it (docs/iec-il.md \"System bits\")");
+      return;
+    }
+    if (obj->cls == ObjClass::BlockBit) {
+      error(opLoc, mnem + " " + std::string(text) +
+                       ": function-block outputs are read-only (modicon-neza.md 1.2, L1133-1159)");
+      return;
+    }
     const bool ok = obj->cls == ObjClass::OutputBit || obj->cls == ObjClass::MemoryBit ||
                     obj->cls == ObjClass::SystemBit ||
                     (obj->cls == ObjClass::WordBit && obj->op.area != Area::ConstWords);
@@ -695,6 +832,7 @@ private:
 
   void jump(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
     afterMain(loc);
+    if (!outsideBlock(loc, mnem)) return;
     if (mnem != "JMP" && !needSequence(loc, mnem)) return;
     if (!outsideParens(loc, mnem)) return;
     std::optional<Operand> l = label(text, opLoc, mnem);
@@ -715,6 +853,7 @@ private:
 
   void end(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
     if (!text.empty()) error(opLoc, mnem + " takes no operand");
+    if (!outsideBlock(loc, mnem)) return;
     if (sub_ >= 0) {
       error(loc, mnem + " inside a subroutine is not supported (the scan ends after the main "
                         "program; use RET)");
@@ -746,6 +885,7 @@ private:
 
   void ret(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
     if (!text.empty()) error(opLoc, mnem + " takes no operand");
+    if (!outsideBlock(loc, mnem)) return;
     if (sub_ < 0) {
       error(loc, mnem + " outside a subroutine");
       return;
@@ -768,6 +908,7 @@ private:
 
   void call(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
     if (!text.empty()) error(opLoc, mnem + " takes no operand");
+    if (!outsideBlock(loc, mnem)) return;
     afterMain(loc);
     if (!needSequence(loc, mnem) || !outsideParens(loc, mnem)) return;
     std::string err;
@@ -780,11 +921,21 @@ private:
     em_.emit(Op::Call, loc, {obj->op});
   }
 
+  /// The system bits of the profile's table (%S0, %S1, %S4..%S7, %S13).
+  static bool runtimeBit(int32_t n) {
+    const TargetProfile &tp = profile();
+    for (const SystemBit &b : tp.systemBits)
+      if (b.offset == tp.elementOffset(Area::SystemBits, n / 8) && b.bit == n % 8) return true;
+    return false;
+  }
+
   static constexpr int32_t kStatementLimit = 10000;
 
   ParsedProgram &prog_;
   Diagnostics &diags_;
   Emitter em_;
+  FunctionBlocks blocks_;
+  int32_t configLines_ = 0;
   std::vector<Paren> parens_;
   std::vector<SourceLoc> mps_;
   bool seq_ = false;

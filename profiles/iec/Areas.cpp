@@ -3,6 +3,7 @@
 // "Process image"), checked against it at compile time.
 #include "profiles/iec/IecProfile.h"
 
+#include "ir/IecBlocks.h"
 #include "ladderjit/abi.h"
 
 #include <cstddef>
@@ -23,7 +24,9 @@ constexpr uint32_t kScratchOff = kSysOff + kSystemBits / 8;
 constexpr uint32_t kWordOff = (kScratchOff + kScratchBytes + 1) / 2 * 2; // %MWi
 constexpr uint32_t kConstOff = kWordOff + 2 * kWords;                    // %KWi
 constexpr uint32_t kSysWordOff = kConstOff + 2 * kConstWords;            // %SWi
-constexpr uint32_t kEnd = kSysWordOff + 2 * kSystemWords;
+constexpr uint32_t kTimerOff = kSysWordOff + 2 * kSystemWords;           // %TMi words
+constexpr uint32_t kCounterOff = kTimerOff + 2 * kTimers * kTimerWords;  // %Ci words
+constexpr uint32_t kEnd = kCounterOff + 2 * kCounters * kCounterWords;
 
 constexpr uint32_t mem(uint32_t off) {
   return static_cast<uint32_t>(offsetof(lj_state, mem)) + off;
@@ -37,6 +40,20 @@ constexpr AreaInfo words(const char *name, int32_t count, bool writable, uint32_
 }
 constexpr AreaInfo none() { return {"", 0, 0, false, false}; }
 
+constexpr uint32_t sysByte(int32_t n) { return mem(kSysOff + static_cast<uint32_t>(n / 8)); }
+constexpr uint8_t sysBit(int32_t n) { return static_cast<uint8_t>(n % 8); }
+using K = SystemBit::Kind;
+/// The system bits the runtime writes before every tick (docs/iec-il.md "System bits"): %S0 /
+/// %S1 cold / warm start and %S13 first scan (every start of ladderjit is both: the seed's
+/// `LD %S1 / ENDC`, L581-582, suppresses the start edges after either), %S4..%S7 the 10 ms,
+/// 100 ms, 1 s and 1 min square waves (modicon-neza.md 11).
+constexpr SystemBit kSystemBitTable[] = {
+    {sysByte(0), sysBit(0), K::FirstScan},   {sysByte(1), sysBit(1), K::FirstScan},
+    {sysByte(4), sysBit(4), K::Clock, 5},    {sysByte(5), sysBit(5), K::Clock, 50},
+    {sysByte(6), sysBit(6), K::Clock, 500},  {sysByte(7), sysBit(7), K::Clock, 30000},
+    {sysByte(13), sysBit(13), K::FirstScan},
+};
+
 constexpr TargetProfile kIec{
     "iec",
     {{
@@ -49,15 +66,15 @@ constexpr TargetProfile kIec{
         none(),                                                           // DWord
         none(),                                                           // Retained
         none(),                                                           // Param
-        {"%TM", 32, 0, false, false, true, 0},                            // Timer (L1269)
-        {"%C", 16, 0, false, false, true, 0},                             // Counter (L1104-1168)
+        none(),                                                           // Timer
+        none(),                                                           // Counter
         {"%L", kLabels + 1, 0, false, false, false, 0},                   // Label (+ the end label)
         {"SR", kSubroutines, 0, false, false, false, 0},                  // Subroutine
         bits("%M", kRetainedBits / 8, true, kKeepOff),                    // KeepRelay: %M0..%M63
         bits("%~", kScratchBytes, true, kScratchOff),                     // ExtraRelay: scratch
         none(),                                                           // MessageBits
-        none(),                                                           // TimerData
-        none(),                                                           // CounterData
+        words("%TM", kTimers *kTimerWords, true, kTimerOff),              // TimerData: %TMi
+        words("%C", kCounters *kCounterWords, true, kCounterOff),         // CounterData: %Ci
         none(),                                                           // DataTable
         bits("%S", kSystemBits / 8, true, kSysOff),                       // SystemBits
         words("%SW", kSystemWords, true, kSysWordOff),                    // SystemWords
@@ -83,7 +100,7 @@ constexpr TargetProfile kIec{
     {},
     {},
     {0, 0, 0, 0, 0, 0, 0},
-    {}, // %S1 is set by the program's own init part (frontends/iec), so every host agrees
+    kSystemBitTable,
 };
 
 static_assert(kEnd <= LJ_MEM_BYTES, "the IEC objects fit lj_state.mem");

@@ -23,7 +23,7 @@ void checkTable(const CliResult &r, size_t ticks, const std::vector<Expect> &exp
 }
 
 TEST(IecExamples, CheckCleanly) {
-  for (const char *name : {"conveyor", "pump_station"}) {
+  for (const char *name : {"conveyor", "pump_station", "filler"}) {
     CliResult r = runCli({"check", sourcePath(std::string("examples/") + name + ".il")});
     EXPECT_EQ(r.exitCode, 0) << name << "\n" << r.err;
     EXPECT_EQ(r.err, "") << name << ": no warnings either";
@@ -66,6 +66,56 @@ TEST(IecExamples, Conveyor) {
                    {15, "%MW0", 1},
                    {16, "%Q0.0", 0},
                    {17, "%Q0.0", 0},
+               });
+  }
+}
+
+// examples/filler.il: %TM1 TON 3 x 100 ms, %TM0 TP 10 x 100 ms, %C0 preset 2; one tick =
+// one time-base unit (docs/iec-il.md A1-A3).
+TEST(IecExamples, Filler) {
+  for (const char *engine : {"interp", "jit"}) {
+    SCOPED_TRACE(engine);
+    CliResult r =
+        runCli({"run", sourcePath("examples/filler.il"), "--engine", engine, "--ticks", "37",
+                "--period-ms", "100", "--stimulus", sourcePath("examples/filler.stim"), "--watch",
+                "%Q0.0,%Q0.1,%Q0.2,%TM0.V,%C0.V"});
+    checkTable(r, 37,
+               {
+                   // start at 1: the line and the conveyor run.
+                   {0, "%Q0.0", 0},
+                   {1, "%Q0.0", 1},
+                   // bottle at 3: the conveyor stops, %TM1 settles from 300 ms; Q at 600 ms.
+                   {3, "%Q0.0", 0},
+                   {5, "%Q0.1", 0},
+                   {6, "%Q0.1", 1},
+                   {6, "%TM0.V", 0},
+                   // the TP pulse lasts 10 units: valve 1 in ticks 6..15, V counts up.
+                   {10, "%TM0.V", 4},
+                   {15, "%Q0.1", 1},
+                   {15, "%Q0.0", 0},
+                   {16, "%Q0.1", 0},
+                   {16, "%TM0.V", 10},
+                   // filled: the conveyor carries it on, the case counts it.
+                   {16, "%Q0.0", 1},
+                   {16, "%C0.V", 1},
+                   // the bottle is gone at 17 (V = 0 once IN and Q are 0).
+                   {17, "%TM0.V", 0},
+                   {17, "%Q0.0", 1},
+                   // bottle 2 at 19: settled at 22, filled at 32, the case is full.
+                   {19, "%Q0.0", 0},
+                   {22, "%Q0.1", 1},
+                   {31, "%Q0.1", 1},
+                   {32, "%Q0.1", 0},
+                   {32, "%C0.V", 2},
+                   {32, "%Q0.2", 1},
+                   {32, "%Q0.0", 1},
+                   // the line stops in the next scan (ANDN %C0.D) and stays off.
+                   {33, "%Q0.0", 0},
+                   {34, "%Q0.2", 1},
+                   // the case is taken away at 35: the count clears.
+                   {35, "%C0.V", 0},
+                   {35, "%Q0.2", 0},
+                   {36, "%Q0.0", 0},
                });
   }
 }
