@@ -69,9 +69,8 @@ double median(std::vector<double> v) {
 
 int main(int argc, char **argv) {
   if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: bench_online_change PROGRAM [--changes N] [--threads T] [--full] "
-                 "[--quick]\n");
+    std::fprintf(stderr, "usage: bench_online_change PROGRAM [--changes N] [--threads T] [--full] "
+                         "[--quick]\n");
     return 2;
   }
   int changes = 20, threads = 0;
@@ -170,9 +169,8 @@ int main(int argc, char **argv) {
     if (!t.spineCached) std::snprintf(spine, sizeof spine, "%.2f", t.spineUs / 1000);
     std::printf("%-6s %8.2f %7.2f %7.2f %7.2f %7s %7.2f %7.2f %8.2f %8.2f %7.2f %3u/%-3u %8.2f\n",
                 c == 0 ? "cold" : std::to_string(c).c_str(), fe, feCpu, t.keysUs / 1000,
-                t.lowerUs / 1000, spine,
-                (t.codegenUs - t.linkUs - t.cacheUs - t.spineUs) / 1000, t.linkUs / 1000, comp,
-                total, t.cpuUs / 1000, t.leavesCompiled, t.leaves, opt);
+                t.lowerUs / 1000, spine, (t.codegenUs - t.linkUs - t.cacheUs - t.spineUs) / 1000,
+                t.linkUs / 1000, comp, total, t.cpuUs / 1000, t.leavesCompiled, t.leaves, opt);
     if (c > 0) {
       totals.push_back(total);
       compiles.push_back(comp);

@@ -366,8 +366,7 @@ std::unique_ptr<Engine> compileIncremental(Session &self, Session::Impl &im,
     objs.push_back(std::move(j.obj));
   }
   const double cl = threadCpuUs();
-  std::unique_ptr<Engine> e =
-      linkVersion(self, im, std::move(objs), prog, t0, t, error, times);
+  std::unique_ptr<Engine> e = linkVersion(self, im, std::move(objs), prog, t0, t, error, times);
   if (times) times->cpuUs += threadCpuUs() - cl; // the link is on the critical path too
   return e;
 }

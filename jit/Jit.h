@@ -62,10 +62,10 @@ struct JitOptions {
 /// linkUs and cacheUs). For `ladderjit bench` (docs/bench.md).
 struct CompileTimes {
   double lowerUs = 0, optimizeUs = 0, codegenUs = 0;
-  double linkUs = 0;           ///< JITLink (adding the objects, resolving the entries); AOT: cc
-  double cacheUs = 0;          ///< object cache lookup + store (0 without a cache)
-  uint64_t objectBytes = 0;    ///< size of the object file(s) linked
-  bool cacheHit = false;       ///< the objects came from the cache (lower/optimize are then 0)
+  double linkUs = 0;        ///< JITLink (adding the objects, resolving the entries); AOT: cc
+  double cacheUs = 0;       ///< object cache lookup + store (0 without a cache)
+  uint64_t objectBytes = 0; ///< size of the object file(s) linked
+  bool cacheHit = false;    ///< the objects came from the cache (lower/optimize are then 0)
   double cpuUs = 0; ///< CPU time of lowering, optimizing and codegen over all threads (incremental:
                     ///< and of the link)
   uint32_t leaves = 0;         ///< incremental: distinct rung groups (leaf objects) linked

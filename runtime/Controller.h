@@ -3,8 +3,8 @@
 // the control socket (docs/serve.md "Control").
 #pragma once
 
-#include "runtime/Exchange.h"
 #include "runtime/ChangeOptimizer.h"
+#include "runtime/Exchange.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 

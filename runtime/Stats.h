@@ -56,8 +56,8 @@ struct TierSwitch {
 /// for a file still being written, which is not counted) to the new code running at a tick
 /// boundary. CLOCK_MONOTONIC ns; durations in ns.
 struct ChangeRecord {
-  uint64_t version = 0;  ///< the new version's id
-  uint64_t tick = 0;     ///< the first tick it ran
+  uint64_t version = 0; ///< the new version's id
+  uint64_t tick = 0;    ///< the first tick it ran
   int64_t requestedNs = 0, runningNs = 0;
   int64_t optimizedNs = 0; ///< its optimized build switched in (JitQuick only; 0 = not yet / never)
   int64_t settleNs = 0;    ///< the wait for the file to settle before the request (not counted)
@@ -98,8 +98,8 @@ struct TickStats {
   uint64_t changeCount = 0;
   std::array<ChangeRecord, kMaxChanges> changes{}; ///< ring: change n at n % kMaxChanges
   std::array<int64_t, kLatencies> latencyNs{};     ///< ring likewise
-  Histogram scan;            ///< work per tick: apply, I/O, lj_tick, publish, hooks
-  Histogram jitter;          ///< wake-up minus deadline
+  Histogram scan;   ///< work per tick: apply, I/O, lj_tick, publish, hooks
+  Histogram jitter; ///< wake-up minus deadline
 
   nlohmann::json toJson() const;
   /// The "startup" object of toJson: ready_ms, first_tick_ms, first_tick_unix_ns and "tiering"

@@ -9,8 +9,8 @@
 // (tiering's switch: nothing touched). A key that reuses a group the edit changed, a spine
 // reused with the wrong cuts, or an alias naming the wrong group shows up as a state difference.
 #include "engines/EngineSpec.h"
-#include "runtime/Executive.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "runtime/Executive.h"
 #include "tests/jit/JitHarness.h"
 #include "tests/support/StateDiff.h"
 
