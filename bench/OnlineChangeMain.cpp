@@ -1,14 +1,19 @@
 // bench_online_change: how long a one-rung online change of a program takes to give new code,
 // with the incremental compile (JitOptions::incremental) in one JIT session as `serve` uses it.
-//   bench_online_change PROGRAM [--changes N] [--threads T] [--full]
+//   bench_online_change PROGRAM [--changes N] [--threads T] [--full] [--quick]
 // Compiles PROGRAM once (cold), then N times: edits one rung (the operand of one contact
 // statement, a different rung each time, spread over the program), writes nothing to disk,
 // parses + verifies the edited text and compiles it as a new version; prints per change the
-// front-end and compile times (wall; `cpu`: the compile's CPU time over its threads, which a
-// loaded machine inflates less) and the leaves compiled / reused, then min / median / max.
-// --full compiles every version without the incremental compile, for comparison.
+// front-end and compile phases (wall, and the CPU time of the front end and of the compile over
+// its threads, which a loaded machine inflates less), the leaves compiled / reused, then
+// min / median / max. --quick compiles the changed groups at the fast tier (what serve's online
+// change does, JitOptions::quickLeaves) and then, as serve's background optimizer does, the
+// same program again without it ("opt" column: that rebuild's wall time). --full compiles
+// every version without the incremental compile, for comparison.
 #include "formats/ProgramFile.h"
 #include "jit/Jit.h"
+
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -49,6 +54,12 @@ std::string nextBit(const std::string &line) {
   return l;
 }
 
+double cpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) / 1e6;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0 : v[v.size() / 2];
@@ -58,12 +69,12 @@ double median(std::vector<double> v) {
 
 int main(int argc, char **argv) {
   if (argc < 2) {
-    std::fprintf(stderr,
-                 "usage: bench_online_change PROGRAM [--changes N] [--threads T] [--full]\n");
+    std::fprintf(stderr, "usage: bench_online_change PROGRAM [--changes N] [--threads T] [--full] "
+                         "[--quick]\n");
     return 2;
   }
   int changes = 20, threads = 0;
-  bool full = false;
+  bool full = false, quick = false;
   for (int i = 2; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--changes") && i + 1 < argc)
       changes = std::atoi(argv[++i]);
@@ -71,6 +82,8 @@ int main(int argc, char **argv) {
       threads = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--full"))
       full = true;
+    else if (!std::strcmp(argv[i], "--quick"))
+      quick = true;
     else {
       std::fprintf(stderr, "bench_online_change: unknown option '%s'\n", argv[i]);
       return 2;
@@ -104,11 +117,13 @@ int main(int argc, char **argv) {
   // Versions stay alive as in serve until the next one replaced them.
   std::unique_ptr<lj::VerifiedProgram> prog, prevProg;
   std::unique_ptr<lj::Engine> engine, prevEngine;
-  std::vector<double> totals, compiles, cpus;
-  std::printf("program %s: %zu lines, %zu edit sites, %s compile, %d threads (0 = all)\n", argv[1],
-              lines.size(), sites.size(), full ? "whole-program" : "incremental", threads);
-  std::printf("%-7s %9s %9s %9s %9s %9s %9s %8s %7s\n", "change", "frontend", "compile", "total",
-              "codegen", "link", "cpu", "leaves", "new");
+  std::vector<double> totals, compiles, cpus, feCpus, opts;
+  std::printf("program %s: %zu lines, %zu edit sites, %s compile%s, %d threads (0 = all)\n",
+              argv[1], lines.size(), sites.size(), full ? "whole-program" : "incremental",
+              quick ? " (changed groups at the fast tier, then optimized)" : "", threads);
+  std::printf("%-6s %8s %7s %7s %7s %7s %7s %7s %8s %8s %7s %7s %8s\n", "change", "frontend",
+              "fe-cpu", "keys", "lower", "spine", "leaves", "link", "compile", "total", "cpu",
+              "new", "opt");
   for (int c = 0; c <= changes; ++c) {
     if (c > 0) {
       size_t site =
@@ -118,6 +133,7 @@ int main(int argc, char **argv) {
       for (const std::string &l : lines) src.text += l + "\n";
     }
     auto t0 = std::chrono::steady_clock::now();
+    const double fc0 = cpuMs();
     std::string diags;
     std::optional<lj::VerifiedProgram> v = lj::io::verifyProgram(src, 200, diags);
     if (!v) {
@@ -125,23 +141,42 @@ int main(int argc, char **argv) {
       return 1;
     }
     auto p = std::make_unique<lj::VerifiedProgram>(std::move(*v));
-    const double fe = msSince(t0);
+    const double fe = msSince(t0), feCpu = cpuMs() - fc0;
     auto t1 = std::chrono::steady_clock::now();
     lj::jit::CompileTimes t;
+    jo.quickLeaves = quick && c > 0;
     std::unique_ptr<lj::Engine> e = session->compile(*p, jo, error, &t);
     if (!e) {
       std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
       return 1;
     }
     const double comp = msSince(t1), total = msSince(t0);
-    std::printf("%-7s %7.2fms %7.2fms %7.2fms %7.2fms %7.2fms %7.2fms %8u %7u\n",
-                c == 0 ? "cold" : std::to_string(c).c_str(), fe, comp, total,
-                (t.codegenUs - t.linkUs - t.cacheUs) / 1000, t.linkUs / 1000, t.cpuUs / 1000,
-                t.leaves, t.leavesCompiled);
+    double opt = 0;
+    if (jo.quickLeaves && t.leavesQuick > 0) {
+      // serve's background optimizer: the same program, the changed groups optimized.
+      auto t2 = std::chrono::steady_clock::now();
+      jo.quickLeaves = false;
+      std::unique_ptr<lj::Engine> o = session->compile(*p, jo, error);
+      if (!o) {
+        std::fprintf(stderr, "bench_online_change: optimizing: %s\n", error.c_str());
+        return 1;
+      }
+      opt = msSince(t2);
+      e = std::move(o);
+    }
+    char spine[16];
+    std::snprintf(spine, sizeof spine, "%s", t.spineCached ? "cached" : "");
+    if (!t.spineCached) std::snprintf(spine, sizeof spine, "%.2f", t.spineUs / 1000);
+    std::printf("%-6s %8.2f %7.2f %7.2f %7.2f %7s %7.2f %7.2f %8.2f %8.2f %7.2f %3u/%-3u %8.2f\n",
+                c == 0 ? "cold" : std::to_string(c).c_str(), fe, feCpu, t.keysUs / 1000,
+                t.lowerUs / 1000, spine, (t.codegenUs - t.linkUs - t.cacheUs - t.spineUs) / 1000,
+                t.linkUs / 1000, comp, total, t.cpuUs / 1000, t.leavesCompiled, t.leaves, opt);
     if (c > 0) {
       totals.push_back(total);
       compiles.push_back(comp);
       cpus.push_back(t.cpuUs / 1000);
+      feCpus.push_back(feCpu);
+      if (opt > 0) opts.push_back(opt);
     }
     prevEngine = std::move(engine);
     prevProg = std::move(prog);
@@ -151,8 +186,13 @@ int main(int argc, char **argv) {
   if (!totals.empty())
     std::printf("one-rung change, %zu changes: request -> new code ready (parse + verify + "
                 "compile + link) min %.2f / median %.2f / max %.2f ms; compile alone median "
-                "%.2f ms (compile CPU median %.2f ms: lower + optimize + codegen, all threads)\n",
+                "%.2f ms (compile CPU median %.2f ms: lower + optimize + codegen + link, all "
+                "threads; front-end CPU median %.2f ms)\n",
                 totals.size(), *std::min_element(totals.begin(), totals.end()), median(totals),
-                *std::max_element(totals.begin(), totals.end()), median(compiles), median(cpus));
+                *std::max_element(totals.begin(), totals.end()), median(compiles), median(cpus),
+                median(feCpus));
+  if (!opts.empty())
+    std::printf("background optimized rebuild of the changed groups: median %.2f ms\n",
+                median(opts));
   return 0;
 }

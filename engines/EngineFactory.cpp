@@ -91,6 +91,8 @@ Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const Verifie
     jit::JitOptions jo;
     jo.forces = opts.forces;
     jo.trace = opts.trace;
+    jo.quickLeaves = opts.quickLeaves;
+    jo.times = opts.times;
     jo.tier = opts.fastTier ? jit::Tier::Fast : jit::Tier::Optimizing;
     if (opts.session) {
       e = llvm->compileInSession(*opts.session, prog, jo, error);

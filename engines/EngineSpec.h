@@ -16,6 +16,7 @@
 namespace lj::jit {
 class ObjectCache;
 class Session;
+struct CompileTimes;
 } // namespace lj::jit
 
 namespace lj::engines {
@@ -66,6 +67,10 @@ struct EngineOptions {
   /// Interp and Jit: a traced build recording into this buffer of traceLayout(prog).words words
   /// (ir/Trace.h), which must outlive the engine. Aot refuses it (a .so is never traced).
   int32_t *trace = nullptr;
+  /// Jit in an incremental session: compile the rung groups missing from its cache at the fast
+  /// tier (jit::JitOptions::quickLeaves; serve's online change), and report the phase times.
+  bool quickLeaves = false;
+  jit::CompileTimes *times = nullptr;
 };
 
 /// Build the engine for `prog`, which must outlive it. EngineFailed with the JIT's or the

@@ -12,6 +12,7 @@
 namespace lj::jit {
 
 class ObjectCache; // jit/ObjectCache.h
+struct CompileTimes;
 
 /// Compile tier: Fast = no IR passes + FastISel; Optimizing = a tailored InstCombine/SimplifyCFG
 /// pipeline + SelectionDAG codegen at CodeGenOptLevel::Less (jit/Pipeline.cpp).
@@ -42,6 +43,15 @@ struct JitOptions {
   /// and dispatch functions is compiled every time. `compileThreads` threads compile the
   /// missing groups. Same behaviour as a whole-program compile; one call per group more.
   bool incremental = false;
+  /// Incremental only: rung groups missing from the cache (at the session's tier) are compiled
+  /// at the fast tier (no IR passes, FastISel), which costs a few milliseconds per group instead
+  /// of tens. For an online change: the new code runs at once, and a later compile of the same
+  /// program without this option builds the optimized groups (CompileTimes::leavesQuick says
+  /// how many that would replace). A group whose optimized object is cached is used as is.
+  bool quickLeaves = false;
+  /// Receives the phase times when the caller passes none (callers that reach the JIT through
+  /// engines::makeEngine). Null: not reported.
+  CompileTimes *times = nullptr;
   /// A traced build recording into this buffer (ir/Trace.h, lowering/Lower.h LowerOptions::trace);
   /// never cached (the address is baked into the code). Null: untraced, today's code.
   int32_t *trace = nullptr;
@@ -52,13 +62,18 @@ struct JitOptions {
 /// linkUs and cacheUs). For `ladderjit bench` (docs/bench.md).
 struct CompileTimes {
   double lowerUs = 0, optimizeUs = 0, codegenUs = 0;
-  double linkUs = 0;           ///< JITLink (adding the objects, resolving the entries); AOT: cc
-  double cacheUs = 0;          ///< object cache lookup + store (0 without a cache)
-  uint64_t objectBytes = 0;    ///< size of the object file(s) linked
-  bool cacheHit = false;       ///< the objects came from the cache (lower/optimize are then 0)
-  double cpuUs = 0;            ///< CPU time of lowering, optimizing and codegen over all threads
+  double linkUs = 0;        ///< JITLink (adding the objects, resolving the entries); AOT: cc
+  double cacheUs = 0;       ///< object cache lookup + store (0 without a cache)
+  uint64_t objectBytes = 0; ///< size of the object file(s) linked
+  bool cacheHit = false;    ///< the objects came from the cache (lower/optimize are then 0)
+  double cpuUs = 0; ///< CPU time of lowering, optimizing and codegen over all threads (incremental:
+                    ///< and of the link)
   uint32_t leaves = 0;         ///< incremental: distinct rung groups (leaf objects) linked
   uint32_t leavesCompiled = 0; ///< incremental: of them compiled now (the rest from the cache)
+  uint32_t leavesQuick = 0;    ///< incremental: of them at the fast tier (JitOptions::quickLeaves)
+  double keysUs = 0;           ///< incremental: the groups' cache keys (part of lowerUs)
+  double spineUs = 0;          ///< incremental: the spine's code generation (0 when cached)
+  bool spineCached = false;    ///< incremental: the spine's object came from the cache
 };
 
 /// Compile `prog` (which must outlive the engine) into an Engine. On failure returns null and

@@ -247,6 +247,13 @@ std::string leafCacheKey(const CacheKeyInputs &in, std::string_view profile,
   return sha256Hex(s);
 }
 
+std::string spineCacheKey(const CacheKeyInputs &in, std::string_view bitcode) {
+  std::string s;
+  putTargetIdentity(s, "ladderjit-spine-cache 1", in);
+  putStr(s, bitcode);
+  return sha256Hex(s);
+}
+
 ObjectCache::ObjectCache(std::string dir) : dir_(std::move(dir)) {}
 
 std::shared_ptr<ObjectCache> ObjectCache::fromEnvironment() {

@@ -79,6 +79,12 @@ std::string objectCacheKey(const VerifiedProgram &prog, const CacheKeyInputs &in
 std::string leafCacheKey(const CacheKeyInputs &in, std::string_view profile,
                          std::string_view leafBytes);
 
+/// The cache key of an incremental compile's spine: SHA-256 over a format tag, the build and
+/// target identity of leafCacheKey, and the spine's IR as bitcode (lowering/Incremental.h names
+/// its leaves by position, so the IR, and with it the object, is the same for every version
+/// whose bodies are cut the same way; the IR decides the object completely).
+std::string spineCacheKey(const CacheKeyInputs &in, std::string_view bitcode);
+
 /// SHA-256 (64 hex digits) over every field of `prog` that the lowering reads (all but `file`).
 std::string programDigest(const VerifiedProgram &prog);
 

@@ -178,6 +178,7 @@ std::shared_ptr<Session> Session::create(Tier tier, std::string &error) {
 std::unique_ptr<Engine> Session::compile(const VerifiedProgram &prog, const JitOptions &opts,
                                          std::string &error, CompileTimes *times) {
   Impl &im = *impl_;
+  if (!times) times = opts.times;
   std::shared_ptr<ObjectCache> leafCache;
   {
     std::lock_guard<std::mutex> lock(im.mu);

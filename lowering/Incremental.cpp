@@ -16,9 +16,12 @@ static_assert(sizeof(Operand) == 24 && sizeof(Stmt) == 232 && sizeof(StmtInfo) =
                   sizeof(Subroutine) == 16 && sizeof(StmtRange) == 8 && sizeof(ChunkPlan) == 28,
               "program model changed: update leafDigestInput()");
 
+// Little-endian, appended in one go (the key of every group is built on every compile).
 template <typename T> void put(std::string &out, T v) {
   auto u = static_cast<uint64_t>(static_cast<std::make_unsigned_t<T>>(v));
-  for (size_t i = 0; i < sizeof(T); ++i) out += static_cast<char>((u >> (8 * i)) & 0xff);
+  char b[sizeof(T)];
+  for (size_t i = 0; i < sizeof(T); ++i) b[i] = static_cast<char>((u >> (8 * i)) & 0xff);
+  out.append(b, sizeof(T));
 }
 
 } // namespace

@@ -154,7 +154,7 @@ const io::Dialect &Controller::dialect() const {
 Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,
                        Log log, std::string so, ControllerOptions opts)
     : ex_(ex), exec_(exec), loader_(loader), log_(std::move(log)), program_(std::move(program)),
-      so_(std::move(so)), opts_(std::move(opts)) {
+      so_(std::move(so)), opts_(std::move(opts)), optimizer_(exec, loader, log_) {
   mtime_ = mtimeOf(program_);
   if (!so_.empty()) soMtime_ = mtimeOf(so_);
 }
@@ -165,6 +165,7 @@ void Controller::shutdown() {
     shutdown_.store(true);
   }
   sleepCv_.notify_all();
+  optimizer_.stop();
 }
 
 ChangeStats Controller::changeStats() const {
@@ -204,10 +205,11 @@ bool Controller::allowed(const std::string &path, std::string &why) const {
   return false;
 }
 
-bool Controller::settle(const std::string &path, std::string &why) {
+bool Controller::settle(const std::string &path, std::string &why, std::string *hash) {
   // A file is taken once it has not changed for a settle interval: an editor or a copy that
   // is still writing changes size, mtime or content in the meantime.
   FileMark a = markOf(path);
+  if (hash) *hash = a.hash;
   if (!a.ok) return true; // the loader reports the read error
   auto giveUp = std::chrono::steady_clock::now() + opts_.settleGiveUp;
   if (a.age >= opts_.settle) return true;
@@ -217,6 +219,7 @@ bool Controller::settle(const std::string &path, std::string &why) {
       return false;
     }
     FileMark b = markOf(path);
+    if (hash) *hash = b.hash;
     if (b.ok && a.same(b)) return true;
     if (std::chrono::steady_clock::now() >= giveUp) {
       why = "'" + path + "' kept changing for " +
@@ -237,10 +240,17 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   std::lock_guard<std::mutex> g(changeMu_);
   const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
   if (shutdown_.load()) return refuse(what, "the server is stopping", error);
-  std::string why;
-  if (!settle(path, why) || (!so.empty() && !settle(so, why))) return refuse(what, why, error);
-  FileMark before = markOf(path);
+  std::string why, settledHash;
+  const auto settleStart = std::chrono::steady_clock::now();
+  if (!settle(path, why, &settledHash) || (!so.empty() && !settle(so, why)))
+    return refuse(what, why, error);
+  // The change is requested from here on: the wait for a file still being written is not part
+  // of its latency (docs/serve.md "Online change latency").
   auto t0 = std::chrono::steady_clock::now();
+  const int64_t settleNs =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(t0 - settleStart).count();
+  const int64_t requestedNs =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(t0.time_since_epoch()).count();
   timespec mt = mtimeOf(path);
   timespec soMt = so.empty() ? timespec{} : mtimeOf(so);
   // Forces are runtime state: read them from the running version under changeMu_, so a force
@@ -258,7 +268,7 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   // Stop wins over a compile in progress: a version finished after a stop request is dropped.
   if (shutdown_.load())
     return refuse(what, "the server is stopping; the new version is discarded", error);
-  if (before.ok && next->hash != before.hash)
+  if (!settledHash.empty() && next->hash != settledHash)
     return refuse(what, "'" + path + "' changed while it was read; try again once it is written",
                   error);
   std::shared_ptr<ProgramVersion> cur = exec_.current();
@@ -271,10 +281,15 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   }
   double compileMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  next->requestedNs = requestedNs;
+  next->settleNs = settleNs;
+  std::shared_ptr<ProgramVersion> quick = next->tier == EngineTier::JitQuick ? next : nullptr;
   if (!exec_.swap(std::move(next), std::chrono::milliseconds(5000), error)) {
     if (log_) log_("online change of " + what + " failed: " + error);
     return false;
   }
+  // The touched groups run at the fast tier: build the optimized ones in the background.
+  if (quick && !shutdown_.load()) optimizer_.offer(std::move(quick));
   program_ = path;
   so_ = so;
   mtime_ = mt;

@@ -3,6 +3,7 @@
 // the control socket (docs/serve.md "Control").
 #pragma once
 
+#include "runtime/ChangeOptimizer.h"
 #include "runtime/Exchange.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
@@ -82,8 +83,9 @@ public:
   /// Stop wins over a change in progress: nothing is swapped in after this call, a settle wait
   /// ends at once, and a compile that finishes later is discarded.
   void shutdown();
-  /// Whether an online change (or force) is being read, compiled or waited for.
-  bool busy() const { return busy_.load() > 0; }
+  /// Whether an online change (or force) is being read, compiled or waited for, or the
+  /// optimized build of the last one is.
+  bool busy() const { return busy_.load() > 0 || optimizer_.busy(); }
   ChangeStats changeStats() const;
 
 private:
@@ -96,7 +98,8 @@ private:
   nlohmann::json doLoad(const nlohmann::json &req);
   bool refuse(const std::string &what, const std::string &why, std::string &error);
   bool allowed(const std::string &path, std::string &why) const;
-  bool settle(const std::string &path, std::string &why);
+  /// `hash`, when given, receives the settled file's sha256Hash (empty when unreadable).
+  bool settle(const std::string &path, std::string &why, std::string *hash = nullptr);
   bool sleepUnlessStopping(std::chrono::milliseconds d);
 
   Exchange &ex_;
@@ -116,6 +119,7 @@ private:
   ChangeStats changeStats_; // guarded by statsMu_
   std::mutex sleepMu_;
   std::condition_variable sleepCv_; // woken by shutdown()
+  ChangeOptimizer optimizer_;       // last: stopped and joined before the rest goes
 };
 
 } // namespace lj::rt

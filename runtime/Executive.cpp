@@ -190,11 +190,30 @@ void Executive::loop() {
   }
 }
 
-void Executive::takeSwap() {
+void Executive::takeSwap(uint64_t tick) {
   // A stop request wins over a pending online change: it is left for swap() to take back.
   if (stop_.load(std::memory_order_acquire)) return;
   ProgramVersion *next = pending_.exchange(nullptr, std::memory_order_acq_rel);
   if (!next) return;
+  if (next->requestedNs) { // the new code runs from here: the change's latency ends
+    const uint64_t n = scanStats_.changeCount++;
+    ChangeRecord &c = scanStats_.changes[n % TickStats::kMaxChanges];
+    c = ChangeRecord{};
+    c.version = next->id;
+    c.tick = tick;
+    c.requestedNs = next->requestedNs;
+    c.runningNs = monoNs();
+    c.settleNs = next->settleNs;
+    c.frontendNs = next->frontendNs;
+    c.buildNs = next->buildNs - next->frontendNs;
+    c.buildCpuNs = next->buildCpuNs;
+    c.groups = next->groups;
+    c.groupsCompiled = next->groupsCompiled;
+    c.groupsQuick = next->groupsQuick;
+    c.tier = next->tier;
+    scanStats_.latencyNs[n % TickStats::kLatencies] = c.runningNs - c.requestedNs;
+  }
+  scanStats_.tier = next->tier;
   lj_state &s = *state_;
   cur_ = next;
   clearRenumberedState(s);
@@ -223,6 +242,11 @@ bool Executive::takeTierUp(uint64_t tick) {
   }
   ++scanStats_.tierSwitches;
   scanStats_.tier = next->tier;
+  if (scanStats_.changeCount) { // the optimized build of the last online change
+    ChangeRecord &c = scanStats_.changes[(scanStats_.changeCount - 1) % TickStats::kMaxChanges];
+    if (c.version == next->id && c.tier == EngineTier::JitQuick && !c.optimizedNs)
+      c.optimizedNs = monoNs();
+  }
   cur_ = next;
   tiersTaken_.fetch_add(1, std::memory_order_release);
   return true;
@@ -233,7 +257,7 @@ void Executive::tickOnce(uint64_t tick) {
   ex_.applyPending(s);
   for (IoBinding *io : io_) io->beforeTick(s, tick);
   s.now_ms = tick * opts_.periodNs / 1000000;
-  takeSwap(); // init of a new version sees this tick's inputs and now_ms
+  takeSwap(tick); // init of a new version sees this tick's inputs and now_ms
   takeTierUp(tick);
   // The target's system bits (FANUC R9091 clocks, R9015 first scan), as `run` writes them.
   if (cur_->prog && cur_->prog->profile) io::writeSystemBits(*cur_->prog->profile, s, tick);

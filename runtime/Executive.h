@@ -43,6 +43,10 @@ struct ProgramVersion {
   uint64_t id = 0;      ///< 1, 2, ... in load order (a tier of a version keeps its id)
   EngineTier tier = EngineTier::Interp; ///< which code `engine` is
   int64_t buildNs = 0;                  ///< how long building `engine` took
+  // What an online change's statistics need (runtime/Stats.h ChangeRecord): set by the loader
+  // (front end, build) and the controller (request, settle wait); requestedNs 0 = not a change.
+  int64_t frontendNs = 0, buildCpuNs = 0, requestedNs = 0, settleNs = 0;
+  uint32_t groups = 0, groupsCompiled = 0, groupsQuick = 0;
 };
 
 /// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory
@@ -130,7 +134,7 @@ public:
 private:
   void loop();
   void tickOnce(uint64_t tick);
-  void takeSwap();
+  void takeSwap(uint64_t tick);
   bool takeTierUp(uint64_t tick);
   /// Wait until `counter` moves past `before` (or `refused` past `refusedBefore`): true when
   /// taken; false when refused, stopped or timed out, with `pending` taken back when possible.

@@ -109,9 +109,15 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
   out->tier = tier;
   engines::EngineOptions eo;
   eo.forces = v.forces;
-  std::lock_guard<std::mutex> g(mu_);
-  eo.session = session(tier == EngineTier::JitFast, error);
-  if (!eo.session) return nullptr;
+  jit::CompileTimes times;
+  eo.times = &times;
+  {
+    std::lock_guard<std::mutex> g(mu_);
+    eo.session = session(tier == EngineTier::JitFast, error);
+    if (!eo.session) return nullptr;
+  }
+  // Not under mu_: a session compiles from several threads, and an online change (which holds
+  // mu_ for its compile) must not wait for a background build (tiering, ChangeOptimizer).
   Result<std::unique_ptr<Engine>> made =
       engines::makeEngine(engines::EngineSpec{engines::EngineKind::Jit, {}}, *out->prog, eo);
   if (!made) {
@@ -120,6 +126,10 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
   }
   out->engine = std::move(made).value();
   out->buildNs = monoNs() - t0;
+  out->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
+  out->groups = times.leaves;
+  out->groupsCompiled = times.leavesCompiled;
+  if (tier == EngineTier::JitOpt) optimizingWarm_.store(true);
   return out;
 }
 
@@ -155,7 +165,9 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     return nullptr;
   }
   v->prog = std::make_shared<VerifiedProgram>(std::move(*prog));
-  if (readyNs) *readyNs = monoNs();
+  const int64_t verified = monoNs();
+  v->frontendNs = verified - t0;
+  if (readyNs) *readyNs = verified;
   v->forces = forces;
   if (!checkForces(*v->prog, v->forces, error, dropped)) return nullptr;
   engines::EngineSpec spec{interpreted || engine_ == "interp" ? engines::EngineKind::Interp
@@ -172,7 +184,14 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     eo.trace = v->trace->live();
   }
   std::unique_lock<std::mutex> jitLock(mu_, std::defer_lock);
+  jit::CompileTimes times;
   if (spec.kind == engines::EngineKind::Jit) {
+    eo.times = &times;
+    // After the session's first build (its cache holds every group), an online change compiles
+    // the groups it touched at the fast tier: new code within milliseconds; the controller's
+    // ChangeOptimizer then builds the optimized groups in the background (docs/serve.md
+    // "Online change latency"). A traced build is never incremental, so never quick.
+    eo.quickLeaves = optimizingWarm_.load() && !eo.trace;
     // One session for every version (a JITDylib each), compiling incrementally: an online
     // change or a force recompiles only the rung groups it touches; the others are linked from
     // the session's in-memory leaf cache (jit/Jit.h, docs/incremental.md).
@@ -196,6 +215,14 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
   if (aot()) v->so = so;
   if (jitLock.owns_lock()) jitLock.unlock();
   v->buildNs = monoNs() - t0;
+  if (spec.kind == engines::EngineKind::Jit) {
+    v->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
+    v->groups = times.leaves;
+    v->groupsCompiled = times.leavesCompiled;
+    v->groupsQuick = times.leavesQuick;
+    if (times.leavesQuick) v->tier = EngineTier::JitQuick;
+    if (!eo.trace) optimizingWarm_.store(true);
+  }
   {
     std::lock_guard<std::mutex> g(mu_);
     v->id = nextId_++;

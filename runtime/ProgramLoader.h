@@ -87,6 +87,9 @@ private:
   int32_t plc2Nvalue_;
   std::string dialect_;
   std::atomic<bool> traced_{false};
+  /// The optimizing session has built a version (its group cache is full): later loads are
+  /// online changes, compiled quick (EngineOptions::quickLeaves).
+  std::atomic<bool> optimizingWarm_{false};
   std::mutex mu_;
   std::shared_ptr<jit::Session> session_;     // optimizing tier, created on first use
   std::shared_ptr<jit::Session> fastSession_; // fast tier (tiering only), created on first use

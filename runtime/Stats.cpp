@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 namespace lj::rt {
 
@@ -56,6 +57,8 @@ const char *engineTierName(EngineTier t) {
     return "jit-opt";
   case EngineTier::Aot:
     return "aot";
+  case EngineTier::JitQuick:
+    return "jit-quick";
   }
   return "interp";
 }
@@ -93,6 +96,45 @@ nlohmann::json TickStats::startupJson() const {
             {"time_to_jit_ms", toJit}}}};
 }
 
+double TickStats::changeLatencyMs(double q) const {
+  const size_t n = static_cast<size_t>(std::min<uint64_t>(changeCount, kLatencies));
+  if (n == 0) return -1;
+  std::vector<int64_t> v(latencyNs.begin(), latencyNs.begin() + static_cast<ptrdiff_t>(n));
+  std::sort(v.begin(), v.end());
+  size_t k = static_cast<size_t>(q * static_cast<double>(n - 1) + 0.5);
+  return static_cast<double>(v[std::min(k, n - 1)]) / 1e6;
+}
+
+nlohmann::json TickStats::changesJson() const {
+  nlohmann::json recent = nlohmann::json::array();
+  const uint64_t first = changeCount > kMaxChanges ? changeCount - kMaxChanges : 0;
+  auto ms = [](int64_t ns) { return static_cast<double>(ns) / 1e6; };
+  for (uint64_t n = first; n < changeCount; ++n) {
+    const ChangeRecord &c = changes[n % kMaxChanges];
+    const int64_t latency = c.runningNs - c.requestedNs;
+    recent.push_back({{"version", c.version},
+                      {"tick", c.tick},
+                      {"engine", engineTierName(c.tier)},
+                      {"latency_ms", ms(latency)},
+                      {"settle_ms", ms(c.settleNs)},
+                      {"frontend_ms", ms(c.frontendNs)},
+                      {"build_ms", ms(c.buildNs)},
+                      {"build_cpu_ms", ms(c.buildCpuNs)},
+                      {"swap_wait_ms", ms(latency - c.frontendNs - c.buildNs)},
+                      {"groups", c.groups},
+                      {"groups_compiled", c.groupsCompiled},
+                      {"groups_quick", c.groupsQuick},
+                      {"optimized_ms", c.optimizedNs ? ms(c.optimizedNs - c.requestedNs) : -1.0}});
+  }
+  return {{"count", changeCount},
+          {"latency_ms",
+           {{"min", changeLatencyMs(0)},
+            {"median", changeLatencyMs(0.5)},
+            {"max", changeLatencyMs(1)},
+            {"of_last", std::min<uint64_t>(changeCount, kLatencies)}}},
+          {"recent", recent}};
+}
+
 nlohmann::json TickStats::toJson() const {
   return {{"period_us", static_cast<double>(periodNs) / 1000.0},
           {"ticks", ticks},
@@ -105,7 +147,8 @@ nlohmann::json TickStats::toJson() const {
           {"missed_after_swap", missedAfterSwap},
           {"scan", scan.toJson()},
           {"jitter", jitter.toJson()},
-          {"startup", startupJson()}};
+          {"startup", startupJson()},
+          {"online_changes", changesJson()}};
 }
 
 std::string TickStats::summary() const {
@@ -133,6 +176,14 @@ std::string TickStats::summary() const {
                   static_cast<double>(swapTickMaxNs) / 1000.0,
                   static_cast<unsigned long long>(swapOverruns),
                   static_cast<unsigned long long>(missedAfterSwap));
+    out += buf;
+  }
+  if (changeCount) {
+    std::snprintf(buf, sizeof buf,
+                  "  online change latency (requested -> new code running), last %llu: median "
+                  "%.1f ms, min %.1f ms, max %.1f ms\n",
+                  static_cast<unsigned long long>(std::min<uint64_t>(changeCount, kLatencies)),
+                  changeLatencyMs(0.5), changeLatencyMs(0), changeLatencyMs(1));
     out += buf;
   }
   if (firstTickEndNs) {

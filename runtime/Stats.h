@@ -36,8 +36,11 @@ private:
 };
 
 /// Which code runs a program version (docs/serve.md "Tiering").
-enum class EngineTier : uint8_t { Interp, JitFast, JitOpt, Aot };
-/// "interp", "jit-fast", "jit-opt", "aot" (the lane names of `ladderjit bench`).
+/// JitQuick: an online change's build, the optimizing tier's code except for the rung groups
+/// the change touched, which are compiled at the fast tier until the optimized build replaces
+/// it (docs/serve.md "Online change latency").
+enum class EngineTier : uint8_t { Interp, JitFast, JitOpt, Aot, JitQuick };
+/// "interp", "jit-fast", "jit-opt", "aot" (the lane names of `ladderjit bench`), "jit-quick".
 const char *engineTierName(EngineTier t);
 
 /// One engine switch of the running program at a tick boundary (interpreter-first tiering): the
@@ -47,6 +50,22 @@ struct TierSwitch {
   EngineTier from = EngineTier::Interp, to = EngineTier::Interp;
   int64_t buildNs = 0; ///< how long the background build of the new code took
   int64_t endNs = 0;   ///< CLOCK_MONOTONIC at the end of that tick
+};
+
+/// One online change (docs/serve.md "Online change latency"): from the request (after any wait
+/// for a file still being written, which is not counted) to the new code running at a tick
+/// boundary. CLOCK_MONOTONIC ns; durations in ns.
+struct ChangeRecord {
+  uint64_t version = 0; ///< the new version's id
+  uint64_t tick = 0;    ///< the first tick it ran
+  int64_t requestedNs = 0, runningNs = 0;
+  int64_t optimizedNs = 0; ///< its optimized build switched in (JitQuick only; 0 = not yet / never)
+  int64_t settleNs = 0;    ///< the wait for the file to settle before the request (not counted)
+  int64_t frontendNs = 0;  ///< read, parse and verify
+  int64_t buildNs = 0;     ///< the engine build (compile + link)
+  int64_t buildCpuNs = 0;  ///< its CPU time over all compile threads (JIT; 0 = not measured)
+  uint32_t groups = 0, groupsCompiled = 0, groupsQuick = 0; ///< incremental JIT rung groups
+  EngineTier tier = EngineTier::Interp;
 };
 
 /// Everything the executive counts.
@@ -73,14 +92,25 @@ struct TickStats {
   uint32_t tierSwitches = 0;                       ///< engine switches taken (all of them counted)
   std::array<TierSwitch, kMaxSwitches> switches{}; ///< the first kMaxSwitches of them
   uint64_t tierRefusals = 0; ///< faster code discarded: an online change came first
-  Histogram scan;            ///< work per tick: apply, I/O, lj_tick, publish, hooks
-  Histogram jitter;          ///< wake-up minus deadline
+  // Online change latency: the last kMaxChanges records, and the latencies of the last
+  // kLatencies changes for the median (changeCount counts them all).
+  static constexpr uint32_t kMaxChanges = 32, kLatencies = 256;
+  uint64_t changeCount = 0;
+  std::array<ChangeRecord, kMaxChanges> changes{}; ///< ring: change n at n % kMaxChanges
+  std::array<int64_t, kLatencies> latencyNs{};     ///< ring likewise
+  Histogram scan;   ///< work per tick: apply, I/O, lj_tick, publish, hooks
+  Histogram jitter; ///< wake-up minus deadline
 
   nlohmann::json toJson() const;
   /// The "startup" object of toJson: ready_ms, first_tick_ms, first_tick_unix_ns and "tiering"
   /// (mode, first_engine, engine, switches [{tick, from, to, build_ms, at_ms}], switch_count,
   /// refused, time_to_jit_ms); times in ms since startNs, -1 = not known.
   nlohmann::json startupJson() const;
+  /// The "online_changes" object of toJson: count, latency_ms {min, median, max} over the last
+  /// kLatencies changes, and "recent" (the last kMaxChanges records, oldest first).
+  nlohmann::json changesJson() const;
+  /// Median / min / max latency (ms) over the recorded changes; -1 when none.
+  double changeLatencyMs(double q) const;
   /// Human-readable summary (several lines).
   std::string summary() const;
 };
