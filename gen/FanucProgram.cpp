@@ -3,6 +3,7 @@
 // same level, subroutines are called only from level 2.
 #include "gen/FanucProgram.h"
 
+#include "gen/FanucTimerCounter.h"
 #include "gen/Rng.h"
 
 #include <cstring>
@@ -186,6 +187,8 @@ private:
       out("WRT " + writeBit());
       return;
     }
+    case 18:
+      return fanucTimerCounterRung(r_, lines_); // gen/FanucTimerCounter.cpp
     default:
       if (level == 2 && subs > 0) {
         out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + std::to_string(pick(1, subs)));

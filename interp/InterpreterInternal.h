@@ -210,6 +210,8 @@ bool runData(const BlockCall &b);
 bool runNc(const BlockCall &b);
 /// Family Cnc (InterpCnc.cpp): the chapter-6 F/G blocks, MDST .. RSTCLR.
 bool runCnc(const BlockCall &b);
+/// Family PmcTc (InterpPmcTc.cpp): FANUC TMR .. RNGx.
+bool runPmcTc(const BlockCall &b);
 
 } // namespace lj::interp
 

@@ -465,6 +465,27 @@ constexpr InstrInfo kTable[] = {
         spanning(reg("counter words", areas(Area::CounterData), true), 3),
         konst("driven inputs (1 R, 2 S, 4 CU, 8 CD)", 1, 15), none(), none(),
         "Neza up/down counter %Ci: inputs R, S, CU, CD; out := D"),
+    // ---- fanuc-a: FANUC PMC timers, counters, compares (fanuc-pmc.md 6.3, 6.4, 6.6) ----
+    ROW(PmcTimer, PmcTc, Block, Required, 1, Result, Words, 3, konst("timer number", 1, 250),
+        reg("preset", areas(Area::TimerData), false),
+        reg("precision", areas(Area::TimerData), false), none(),
+        "on-delay timer: preset count x the precision's unit"),
+    ROW(PmcTimerAddr, PmcTc, Block, Required, 1, Result, Words, 3, konst("precision", 0, 7),
+        reg("preset", kSrcAreas, false), reg("timer register", kDstAreas, true), none(),
+        "on-delay timer with the preset and elapsed ms at any address"),
+    ROW(PmcCounter, PmcTc, Block, Required, 4, Result, Edge, 2,
+        regOrConst("preset", kSrcAreas, false), reg("current value", kDstAreas, true), none(),
+        none(), "preset/ring counter, up or down, counting rising edges of ACT"),
+    ROW(PmcCompareFlags, PmcTc, Block, Required, 1, None, None, 3, src("input data"),
+        reg("comparison data", kSrcAreas, false), reg("flags", kDstAreas, true), none(),
+        "flags.Z := input == comparison, flags.N := input < comparison"),
+    ROW(BcdCompare, PmcTc, Block, Required, 2, Compare, None, 3, konst("relation", 0, 1),
+        src("input data"), reg("comparison data", kSrcAreas, false), none(),
+        "out := ACT and input <= / == comparison, BCD of 2 (BYT 0) or 4 digits (BYT 1)"),
+    ROW(CompareNe, PmcTc, Block, Optional, 1, Compare, None, 2, src("data 1"), src("data 2"),
+        none(), none(), "out := EN and a != b"),
+    ROW(CompareBetween, PmcTc, Block, Optional, 1, Compare, None, 3, src("data 1"), src("data 2"),
+        src("input"), none(), "out := EN and x between a and b (either order)"),
 };
 
 #undef ROW

@@ -182,6 +182,14 @@ enum class Op : uint8_t {
   // "Function blocks"); their whole state lives in the block's words (TimerData / CounterData)
   IecTimer,
   IecCounter,
+  // ---- fanuc-a: FANUC PMC timers, counters, compares (family PmcTc; no HNC-8 spelling) ----
+  PmcTimer,        ///< TMR: on-delay, preset and precision in the T area
+  PmcTimerAddr,    ///< TMRC: on-delay, preset and work register at any address
+  PmcCounter,      ///< CTR / CTRB / CTRC: CN0, UPDOWN, RST, ACT; preset and value operands
+  PmcCompareFlags, ///< COMPB: Z / N bits of a flags byte (R9000)
+  BcdCompare,      ///< COMP (<=) / COIN (==) on BCD data
+  CompareNe,       ///< NEB / NEW / NED
+  CompareBetween,  ///< RNGB / RNGW / RNGD: between two bounds in either order
   Count_
 };
 
@@ -218,7 +226,13 @@ enum class StateKind : uint8_t { None, Edge, Timer, Counter, Pls, Plf, Alt, Word
 /// Which part of the engines implements an instruction (interpreter and lowering dispatch on
 /// it): Core = the original set, Data = data operations, Nc = NC services (host callbacks,
 /// chapter-4 CNC blocks), Cnc = chapter-6 blocks driven by the CNC F/G table.
-enum class Family : uint8_t { Core, Data, Nc, Cnc };
+enum class Family : uint8_t {
+  Core,
+  Data,
+  Nc,
+  Cnc,
+  PmcTc, ///< fanuc-a: FANUC timers/counters/compares (interp/InterpPmcTc.cpp, EmitPmcTc.cpp)
+};
 
 /// Most operands an instruction takes (PTN / NTP).
 constexpr int kMaxOperands = 9;

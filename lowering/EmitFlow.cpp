@@ -132,6 +132,8 @@ llvm::Error FunctionEmitter::emitStmtBody(int32_t i) {
     return emitNcBlock(i);
   case Family::Cnc:
     return emitCncBlock(i);
+  case Family::PmcTc:
+    return emitPmcTcBlock(i);
   case Family::Core:
     break;
   }

@@ -217,6 +217,13 @@ private:
   /// The program's profile (area facts, CNC layout and table, timer units).
   const TargetProfile &tp() const { return *prog_.profile; }
 
+  // EmitPmcTc.cpp: family PmcTc (FANUC TMR .. RNGx).
+  llvm::Error emitPmcTcBlock(int32_t i);
+  /// On-delay timing on inst_word[slot], [slot + 1] (interp/InterpPmcTc.cpp onDelay): W1 and
+  /// the elapsed ms.
+  std::pair<llvm::Value *, llvm::Value *> pmcOnDelay(int32_t slot, llvm::Value *act,
+                                                     llvm::Value *presetMs);
+
   llvm::Value *notV(llvm::Value *v) { return b_.CreateNot(v); }
   /// `c ? a : b` on i1 values as and/or: FastISel cannot select an i1 `select` and would hand
   /// the rest of the block to SelectionDAG (the fast tier's compile time).

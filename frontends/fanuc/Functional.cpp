@@ -250,6 +250,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
     what = row->name;
   }
   const SourceLoc at = f.head.loc;
+  if (emitTimerCounter(e, f, row->sub, what)) return; // TimerCounter.cpp
   if (row->fn == Fn::Unsupported) {
     e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
     return;

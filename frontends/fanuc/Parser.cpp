@@ -338,8 +338,11 @@ public:
   bool claimNumber(char space, int64_t n, SourceLoc at) override {
     auto [it, fresh] = numbers_.emplace(std::make_pair(space, n), at);
     if (!fresh)
-      error(at, std::string(space == 'E' ? "edge" : "timer") + " number " + std::to_string(n) +
-                    " is already used on line " + std::to_string(it->second.line));
+      error(at, std::string(space == 'E'                   ? "edge"
+                            : space == 'C' || space == 'B' ? "counter"
+                                                           : "timer") +
+                    " number " + std::to_string(n) + " is already used on line " +
+                    std::to_string(it->second.line));
     return fresh;
   }
 
@@ -525,6 +528,20 @@ const char *spell(Op op) {
     return "DIFU";
   case Op::FallPulse:
     return "DIFD";
+  case Op::PmcTimer: // fanuc-a: frontends/fanuc/TimerCounter.cpp
+    return "TMR";
+  case Op::PmcTimerAddr:
+    return "TMRC";
+  case Op::PmcCounter:
+    return "CTR/CTRB/CTRC";
+  case Op::PmcCompareFlags:
+    return "COMPB";
+  case Op::BcdCompare:
+    return "COMP/COIN";
+  case Op::CompareNe:
+    return "NEB/NEW/NED";
+  case Op::CompareBetween:
+    return "RNGB/RNGW/RNGD";
   default:
     return nullptr; // not spelled in this dialect: spelling() prints the neutral name
   }

@@ -55,6 +55,10 @@ bool isFunctionalName(std::string_view name);
 /// Check and emit one functional instruction.
 void emitFunctional(Emitter &e, const Functional &f);
 
+/// TimerCounter.cpp: TMR, TMRC, CTR, CTRB, CTRC, COMPB, COMP, COIN, NEx, RNGx (SUB `sub`,
+/// named `what` in messages); false when `sub` is none of them.
+bool emitTimerCounter(Emitter &e, const Functional &f, int sub, const std::string &what);
+
 /// `s` in upper case.
 std::string upper(std::string_view s);
 
