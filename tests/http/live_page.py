@@ -64,10 +64,15 @@ try:
     driver.get(url + "?token=" + token)
     layout = json.loads(driver.find_element(By.ID, "ladder-layout").get_attribute("textContent"))
     want = sum(len(p["rungs"]) for p in layout["parts"])
-    rungs = len(driver.find_elements(By.CSS_SELECTOR, "g.rung"))
+    # Every rung has its place; the rungs of the shown tab (PLC1, all in view) are drawn.
+    places = len(driver.find_elements(By.CSS_SELECTOR, "div.rg"))
+    time.sleep(0.2)
+    shown = len(driver.find_elements(By.CSS_SELECTOR, "section.part.sel g.rung"))
     ladder = sum(1 for p in layout["parts"] for r in p["rungs"] if r["kind"] == "ladder")
-    check(rungs == want and ladder == 4, "rungs drawn %d, layout %d, ladder rungs %d (live.stl has 4 "
-          "and the 1END / 2END markers)" % (rungs, want, ladder))
+    check(places == want and ladder == 4, "rung places %d, layout %d, ladder rungs %d (live.stl has 4 "
+          "and the 1END / 2END markers)" % (places, want, ladder))
+    check(shown == len(layout["parts"][0]["rungs"]),
+          "rungs drawn in the first tab %d of %d" % (shown, len(layout["parts"][0]["rungs"])))
     kinds = driver.execute_script(
         "var k={};document.querySelectorAll('g.el').forEach(function(g){var c=g.getAttribute('class')"
         ".split(' ')[1];k[c]=(k[c]||0)+1});return k")

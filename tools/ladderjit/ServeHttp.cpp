@@ -48,7 +48,11 @@ json histJson(const rt::Histogram &h) {
 }
 
 json statsJson(const rt::TickStats &s) {
-  return {{"period_ns", s.periodNs},     {"ticks", s.ticks},
+  // `tick`: the number of the last tick run (tick numbers follow real time: ticks run + the
+  // deadlines missed), the same numbering as the header's tick of the drawn state.
+  const uint64_t last = s.ticks + s.missedDeadlines;
+  return {{"tick", last > 0 ? last - 1 : 0},
+          {"period_ns", s.periodNs},     {"ticks", s.ticks},
           {"overruns", s.overruns},      {"missed_deadlines", s.missedDeadlines},
           {"fault_ticks", s.faultTicks}, {"swaps", s.swaps},
           {"scan", histJson(s.scan)},    {"jitter", histJson(s.jitter)}};
@@ -120,7 +124,7 @@ struct LiveView::Impl {
     if (pageHash != v.hash) {
       ladder::Layout l = ladder::layout(ladder::fromProgram(*v.prog));
       json h = v.hash;
-      page = ladder::renderHtml(l, ladder::liveCss(),
+      page = ladder::renderLazyHtml(l, ladder::liveCss(),
                                 "window.LJ_HASH=" + h.dump() + ";" + ladder::liveScript());
       pageHash = v.hash;
     }
@@ -183,7 +187,17 @@ struct LiveView::Impl {
                {"traced", cur->trace != nullptr},
                {"aot", !cur->so.empty()}};
         uint64_t tick = ex.lastTick();
-        if (cur->trace && cur->trace->take(words, tick)) m["w"] = words;
+        if (cur->trace && cur->trace->take(words, tick)) {
+          // rt::TraceBuffer::kNotScanned goes as null: a statement whose first word is null
+          // was not scanned in that tick (the page draws it so); a null value word is INT32_MIN.
+          json w = json::array();
+          for (int32_t x : words)
+            if (x == rt::TraceBuffer::kNotScanned)
+              w.push_back(nullptr);
+            else
+              w.push_back(x);
+          m["w"] = std::move(w);
+        }
         m["tick"] = tick;
         json f = json::object();
         for (const auto &[id, val] : cur->forces) f[std::to_string(id)] = val;
@@ -192,7 +206,8 @@ struct LiveView::Impl {
         for (const io::Assignment &a : ex.locks())
           locks.push_back(a.addr.text + "=" + std::to_string(a.value));
         m["locks"] = locks;
-        if (round % 10 == 0) stats = statsJson(exec.stats()); // 2 Hz
+        // Every frame while watched (the header's tick and the panel's agree), else 2 Hz.
+        if (watched || round % 10 == 0) stats = statsJson(exec.stats());
         m["stats"] = stats;
         std::string text =
             "event: state\ndata: " + m.dump(-1, ' ', false, json::error_handler_t::replace) +
@@ -228,9 +243,14 @@ rt::Executive::AfterTickHook LiveView::hook() {
   return [im](const lj_state &, uint64_t tick) {
     // Scan thread: a traced version's words of this tick into its triple buffer (no lock).
     const rt::ProgramVersion *v = im->exec.scanVersion();
-    if (!v || !v->trace || tick - im->lastPublished < im->publishEvery) return;
-    im->lastPublished = tick;
-    v->trace->publish(tick);
+    if (!v || !v->trace) return;
+    if (tick - im->lastPublished >= im->publishEvery) {
+      im->lastPublished = tick;
+      v->trace->publish(tick);
+    }
+    // The next tick is published: start it from "not scanned", so a statement it skips (a jump,
+    // a PLC2 slice not run, a subroutine not called) shows as such, not with stale words.
+    if (tick + 1 - im->lastPublished >= im->publishEvery) v->trace->markNotScanned();
   };
 }
 
