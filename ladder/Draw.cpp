@@ -33,6 +33,9 @@ std::string esc(const std::string &s) {
     case '"':
       o += "&quot;";
       break;
+    case '\'':
+      o += "&#39;";
+      break;
     default:
       o += c;
     }
@@ -125,7 +128,8 @@ public:
   /// gap after it). `width` grows to the rung's right edge.
   int rung(const RungLayout &r, const std::string &partName, int y) {
     const int top = y;
-    out += "<g class=\"rung\" data-part=\"" + esc(partName) + "\" data-rung=\"" + n(r.number) + "\">";
+    out +=
+        "<g class=\"rung\" data-part=\"" + esc(partName) + "\" data-rung=\"" + n(r.number) + "\">";
     for (const std::string &c : r.comment) {
       y += kCommentH;
       text(kLM + 4, y - 3, "; " + c, "cm", "start");
@@ -328,8 +332,11 @@ std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
       Svg s;
       int h = s.rung(p.rungs[k], p.name, 0);
       int w = std::max(s.width, 200);
-      part.push_back("<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"lad\" width=\"" + n(w) +
-                     "\" height=\"" + n(h) + "\">" + s.out + "</svg>");
+      std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"lad\" width=\"" + n(w) +
+                        "\" height=\"" + n(h) + "\">" + s.out + "</svg>";
+      // Attributes in single quotes: the JSON string needs no escapes (text has ' as &#39;).
+      std::replace(svg.begin(), svg.end(), '"', '\'');
+      part.push_back(std::move(svg));
       sections += "<div class=\"rg\" data-p=\"" + n(static_cast<int>(i)) + "\" data-r=\"" +
                   n(static_cast<int>(k)) + "\" style=\"width:" + n(w) + "px;height:" + n(h) +
                   "px\"></div>";
@@ -337,8 +344,8 @@ std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
     sections += "</section>";
     svgs.push_back(std::move(part));
   }
-  std::string head = std::string(kStyle) +
-                     ".rg{margin-bottom:" + n(kGap) + "px}.rg svg{display:block}" + liveHead;
+  std::string head =
+      std::string(kStyle) + ".rg{margin-bottom:" + n(kGap) + "px}.rg svg{display:block}" + liveHead;
   return page(l, tabs, sections, head,
               "<script type=\"application/json\" id=\"ladder-rungs\">" +
                   scriptSafe(svgs.dump(-1, ' ', false, json::error_handler_t::replace)) +
