@@ -5,7 +5,7 @@ Chromium opens the page RUNS times, each in a fresh tab, and reports per load, f
 start (performance.now()): DOMContentLoaded, the load event, the first rung drawn, and the first
 live frame painted. The static page of `ladderjit ladder --format html` (every rung in the DOM)
 is loaded the same way for comparison. Usage: live_page_load.py LADDERJIT PROGRAM [RUNS]"""
-import os, re, subprocess, sys, tempfile, time, urllib.request
+import os, re, subprocess, sys, tempfile, threading, time, urllib.request
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -25,13 +25,16 @@ while url is None:
         sys.exit("serve ended before printing the live view")
     m = re.search(r"live view (http://\S+) ", line)
     url = m.group(1) if m else None
-# Wait for the traced build (the first watcher asks for it; a compile off the scan thread).
+# Wait for the traced build (the first watcher asks for it; a compile off the scan thread), and
+# keep that watcher open: between two page loads no page watches, and serve would put the
+# untraced build back 10 s after the last one left (the next page would wait for a rebuild).
 t0 = time.time()
-with urllib.request.urlopen(url + "api/events", timeout=120) as es:
-    for raw in es:
-        if raw.startswith(b"data:") and b'"w":' in raw:
-            break
+es = urllib.request.urlopen(url + "api/events", timeout=120)
+for raw in es:
+    if raw.startswith(b"data:") and b'"w":' in raw:
+        break
 print("traced build in after %.1f s (first watcher)" % (time.time() - t0))
+threading.Thread(target=lambda: [None for _ in es], daemon=True).start()
 page_bytes = len(urllib.request.urlopen(url).read())
 print("live page %d bytes, static page %d bytes" % (page_bytes, os.path.getsize(static)))
 
