@@ -22,65 +22,6 @@ std::string fanucWidth(const Stmt &s) {
   return "B";
 }
 
-const char *fanucWord(Op op) {
-  switch (op) {
-  case Op::Load:
-    return "RD";
-  case Op::LoadNot:
-    return "RD.NOT";
-  case Op::LoadTrue:
-    return "RD (ON)";
-  case Op::And:
-    return "AND";
-  case Op::AndNot:
-    return "AND.NOT";
-  case Op::Or:
-    return "OR";
-  case Op::OrNot:
-    return "OR.NOT";
-  case Op::AndBlock:
-    return "AND.STK";
-  case Op::OrBlock:
-    return "OR.STK";
-  case Op::Coil:
-    return "WRT";
-  case Op::CoilNot:
-    return "WRT.NOT";
-  case Op::Set:
-    return "SET";
-  case Op::Reset:
-    return "RST";
-  case Op::EndCyclic:
-    return "END1";
-  case Op::EndSliced:
-    return "END2";
-  case Op::Jump:
-    return "JMPB";
-  case Op::Label:
-    return "LBL";
-  case Op::Call:
-    return "CALL";
-  case Op::SubBegin:
-    return "SP";
-  case Op::SubEnd:
-    return "SPE";
-  case Op::OnDelayTimer:
-    return "TMRB";
-  case Op::OffDelayTimer:
-    return "TMRBF";
-  case Op::RisePulse:
-    return "DIFU";
-  case Op::FallPulse:
-    return "DIFD";
-  case Op::BitOr:
-    return "OR";
-  case Op::BitAnd:
-    return "AND";
-  default:
-    return nullptr;
-  }
-}
-
 std::string fanuc(const VerifiedProgram &p, const Stmt &s) {
   switch (s.op) {
   case Op::Move:
@@ -95,11 +36,15 @@ std::string fanuc(const VerifiedProgram &p, const Stmt &s) {
     return s.operandCount >= 2 && s.ops[1].kind == Operand::Kind::Const && s.ops[1].value == -1
                ? "NOT"
                : "EOR";
+  case Op::BitAnd:
+    return "AND";
+  case Op::BitOr:
+    return "OR";
   default:
-    break;
+    // The front end's own table (RD, RD.NOT, WRT, AND.STK, END1, TMRB, DIFU...): it names
+    // the ops above by all their source forms ("EQB/EQW/EQD"), which a drawing cannot use.
+    return spelling(p.dialect, s.op);
   }
-  if (const char *w = fanucWord(s.op)) return w;
-  return spelling(p.dialect, s.op); // the front end's own table for the rest
 }
 
 std::string iec(const VerifiedProgram &p, const Stmt &s) {

@@ -6,10 +6,11 @@ Modbus write, drawn on then off again), that every part's last rung is drawn whe
 that a search for an address of the last rung draws and marks it, and that the page did not draw
 every rung. The load time is printed, not asserted (bench/live_page_load.py measures it).
 Usage: live_10k.py LADDERJIT GEN_REALISTIC OUTDIR"""
-import json, os, re, socket, struct, subprocess, sys, time
+import json, os, re, subprocess, sys, time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import liveutil  # noqa: E402
+
 from selenium.webdriver.common.by import By
 
 exe, gen, out = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -17,21 +18,8 @@ os.makedirs(out, exist_ok=True)
 program = os.path.join(out, "realistic10k.stl")
 subprocess.run([gen, "10000", program], check=True, timeout=60)
 sock = os.path.join(out, "serve.sock")
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-
-
-def modbus_write_coil(port, addr, on):
-    """Modbus TCP function 5 (write single coil)."""
-    with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
-        s.sendall(struct.pack(">HHHBBHH", 1, 0, 6, 1, 5, addr, 0xFF00 if on else 0))
-        ans = s.recv(64)
-        assert len(ans) >= 12 and ans[7] == 5, "modbus answer %r" % ans
+failures = liveutil.failures
+check, modbus_write_coil = liveutil.check, liveutil.modbus_write_coil
 
 
 def wait_for(fn, limit):
@@ -44,32 +32,8 @@ def wait_for(fn, limit):
     return None, limit
 
 
-serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0", "--modbus", "0",
-                          "--modbus-write-inputs", "--control", sock, "--duration", "90"],
-                         stdout=subprocess.PIPE, stderr=open(os.path.join(out, "serve.err"), "w"),
-                         text=True)
-url = mport = None
-deadline = time.time() + 30
-while time.time() < deadline and (url is None or mport is None):
-    line = serve.stdout.readline()
-    if not line:
-        break
-    m = re.search(r"live view (http://\S+) \(token (\w+)\)", line)
-    if m:
-        url = m.group(1)
-    m = re.search(r"modbus TCP on [\d.]+:(\d+)", line)
-    if m:
-        mport = int(m.group(1))
-if not url or not mport:
-    print("serve did not print the live view and modbus lines", file=sys.stderr)
-    serve.kill()
-    sys.exit(1)
-
-opts = webdriver.ChromeOptions()
-opts.binary_location = "/usr/bin/chromium"
-for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,900"]:
-    opts.add_argument(a)
-driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+serve, url, token, mport = liveutil.start_serve(exe, program, sock, os.path.join(out, "serve.err"), 90, 30)
+driver = liveutil.chrome()
 driver.set_script_timeout(20)
 driver.set_page_load_timeout(30)
 try:
@@ -148,11 +112,6 @@ try:
     check(drawn < total // 2, "rungs in the DOM after the walk: %d of %d" % (drawn, total))
     driver.save_screenshot(os.path.join(out, "live10k.png"))
 finally:
-    driver.quit()
-    serve.terminate()
-    try:
-        serve.wait(timeout=10)
-    except subprocess.TimeoutExpired:
-        serve.kill()
+    liveutil.stop(driver, serve)
 print("%d failed" % len(failures))
 sys.exit(1 if failures else 0)
