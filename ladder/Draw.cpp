@@ -33,6 +33,9 @@ std::string esc(const std::string &s) {
     case '"':
       o += "&quot;";
       break;
+    case '\'':
+      o += "&#39;";
+      break;
     default:
       o += c;
     }
@@ -121,33 +124,38 @@ public:
     out += "</g>";
   }
 
-  /// A part: its title, then each rung with number, comment, rails and cells; returns height.
+  /// One rung with its top at `y`: comment, number, rails and cells; returns its height (no
+  /// gap after it). `width` grows to the rung's right edge.
+  int rung(const RungLayout &r, const std::string &partName, int y) {
+    const int top = y;
+    out +=
+        "<g class=\"rung\" data-part=\"" + esc(partName) + "\" data-rung=\"" + n(r.number) + "\">";
+    for (const std::string &c : r.comment) {
+      y += kCommentH;
+      text(kLM + 4, y - 3, "; " + c, "cm", "start");
+    }
+    int h = r.kind == "stl" ? std::max(1, r.rows) * kStlRH + 8 : std::max(1, r.rows) * kRH;
+    text(kLM - 10, r.kind == "stl" ? y + 18 : y + kRH / 2 + 5, n(r.number), "num", "end");
+    if (r.kind == "ladder") {
+      line(kLM, y + 4, kLM, y + h - 4, "rail");
+      int rx = kLM + r.cols * kCW;
+      line(rx, y + 4, rx, y + h - 4, "rail");
+    }
+    for (const Cell &c : r.cells) cell(c, y);
+    if (r.kind == "stl") text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end"); // on top
+    out += "</g>";
+    width = std::max(width, kLM + r.cols * kCW + kRM);
+    return y + h - top;
+  }
+
+  /// A part: its title, then each rung; returns its height.
   int part(const PartLayout &p, int top, bool title) {
     int y = top;
     if (title) {
       text(8, y + 20, p.name, "part", "start");
       y += kTitleH;
     }
-    for (const RungLayout &r : p.rungs) {
-      out +=
-          "<g class=\"rung\" data-part=\"" + esc(p.name) + "\" data-rung=\"" + n(r.number) + "\">";
-      for (const std::string &c : r.comment) {
-        y += kCommentH;
-        text(kLM + 4, y - 3, "; " + c, "cm", "start");
-      }
-      int h = r.kind == "stl" ? std::max(1, r.rows) * kStlRH + 8 : std::max(1, r.rows) * kRH;
-      text(kLM - 10, r.kind == "stl" ? y + 18 : y + kRH / 2 + 5, n(r.number), "num", "end");
-      if (r.kind == "ladder") {
-        line(kLM, y + 4, kLM, y + h - 4, "rail");
-        int rx = kLM + r.cols * kCW;
-        line(rx, y + 4, rx, y + h - 4, "rail");
-      }
-      for (const Cell &c : r.cells) cell(c, y);
-      if (r.kind == "stl") text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end"); // on top
-      out += "</g>";
-      width = std::max(width, kLM + r.cols * kCW + kRM);
-      y += h + kGap;
-    }
+    for (const RungLayout &r : p.rungs) y += rung(r, p.name, y) + kGap;
     return y - top;
   }
 
@@ -197,7 +205,7 @@ std::string svgDoc(const std::string &body, int w, int h) {
 
 } // namespace
 
-std::string layoutJson(const Layout &l) {
+std::string layoutJson(const Layout &l, bool compact) {
   json j;
   j["format"] = "ladderjit-ladder-layout";
   j["version"] = 1;
@@ -229,7 +237,7 @@ std::string layoutJson(const Layout &l) {
     parts.push_back({{"name", p.name}, {"rungs", rungs}});
   }
   j["parts"] = parts;
-  return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+  return j.dump(compact ? -1 : 1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 std::string renderSvg(const Layout &l) {
@@ -240,23 +248,23 @@ std::string renderSvg(const Layout &l) {
          "\n";
 }
 
-std::string renderHtml(const Layout &l, const std::string &liveHead,
-                       const std::string &liveScript) {
-  std::string tabs, sections;
-  for (size_t i = 0; i < l.parts.size(); ++i) {
-    const PartLayout &p = l.parts[i];
-    Svg s;
-    int h = s.part(p, 8, false) + 8;
-    std::string id = "part-" + n(static_cast<int>(i));
-    tabs += "<button class=\"tab\" data-for=\"" + id + "\">" + esc(p.name) + " <small>(" +
-            n(static_cast<int>(p.rungs.size())) + ")</small></button>";
-    sections += "<section class=\"part\" id=\"" + id + "\" data-part=\"" + esc(p.name) + "\">" +
-                svgDoc(s.out, std::max(s.width, 200), h) + "</section>";
-  }
-  std::string data = layoutJson(l);
-  // "</" cannot end the script element early: JSON allows "<\/" for "</".
+namespace {
+
+/// JSON text inside a <script> element: "</" cannot end the element early (JSON allows "<\/").
+std::string scriptSafe(std::string data) {
   for (size_t k = 0; (k = data.find("</", k)) != std::string::npos; k += 3)
     data.replace(k, 2, "<\\/");
+  return data;
+}
+
+std::string tabOf(const PartLayout &p, size_t i) {
+  return "<button class=\"tab\" data-for=\"part-" + n(static_cast<int>(i)) + "\">" + esc(p.name) +
+         " <small>(" + n(static_cast<int>(p.rungs.size())) + ")</small></button>";
+}
+
+/// The page around the parts: header, tabs, the sections, the layout JSON, the tab script.
+std::string page(const Layout &l, const std::string &tabs, const std::string &sections,
+                 const std::string &head, const std::string &data, const std::string &script) {
   return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + esc(l.file) +
          " - ladder</title><style>"
          "body{margin:0;font-family:'DejaVu Sans',sans-serif;background:#fafafa}"
@@ -266,9 +274,10 @@ std::string renderHtml(const Layout &l, const std::string &liveHead,
          ".tab.sel{background:#1565c0;color:#fff}"
          "section.part{display:none;overflow:auto;padding:6px}section.part.sel{display:block}"
          "#info{font-size:12px;color:#444;margin-left:8px}" +
-         liveHead + "</style></head><body><header><b>" + esc(l.file) +
+         head + "</style></head><body><header><b>" + esc(l.file) +
          "</b><span id=\"info\"></span></header><nav>" + tabs + "</nav><main>" + sections +
-         "</main><script type=\"application/json\" id=\"ladder-layout\">" + data +
+         "</main>" + data + "<script type=\"application/json\" id=\"ladder-layout\">" +
+         scriptSafe(layoutJson(l, !data.empty())) +
          "</script><script>"
          "(function(){var tabs=document.querySelectorAll('.tab');"
          "function "
@@ -288,8 +297,60 @@ std::string renderHtml(const Layout &l, const std::string &liveHead,
          "if(g)document.getElementById('info').textContent=g.querySelector('title')?g."
          "querySelector('title').textContent:''});"
          "})();</script>" +
-         (liveScript.empty() ? std::string() : "<script>" + liveScript + "</script>") +
-         "</body></html>\n";
+         (script.empty() ? std::string() : "<script>" + script + "</script>") + "</body></html>\n";
+}
+
+} // namespace
+
+std::string renderHtml(const Layout &l, const std::string &liveHead,
+                       const std::string &liveScript) {
+  std::string tabs, sections;
+  for (size_t i = 0; i < l.parts.size(); ++i) {
+    const PartLayout &p = l.parts[i];
+    Svg s;
+    int h = s.part(p, 8, false) + 8;
+    tabs += tabOf(p, i);
+    sections += "<section class=\"part\" id=\"part-" + n(static_cast<int>(i)) + "\" data-part=\"" +
+                esc(p.name) + "\">" + svgDoc(s.out, std::max(s.width, 200), h) + "</section>";
+  }
+  return page(l, tabs, sections, liveHead, {}, liveScript);
+}
+
+std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
+                           const std::string &liveScript) {
+  // Each rung: an empty placeholder of its drawn size in the page, its SVG in one JSON array
+  // (per part, per rung) that the live script draws from when the placeholder nears the view.
+  std::string tabs, sections;
+  json svgs = json::array();
+  for (size_t i = 0; i < l.parts.size(); ++i) {
+    const PartLayout &p = l.parts[i];
+    tabs += tabOf(p, i);
+    sections += "<section class=\"part\" id=\"part-" + n(static_cast<int>(i)) + "\" data-part=\"" +
+                esc(p.name) + "\">";
+    json part = json::array();
+    for (size_t k = 0; k < p.rungs.size(); ++k) {
+      Svg s;
+      int h = s.rung(p.rungs[k], p.name, 0);
+      int w = std::max(s.width, 200);
+      std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"lad\" width=\"" + n(w) +
+                        "\" height=\"" + n(h) + "\">" + s.out + "</svg>";
+      // Attributes in single quotes: the JSON string needs no escapes (text has ' as &#39;).
+      std::replace(svg.begin(), svg.end(), '"', '\'');
+      part.push_back(std::move(svg));
+      sections += "<div class=\"rg\" data-p=\"" + n(static_cast<int>(i)) + "\" data-r=\"" +
+                  n(static_cast<int>(k)) + "\" style=\"width:" + n(w) + "px;height:" + n(h) +
+                  "px\"></div>";
+    }
+    sections += "</section>";
+    svgs.push_back(std::move(part));
+  }
+  std::string head =
+      std::string(kStyle) + ".rg{margin-bottom:" + n(kGap) + "px}.rg svg{display:block}" + liveHead;
+  return page(l, tabs, sections, head,
+              "<script type=\"application/json\" id=\"ladder-rungs\">" +
+                  scriptSafe(svgs.dump(-1, ' ', false, json::error_handler_t::replace)) +
+                  "</script>",
+              liveScript);
 }
 
 } // namespace lj::ladder

@@ -318,6 +318,12 @@ Element elementOf(const VerifiedProgram &p, int32_t i) {
   e.id = s.id;
   e.loc = s.loc;
   e.op = s.op;
+  if (p.dialect && std::string(p.dialect->name) != "hnc8") e.drawn = drawnMnemonic(p, s);
+  if (p.dialect && std::string(p.dialect->name) == "iec" &&
+      (s.op == Op::Label || s.op == Op::SubBegin) && s.operandCount == 1) {
+    e.drawn = p.dialect->formatOperand(s.ops[0]) + ":"; // IL writes `%L64:` and `SR0:`
+    e.drawnWhole = true;
+  }
   for (int k = 0; k < s.operandCount; ++k) {
     const Operand &o = s.ops[static_cast<size_t>(k)];
     // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).

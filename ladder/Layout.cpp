@@ -140,7 +140,7 @@ private:
 
   Cell boxCell(const Node &n, int row, int col, int height) const {
     Cell c = elemCell(n.elem, "box", row, col);
-    c.text = mnemonic(n.elem.op);
+    c.text = drawnText(n.elem);
     c.symbol.clear();
     for (size_t k = 0; k < n.elem.operands.size(); ++k) {
       std::string s = symbolOf(n.elem, k);
@@ -241,8 +241,8 @@ private:
 };
 
 std::string stmtLine(const Element &e) {
-  std::string t = mnemonic(e.op);
-  for (size_t k = 0; k < e.operands.size(); ++k)
+  std::string t = drawnText(e);
+  for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k)
     t += " " + (k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k] : e.operands[k]);
   return t;
 }

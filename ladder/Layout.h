@@ -52,8 +52,9 @@ constexpr int kMinInputCols = 7;
 Layout layout(const Networks &nets);
 RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &symbols);
 
-/// The layout JSON (docs/ladder-view.md "Layout JSON"): per part and rung, the cells.
-std::string layoutJson(const Layout &l);
+/// The layout JSON (docs/ladder-view.md "Layout JSON"): per part and rung, the cells. `compact`:
+/// on one line (the live page), else indented.
+std::string layoutJson(const Layout &l, bool compact = false);
 
 /// One self-contained SVG of every part, stacked (docs/ladder-view.md).
 std::string renderSvg(const Layout &l);
@@ -62,6 +63,12 @@ std::string renderSvg(const Layout &l);
 /// <script> after the page's own; empty: the static drawing.
 std::string renderHtml(const Layout &l, const std::string &liveHead = {},
                        const std::string &liveScript = {});
+
+/// The live page of `serve --http`: as renderHtml, but each rung is an empty placeholder of its
+/// size and its SVG sits in the JSON array `ladder-rungs` (per part, per rung) for the live script
+/// to draw only the rungs in or near the view (docs/ladder-view.md "Large programs").
+std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
+                           const std::string &liveScript);
 
 /// The live view's CSS and JS (`serve --http`, docs/ladder-view.md "Live view").
 std::string liveCss();

@@ -27,12 +27,24 @@ body.live main,body.live nav,body.live header,body.live #live{margin-right:330px
 .lad text.fmark{font-size:10px;font-weight:bold}.lad text.val{font-size:11px;fill:#0d47a1;font-weight:bold}
 .lad g.box.on rect.box{stroke:#0a0;stroke-width:2.6}
 .lad g.el{pointer-events:bounding-box}
+.lad g.ns line.w,.lad g.ns line.sym,.lad g.ns path.sym,.lad g.ns rect.box{stroke:#b0b0b0!important;stroke-dasharray:4 3}
+.lad g.ns text{fill:#9e9e9e}
 )CSS";
 
 const char *kLiveJs = R"JS(
 (function(){
 var L=window.ladder,model=null,hash=window.LJ_HASH||null,prev=[],lastMsg=null,hits=[],hitAt=-1;
-var byId={};document.querySelectorAll('g.el[data-stmt]').forEach(function(g){(byId[g.dataset.stmt]=byId[g.dataset.stmt]||[]).push(g)});
+// ---- lazy drawing: only rungs in or near the view are in the DOM ----------------------------
+var R=JSON.parse(document.getElementById('ladder-rungs').textContent),byId={},nDrawn=0;
+function register(div,add){div.querySelectorAll('g.el[data-stmt]').forEach(function(g){var id=g.dataset.stmt;
+ if(add)(byId[id]=byId[id]||[]).push(g);else if(byId[id]){byId[id]=byId[id].filter(function(x){return x!==g});if(!byId[id].length)delete byId[id]}})}
+function draw(div){if(div.firstChild)return;div.innerHTML=R[div.dataset.p][div.dataset.r];register(div,true);nDrawn++;
+ if(lastMsg&&model){div.querySelectorAll('g.el[data-stmt]').forEach(function(g){paintOne(g.dataset.stmt,lastMsg.w)});forced(lastMsg)}}
+function undraw(div){if(!div.firstChild)return;register(div,false);div.innerHTML='';nDrawn--}
+var rgs=document.querySelectorAll('div.rg');
+var io=new IntersectionObserver(function(es){es.forEach(function(e){if(e.isIntersecting)draw(e.target);else undraw(e.target)})},{rootMargin:'800px 400px'});
+rgs.forEach(function(d){io.observe(d)});
+function rungDiv(p,k){return document.querySelector('div.rg[data-p="'+p+'"][data-r="'+k+'"]')}
 var q=new URLSearchParams(location.search);if(q.get('token'))try{localStorage.setItem('ljtoken',q.get('token'))}catch(e){}
 function token(){var t=document.getElementById('tok').value;try{localStorage.setItem('ljtoken',t)}catch(e){}return t}
 var bar=document.createElement('div');bar.id='live';
@@ -52,8 +64,8 @@ function say(t,bad){var m=document.getElementById('msg');m.textContent=t;m.style
 function setConn(t,ok){var c=document.getElementById('conn');c.textContent=t;c.className='st '+(ok?'ok':'bad')}
 // ---- the layout: where each address is used -----------------------------------------------
 var uses={},cellOf={};
-L.layout.parts.forEach(function(p,pi){p.rungs.forEach(function(r){r.cells.forEach(function(c){
- if(c.stmt>=0)cellOf[c.stmt]={part:pi,name:p.name,rung:r.number,cell:c};
+L.layout.parts.forEach(function(p,pi){p.rungs.forEach(function(r,ri){r.cells.forEach(function(c){
+ if(c.stmt>=0)cellOf[c.stmt]={part:pi,index:ri,name:p.name,rung:r.number,cell:c};
  function use(a,role){if(!a)return;a=a.replace(/\s*<.*>$/,'');(uses[a]=uses[a]||[]).push({part:pi,name:p.name,rung:r.number,role:role,stmt:c.stmt})}
  if(/^contact/.test(c.kind))use(c.text,'read');
  else if(/^(coil|coil-not|set|rst)$/.test(c.kind))use(c.text,c.kind==='coil'||c.kind==='coil-not'?'write (coil)':'write ('+c.kind+')');
@@ -62,7 +74,8 @@ L.layout.parts.forEach(function(p,pi){p.rungs.forEach(function(r){r.cells.forEac
 var dbl=Object.keys(uses).filter(function(a){return uses[a].filter(function(u){return u.role==='write (coil)'}).length>1});
 document.getElementById('dbl').innerHTML=dbl.length?dbl.map(function(a){return '<div class="warn">'+a+': '+uses[a].filter(function(u){return u.role==='write (coil)'}).length+' coils <a data-x="'+a+'">where</a></div>'}).join(''):'none';
 function goTo(stmt){var c=cellOf[stmt];if(!c)return;var b=document.querySelectorAll('.tab')[c.part];if(b)b.click();
- var g=(byId[stmt]||[])[0];if(g){mark([g]);g.scrollIntoView({block:'center',inline:'center'})}}
+ var d=rungDiv(c.part,c.index);if(d)draw(d);var g=(byId[stmt]||[])[0];if(g){mark([g]);g.scrollIntoView({block:'center',inline:'center'})}}
+L.goTo=goTo;L.drawn=function(){return nDrawn};
 function mark(gs){document.querySelectorAll('g.hit').forEach(function(g){g.classList.remove('hit');var r=g.querySelector('rect.hl');if(r)r.remove()});
  gs.forEach(function(g){g.classList.add('hit');var bb=g.getBBox(),r=document.createElementNS('http://www.w3.org/2000/svg','rect');r.setAttribute('class','hl');
  r.setAttribute('x',bb.x-3);r.setAttribute('y',bb.y-3);r.setAttribute('width',bb.width+6);r.setAttribute('height',bb.height+6);g.insertBefore(r,g.firstChild)})}
@@ -93,12 +106,15 @@ function loadModel(){return fetch('api/model').then(function(r){return r.json()}
 function boxVal(g,vals){var t=g.querySelector('text.val');if(!t){var r=g.querySelector('rect.box');if(!r)return;t=document.createElementNS('http://www.w3.org/2000/svg','text');
  t.setAttribute('class','val');t.setAttribute('text-anchor','middle');t.setAttribute('x',+r.getAttribute('x')+ +r.getAttribute('width')/2);
  t.setAttribute('y',+r.getAttribute('y')+ +r.getAttribute('height')-4);g.appendChild(t)}t.textContent=vals.join('  ')}
-function paint(m){if(!model||!m.w)return;var w=m.w;for(var id in model.stmts){var d=model.stmts[id],at=d[0],n=d[2],k=d[1],ch=false;
- for(var i=0;i<n;i++)if(prev[at+i]!==w[at+i])ch=true;if(!ch)continue;var on=k==='box'?w[at+1]:w[at];L.setState(id,on);
- if(k==='box'&&n>2)(byId[id]||[]).forEach(function(g){boxVal(g,w.slice(at+2,at+n))})}prev=w}
+function paintOne(id,w){var d=model.stmts[id],gs=byId[id];if(!d||!gs||!w)return;var at=d[0],k=d[1],n=d[2],ns=w[at]===null;
+ var on=!ns&&!!(k==='box'?w[at+1]:w[at]);
+ gs.forEach(function(g){g.classList.toggle('on',on);g.classList.toggle('off',!on&&!ns);g.classList.toggle('ns',ns);
+  if(k==='box'&&n>2)boxVal(g,ns?['not scanned']:w.slice(at+2,at+n).map(function(x){return x===null?-2147483648:x}))})}
+function paint(m){if(!model||!m.w)return;var w=m.w;for(var id in byId){var d=model.stmts[id];if(!d)continue;var at=d[0],n=d[2],ch=prev.length===0;
+ for(var i=0;i<n&&!ch;i++)if(prev[at+i]!==w[at+i])ch=true;if(ch)paintOne(id,w)}prev=w}
 function forced(m){document.querySelectorAll('g.forced-on,g.forced-off').forEach(function(g){g.classList.remove('forced-on','forced-off');var t=g.querySelector('text.fmark');if(t)t.remove()});
- var f=m.forced||{},ids=Object.keys(f);ids.forEach(function(id){(byId[id]||[]).forEach(function(g){g.classList.add(f[id]?'forced-on':'forced-off');var bb=g.getBBox(),t=document.createElementNS('http://www.w3.org/2000/svg','text');
- t.setAttribute('class','fmark');t.setAttribute('x',bb.x+bb.width-4);t.setAttribute('y',bb.y+10);t.setAttribute('text-anchor','end');t.setAttribute('fill',f[id]?'#00c853':'#d50000');t.textContent=f[id]?'F-ON':'F-OFF';g.appendChild(t)})});
+ var f=m.forced||{},ids=Object.keys(f);ids.forEach(function(id){(byId[id]||[]).forEach(function(g){g.classList.add(f[id]?'forced-on':'forced-off');var s=g.querySelectorAll('line.sym')[0],t=document.createElementNS('http://www.w3.org/2000/svg','text');if(!s)return;
+ t.setAttribute('class','fmark');t.setAttribute('x',+s.getAttribute('x1')-4);t.setAttribute('y',+s.getAttribute('y1')+8);t.setAttribute('text-anchor','end');t.setAttribute('fill',f[id]?'#00c853':'#d50000');t.textContent=f[id]?'F-ON':'F-OFF';g.appendChild(t)})});
  document.getElementById('forces').innerHTML=ids.length?ids.map(function(id){var c=cellOf[id];return '<div><a data-s="'+id+'">'+(c?c.cell.text+' ('+c.name+' rung '+c.rung+')':'id '+id)+'</a> '+(f[id]?'on':'off')+'</div>'}).join(''):'none';
  var lk=m.locks||[];document.getElementById('locks').innerHTML=lk.length?lk.map(function(x){return '<div>'+x+'</div>'}).join(''):'none'}
 var series=[];
@@ -106,14 +122,14 @@ function bars(id,h){var c=document.getElementById(id),x=c.getContext('2d');x.cle
  var mx=Math.max.apply(null,h.bins.concat([1])),bw=(c.width-2)/h.bins.length;x.fillStyle='#1565c0';
  h.bins.forEach(function(v,i){var y=v?Math.max(1,(c.height-14)*Math.log(1+v)/Math.log(1+mx)):0;x.fillRect(1+i*bw,c.height-12-y,Math.max(1,bw-1),y)});
  x.fillStyle='#333';x.font='10px sans-serif';x.fillText('0',1,c.height-2);x.fillText(String(h.binUs*h.bins.length),c.width-30,c.height-2);x.fillText('p99 '+h.p99_us+'  max '+h.max_us,90,10)}
-function stats(s){document.getElementById('counters').innerHTML='ticks '+s.ticks+' &middot; overruns <b>'+s.overruns+'</b> &middot; missed deadlines <b>'+s.missed_deadlines+'</b> &middot; period '+(s.period_ns/1e6)+' ms';
+function stats(s){document.getElementById('counters').innerHTML='at tick '+s.tick+': ticks run '+s.ticks+' &middot; overruns <b>'+s.overruns+'</b> &middot; missed deadlines <b>'+s.missed_deadlines+'</b> &middot; period '+(s.period_ns/1e6)+' ms';
  bars('hscan',s.scan);bars('hjit',s.jitter);series.push(s.overruns+s.missed_deadlines);if(series.length>120)series.shift();
  var c=document.getElementById('tser'),x=c.getContext('2d');x.clearRect(0,0,c.width,c.height);var lo=series[0],hi=Math.max(series[series.length-1],lo+1);
  x.strokeStyle='#d50000';x.beginPath();series.forEach(function(v,i){var px=i*(c.width/120),py=c.height-4-(c.height-8)*(v-lo)/(hi-lo);i?x.lineTo(px,py):x.moveTo(px,py)});x.stroke();
  x.fillStyle='#333';x.font='10px sans-serif';x.fillText('+'+(hi-lo)+' over '+series.length/2+' s',4,10)}
 function apply(m){lastMsg=m;L.live.last=m;if(hash&&m.hash!==hash){setConn('new program version: reloading',true);location.reload();return}hash=m.hash;
  document.getElementById('ver').textContent='version '+m.v+(m.traced?'':m.aot?' (AOT: untraced, no power flow)':' (waiting for the traced build)');
- document.getElementById('tick').textContent='tick '+m.tick;L.live.tick=m.tick;
+ document.getElementById('tick').textContent='tick '+m.tick+(m.w?'':' (no trace)');L.live.tick=m.tick;
  var go=function(){paint(m);forced(m);if(m.stats)stats(m.stats)};if(!model||model.version!==m.v)loadModel().then(go);else go()}
 L.live={tick:-1,last:null};
 function connect(){var es=new EventSource('api/events');es.addEventListener('state',function(e){setConn('live',true);apply(JSON.parse(e.data))});

@@ -22,6 +22,10 @@ struct Element {
   std::vector<std::string> before;   ///< comment lines just before it (not the rung comment)
   std::string comment;               ///< trailing comment on its line
   bool hasComment = false;
+  /// The instruction as the drawing shows it, in the program's dialect (Spelling.cpp); empty:
+  /// mnemonic(op). Only drawings use it; the JSON and text forms stay in HNC-8 STL.
+  std::string drawn;
+  bool drawnWhole = false; ///< `drawn` includes the operands (an IL label `%L64:`)
 };
 
 enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };
@@ -93,6 +97,13 @@ bool rungStatements(const Node &network, std::vector<Element> &out, std::string 
 
 /// The mnemonic of `op` (table row).
 const char *mnemonic(Op op);
+inline const char *hnc8Mnemonic(Op op) { return mnemonic(op); }
+/// `s` as the ladder view draws it in `p`'s dialect (docs/ladder-view.md "Dialects").
+std::string drawnMnemonic(const VerifiedProgram &p, const Stmt &s);
+/// An element's drawn instruction: `drawn`, else its HNC-8 mnemonic.
+inline std::string drawnText(const Element &e) {
+  return e.drawn.empty() ? mnemonic(e.op) : e.drawn;
+}
 
 /// Counts for reports: ladder / stl / marker rungs.
 struct RungCounts {

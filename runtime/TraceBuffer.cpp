@@ -19,6 +19,8 @@ void TraceBuffer::publish(uint64_t tick) {
   published_.fetch_add(1, std::memory_order_release);
 }
 
+void TraceBuffer::markNotScanned() { std::fill(live_.begin(), live_.end(), kNotScanned); }
+
 bool TraceBuffer::take(std::vector<int32_t> &out, uint64_t &tick) {
   std::lock_guard<std::mutex> g(readMu_);
   if (middle_.load(std::memory_order_acquire) & kFresh) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <climits>
 #include <cstdint>
 #include <mutex>
 #include <vector>
@@ -21,6 +22,12 @@ public:
   int32_t *live() { return live_.data(); }
   int32_t words() const { return static_cast<int32_t>(live_.size()); }
 
+  /// Set in every word before a tick: a statement whose first word (always a 0/1 flag: the
+  /// contact's conduction, the coil's input, a box's EN, a jump's EN) still holds it after the
+  /// tick was not scanned in that tick. (A value word may hold it legitimately.)
+  static constexpr int32_t kNotScanned = INT32_MIN;
+  /// Scan thread, between ticks: every live word to kNotScanned. No allocation.
+  void markNotScanned();
   /// Scan thread, at a tick boundary: publish the words of tick `tick`. Wait-free.
   void publish(uint64_t tick);
   /// Any thread: the newest published copy into `out` (and its tick). False when nothing was

@@ -4,10 +4,11 @@ chromedriver, scripts/setup-test.sh): start `serve --http` on tests/http/live.st
 check the rung count and the drawn elements, write X0.0 over Modbus and see the coil Y0.0 drawn
 on within 200 ms, force the contact X0.1 from the page's menu and read the effect (Y0.1 = 1)
 back with `ladderjit monitor read`, and keep a screenshot. Usage: live_page.py LADDERJIT OUTDIR"""
-import json, os, re, socket, struct, subprocess, sys, time
+import json, os, re, subprocess, sys, time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import liveutil  # noqa: E402
+
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
@@ -16,58 +17,25 @@ os.makedirs(out, exist_ok=True)
 here = os.path.dirname(os.path.abspath(__file__))
 program = os.path.join(here, "live.stl")
 sock = os.path.join(out, "serve.sock")
-failures = []
+failures = liveutil.failures
+check, modbus_write_coil = liveutil.check, liveutil.modbus_write_coil
 
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what, flush=True)
-    if not ok:
-        failures.append(what)
-
-
-def modbus_write_coil(port, addr, on):
-    """Modbus TCP function 5 (write single coil), written out by hand: no client library."""
-    with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
-        s.sendall(struct.pack(">HHHBBHH", 1, 0, 6, 1, 5, addr, 0xFF00 if on else 0))
-        ans = s.recv(64)
-        assert len(ans) >= 12 and ans[7] == 5, "modbus answer %r" % ans
-
-
-serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0", "--modbus", "0",
-                          "--modbus-write-inputs", "--control", sock, "--duration", "60"],
-                         stdout=subprocess.PIPE, stderr=open(os.path.join(out, "serve.err"), "w"),
-                         text=True)
-url = token = mport = None
-deadline = time.time() + 20
-while time.time() < deadline and (url is None or mport is None):
-    line = serve.stdout.readline()
-    if not line:
-        break
-    m = re.search(r"live view (http://\S+) \(token (\w+)\)", line)
-    if m:
-        url, token = m.group(1), m.group(2)
-    m = re.search(r"modbus TCP on [\d.]+:(\d+)", line)
-    if m:
-        mport = int(m.group(1))
-if not url or not mport:
-    print("serve did not print the live view and modbus lines", file=sys.stderr)
-    serve.kill()
-    sys.exit(1)
-
-opts = webdriver.ChromeOptions()
-opts.binary_location = "/usr/bin/chromium"
-for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,900"]:
-    opts.add_argument(a)
-driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+serve, url, token, mport = liveutil.start_serve(exe, program, sock, os.path.join(out, "serve.err"), 60)
+driver = liveutil.chrome()
 driver.set_script_timeout(10)
 try:
     driver.get(url + "?token=" + token)
     layout = json.loads(driver.find_element(By.ID, "ladder-layout").get_attribute("textContent"))
     want = sum(len(p["rungs"]) for p in layout["parts"])
-    rungs = len(driver.find_elements(By.CSS_SELECTOR, "g.rung"))
+    # Every rung has its place; the rungs of the shown tab (PLC1, all in view) are drawn.
+    places = len(driver.find_elements(By.CSS_SELECTOR, "div.rg"))
+    time.sleep(0.2)
+    shown = len(driver.find_elements(By.CSS_SELECTOR, "section.part.sel g.rung"))
     ladder = sum(1 for p in layout["parts"] for r in p["rungs"] if r["kind"] == "ladder")
-    check(rungs == want and ladder == 4, "rungs drawn %d, layout %d, ladder rungs %d (live.stl has 4 "
-          "and the 1END / 2END markers)" % (rungs, want, ladder))
+    check(places == want and ladder == 4, "rung places %d, layout %d, ladder rungs %d (live.stl has 4 "
+          "and the 1END / 2END markers)" % (places, want, ladder))
+    check(shown == len(layout["parts"][0]["rungs"]),
+          "rungs drawn in the first tab %d of %d" % (shown, len(layout["parts"][0]["rungs"])))
     kinds = driver.execute_script(
         "var k={};document.querySelectorAll('g.el').forEach(function(g){var c=g.getAttribute('class')"
         ".split(' ')[1];k[c]=(k[c]||0)+1});return k")
@@ -124,11 +92,6 @@ try:
     driver.save_screenshot(os.path.join(out, "live.png"))
     check(os.path.getsize(os.path.join(out, "live.png")) > 10000, "screenshot " + os.path.join(out, "live.png"))
 finally:
-    driver.quit()
-    serve.terminate()
-    try:
-        serve.wait(timeout=10)
-    except subprocess.TimeoutExpired:
-        serve.kill()
+    liveutil.stop(driver, serve)
 print("%d failed" % len(failures))
 sys.exit(1 if failures else 0)

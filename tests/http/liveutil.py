@@ -1,0 +1,66 @@
+"""Shared by the live-view browser tests (live_page.py, live_10k.py): checks, a Modbus coil
+write written out by hand (no client library), `serve` started with its live view and Modbus
+server and their addresses read from its output, and headless Chromium through selenium."""
+import re, socket, struct, subprocess, sys
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def modbus_write_coil(port, addr, on):
+    """Modbus TCP function 5 (write single coil)."""
+    with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
+        s.sendall(struct.pack(">HHHBBHH", 1, 0, 6, 1, 5, addr, 0xFF00 if on else 0))
+        ans = s.recv(64)
+        assert len(ans) >= 12 and ans[7] == 5, "modbus answer %r" % ans
+
+
+def start_serve(exe, program, sock, errfile, duration, wait=20):
+    """serve PROGRAM --http 127.0.0.1:0 --modbus 0 --modbus-write-inputs; (proc, url, token,
+    modbus port), or exit 1 when it did not print both addresses within `wait` seconds."""
+    import time
+    serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0", "--modbus", "0",
+                              "--modbus-write-inputs", "--control", sock, "--duration", str(duration)],
+                             stdout=subprocess.PIPE, stderr=open(errfile, "w"), text=True)
+    url = token = mport = None
+    deadline = time.time() + wait
+    while time.time() < deadline and (url is None or mport is None):
+        line = serve.stdout.readline()
+        if not line:
+            break
+        m = re.search(r"live view (http://\S+) \(token (\w+)\)", line)
+        if m:
+            url, token = m.group(1), m.group(2)
+        m = re.search(r"modbus TCP on [\d.]+:(\d+)", line)
+        if m:
+            mport = int(m.group(1))
+    if not url or not mport:
+        print("serve did not print the live view and modbus lines", file=sys.stderr)
+        serve.kill()
+        sys.exit(1)
+    return serve, url, token, mport
+
+
+def chrome():
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = "/usr/bin/chromium"
+    for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1400,900"]:
+        opts.add_argument(a)
+    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+
+
+def stop(driver, serve):
+    driver.quit()
+    serve.terminate()
+    try:
+        serve.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        serve.kill()

@@ -1,0 +1,82 @@
+// The ladder view in the program's dialect (docs/ladder-view.md "Dialects"): a FANUC PMC
+// program is drawn with the PMC's instruction names (fanuc-pmc.md 5, 6: RD/WRT, EQB, MOVW,
+// TMRB, DIFU, END1) and addresses (R100.3, D100); an IEC IL program with the IL objects (%I0.1)
+// and words (ST, the %L label as `%L1:`), never the HNC-8 ones (COIN, MOV, PLS, OUT).
+#include "frontends/fanuc/FrontEnd.h"
+#include "frontends/iec/FrontEnd.h"
+#include "ladder/Layout.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace lj::ladder {
+namespace {
+
+std::set<std::string> texts(const Layout &l, const std::string &kindPrefix) {
+  std::set<std::string> out;
+  for (const PartLayout &p : l.parts)
+    for (const RungLayout &r : p.rungs)
+      for (const Cell &c : r.cells)
+        if (c.kind.rfind(kindPrefix, 0) == 0) out.insert(c.text);
+  return out;
+}
+
+TEST(LadderDialect, FanucMnemonicsAndAddresses) {
+  const char *pmc = "RD R100.3\n"
+                    "EQB R10 8\n" // compare, byte
+                    "WRT R1.0\n"
+                    "END1\n"
+                    "RD X0.1\n"
+                    "DIFU 1\n"
+                    "WRT R1.2\n"
+                    "RD R1.0\n"
+                    "MOVW D100 D102\n" // two-byte move
+                    "RD.NOT R1.2\n"
+                    "TMRB 2 5000\n"
+                    "WRT R2.0\n"
+                    "END2\n"
+                    "END\n";
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  Layout l = layout(fromProgram(*p));
+  EXPECT_EQ(texts(l, "box"), (std::set<std::string>{"EQB", "DIFU", "MOVW", "TMRB"}));
+  EXPECT_EQ(texts(l, "marker"), (std::set<std::string>{"END1", "END2"}));
+  std::set<std::string> contacts = texts(l, "contact");
+  EXPECT_TRUE(contacts.count("R100.3")) << "the PMC address as written";
+  EXPECT_TRUE(texts(l, "coil").count("R2.0"));
+  bool d100 = false;
+  for (const PartLayout &pl : l.parts)
+    for (const RungLayout &r : pl.rungs)
+      for (const Cell &c : r.cells)
+        if (c.text == "MOVW") d100 = !c.operands.empty() && c.operands[0] == "D100";
+  EXPECT_TRUE(d100) << "MOVW's first operand drawn as D100";
+}
+
+TEST(LadderDialect, IecObjectsAndWords) {
+  const char *il = "LD %I0.1\n"
+                   "AND %I0.2\n"
+                   "ST %Q0.1\n"
+                   "LD %I0.3\n"
+                   "JMPC %L1\n"
+                   "LD %I0.4\n"
+                   "ST %Q0.2\n"
+                   "%L1:\n"
+                   "LD %I0.5\n"
+                   "ST %Q0.3\n"
+                   "END\n";
+  Diagnostics d("t.il");
+  std::optional<VerifiedProgram> p = iec::compileIl(il, "t.il", VerifyOptions{}, d);
+  ASSERT_TRUE(p) << d.render();
+  Layout l = layout(fromProgram(*p));
+  std::set<std::string> contacts = texts(l, "contact");
+  EXPECT_TRUE(contacts.count("%I0.1") && contacts.count("%I0.5"));
+  EXPECT_TRUE(texts(l, "coil").count("%Q0.3"));
+  std::set<std::string> markers = texts(l, "marker");
+  EXPECT_TRUE(markers.count("%L1:")) << "the label as IL writes it";
+  for (const std::string &m : markers) EXPECT_EQ(m.find("LBL"), std::string::npos) << m;
+}
+
+} // namespace
+} // namespace lj::ladder
