@@ -65,8 +65,7 @@ public:
       const int nn = static_cast<int>(pick(0, 3));
       const int groups = nn == 0 ? 1 : nn;
       line("DECB 0" + std::string(nn < 10 ? "0" : "") + std::to_string(nn) + std::to_string(w) +
-           " " + data(w, false) + " " + std::to_string(pick(-20, 20)) + " " +
-           data(groups, true));
+           " " + data(w, false) + " " + std::to_string(pick(-20, 20)) + " " + data(groups, true));
       return;
     }
     case 10:

@@ -110,7 +110,8 @@ void groupDecode(const BlockCall &b) {
   const uint32_t out = b.ops[3].off;
   for (int j = 0; j < groups; ++j) {
     uint8_t byte = 0;
-    if (act && delta >= 8 * j && delta < 8 * j + 8) byte = static_cast<uint8_t>(1u << (delta - 8 * j));
+    if (act && delta >= 8 * j && delta < 8 * j + 8)
+      byte = static_cast<uint8_t>(1u << (delta - 8 * j));
     at(b, out)[j] = byte;
   }
 }
@@ -120,8 +121,8 @@ void convert(const BlockCall &b) {
   bool err = false;
   if (in.v[0]) {
     const int width = in.v[3] ? 2 : 1;
-    const uint32_t raw = static_cast<uint32_t>(readLe(b, b.ops[0].off, width)) &
-                         (width == 2 ? 0xFFFFu : 0xFFu);
+    const uint32_t raw =
+        static_cast<uint32_t>(readLe(b, b.ops[0].off, width)) & (width == 2 ? 0xFFFFu : 0xFFu);
     int64_t v = 0;
     uint32_t result = 0;
     if (in.v[2]) { // BCD -> binary

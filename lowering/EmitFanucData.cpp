@@ -56,8 +56,8 @@ void FunctionEmitter::fdStore(const Operand &o, int32_t k, unsigned width, llvm:
 }
 
 llvm::Value *FunctionEmitter::fdAddr(const Operand &o, llvm::Value *dyn) {
-  llvm::Value *p = b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), state_,
-                                                 tp().elementOffset(o.area, o.index));
+  llvm::Value *p =
+      b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), state_, tp().elementOffset(o.area, o.index));
   return b_.CreateInBoundsGEP(b_.getInt8Ty(), p, dyn);
 }
 
@@ -84,8 +84,8 @@ llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
     llvm::Value *v = fdLoad(s.ops[0], 0, 2);
     llvm::Value *right = in[3];
     llvm::Value *r = b_.CreateSelect(right, b_.CreateLShr(v, 1), b_.CreateShl(v, 1));
-    llvm::Value *out = b_.CreateTrunc(b_.CreateSelect(right, v, b_.CreateLShr(v, 15)),
-                                      b_.getInt1Ty());
+    llvm::Value *out =
+        b_.CreateTrunc(b_.CreateSelect(right, v, b_.CreateLShr(v, 15)), b_.getInt1Ty());
     r = b_.CreateSelect(in[2], b_.CreateOr(r, v), r);
     fdStore(s.ops[0], 0, 2, r, in[0]);
     fdW1(slot, in[0], in[1], out);
@@ -106,8 +106,8 @@ llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
     for (int32_t j = 0; j < s.ops[2].value; ++j) {
       llvm::Value *rel = b_.CreateSub(delta, b_.getInt64(static_cast<uint64_t>(8 * j)));
       llvm::Value *hit = b_.CreateAnd(act, b_.CreateICmpULT(rel, b_.getInt64(8)));
-      llvm::Value *bit = b_.CreateShl(b_.getInt8(1), b_.CreateAnd(b_.CreateTrunc(rel, b_.getInt8Ty()),
-                                                                  b_.getInt8(7)));
+      llvm::Value *bit = b_.CreateShl(
+          b_.getInt8(1), b_.CreateAnd(b_.CreateTrunc(rel, b_.getInt8Ty()), b_.getInt8(7)));
       fdStore(s.ops[3], j, 1, b_.CreateSelect(hit, bit, b_.getInt8(0)), nullptr);
     }
     break;
@@ -209,7 +209,8 @@ void FunctionEmitter::emitFdConvert(const Stmt &s, int32_t slot) {
   llvm::Value *hi = b_.CreateZExt(fdLoad(s.ops[0], 1, 1), b_.getInt32Ty());
   llvm::Value *raw = b_.CreateSelect(byt, b_.CreateOr(lo, b_.CreateShl(hi, 8)), lo);
   auto [value, bad] = bcdValue(b_, raw, 4); // BYT = 0: the high digits are 0
-  llvm::Value *big = b_.CreateICmpUGT(raw, b_.CreateSelect(byt, b_.getInt32(9999), b_.getInt32(99)));
+  llvm::Value *big =
+      b_.CreateICmpUGT(raw, b_.CreateSelect(byt, b_.getInt32(9999), b_.getInt32(99)));
   llvm::Value *bcd = b_.CreateTrunc(
       bcdDigits(b_, b_.CreateZExt(b_.CreateSelect(big, b_.getInt32(0), raw), b_.getInt64Ty()), 4),
       b_.getInt32Ty());
@@ -226,8 +227,7 @@ void FunctionEmitter::emitFdConvertExt(const Stmt &s, int32_t slot) {
   llvm::Value *act = in[0], *cnv = in[2], *sin = in[3];
   const int width = s.ops[0].width, digits = 2 * width;
   llvm::Value *x = readInt(s.ops[0]); // sign-extended
-  llvm::Value *raw =
-      width == 4 ? x : b_.CreateAnd(x, b_.getInt32((1u << (8 * width)) - 1u));
+  llvm::Value *raw = width == 4 ? x : b_.CreateAnd(x, b_.getInt32((1u << (8 * width)) - 1u));
   // BCD -> binary, negated when SIN = 1.
   auto [v, bad] = bcdValue(b_, raw, digits);
   llvm::Value *fromBcd = b_.CreateSelect(sin, b_.CreateSub(b_.getInt32(0), v), v);
@@ -243,15 +243,15 @@ void FunctionEmitter::emitFdConvertExt(const Stmt &s, int32_t slot) {
   llvm::Value *result = b_.CreateSelect(cnv, fromBcd, toBcd);
   llvm::Value *overflow = b_.CreateAnd(notV(cnv), over);
   llvm::Value *err = b_.CreateSelect(cnv, bad, over);
-  llvm::Value *negative = b_.CreateAnd(
-      notV(err), b_.CreateSelect(cnv, b_.CreateICmpSLT(fromBcd, b_.getInt32(0)), neg));
+  llvm::Value *negative =
+      b_.CreateAnd(notV(err), b_.CreateSelect(cnv, b_.CreateICmpSLT(fromBcd, b_.getInt32(0)), neg));
   writeInt(s.ops[1], result, b_.CreateAnd(act, notV(err)));
   // R9000: N (#1), V (#5); the other bits kept.
   llvm::Value *flags = fdLoad(s.ops[2], 0, 1);
-  llvm::Value *nf = b_.CreateOr(
-      b_.CreateAnd(flags, b_.getInt8(static_cast<uint8_t>(~0x22u))),
-      b_.CreateOr(b_.CreateShl(b_.CreateZExt(negative, b_.getInt8Ty()), 1),
-                  b_.CreateShl(b_.CreateZExt(overflow, b_.getInt8Ty()), 5)));
+  llvm::Value *nf =
+      b_.CreateOr(b_.CreateAnd(flags, b_.getInt8(static_cast<uint8_t>(~0x22u))),
+                  b_.CreateOr(b_.CreateShl(b_.CreateZExt(negative, b_.getInt8Ty()), 1),
+                              b_.CreateShl(b_.CreateZExt(overflow, b_.getInt8Ty()), 5)));
   fdStore(s.ops[2], 0, 1, nf, act);
   fdW1(slot, act, in[1], err);
 }
@@ -276,8 +276,8 @@ void FunctionEmitter::emitFdCode(int32_t i) {
     // The constant table of the TableRows statements after this one, as a private global.
     std::vector<uint32_t> entries;
     for (int32_t k = 0; k < size; ++k)
-      entries.push_back(static_cast<uint32_t>(
-          prog_.stmts[i + 1 + k / kMaxOperands].ops[k % kMaxOperands].value));
+      entries.push_back(
+          static_cast<uint32_t>(prog_.stmts[i + 1 + k / kMaxOperands].ops[k % kMaxOperands].value));
     llvm::Constant *init = llvm::ConstantDataArray::get(fn_->getContext(), entries);
     auto *table = new llvm::GlobalVariable(mc_.mod, init->getType(), true,
                                            llvm::GlobalValue::PrivateLinkage, init, "fanuc.cod");
@@ -304,18 +304,18 @@ void FunctionEmitter::emitFdIndexed(const Stmt &s, int32_t slot) {
   llvm::Value *cap = b_.CreateSExt(readInt(s.ops[1]), b_.getInt64Ty());
   llvm::Value *index = b_.CreateSExt(readInt(s.ops[4]), b_.getInt64Ty());
   llvm::Value *end = b_.CreateAdd(index, b_.getInt64(static_cast<uint64_t>(items)));
-  llvm::Value *err = b_.CreateOr(
-      b_.CreateOr(b_.CreateICmpSLT(index, b_.getInt64(0)), b_.CreateICmpSGT(end, cap)),
-      b_.CreateICmpSGT(b_.CreateMul(end, b_.getInt64(width)),
-                       b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[2])))));
+  llvm::Value *err =
+      b_.CreateOr(b_.CreateOr(b_.CreateICmpSLT(index, b_.getInt64(0)), b_.CreateICmpSGT(end, cap)),
+                  b_.CreateICmpSGT(b_.CreateMul(end, b_.getInt64(width)),
+                                   b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[2])))));
   llvm::Value *en = b_.CreateAnd(act, notV(err));
   llvm::BasicBlock *body = newBlock("xmovb"), *join = newBlock("xmovb.end");
   cache_.flush();
   b_.CreateCondBr(en, body, join);
   b_.SetInsertPoint(body);
   for (int64_t k = 0; k < items; ++k) {
-    llvm::Value *t = fdAddr(s.ops[2], b_.CreateMul(b_.CreateAdd(index, b_.getInt64(k)),
-                                                    b_.getInt64(width)));
+    llvm::Value *t =
+        fdAddr(s.ops[2], b_.CreateMul(b_.CreateAdd(index, b_.getInt64(k)), b_.getInt64(width)));
     llvm::Value *d = fdAddr(s.ops[3], b_.getInt64(static_cast<uint64_t>(k) * width));
     // RW = 1 writes the data into the table, RW = 0 reads the table into the data.
     llvm::Value *from = b_.CreateSelect(rw, d, t), *to = b_.CreateSelect(rw, t, d);
@@ -333,10 +333,10 @@ void FunctionEmitter::emitFdSearch(const Stmt &s, int32_t slot) {
   llvm::Type *ty = b_.getIntNTy(8 * width);
   llvm::Value *cap = b_.CreateSExt(readInt(s.ops[0]), b_.getInt64Ty());
   llvm::Value *key = b_.CreateTrunc(readInt(s.ops[2]), ty);
-  llvm::Value *badCap = b_.CreateOr(
-      b_.CreateICmpSLT(cap, b_.getInt64(0)),
-      b_.CreateICmpSGT(b_.CreateMul(cap, b_.getInt64(width)),
-                       b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[1])))));
+  llvm::Value *badCap =
+      b_.CreateOr(b_.CreateICmpSLT(cap, b_.getInt64(0)),
+                  b_.CreateICmpSGT(b_.CreateMul(cap, b_.getInt64(width)),
+                                   b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[1])))));
   llvm::Value *run =
       b_.CreateAnd(b_.CreateAnd(act, notV(badCap)), b_.CreateICmpSGT(cap, b_.getInt64(0)));
   llvm::BasicBlock *entry = b_.GetInsertBlock();

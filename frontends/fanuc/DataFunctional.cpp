@@ -194,8 +194,8 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
                     "describe (docs/fanuc-pmc.md \"Not supported\")");
     return true;
   }
-  static constexpr std::string_view kMine[] = {"XMOVB", "DSCHB", "PARI", "SFT",  "COD",
-                                               "CODB",  "DCNV",  "DCNVB", "DEC", "DECB",
+  static constexpr std::string_view kMine[] = {"XMOVB", "DSCHB", "PARI",  "SFT",  "COD",
+                                               "CODB",  "DCNV",  "DCNVB", "DEC",  "DECB",
                                                "COM",   "COME",  "JMP",   "JMPE", "NOP"};
   bool mine = false;
   for (std::string_view m : kMine) mine = mine || m == name;
@@ -278,8 +278,7 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
     return true;
   }
   if (name == "PARI") {
-    ok = paramCount(e, f, what, 1, "check data address") &&
-         e.dataOperand(p[0], 1, false, false, a);
+    ok = paramCount(e, f, what, 1, "check data address") && e.dataOperand(p[0], 1, false, false, a);
     if (ok) e.emit(Op::ParityCheck, at, {a});
   } else if (name == "SFT") {
     ok = paramCount(e, f, what, 1, "shift data address (2 bytes)") &&
@@ -304,7 +303,8 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   } else if (name == "DECB") {
     int nn, w;
     int64_t first;
-    ok = paramCount(e, f, what, 4, "format 0nnd, decode data address, first value, output address") &&
+    ok = paramCount(e, f, what, 4,
+                    "format 0nnd, decode data address, first value, output address") &&
          formatNnd(e, p[0], nn, w) && e.dataOperand(p[1], w, false, false, a);
     if (!ok) return true;
     const int groups = nn == 0 ? 1 : nn;

@@ -466,8 +466,7 @@ TEST(FanucDataRules, LocatedErrors) {
       {"RD X0.0\nDECB 0003 F10 3 R10\nEND1\nEND2\nEND\n", "data length 1, 2 or 4", 2, 6},
       {"RD X0.0\nRD.STK X0.0\nRD.STK X0.1\nXMOVB 0991 R0 D0 R7999 R1\nEND1\nEND2\nEND\n",
        "runs past the end", 4, 18},
-      {"RD X0.0\nRD.STK X0.0\nDSCHB 3 R0 D0 R2 R4\nEND1\nEND2\nEND\n", "expected 1, 2 or 4", 3,
-       7},
+      {"RD X0.0\nRD.STK X0.0\nDSCHB 3 R0 D0 R2 R4\nEND1\nEND2\nEND\n", "expected 1, 2 or 4", 3, 7},
   };
   for (const Case &c : cases) {
     Diagnostics d("t.pmc");
