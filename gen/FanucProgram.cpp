@@ -4,6 +4,7 @@
 #include "gen/FanucProgram.h"
 
 #include "gen/FanucTimerCounter.h"
+#include "gen/FanucData.h"
 #include "gen/Rng.h"
 
 #include <cstring>
@@ -108,6 +109,7 @@ private:
 
   void rung(int level, int subs) {
     logic();
+    if (r_.chance(12)) return fanucDataRung(r_, lines_); // gen/FanucData.cpp (fanuc-b)
     const int64_t c = pick(0, 19);
     if (c <= 6) {
       const int coils = static_cast<int>(pick(1, 3));

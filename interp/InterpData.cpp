@@ -284,7 +284,7 @@ bool runData(const BlockCall &b) {
     ntp(b);
     return true;
   default:
-    return false; // no semantics: Interpreter::unimplemented() reports it
+    return runFanucData(b); // fanuc-b's operations (InterpFanucData.cpp), else false
   }
 }
 

@@ -206,6 +206,8 @@ struct BlockCall {
 /// Family Data (InterpData.cpp): XMOV .. NTP. Each family runner returns false for an
 /// instruction it has no semantics for (the catalogue completeness test checks none is left).
 bool runData(const BlockCall &b);
+/// Family Data, the FANUC transfer/search/conversion/flow operations (InterpFanucData.cpp).
+bool runFanucData(const BlockCall &b);
 /// Family Nc (InterpNc.cpp): MGET .. SAVEDATA.
 bool runNc(const BlockCall &b);
 /// Family Cnc (InterpCnc.cpp): the chapter-6 F/G blocks, MDST .. RSTCLR.

@@ -190,6 +190,20 @@ enum class Op : uint8_t {
   BcdCompare,      ///< COMP (<=) / COIN (==) on BCD data
   CompareNe,       ///< NEB / NEW / NED
   CompareBetween,  ///< RNGB / RNGW / RNGD: between two bounds in either order
+  // ---- fanuc-b: FANUC PMC transfer, search, conversion and flow (docs/fanuc-pmc.md) ----
+  ParityCheck,     ///< PARI: W1 = parity error of a byte
+  ShiftWord,       ///< SFT: 16-bit shift by one bit
+  BcdDecode,       ///< DEC: W1 = ACT and the BCD byte matches
+  GroupDecode,     ///< DECB: one bit per value of 8 n consecutive values
+  BcdConvert,      ///< DCNV: binary <-> BCD, 1 or 2 bytes (BYT at run time)
+  BcdConvertExt,   ///< DCNVB: binary <-> BCD, 1/2/4 bytes, sign and R9000 flags
+  CodeTable,       ///< COD: BCD index into a BCD constant table
+  CodeTableBinary, ///< CODB: binary index into a binary constant table
+  TableRows,       ///< the constant rows after a COD/CODB (no effect of their own)
+  IndexedTable,    ///< XMOVB: read/write nn items of a table in memory
+  SearchTable,     ///< DSCHB: index of the first table item equal to the search data
+  CommonBegin,     ///< COM: the coils up to COME are written 0 while ACT = 0
+  CommonCoil,      ///< WRT/WRT.NOT/SET/RST between COM and COME
   Count_
 };
 

@@ -67,7 +67,7 @@ llvm::Error FunctionEmitter::emitDataBlock(int32_t i) {
     emitPtnNtp(s);
     break;
   default:
-    return fail(i, "no lowering for this instruction");
+    return emitFanucData(i); // fanuc-b's operations (EmitFanucData.cpp)
   }
   return llvm::Error::success();
 }

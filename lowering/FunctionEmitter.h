@@ -168,6 +168,25 @@ private:
   void emitAcvt(const Stmt &s);
   void emitPtnNtp(const Stmt &s);
 
+  // EmitFanucData.cpp: the fanuc-b operations of family Data (FANUC PARI .. DSCHB, COM).
+  // Helpers of that file go in this section.
+  llvm::Error emitFanucData(int32_t i);
+  /// The top `k` ST entries, ST0 first; pops `k - 1` of them (W1 then replaces ST0).
+  std::vector<llvm::Value *> fdTake(size_t k);
+  /// W1 of the RST family kept in edge slot `slot` (InterpFanucData.cpp), left in ST0.
+  void fdW1(int32_t slot, llvm::Value *act, llvm::Value *rst, llvm::Value *err);
+  /// `width` bytes at `k` bytes after register operand `o` (through the cache), as iN.
+  llvm::Value *fdLoad(const Operand &o, int32_t k, unsigned width);
+  /// Store the low bytes of `v` there; only when `en` if given.
+  void fdStore(const Operand &o, int32_t k, unsigned width, llvm::Value *v, llvm::Value *en);
+  /// Address of byte `dyn` (i64) after register operand `o` (computed: flush the cache first).
+  llvm::Value *fdAddr(const Operand &o, llvm::Value *dyn);
+  void emitFdConvert(const Stmt &s, int32_t slot);
+  void emitFdConvertExt(const Stmt &s, int32_t slot);
+  void emitFdCode(int32_t i);
+  void emitFdIndexed(const Stmt &s, int32_t slot);
+  void emitFdSearch(const Stmt &s, int32_t slot);
+
   // EmitNc.cpp: family Nc (MGET .. SAVEDATA), host callbacks. Helpers of that file go here.
   llvm::Error emitNcBlock(int32_t i);
   /// What a guarded host call gives back (all valid after the call's join block).

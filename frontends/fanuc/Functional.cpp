@@ -133,6 +133,7 @@ constexpr FnRow kRows[] = {
     {"CS", 74, Fn::Unsupported, 0},
     {"CM", 75, Fn::Unsupported, 0},
     {"CE", 76, Fn::Unsupported, 0},
+    {"NOP", -1, Fn::Unsupported, 0}, // no SUB number (reference 6.1, L1451)
 };
 
 // Names that are also basic instructions (AND, OR) or SUB itself are functional only as SUB n.
@@ -251,6 +252,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
   }
   const SourceLoc at = f.head.loc;
   if (emitTimerCounter(e, f, row->sub, what)) return; // TimerCounter.cpp
+  if (row->fn == Fn::Unsupported && emitDataFunctional(e, f, row->name, what)) return;
   if (row->fn == Fn::Unsupported) {
     e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
     return;

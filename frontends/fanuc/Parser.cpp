@@ -345,6 +345,8 @@ public:
                     std::to_string(it->second.line));
     return fresh;
   }
+  int32_t stmtCount() const override { return static_cast<int32_t>(prog_.stmts.size()); }
+  detail::FlowRegions &regions() override { return regions_; }
 
 private:
   void basic(const Basic &b, const std::vector<Token> &toks) {
@@ -387,7 +389,8 @@ private:
     if (operand) {
       Operand o;
       if (!bitOperand(toks[1], b.kind == Basic::Write, o)) return;
-      emit(b.op, toks[0].loc, {o});
+      if (b.kind != Basic::Write || !detail::emitCommonCoil(*this, b.op, o, toks[0].loc))
+        emit(b.op, toks[0].loc, {o});
     } else {
       emit(b.op, toks[0].loc, {});
     }
@@ -415,6 +418,7 @@ private:
       return;
     }
     depth_ = 0;
+    detail::closeRegions(*this, head, at);
     if (head == "END1") {
       if (sawEnd1_) return error(at, "duplicate END1");
       sawEnd1_ = true;
@@ -460,6 +464,7 @@ private:
   std::optional<std::string> pendingComment_;
   int32_t pendingFirst_ = 0;
   std::map<std::pair<char, int64_t>, SourceLoc> numbers_;
+  detail::FlowRegions regions_;
 };
 
 const char *spell(Op op) {
@@ -543,7 +548,7 @@ const char *spell(Op op) {
   case Op::CompareBetween:
     return "RNGB/RNGW/RNGD";
   default:
-    return nullptr; // not spelled in this dialect: spelling() prints the neutral name
+    return detail::spellData(op); // nullptr: not spelled in this dialect (fanuc-b ops spelled)
   }
 }
 

@@ -16,6 +16,16 @@ struct Token {
   SourceLoc loc;
 };
 
+/// The open COM..COME and JMP..JMPE regions of the program being parsed (DataFunctional.cpp).
+struct FlowRegions {
+  int32_t comStmt = -1; ///< index of the open COM's statement, -1: none open
+  int32_t comLine = 0;
+  int32_t jmpLabel = -1; ///< the hidden label of the open JMP, -1: none open
+  int32_t jmpLine = 0;
+  bool jmpInsideCom = false; ///< the open JMP was opened after the open COM
+  int32_t nextLabel = 10000; ///< hidden JMPE labels: above the user's L1..L9999
+};
+
 /// What one functional instruction needs from the parser: its tokens and a way to check and
 /// emit statements.
 class Emitter {
@@ -39,6 +49,10 @@ public:
   virtual int level() const = 0;
   /// An edge / timer number used by this program: false (and an error) when used before.
   virtual bool claimNumber(char space, int64_t n, SourceLoc at) = 0;
+  /// Statements emitted so far (the index the next one gets).
+  virtual int32_t stmtCount() const = 0;
+  /// The open COM / JMP regions (fanuc-b instructions, DataFunctional.cpp).
+  virtual FlowRegions &regions() = 0;
 };
 
 /// A functional instruction written `SUB n` or by name, with its parameters (the rest of its
@@ -58,6 +72,17 @@ void emitFunctional(Emitter &e, const Functional &f);
 /// TimerCounter.cpp: TMR, TMRC, CTR, CTRB, CTRC, COMPB, COMP, COIN, NEx, RNGx (SUB `sub`,
 /// named `what` in messages); false when `sub` is none of them.
 bool emitTimerCounter(Emitter &e, const Functional &f, int sub, const std::string &what);
+// ---- fanuc-b: transfer, search, conversion and flow instructions (DataFunctional.cpp) ----
+/// Check and emit `name` (XMOVB, DSCHB, PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM, COME,
+/// JMP, JMPE, NOP; DISPB .. PSGN2 as "not supported"); false for a name it does not handle.
+bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
+                        const std::string &what);
+/// A WRT / WRT.NOT / SET / RST (`op`) of `bit` inside an open COM: emitted gated (true).
+bool emitCommonCoil(Emitter &e, Op op, const Operand &bit, SourceLoc at);
+/// At a level or subroutine boundary `marker` (END1, SP...): an open COM or JMP is an error.
+void closeRegions(Emitter &e, std::string_view marker, SourceLoc at);
+/// The FANUC mnemonic of the fanuc-b operations, nullptr for any other.
+const char *spellData(Op op);
 
 /// `s` in upper case.
 std::string upper(std::string_view s);

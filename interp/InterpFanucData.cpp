@@ -1,0 +1,309 @@
+// Interpreter semantics of the FANUC transfer, search, conversion and flow operations (fanuc-b
+// rows of ir/OpTable.h; ../shared/reference/fanuc-pmc.md 4.2, 6.5, 6.7-6.9; the [EXT]/[INF]
+// readings are rows of docs/fanuc-pmc.md). Twin of lowering/EmitFanucData.cpp.
+//
+// Control inputs are ST entries: ACT = ST0, the next input ST1, ... (reference 5). An instruction
+// with k inputs pops k - 1 of them and leaves W1 in ST0. The RST family (PARI, SFT, DCNV, DCNVB,
+// COD, CODB, XMOVB, DSCHB) keeps W1 in its edge slot: ACT = 1 sets it to this execution's error,
+// ACT = 0 keeps it, RST = 1 clears it (after the execution).
+#include "interp/InterpreterInternal.h"
+
+namespace lj::interp {
+
+namespace {
+
+/// The top `k` ST entries, ST0 first; pops all but one (which W1 then replaces).
+struct Inputs {
+  bool v[4] = {};
+};
+Inputs take(const BlockCall &b, int k) {
+  Inputs in;
+  for (int j = 0; j < k; ++j) in.v[j] = b.f.st[b.f.sp - 1 - j] != 0;
+  b.f.sp -= k - 1;
+  return in;
+}
+
+/// W1 of the RST family (file comment), stored and left in ST0.
+void w1(const BlockCall &b, bool act, bool rst, bool err) {
+  uint8_t &held = b.s->edge[b.info.slot];
+  if (act) held = err;
+  if (rst) held = 0;
+  b.f.setTop(held != 0);
+}
+
+unsigned char *at(const BlockCall &b, uint32_t off) { return bytes(b.s) + off; }
+
+/// `width` bytes at `off`, little-endian, sign-extended (reference 3.1).
+int32_t readLe(const BlockCall &b, uint32_t off, int width) {
+  uint32_t v = 0;
+  for (int k = 0; k < width; ++k) v |= static_cast<uint32_t>(at(b, off)[k]) << (8 * k);
+  if (width < 4) {
+    const uint32_t sign = 1u << (8 * width - 1);
+    v = (v ^ sign) - sign;
+  }
+  return static_cast<int32_t>(v);
+}
+void writeLe(const BlockCall &b, uint32_t off, int width, uint32_t v) {
+  for (int k = 0; k < width; ++k) at(b, off)[k] = static_cast<unsigned char>(v >> (8 * k));
+}
+
+/// Bytes from operand `o` to the end of the range of its area it lies in.
+int64_t roomAfter(const BlockCall &b, const Operand &o) {
+  const AreaInfo &ai = b.tp.area(o.area);
+  const int64_t end = o.index < ai.count ? ai.count : int64_t{ai.upperLo} + ai.upperCount;
+  return end - o.index;
+}
+
+/// Binary value of `digits` BCD digits in `raw`; false on a digit above 9.
+bool fromBcd(uint32_t raw, int digits, int64_t &out) {
+  out = 0;
+  for (int k = digits - 1; k >= 0; --k) {
+    const uint32_t d = (raw >> (4 * k)) & 0xF;
+    if (d > 9) return false;
+    out = out * 10 + d;
+  }
+  return true;
+}
+/// `v` (0 <= v < 10^digits) as BCD digits.
+uint32_t toBcd(int64_t v, int digits) {
+  uint32_t r = 0;
+  for (int k = 0; k < digits; ++k, v /= 10) r |= static_cast<uint32_t>(v % 10) << (4 * k);
+  return r;
+}
+
+void parity(const BlockCall &b) {
+  const Inputs in = take(b, 3); // ACT, RST, O.E
+  bool err = false;
+  if (in.v[0]) {
+    const int ones = __builtin_popcount(at(b, b.ops[0].off)[0]);
+    // O.E = 1: odd parity is checked (an even count is the error); O.E = 0: even (6.8).
+    err = in.v[2] ? ones % 2 == 0 : ones % 2 == 1;
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+void shift(const BlockCall &b) {
+  const Inputs in = take(b, 4); // ACT, RST, CONT, DIR
+  bool out = false;
+  if (in.v[0]) {
+    const uint32_t off = b.ops[0].off;
+    const uint32_t v = static_cast<uint32_t>(readLe(b, off, 2)) & 0xFFFFu;
+    const bool right = in.v[3];
+    uint32_t r = right ? v >> 1 : (v << 1) & 0xFFFFu;
+    out = right ? (v & 1u) : (v >> 15) & 1u;
+    if (in.v[2]) r |= v; // CONT = 1: bits that were 1 stay 1 ([INF] 6.8)
+    writeLe(b, off, 2, r);
+  }
+  w1(b, in.v[0], in.v[1], out);
+}
+
+void decode(const BlockCall &b) {
+  const bool act = b.f.top();
+  const uint8_t v = at(b, b.ops[0].off)[0];
+  b.f.setTop(act && (v & b.ops[2].value) == b.ops[1].value);
+}
+
+void groupDecode(const BlockCall &b) {
+  const bool act = b.f.top();
+  const int64_t delta = int64_t{readValue(b.s, b.ops[0])} - b.ops[1].value;
+  const int groups = b.ops[2].value;
+  const uint32_t out = b.ops[3].off;
+  for (int j = 0; j < groups; ++j) {
+    uint8_t byte = 0;
+    if (act && delta >= 8 * j && delta < 8 * j + 8)
+      byte = static_cast<uint8_t>(1u << (delta - 8 * j));
+    at(b, out)[j] = byte;
+  }
+}
+
+void convert(const BlockCall &b) {
+  const Inputs in = take(b, 4); // ACT, RST, CNV, BYT
+  bool err = false;
+  if (in.v[0]) {
+    const int width = in.v[3] ? 2 : 1;
+    const uint32_t raw =
+        static_cast<uint32_t>(readLe(b, b.ops[0].off, width)) & (width == 2 ? 0xFFFFu : 0xFFu);
+    int64_t v = 0;
+    uint32_t result = 0;
+    if (in.v[2]) { // BCD -> binary
+      err = !fromBcd(raw, 2 * width, v);
+      result = static_cast<uint32_t>(v);
+    } else { // binary -> BCD: the unsigned value must fit 2 / 4 digits
+      err = raw > (width == 2 ? 9999u : 99u);
+      result = toBcd(raw, 2 * width);
+    }
+    if (!err) writeLe(b, b.ops[1].off, width, result);
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+void convertExt(const BlockCall &b) {
+  const Inputs in = take(b, 4); // ACT, RST, CNV, SIN
+  bool err = false;
+  if (in.v[0]) {
+    const int width = b.stmt.ops[0].width;
+    const int digits = 2 * width;
+    const int32_t x = readLe(b, b.ops[0].off, width);
+    bool overflow = false;
+    int64_t result = 0;
+    if (in.v[2]) { // BCD -> binary, sign from SIN (at most 8 digits: always fits)
+      const uint32_t raw = static_cast<uint32_t>(x) & (width == 4 ? ~0u : (1u << (8 * width)) - 1);
+      int64_t v;
+      err = !fromBcd(raw, digits, v);
+      result = in.v[3] ? -v : v;
+    } else { // binary -> BCD of |x|; the sign goes to N
+      const int64_t mag = x < 0 ? -int64_t{x} : x;
+      int64_t max = 1;
+      for (int k = 0; k < digits; ++k) max *= 10;
+      overflow = err = mag >= max;
+      result = toBcd(mag, digits);
+    }
+    // N: the converted value is negative (only when the conversion succeeded).
+    const bool negative = !err && (in.v[2] ? result < 0 : x < 0);
+    if (!err) writeLe(b, b.ops[1].off, width, static_cast<uint32_t>(result));
+    // R9000: N (#1) = sign of the result, V (#5) = overflow ([EXT] 6.9); other bits kept.
+    unsigned char &flags = at(b, b.ops[2].off)[0];
+    flags = static_cast<unsigned char>((flags & ~0x22u) | (negative ? 0x02u : 0u) |
+                                       (overflow ? 0x20u : 0u));
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+/// Entry `k` of the constant table in the TableRows statements after the head statement.
+int32_t tableEntry(const BlockCall &b, int32_t k) {
+  const Stmt *rows = &b.stmt + 1; // parsed right after the head (frontends/fanuc)
+  return rows[k / kMaxOperands].ops[k % kMaxOperands].value;
+}
+
+void codeTable(const BlockCall &b) {
+  const bool binary = b.c.op == Op::CodeTableBinary;
+  const Inputs in = take(b, binary ? 2 : 3); // ACT, RST[, BYT]
+  bool err = false;
+  if (in.v[0]) {
+    const int32_t size = b.stmt.ops[0].value;
+    const uint32_t raw = at(b, b.ops[1].off)[0];
+    int64_t index = raw; // CODB: one unsigned byte
+    if (!binary) err = !fromBcd(raw, 2, index);
+    err = err || index >= size;
+    if (!err) {
+      const int32_t v = tableEntry(b, static_cast<int32_t>(index));
+      const int width = binary ? b.stmt.ops[2].width : in.v[2] ? 2 : 1;
+      writeLe(b, b.ops[2].off, width, static_cast<uint32_t>(v));
+    }
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+void indexedTable(const BlockCall &b) {
+  const Inputs in = take(b, 3); // ACT, RST, RW
+  bool err = false;
+  if (in.v[0]) {
+    const auto &o = b.stmt.ops;
+    const int width = o[2].width;
+    const int64_t items = o[0].value;
+    const int64_t cap = readValue(b.s, b.ops[1]);
+    const int64_t index = readValue(b.s, b.ops[4]);
+    // Items index .. index + items - 1 must be below the capacity and inside the table's range.
+    err = index < 0 || index + items > cap || (index + items) * width > roomAfter(b, o[2]);
+    if (!err) {
+      for (int64_t k = 0; k < items; ++k) {
+        const uint32_t t = b.ops[2].off + static_cast<uint32_t>((index + k) * width);
+        const uint32_t d = b.ops[3].off + static_cast<uint32_t>(k * width);
+        if (in.v[2])
+          writeLe(b, t, width, static_cast<uint32_t>(readLe(b, d, width)));
+        else
+          writeLe(b, d, width, static_cast<uint32_t>(readLe(b, t, width)));
+      }
+    }
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+void searchTable(const BlockCall &b) {
+  const Inputs in = take(b, 2); // ACT, RST
+  bool err = false;
+  if (in.v[0]) {
+    const auto &o = b.stmt.ops;
+    const int width = o[1].width;
+    const int64_t cap = readValue(b.s, b.ops[0]);
+    const int32_t key = readValue(b.s, b.ops[2]);
+    // A capacity past the table's range is an error; otherwise W1 = not found (6.7).
+    err = cap < 0 || cap * width > roomAfter(b, o[1]);
+    int64_t found = -1;
+    for (int64_t k = 0; !err && found < 0 && k < cap; ++k)
+      if (readLe(b, b.ops[1].off + static_cast<uint32_t>(k * width), width) == key) found = k;
+    err = err || found < 0;
+    if (!err) writeValue(b.s, b.ops[3], static_cast<int32_t>(found));
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+void commonCoil(const BlockCall &b) {
+  // The COM this coil belongs to is ops[1] statements back (frontends/fanuc); its edge slot holds
+  // its ACT of this scan.
+  const StmtInfo &com = *(&b.info - b.stmt.ops[1].value);
+  const bool on = b.s->edge[com.slot] != 0;
+  const bool st0 = b.f.top();
+  const Ref &bit = b.ops[0];
+  switch (b.stmt.ops[2].value) {
+  case 0: // WRT
+    writeBit(b.s, bit, on && st0);
+    break;
+  case 1: // WRT.NOT: 0 while the COM is off
+    writeBit(b.s, bit, on && !st0);
+    break;
+  case 2: // SET
+    writeBit(b.s, bit, readBit(b.s, bit) || (on && st0));
+    break;
+  default: // RST
+    writeBit(b.s, bit, readBit(b.s, bit) && !(on && st0));
+    break;
+  }
+}
+
+} // namespace
+
+bool runFanucData(const BlockCall &b) {
+  switch (b.c.op) {
+  case Op::ParityCheck:
+    parity(b);
+    return true;
+  case Op::ShiftWord:
+    shift(b);
+    return true;
+  case Op::BcdDecode:
+    decode(b);
+    return true;
+  case Op::GroupDecode:
+    groupDecode(b);
+    return true;
+  case Op::BcdConvert:
+    convert(b);
+    return true;
+  case Op::BcdConvertExt:
+    convertExt(b);
+    return true;
+  case Op::CodeTable:
+  case Op::CodeTableBinary:
+    codeTable(b);
+    return true;
+  case Op::TableRows: // read by their COD/CODB; ST0 stays
+    return true;
+  case Op::IndexedTable:
+    indexedTable(b);
+    return true;
+  case Op::SearchTable:
+    searchTable(b);
+    return true;
+  case Op::CommonBegin:
+    b.s->edge[b.info.slot] = b.f.top();
+    return true;
+  case Op::CommonCoil:
+    commonCoil(b);
+    return true;
+  default:
+    return false;
+  }
+}
+
+} // namespace lj::interp

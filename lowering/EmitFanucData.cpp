@@ -1,0 +1,373 @@
+// Lowering of the FANUC transfer, search, conversion and flow operations (fanuc-b rows of
+// ir/OpTable.h; twin of interp/InterpFanucData.cpp, whose file comment gives the input and W1
+// rules). Static byte accesses go through the ImageCache; the table accesses of XMOVB and DSCHB
+// use computed addresses (the cache is flushed around them) with alignment 1, since a FANUC
+// word may start at any byte (reference 3.1).
+#include "lowering/FunctionEmitter.h"
+
+#include "ladderjit/abi.h"
+
+#include <llvm/IR/Constants.h>
+#include <llvm/IR/GlobalVariable.h>
+#include <llvm/IR/Intrinsics.h>
+
+namespace lj::lower {
+
+namespace {
+
+/// Bytes from operand `o` to the end of the range of its area it lies in.
+int64_t roomAfter(const TargetProfile &tp, const Operand &o) {
+  const AreaInfo &ai = tp.area(o.area);
+  const int64_t end = o.index < ai.count ? ai.count : int64_t{ai.upperLo} + ai.upperCount;
+  return end - o.index;
+}
+
+} // namespace
+
+std::vector<llvm::Value *> FunctionEmitter::fdTake(size_t k) {
+  std::vector<llvm::Value *> in(k);
+  for (size_t j = 0; j < k; ++j) in[j] = st_[st_.size() - 1 - j];
+  st_.resize(st_.size() - (k - 1));
+  return in;
+}
+
+void FunctionEmitter::fdW1(int32_t slot, llvm::Value *act, llvm::Value *rst, llvm::Value *err) {
+  StateLoc loc = mc_.layout.edge(slot);
+  llvm::Value *held = b_.CreateICmpNE(cache_.load(loc), b_.getInt8(0));
+  llvm::Value *w = b_.CreateAnd(selectBit(act, err, held), notV(rst));
+  cache_.store(loc, b_.CreateZExt(w, b_.getInt8Ty()));
+  st_.back() = w;
+}
+
+llvm::Value *FunctionEmitter::fdLoad(const Operand &o, int32_t k, unsigned width) {
+  Operand c = o;
+  c.index += k;
+  return cache_.load(areaLoc(c, width));
+}
+
+void FunctionEmitter::fdStore(const Operand &o, int32_t k, unsigned width, llvm::Value *v,
+                              llvm::Value *en) {
+  Operand c = o;
+  c.index += k;
+  StateLoc loc = areaLoc(c, width);
+  llvm::Value *nv = b_.CreateZExtOrTrunc(v, loc.type);
+  if (en) nv = b_.CreateSelect(en, nv, cache_.load(loc));
+  cache_.store(loc, nv);
+}
+
+llvm::Value *FunctionEmitter::fdAddr(const Operand &o, llvm::Value *dyn) {
+  llvm::Value *p =
+      b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), state_, tp().elementOffset(o.area, o.index));
+  return b_.CreateInBoundsGEP(b_.getInt8Ty(), p, dyn);
+}
+
+llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
+  const Stmt &s = prog_.stmts[i];
+  const int32_t slot = prog_.info[i].slot;
+  const StateKind sk = instrInfo(s.op).state;
+  if (sk == StateKind::Edge && (slot < 0 || slot >= LJ_EDGE_SLOTS))
+    return fail(i, "edge slot " + std::to_string(slot) + " out of range");
+  const size_t need = s.op == Op::CommonCoil ? 1 : instrInfo(s.op).inputs;
+  if (st_.size() < need) return fail(i, "too few ST entries for its inputs");
+  switch (s.op) {
+  case Op::ParityCheck: {
+    auto in = fdTake(3); // ACT, RST, O.E
+    llvm::Value *byte = fdLoad(s.ops[0], 0, 1);
+    llvm::Value *ones = b_.CreateUnaryIntrinsic(llvm::Intrinsic::ctpop, byte);
+    llvm::Value *odd = b_.CreateTrunc(ones, b_.getInt1Ty());
+    // O.E = 1: an even count is the error; O.E = 0: an odd count.
+    fdW1(slot, in[0], in[1], b_.CreateXor(odd, in[2]));
+    break;
+  }
+  case Op::ShiftWord: {
+    auto in = fdTake(4); // ACT, RST, CONT, DIR
+    llvm::Value *v = fdLoad(s.ops[0], 0, 2);
+    llvm::Value *right = in[3];
+    llvm::Value *r = b_.CreateSelect(right, b_.CreateLShr(v, 1), b_.CreateShl(v, 1));
+    llvm::Value *out =
+        b_.CreateTrunc(b_.CreateSelect(right, v, b_.CreateLShr(v, 15)), b_.getInt1Ty());
+    r = b_.CreateSelect(in[2], b_.CreateOr(r, v), r);
+    fdStore(s.ops[0], 0, 2, r, in[0]);
+    fdW1(slot, in[0], in[1], out);
+    break;
+  }
+  case Op::BcdDecode: {
+    llvm::Value *v = fdLoad(s.ops[0], 0, 1);
+    llvm::Value *m =
+        b_.CreateICmpEQ(b_.CreateAnd(v, b_.getInt8(static_cast<uint8_t>(s.ops[2].value))),
+                        b_.getInt8(static_cast<uint8_t>(s.ops[1].value)));
+    st_.back() = b_.CreateAnd(st_.back(), m);
+    break;
+  }
+  case Op::GroupDecode: {
+    llvm::Value *act = st_.back();
+    llvm::Value *delta = b_.CreateSub(b_.CreateSExt(readInt(s.ops[0]), b_.getInt64Ty()),
+                                      b_.getInt64(static_cast<uint64_t>(int64_t{s.ops[1].value})));
+    for (int32_t j = 0; j < s.ops[2].value; ++j) {
+      llvm::Value *rel = b_.CreateSub(delta, b_.getInt64(static_cast<uint64_t>(8 * j)));
+      llvm::Value *hit = b_.CreateAnd(act, b_.CreateICmpULT(rel, b_.getInt64(8)));
+      llvm::Value *bit = b_.CreateShl(
+          b_.getInt8(1), b_.CreateAnd(b_.CreateTrunc(rel, b_.getInt8Ty()), b_.getInt8(7)));
+      fdStore(s.ops[3], j, 1, b_.CreateSelect(hit, bit, b_.getInt8(0)), nullptr);
+    }
+    break;
+  }
+  case Op::BcdConvert:
+    emitFdConvert(s, slot);
+    break;
+  case Op::BcdConvertExt:
+    emitFdConvertExt(s, slot);
+    break;
+  case Op::CodeTable:
+  case Op::CodeTableBinary:
+    emitFdCode(i);
+    break;
+  case Op::TableRows: // read by their COD/CODB at compile time; ST0 stays
+    break;
+  case Op::IndexedTable:
+    emitFdIndexed(s, slot);
+    break;
+  case Op::SearchTable:
+    emitFdSearch(s, slot);
+    break;
+  case Op::CommonBegin:
+    cache_.store(mc_.layout.edge(slot), b_.CreateZExt(st_.back(), b_.getInt8Ty()));
+    break;
+  case Op::CommonCoil: {
+    const int32_t com = i - s.ops[1].value;
+    if (com < 0 || prog_.stmts[com].op != Op::CommonBegin)
+      return fail(i, "COM coil does not point at its COM");
+    const int32_t comSlot = prog_.info[com].slot;
+    llvm::Value *on = b_.CreateICmpNE(cache_.load(mc_.layout.edge(comSlot)), b_.getInt8(0));
+    const Operand &op = s.ops[0];
+    StateLoc loc = areaLoc(op, tp().area(op.area).bytes);
+    llvm::Type *ty = loc.type;
+    llvm::Value *old = cache_.load(loc);
+    auto bitOf = [&](llvm::Value *v) {
+      return b_.CreateShl(b_.CreateZExt(v, ty), static_cast<uint64_t>(op.bit));
+    };
+    llvm::Value *mask = llvm::ConstantInt::get(ty, uint64_t{1} << op.bit);
+    llvm::Value *cleared = b_.CreateAnd(old, b_.CreateNot(mask));
+    llvm::Value *st0 = st_.back();
+    llvm::Value *nv = nullptr;
+    switch (s.ops[2].value) {
+    case 0:
+      nv = b_.CreateOr(cleared, bitOf(b_.CreateAnd(on, st0)));
+      break;
+    case 1:
+      nv = b_.CreateOr(cleared, bitOf(b_.CreateAnd(on, notV(st0))));
+      break;
+    case 2:
+      nv = b_.CreateOr(old, bitOf(b_.CreateAnd(on, st0)));
+      break;
+    default:
+      nv = b_.CreateAnd(old, b_.CreateNot(bitOf(b_.CreateAnd(on, st0))));
+      break;
+    }
+    cache_.store(loc, nv);
+    break;
+  }
+  default:
+    return fail(i, "no lowering for this instruction");
+  }
+  return llvm::Error::success();
+}
+
+namespace {
+
+/// Binary value of the 4 BCD digits of `raw` (i32) and whether one of them is above 9.
+std::pair<llvm::Value *, llvm::Value *> bcdValue(llvm::IRBuilderBase &b, llvm::Value *raw,
+                                                 int digits) {
+  llvm::Value *v = b.getInt32(0), *bad = b.getFalse();
+  int32_t scale = 1;
+  for (int k = 0; k < digits; ++k, scale *= 10) {
+    llvm::Value *d = b.CreateAnd(b.CreateLShr(raw, static_cast<uint64_t>(4 * k)), 0xF);
+    bad = b.CreateOr(bad, b.CreateICmpUGT(d, b.getInt32(9)));
+    v = b.CreateAdd(v, b.CreateMul(d, b.getInt32(static_cast<uint32_t>(scale))));
+  }
+  return {v, bad};
+}
+
+/// `digits` BCD digits of the non-negative i64 `v` (known to fit), as i64.
+llvm::Value *bcdDigits(llvm::IRBuilderBase &b, llvm::Value *v, int digits) {
+  llvm::Value *r = b.getInt64(0);
+  int64_t scale = 1;
+  for (int k = 0; k < digits; ++k, scale *= 10) {
+    llvm::Value *d =
+        b.CreateURem(b.CreateUDiv(v, b.getInt64(static_cast<uint64_t>(scale))), b.getInt64(10));
+    r = b.CreateOr(r, b.CreateShl(d, static_cast<uint64_t>(4 * k)));
+  }
+  return r;
+}
+
+} // namespace
+
+void FunctionEmitter::emitFdConvert(const Stmt &s, int32_t slot) {
+  auto in = fdTake(4); // ACT, RST, CNV, BYT
+  llvm::Value *act = in[0], *cnv = in[2], *byt = in[3];
+  llvm::Value *lo = b_.CreateZExt(fdLoad(s.ops[0], 0, 1), b_.getInt32Ty());
+  llvm::Value *hi = b_.CreateZExt(fdLoad(s.ops[0], 1, 1), b_.getInt32Ty());
+  llvm::Value *raw = b_.CreateSelect(byt, b_.CreateOr(lo, b_.CreateShl(hi, 8)), lo);
+  auto [value, bad] = bcdValue(b_, raw, 4); // BYT = 0: the high digits are 0
+  llvm::Value *big =
+      b_.CreateICmpUGT(raw, b_.CreateSelect(byt, b_.getInt32(9999), b_.getInt32(99)));
+  llvm::Value *bcd = b_.CreateTrunc(
+      bcdDigits(b_, b_.CreateZExt(b_.CreateSelect(big, b_.getInt32(0), raw), b_.getInt64Ty()), 4),
+      b_.getInt32Ty());
+  llvm::Value *result = b_.CreateSelect(cnv, value, bcd);
+  llvm::Value *err = b_.CreateSelect(cnv, bad, big);
+  llvm::Value *en = b_.CreateAnd(act, notV(err));
+  fdStore(s.ops[1], 0, 1, result, en);
+  fdStore(s.ops[1], 1, 1, b_.CreateLShr(result, 8), b_.CreateAnd(en, byt));
+  fdW1(slot, act, in[1], err);
+}
+
+void FunctionEmitter::emitFdConvertExt(const Stmt &s, int32_t slot) {
+  auto in = fdTake(4); // ACT, RST, CNV, SIN
+  llvm::Value *act = in[0], *cnv = in[2], *sin = in[3];
+  const int width = s.ops[0].width, digits = 2 * width;
+  llvm::Value *x = readInt(s.ops[0]); // sign-extended
+  llvm::Value *raw = width == 4 ? x : b_.CreateAnd(x, b_.getInt32((1u << (8 * width)) - 1u));
+  // BCD -> binary, negated when SIN = 1.
+  auto [v, bad] = bcdValue(b_, raw, digits);
+  llvm::Value *fromBcd = b_.CreateSelect(sin, b_.CreateSub(b_.getInt32(0), v), v);
+  // Binary -> BCD of |x|.
+  llvm::Value *x64 = b_.CreateSExt(x, b_.getInt64Ty());
+  llvm::Value *neg = b_.CreateICmpSLT(x64, b_.getInt64(0));
+  llvm::Value *mag = b_.CreateSelect(neg, b_.CreateSub(b_.getInt64(0), x64), x64);
+  int64_t max = 1;
+  for (int k = 0; k < digits; ++k) max *= 10;
+  llvm::Value *over = b_.CreateICmpSGE(mag, b_.getInt64(static_cast<uint64_t>(max)));
+  llvm::Value *toBcd = b_.CreateTrunc(
+      bcdDigits(b_, b_.CreateSelect(over, b_.getInt64(0), mag), digits), b_.getInt32Ty());
+  llvm::Value *result = b_.CreateSelect(cnv, fromBcd, toBcd);
+  llvm::Value *overflow = b_.CreateAnd(notV(cnv), over);
+  llvm::Value *err = b_.CreateSelect(cnv, bad, over);
+  llvm::Value *negative =
+      b_.CreateAnd(notV(err), b_.CreateSelect(cnv, b_.CreateICmpSLT(fromBcd, b_.getInt32(0)), neg));
+  writeInt(s.ops[1], result, b_.CreateAnd(act, notV(err)));
+  // R9000: N (#1), V (#5); the other bits kept.
+  llvm::Value *flags = fdLoad(s.ops[2], 0, 1);
+  llvm::Value *nf =
+      b_.CreateOr(b_.CreateAnd(flags, b_.getInt8(static_cast<uint8_t>(~0x22u))),
+                  b_.CreateOr(b_.CreateShl(b_.CreateZExt(negative, b_.getInt8Ty()), 1),
+                              b_.CreateShl(b_.CreateZExt(overflow, b_.getInt8Ty()), 5)));
+  fdStore(s.ops[2], 0, 1, nf, act);
+  fdW1(slot, act, in[1], err);
+}
+
+void FunctionEmitter::emitFdCode(int32_t i) {
+  const Stmt &s = prog_.stmts[i];
+  const int32_t slot = prog_.info[i].slot;
+  const bool binary = s.op == Op::CodeTableBinary;
+  auto in = fdTake(binary ? 2 : 3); // ACT, RST[, BYT]
+  llvm::Value *act = in[0];
+  const int32_t size = s.ops[0].value;
+  llvm::Value *raw = b_.CreateZExt(fdLoad(s.ops[1], 0, 1), b_.getInt32Ty());
+  llvm::Value *index = raw, *err = b_.getFalse();
+  if (!binary) {
+    auto [v, bad] = bcdValue(b_, raw, 2);
+    index = v;
+    err = bad;
+  }
+  err = b_.CreateOr(err, b_.CreateICmpUGE(index, b_.getInt32(static_cast<uint32_t>(size))));
+  llvm::Value *value = b_.getInt32(0);
+  if (size > 0) {
+    // The constant table of the TableRows statements after this one, as a private global.
+    std::vector<uint32_t> entries;
+    for (int32_t k = 0; k < size; ++k)
+      entries.push_back(
+          static_cast<uint32_t>(prog_.stmts[i + 1 + k / kMaxOperands].ops[k % kMaxOperands].value));
+    llvm::Constant *init = llvm::ConstantDataArray::get(fn_->getContext(), entries);
+    auto *table = new llvm::GlobalVariable(mc_.mod, init->getType(), true,
+                                           llvm::GlobalValue::PrivateLinkage, init, "fanuc.cod");
+    llvm::Value *k = b_.CreateZExt(b_.CreateSelect(err, b_.getInt32(0), index), b_.getInt64Ty());
+    value = b_.CreateLoad(b_.getInt32Ty(),
+                          b_.CreateInBoundsGEP(init->getType(), table, {b_.getInt64(0), k}));
+  }
+  llvm::Value *en = b_.CreateAnd(act, notV(err));
+  if (binary) {
+    writeInt(s.ops[2], value, en);
+  } else {
+    fdStore(s.ops[2], 0, 1, value, en);
+    fdStore(s.ops[2], 1, 1, b_.CreateLShr(value, 8), b_.CreateAnd(en, in[2]));
+  }
+  fdW1(slot, act, in[1], err);
+}
+
+void FunctionEmitter::emitFdIndexed(const Stmt &s, int32_t slot) {
+  auto in = fdTake(3); // ACT, RST, RW
+  llvm::Value *act = in[0], *rw = in[2];
+  const int64_t items = s.ops[0].value;
+  const unsigned width = s.ops[2].width;
+  llvm::Type *ty = b_.getIntNTy(8 * width);
+  llvm::Value *cap = b_.CreateSExt(readInt(s.ops[1]), b_.getInt64Ty());
+  llvm::Value *index = b_.CreateSExt(readInt(s.ops[4]), b_.getInt64Ty());
+  llvm::Value *end = b_.CreateAdd(index, b_.getInt64(static_cast<uint64_t>(items)));
+  llvm::Value *err =
+      b_.CreateOr(b_.CreateOr(b_.CreateICmpSLT(index, b_.getInt64(0)), b_.CreateICmpSGT(end, cap)),
+                  b_.CreateICmpSGT(b_.CreateMul(end, b_.getInt64(width)),
+                                   b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[2])))));
+  llvm::Value *en = b_.CreateAnd(act, notV(err));
+  llvm::BasicBlock *body = newBlock("xmovb"), *join = newBlock("xmovb.end");
+  cache_.flush();
+  b_.CreateCondBr(en, body, join);
+  b_.SetInsertPoint(body);
+  for (int64_t k = 0; k < items; ++k) {
+    llvm::Value *t =
+        fdAddr(s.ops[2], b_.CreateMul(b_.CreateAdd(index, b_.getInt64(k)), b_.getInt64(width)));
+    llvm::Value *d = fdAddr(s.ops[3], b_.getInt64(static_cast<uint64_t>(k) * width));
+    // RW = 1 writes the data into the table, RW = 0 reads the table into the data.
+    llvm::Value *from = b_.CreateSelect(rw, d, t), *to = b_.CreateSelect(rw, t, d);
+    b_.CreateAlignedStore(b_.CreateAlignedLoad(ty, from, llvm::Align(1)), to, llvm::Align(1));
+  }
+  b_.CreateBr(join);
+  b_.SetInsertPoint(join);
+  fdW1(slot, act, in[1], err);
+}
+
+void FunctionEmitter::emitFdSearch(const Stmt &s, int32_t slot) {
+  auto in = fdTake(2); // ACT, RST
+  llvm::Value *act = in[0];
+  const unsigned width = s.ops[1].width;
+  llvm::Type *ty = b_.getIntNTy(8 * width);
+  llvm::Value *cap = b_.CreateSExt(readInt(s.ops[0]), b_.getInt64Ty());
+  llvm::Value *key = b_.CreateTrunc(readInt(s.ops[2]), ty);
+  llvm::Value *badCap =
+      b_.CreateOr(b_.CreateICmpSLT(cap, b_.getInt64(0)),
+                  b_.CreateICmpSGT(b_.CreateMul(cap, b_.getInt64(width)),
+                                   b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[1])))));
+  llvm::Value *run =
+      b_.CreateAnd(b_.CreateAnd(act, notV(badCap)), b_.CreateICmpSGT(cap, b_.getInt64(0)));
+  llvm::BasicBlock *entry = b_.GetInsertBlock();
+  llvm::BasicBlock *loop = newBlock("dschb"), *latch = newBlock("dschb.next"),
+                   *done = newBlock("dschb.end");
+  cache_.flush();
+  b_.CreateCondBr(run, loop, done);
+  // The loop's values depend on the phi: a plain builder, since the folding one would simplify
+  // the phi while it has only its entry value.
+  llvm::IRBuilder<> lb(loop);
+  llvm::PHINode *k = lb.CreatePHI(lb.getInt64Ty(), 2, "k");
+  k->addIncoming(lb.getInt64(0), entry);
+  llvm::Value *item = lb.CreateInBoundsGEP(
+      lb.getInt8Ty(),
+      lb.CreateConstInBoundsGEP1_64(lb.getInt8Ty(), state_,
+                                    tp().elementOffset(s.ops[1].area, s.ops[1].index)),
+      lb.CreateMul(k, lb.getInt64(width)));
+  llvm::Value *v = lb.CreateAlignedLoad(ty, item, llvm::Align(1));
+  lb.CreateCondBr(lb.CreateICmpEQ(v, key), done, latch);
+  lb.SetInsertPoint(latch);
+  llvm::Value *k1 = lb.CreateAdd(k, lb.getInt64(1));
+  k->addIncoming(k1, latch);
+  lb.CreateCondBr(lb.CreateICmpSLT(k1, cap), loop, done);
+  b_.SetInsertPoint(done);
+  llvm::PHINode *found = b_.CreatePHI(b_.getInt64Ty(), 3, "found");
+  found->addIncoming(b_.getInt64(static_cast<uint64_t>(-1)), entry);
+  found->addIncoming(k, loop);
+  found->addIncoming(b_.getInt64(static_cast<uint64_t>(-1)), latch);
+  llvm::Value *err = b_.CreateOr(badCap, b_.CreateICmpSLT(found, b_.getInt64(0)));
+  writeInt(s.ops[3], b_.CreateTrunc(found, b_.getInt32Ty()), b_.CreateAnd(act, notV(err)));
+  fdW1(slot, act, in[1], err);
+}
+
+} // namespace lj::lower
