@@ -2,43 +2,15 @@
 // vectors 8, 10-14 of ../shared/reference/fanuc-pmc.md section 7 and the rules of 6.5, 6.7-6.9,
 // 4.2; expected values are the reference's (cited per test), never what the code printed. The
 // readings the reference leaves open are the [EXT]/[INF] rows of docs/fanuc-pmc.md.
-#include "tests/exec/ExecTest.h"
-
-#include "formats/Address.h"
-#include "frontends/fanuc/FrontEnd.h"
-#include "profiles/fanuc/FanucProfile.h"
+#include "tests/exec/FanucExec.h"
 
 namespace lj::test {
 namespace {
 
-class FanucData : public ExecTest {
+class FanucData : public FanucExecTest {
 protected:
-  std::unique_ptr<Machine> pmc(std::string_view text) {
-    Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p =
-        fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
-    if (!p) {
-      ADD_FAILURE() << d.render() << text;
-      return nullptr;
-    }
-    std::unique_ptr<Machine> m = Machine::create(*p, GetParam());
-    if (m) {
-      EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
-    }
-    return m;
-  }
-  static io::CliAddress addr(std::string_view a) {
-    std::string err;
-    std::optional<io::CliAddress> x = io::parseProfileAddress(fanuc::profile(), a, err);
-    EXPECT_TRUE(x) << err;
-    return x ? *x : io::CliAddress{};
-  }
-  static int64_t get(Machine &m, std::string_view a) { return io::readAddress(m.state(), addr(a)); }
   /// A byte as its unsigned bit pattern.
   static int64_t byte(Machine &m, std::string_view a) { return get(m, a) & 0xFF; }
-  static void set(Machine &m, std::string_view a, int64_t v) {
-    io::writeAddress(m.state(), addr(a), v);
-  }
   static std::string r(int n) { return "R" + std::to_string(n); }
   static std::string d(int n) { return "D" + std::to_string(n); }
 };

@@ -1,42 +1,12 @@
 // FANUC 0i-D PMC programs on every engine: the worked examples and test vectors of
 // ../shared/reference/fanuc-pmc.md section 7 (and 3.1, 3.4) that this build's instruction set
 // covers; expected values are the reference's (cited per test), never what the code printed.
-#include "tests/exec/ExecTest.h"
-
-#include "formats/Address.h"
-#include "frontends/fanuc/FrontEnd.h"
-#include "profiles/fanuc/FanucProfile.h"
+#include "tests/exec/FanucExec.h"
 
 namespace lj::test {
 namespace {
 
-class FanucExec : public ExecTest {
-protected:
-  std::unique_ptr<Machine> pmc(std::string_view text) {
-    Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p =
-        fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
-    if (!p) {
-      ADD_FAILURE() << d.render() << text;
-      return nullptr;
-    }
-    std::unique_ptr<Machine> m = Machine::create(*p, GetParam());
-    if (m) {
-      EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
-    }
-    return m;
-  }
-  static io::CliAddress addr(std::string_view a) {
-    std::string err;
-    std::optional<io::CliAddress> x = io::parseProfileAddress(fanuc::profile(), a, err);
-    EXPECT_TRUE(x) << err;
-    return x ? *x : io::CliAddress{};
-  }
-  static int64_t get(Machine &m, std::string_view a) { return io::readAddress(m.state(), addr(a)); }
-  static void set(Machine &m, std::string_view a, int64_t v) {
-    io::writeAddress(m.state(), addr(a), v);
-  }
-};
+class FanucExec : public FanucExecTest {};
 LJ_EXEC_SUITE(FanucExec);
 
 // Reference 3.4 [L471-L511]: the Gray-code ladder (b3 = g3, b2 = b3 xor g2, ...), each rung

@@ -2,41 +2,13 @@
 // ../shared/reference/fanuc-pmc.md section 7 (1 TMR, 3 TMRC, 4 CTR, 9 COMPB) and the rules of
 // 6.3, 6.4, 6.6; expected values are the reference's (cited per test), never what the code
 // printed. [EXT]/[INF] readings are docs/fanuc-pmc.md rows.
-#include "tests/exec/ExecTest.h"
-
-#include "formats/Address.h"
-#include "frontends/fanuc/FrontEnd.h"
-#include "profiles/fanuc/FanucProfile.h"
+#include "tests/exec/FanucExec.h"
 
 namespace lj::test {
 namespace {
 
-class FanucTc : public ExecTest {
+class FanucTc : public FanucExecTest {
 protected:
-  std::unique_ptr<Machine> pmc(std::string_view text) {
-    Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p =
-        fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
-    if (!p) {
-      ADD_FAILURE() << d.render() << text;
-      return nullptr;
-    }
-    std::unique_ptr<Machine> m = Machine::create(*p, GetParam());
-    if (m) {
-      EXPECT_EQ(m->init(), uint32_t{LJ_FAULT_NONE});
-    }
-    return m;
-  }
-  static io::CliAddress addr(std::string_view a) {
-    std::string err;
-    std::optional<io::CliAddress> x = io::parseProfileAddress(fanuc::profile(), a, err);
-    EXPECT_TRUE(x) << err;
-    return x ? *x : io::CliAddress{};
-  }
-  static int64_t get(Machine &m, std::string_view a) { return io::readAddress(m.state(), addr(a)); }
-  static void set(Machine &m, std::string_view a, int64_t v) {
-    io::writeAddress(m.state(), addr(a), v);
-  }
   /// One rising edge of `bit`: a tick with it 1, then a tick with it 0.
   static void pulse(Machine &m, std::string_view bit) {
     set(m, bit, 1);
