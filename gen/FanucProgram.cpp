@@ -3,8 +3,8 @@
 // same level, subroutines are called only from level 2.
 #include "gen/FanucProgram.h"
 
-#include "gen/FanucTimerCounter.h"
 #include "gen/FanucData.h"
+#include "gen/FanucTimerCounter.h"
 #include "gen/Rng.h"
 
 #include <cstring>

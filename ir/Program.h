@@ -66,7 +66,7 @@ struct Comment {
 /// How the core words an operation or an operand in a message: in the dialect the program was
 /// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
 struct DialectText {
-  const char *name;                              ///< "hnc8"
+  const char *name; ///< "hnc8"
   /// The mnemonic of an operation, or nullptr when the dialect does not spell it (ir/OpTable.h
   /// "dialect-only rows"); callers go through spelling(), which never returns null.
   const char *(*spell)(Op);

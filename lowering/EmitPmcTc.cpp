@@ -114,7 +114,7 @@ llvm::Error FunctionEmitter::emitPmcTcBlock(int32_t i) {
     break;
   }
   case Op::BcdCompare: {
-    if (st_.size() < 2) return fail(i, "COMP/COIN with too few ST entries");
+    if (st_.size() < 2) return fail(i, "BCD compare with too few ST entries");
     llvm::Value *act = st_.back(), *byt = st_[st_.size() - 2];
     st_.resize(st_.size() - 2);
     auto cond = [&](int width) {

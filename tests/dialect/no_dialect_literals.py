@@ -25,6 +25,10 @@ CORE_FILES = []
 # Files that mirror the process image of runtime_abi/include/ladderjit/abi.h, whose field names
 # (lj_image.X, lj_state.T) are the ABI's and stay as they are.
 ABI_MIRRORS = {"lowering/AbiTypes.cpp", "lowering/AbiTypes.h"}
+# The ladder view's drawn names: the forms a drawing needs that the front ends' spelling tables do
+# not give (MOVW from the operand width, NOT vs EOR); it spells FANUC and IEC on purpose
+# (docs/ladder-view.md "Dialects") until those forms move into each front end's DialectText.
+DIALECT_SPELLERS = {"ladder/Spelling.cpp"}
 # A line ending in this comment holds text that is rendered verbatim into the HNC-8 docs.
 ALLOW = "// dialect-ok"
 
@@ -98,7 +102,7 @@ def main():
                 if e.endswith((".cpp", ".h", ".c")):
                     files.append(os.path.relpath(os.path.join(base, e), root))
     findings = []
-    for rel in sorted(set(files) - ABI_MIRRORS):
+    for rel in sorted(set(files) - ABI_MIRRORS - DIALECT_SPELLERS):
         with open(os.path.join(root, rel), encoding="utf-8") as f:
             findings += scan(rel, f.read(), names)
     for line in findings:

@@ -72,8 +72,8 @@ TEST(FanucDiagnostics, FunctionalInstructions) {
             "got 1\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nSUB 999\n") + kEnd),
             "t.pmc:2:5: error: unknown functional instruction SUB 999\n");
-  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 41\n(PRM) 1\n") + kEnd),
-            "t.pmc:2:1: error: SUB 41 (DISPB) is not implemented in this build (docs/fanuc-pmc.md "
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 26\n(PRM) 1\n") + kEnd),
+            "t.pmc:2:1: error: SUB 26 (ROTB) is not implemented in this build (docs/fanuc-pmc.md "
             "\"Not yet\")\n");
   EXPECT_EQ(diags(std::string("(PRM) 1\n") + kEnd),
             "t.pmc:1:1: error: parameter line without a functional instruction before it\n");

@@ -53,10 +53,14 @@ json statsJson(const rt::TickStats &s) {
   // deadlines missed), the same numbering as the header's tick of the drawn state.
   const uint64_t last = s.ticks + s.missedDeadlines;
   return {{"tick", last > 0 ? last - 1 : 0},
-          {"period_ns", s.periodNs},     {"ticks", s.ticks},
-          {"overruns", s.overruns},      {"missed_deadlines", s.missedDeadlines},
-          {"fault_ticks", s.faultTicks}, {"swaps", s.swaps},
-          {"scan", histJson(s.scan)},    {"jitter", histJson(s.jitter)}};
+          {"period_ns", s.periodNs},
+          {"ticks", s.ticks},
+          {"overruns", s.overruns},
+          {"missed_deadlines", s.missedDeadlines},
+          {"fault_ticks", s.faultTicks},
+          {"swaps", s.swaps},
+          {"scan", histJson(s.scan)},
+          {"jitter", histJson(s.jitter)}};
 }
 
 const char *kindName(TraceKind k) {
