@@ -6,7 +6,9 @@
 #include "gen/FanucData.h"
 #include "gen/FanucTimerCounter.h"
 #include "gen/Rng.h"
+#include "profiles/fanuc/FanucProfile.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace lj::gen {
@@ -18,12 +20,14 @@ public:
   explicit Gen(uint64_t seed) : r_(seed) {}
 
   std::vector<std::string> program(int32_t statements) {
-    const int subs = static_cast<int>(r_.range(0, 2));
-    rungs(statements / 4 + 1, 1, subs);
+    // Subroutine numbers drawn over P1..P5000 (ref 4.2), each defined once.
+    const int count = static_cast<int>(r_.range(0, 2));
+    for (int k = 0; k < count; ++k) subs_.push_back(fresh(subUsed_, kSubs));
+    rungs(statements / 4 + 1, 1, count);
     out("END1");
-    rungs(statements / 2 + 1, 2, subs);
+    rungs(statements / 2 + 1, 2, count);
     out("END2");
-    for (int p = 1; p <= subs; ++p) {
+    for (int p : subs_) {
       out("SP P" + std::to_string(p));
       rungs(static_cast<int>(r_.range(1, 4)), 4, 0);
       out("SPE");
@@ -33,7 +37,25 @@ public:
   }
 
 private:
+  // The 0i-D resource counts (profiles/fanuc/Areas.cpp): TMRB/TMRBF 1..500, DIFU/DIFD 1..1000,
+  // subroutines P1..P5000.
+  static constexpr int kTimers = fanuc::kTmrbTimers, kEdges = fanuc::kDifEdges,
+                       kSubs = fanuc::kSubroutines;
+
   void out(std::string s) { lines_.push_back(std::move(s)); }
+  /// A number of 1..max not used yet (marked used now), drawn over the whole range so the
+  /// highest numbers (the last slots of the state) are exercised too; 0 when all are used.
+  int fresh(std::vector<bool> &used, int max) {
+    if (used.empty()) used.assign(static_cast<size_t>(max) + 1, false);
+    if (std::count(used.begin() + 1, used.end(), false) == 0) return 0;
+    for (;;) {
+      const auto n = static_cast<size_t>(pick(1, max));
+      if (!used[n]) {
+        used[n] = true;
+        return static_cast<int>(n);
+      }
+    }
+  }
   int64_t pick(int64_t lo, int64_t hi) { return r_.range(lo, hi); }
 
   std::string readBit() {
@@ -120,15 +142,15 @@ private:
     switch (c) {
     case 7:
     case 8:
-      if (timer_ < 256) {
-        out(std::string(r_.chance(50) ? "TMRB " : "TMRBF ") + std::to_string(++timer_) + " " +
+      if (const int n = fresh(timerUsed_, kTimers)) {
+        out(std::string(r_.chance(50) ? "TMRB " : "TMRBF ") + std::to_string(n) + " " +
             std::to_string(pick(1, 30)));
         out("WRT " + writeBit());
       }
       return;
     case 9:
-      if (edge_ < 511) {
-        out(std::string(r_.chance(50) ? "DIFU " : "DIFD ") + std::to_string(++edge_));
+      if (const int n = fresh(edgeUsed_, kEdges)) {
+        out(std::string(r_.chance(50) ? "DIFU " : "DIFD ") + std::to_string(n));
         out("WRT " + writeBit());
       }
       return;
@@ -193,7 +215,8 @@ private:
       return fanucTimerCounterRung(r_, lines_); // gen/FanucTimerCounter.cpp
     default:
       if (level == 2 && subs > 0) {
-        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + std::to_string(pick(1, subs)));
+        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") +
+            std::to_string(subs_[static_cast<size_t>(pick(0, subs - 1))]));
       } else {
         out("WRT " + writeBit());
       }
@@ -203,7 +226,9 @@ private:
 
   Rng r_;
   std::vector<std::string> lines_;
-  int label_ = 0, timer_ = 0, edge_ = 0;
+  int label_ = 0;
+  std::vector<bool> timerUsed_, edgeUsed_, subUsed_;
+  std::vector<int> subs_; ///< the subroutine numbers, in definition order
 };
 
 } // namespace

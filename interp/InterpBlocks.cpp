@@ -160,9 +160,10 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     return;
   }
 
-  // Timers (dialect-notes "Timers"); state in T[slot], time from now_ms.
+  // Timers (dialect-notes "Timers"); state in timer slot `slot` (T[slot] or the profile's
+  // BlockState), time from now_ms.
   case Op::OnDelayTimer: {
-    lj_timer &t = s->T[c.slot];
+    lj_timer &t = timerAt(s, c.slot);
     int64_t preset = presetMs(*prog.profile, readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
       if (!t.running) {
@@ -181,7 +182,7 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
     return;
   }
   case Op::OffDelayTimer: {
-    lj_timer &t = s->T[c.slot];
+    lj_timer &t = timerAt(s, c.slot);
     int64_t preset = presetMs(*prog.profile, readValue(s, c.b), readValue(s, c.c));
     if (f.input()) {
       t.out = 1;
@@ -208,15 +209,17 @@ void Interpreter::Impl::block(lj_state *s, Frame &f, const Code &c) {
   // Power-flow edge and toggle blocks; prev = EN on every execution.
   case Op::RisePulse: {
     bool en = f.input();
-    bool out = en && !s->pls_prev[c.slot];
-    s->pls_prev[c.slot] = en;
+    uint8_t &prev = pulseAt(s, true, c.slot);
+    bool out = en && !prev;
+    prev = en;
     f.output(out);
     return;
   }
   case Op::FallPulse: {
     bool en = f.input();
-    bool out = !en && s->plf_prev[c.slot];
-    s->plf_prev[c.slot] = en;
+    uint8_t &prev = pulseAt(s, false, c.slot);
+    bool out = !en && prev;
+    prev = en;
     f.output(out);
     return;
   }

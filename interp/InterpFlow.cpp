@@ -215,7 +215,7 @@ void Interpreter::Impl::traceAfter(lj_state *s, const Frame &f, int32_t pc) {
     if (traceAt.operand[pc] & (1u << o)) w[k++] = readValue(s, decode(*prog.profile, st.ops[o]));
   const StateKind sk = instrInfo(st.op).state;
   if (instrInfo(st.op).family == Family::Core && sk == StateKind::Timer)
-    w[k] = static_cast<int32_t>(static_cast<uint32_t>(s->T[code[pc].slot].elapsed_ms));
+    w[k] = static_cast<int32_t>(static_cast<uint32_t>(timerAt(s, code[pc].slot).elapsed_ms));
   else if (instrInfo(st.op).family == Family::Core && sk == StateKind::Counter)
     w[k] = s->C[code[pc].slot].value;
 }

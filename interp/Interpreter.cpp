@@ -28,15 +28,19 @@ static_assert(std::endian::native == std::endian::little, "lj_state is little-en
 
 namespace {
 /// Whether a verifier-assigned slot indexes its lj_state array (checked once, in asserts).
-[[maybe_unused]] bool slotInRange(StateKind k, int32_t slot) {
+[[maybe_unused]] bool slotInRange(const TargetProfile &tp, StateKind k, int32_t slot) {
   switch (k) {
   case StateKind::None:
     return true;
   case StateKind::Edge:
     return slot >= 0 && slot < LJ_EDGE_SLOTS;
   case StateKind::Timer:
+    return slot >= 0 && slot < tp.timerSlots();
   case StateKind::Counter:
     return slot >= 0 && slot < LJ_TC_SLOTS;
+  case StateKind::Pls:
+  case StateKind::Plf:
+    return slot >= 0 && slot < tp.pulseSlots();
   case StateKind::Words:
     return slot >= 0 && slot + 1 < LJ_INST_WORDS;
   default:
@@ -66,7 +70,7 @@ Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces, i
       std::array<Ref, kMaxOperands> &w = wide.emplace_back();
       for (int k = 0; k < st.operandCount; ++k) w[k] = decode(*prog.profile, st.ops[k]);
     }
-    assert(slotInRange(instrInfo(c.op).state, c.slot) && "state slot out of range");
+    assert(slotInRange(*p.profile, instrInfo(c.op).state, c.slot) && "state slot out of range");
     assert((c.op != Op::Jump && c.op != Op::LoopBegin) ||
            (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
     assert(c.op != Op::Call || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));

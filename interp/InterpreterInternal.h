@@ -252,6 +252,16 @@ struct Interpreter::Impl {
   int32_t *trace = nullptr;
   TraceLayout traceAt;
 
+  /// The lj_timer of timer slot `slot` and the previous-input byte of PLS (`rise`) / PLF block
+  /// `slot`, where the profile keeps them (TargetProfile::timerOffset / pulseOffset).
+  lj_timer &timerAt(lj_state *s, int32_t slot) const {
+    return *reinterpret_cast<lj_timer *>(reinterpret_cast<uint8_t *>(s) +
+                                         prog.profile->timerOffset(slot));
+  }
+  uint8_t &pulseAt(lj_state *s, bool rise, int32_t slot) const {
+    return reinterpret_cast<uint8_t *>(s)[prog.profile->pulseOffset(rise, slot)];
+  }
+
   Impl(const VerifiedProgram &p, const ContactForces &forces, int32_t *traceBuf);
   interp::Frame frame(size_t scope);
   uint32_t runPart(lj_state *s, StmtRange range, int32_t startDepth);

@@ -9,6 +9,8 @@
 #include "ir/CncTable.h"
 #include "ir/OpTable.h"
 
+#include "ladderjit/abi.h"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -89,6 +91,17 @@ struct TargetProfile {
   std::array<int32_t, 7> modeCode;
   /// System bits the runtime writes before every tick (empty: none).
   std::span<const SystemBit> systemBits;
+  /// Where timer slots (lj_timer records) and PLS / PLF block slots (one byte each) live. All
+  /// zero (HNC-8, IEC): lj_state.T with LJ_TC_SLOTS slots and pls_prev / plf_prev with
+  /// LJ_BLOCK_SLOTS. A profile with more numbers than abi.h's arrays (FANUC: TMRB 1..500, DIFU /
+  /// DIFD 1..1000) keeps them at these byte offsets of lj_state (inside lj_state.mem) instead.
+  struct BlockState {
+    uint32_t timers = 0;    ///< lj_state offset of timer slot 0 (0: lj_state.T)
+    int32_t timerSlots = 0; ///< slots there
+    uint32_t rise = 0;      ///< lj_state offset of rising-edge (PLS) slot 0 (0: pls_prev)
+    uint32_t fall = 0;      ///< lj_state offset of falling-edge (PLF) slot 0 (0: plf_prev)
+    int32_t pulseSlots = 0; ///< slots of each
+  } blockState{};
 
   /// The facts of area `a`.
   constexpr const AreaInfo &area(Area a) const { return areas[static_cast<int>(a)]; }
@@ -164,6 +177,29 @@ struct TargetProfile {
   constexpr int bitWidth(Area a) const {
     if (a == Area::Timer || a == Area::Counter) return 1;
     return area(a).bytes * 8;
+  }
+
+  /// Timer slots of the profile (lj_state.T or BlockState::timers).
+  constexpr int timerSlots() const {
+    return blockState.timers ? blockState.timerSlots : LJ_TC_SLOTS;
+  }
+  /// Byte offset inside lj_state of the lj_timer of timer slot `slot` (< timerSlots()).
+  constexpr uint32_t timerOffset(int slot) const {
+    return (blockState.timers ? blockState.timers : static_cast<uint32_t>(offsetof(lj_state, T))) +
+           static_cast<uint32_t>(slot) * static_cast<uint32_t>(sizeof(lj_timer));
+  }
+  /// PLS / PLF block slots of the profile (lj_state.pls_prev or BlockState::rise).
+  constexpr int pulseSlots() const {
+    return blockState.rise ? blockState.pulseSlots : LJ_BLOCK_SLOTS;
+  }
+  /// Byte offset inside lj_state of the previous-input byte of PLS (`rise`) or PLF block `slot`.
+  constexpr uint32_t pulseOffset(bool rise, int slot) const {
+    const uint32_t base =
+        rise ? (blockState.rise ? blockState.rise
+                                : static_cast<uint32_t>(offsetof(lj_state, pls_prev)))
+             : (blockState.fall ? blockState.fall
+                                : static_cast<uint32_t>(offsetof(lj_state, plf_prev)));
+    return base + static_cast<uint32_t>(slot);
   }
 
   /// The CNC row of `op`, or nullptr when `op` is not driven by the table.

@@ -146,7 +146,9 @@ struct VerifiedProgram {
   StmtRange plc1;
   StmtRange plc2;
   std::vector<Subroutine> subs;
-  std::array<int16_t, 512> subByNumber; ///< S number -> index into subs, -1 if undefined
+  /// S number -> index into subs, -1 if undefined; max(512, the profile's Subroutine count)
+  /// entries (FANUC P1..P5000).
+  std::vector<int16_t> subByNumber;
   /// PLC2 slices, in order; at least one (possibly empty). Their union is `plc2`.
   std::vector<StmtRange> slices;
   /// ST depth at the start of each slice (entries left by the previous slice are dead).

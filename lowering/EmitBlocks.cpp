@@ -201,7 +201,7 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
   // docs/dialect-notes.md "Timers", as selects over the lj_timer fields.
   const Stmt &s = prog_.stmts[i];
   const int32_t slot = prog_.info[i].slot;
-  if (slot < 0 || slot >= LJ_TC_SLOTS) return fail(i, "timer slot out of range");
+  if (slot < 0 || slot >= tp().timerSlots()) return fail(i, "timer slot out of range");
   int32_t unit = s.ops[1].value;
   if (s.ops[1].kind != Operand::Kind::Const || unit < 0 || unit > 3)
     return fail(i, "timer unit is not a constant 0..3");
@@ -213,10 +213,10 @@ llvm::Error FunctionEmitter::emitTimer(int32_t i) {
       b_.CreateMul(len, b_.getInt64(tp().timerUnitMs[unit])); // fits: |len| < 2^31
   preset = b_.CreateSelect(b_.CreateICmpSLT(preset, zero64), zero64, preset, "preset");
   llvm::Value *now = cache_.load(mc_.layout.scalar(Scalar::NowMs));
-  StateLoc startL = mc_.layout.timer(slot, TimerField::Start);
-  StateLoc elapsedL = mc_.layout.timer(slot, TimerField::Elapsed);
-  StateLoc outL = mc_.layout.timer(slot, TimerField::Out);
-  StateLoc runL = mc_.layout.timer(slot, TimerField::Running);
+  StateLoc startL = timerLoc(slot, TimerField::Start);
+  StateLoc elapsedL = timerLoc(slot, TimerField::Elapsed);
+  StateLoc outL = timerLoc(slot, TimerField::Out);
+  StateLoc runL = timerLoc(slot, TimerField::Running);
   llvm::Value *start = cache_.load(startL);
   llvm::Value *runOld = b_.CreateICmpNE(cache_.load(runL), b_.getInt8(0));
   auto elapsedSince = [&](llvm::Value *t0) {
@@ -256,12 +256,14 @@ llvm::Error FunctionEmitter::emitPulse(int32_t i) {
   // all three update prev = EN on every execution.
   const Stmt &s = prog_.stmts[i];
   const int32_t slot = prog_.info[i].slot;
-  if (slot < 0 || slot >= LJ_BLOCK_SLOTS) return fail(i, "block number out of range");
+  if (slot < 0 || slot >= (s.op == Op::Toggle ? LJ_BLOCK_SLOTS : tp().pulseSlots()))
+    return fail(i, "block number out of range");
   llvm::Value *en = enable();
   BlockArray prevArr = s.op == Op::RisePulse   ? BlockArray::PlsPrev
                        : s.op == Op::FallPulse ? BlockArray::PlfPrev
                                                : BlockArray::AltPrev;
-  StateLoc prevL = mc_.layout.block(prevArr, slot);
+  StateLoc prevL =
+      s.op == Op::Toggle ? mc_.layout.block(prevArr, slot) : pulseLoc(s.op == Op::RisePulse, slot);
   llvm::Value *prev = b_.CreateICmpNE(cache_.load(prevL), b_.getInt8(0));
   llvm::Value *out;
   if (s.op == Op::RisePulse) {
@@ -277,6 +279,25 @@ llvm::Error FunctionEmitter::emitPulse(int32_t i) {
   cache_.store(prevL, b_.CreateZExt(en, b_.getInt8Ty()));
   setOutput(out);
   return llvm::Error::success();
+}
+
+StateLoc FunctionEmitter::timerLoc(int32_t slot, TimerField f) const {
+  if (!tp().blockState.timers) return mc_.layout.timer(slot, f);
+  static constexpr uint32_t kOff[] = {offsetof(lj_timer, start_ms), offsetof(lj_timer, elapsed_ms),
+                                      offsetof(lj_timer, out), offsetof(lj_timer, running)};
+  static constexpr const char *kName[] = {"start", "elapsed", "out", "running"};
+  const unsigned fi = static_cast<unsigned>(f);
+  std::string name;
+  if (mc_.opts.readableNames) name = "tmr" + std::to_string(slot) + "." + kName[fi];
+  return mc_.layout.memBytes(tp().timerOffset(slot) + kOff[fi], fi < 2 ? 8 : 1, std::move(name));
+}
+
+StateLoc FunctionEmitter::pulseLoc(bool rise, int32_t slot) const {
+  if (!tp().blockState.rise)
+    return mc_.layout.block(rise ? BlockArray::PlsPrev : BlockArray::PlfPrev, slot);
+  std::string name;
+  if (mc_.opts.readableNames) name = std::string(rise ? "rise" : "fall") + std::to_string(slot);
+  return mc_.layout.memBytes(tp().pulseOffset(rise, slot), 1, std::move(name));
 }
 
 } // namespace lj::lower

@@ -46,8 +46,8 @@ llvm::Error FunctionEmitter::emitStmt(int32_t i) {
   const InstrInfo &row = instrInfo(s.op);
   const int32_t slot = prog_.info[i].slot;
   if (row.family == Family::Core && row.state == StateKind::Timer)
-    traceStore(k, b_.CreateTrunc(cache_.load(mc_.layout.timer(slot, TimerField::Elapsed)),
-                                 b_.getInt32Ty()));
+    traceStore(k,
+               b_.CreateTrunc(cache_.load(timerLoc(slot, TimerField::Elapsed)), b_.getInt32Ty()));
   else if (row.family == Family::Core && row.state == StateKind::Counter)
     traceStore(k, cache_.load(mc_.layout.counter(slot, CounterField::Value)));
   return llvm::Error::success();

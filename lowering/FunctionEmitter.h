@@ -109,6 +109,10 @@ private:
   /// Where operand `op` (a Reg or Bit of a numeric area) lives: its image field, or `width`
   /// bytes (0: the operand's access width) of lj_state.mem for a profile-laid area.
   StateLoc areaLoc(const Operand &op, unsigned width = 0);
+  /// Field `f` of timer slot `slot` / the previous-input byte of PLS (`rise`) or PLF block
+  /// `slot`, where the profile keeps them (TargetProfile::timerOffset / pulseOffset).
+  StateLoc timerLoc(int32_t slot, TimerField f) const;
+  StateLoc pulseLoc(bool rise, int32_t slot) const;
   llvm::Value *readBit(const Operand &op);
   llvm::Value *readInt(const Operand &op);
   /// Write the low bits of `v` (i32) into register `op`; only when `en` is 1 if given.

@@ -7,11 +7,13 @@
 
 #include "ladderjit/abi.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <span>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace lj::verifier {
 
@@ -20,11 +22,11 @@ namespace {
 /// First user of each slot of one family (timers, counters, or one block mnemonic).
 class SlotUsers {
 public:
-  SlotUsers() { first_.fill(-1); }
+  explicit SlotUsers(size_t slots) : first_(slots, -1) {}
   int32_t &operator[](size_t slot) { return first_[slot]; }
 
 private:
-  std::array<int32_t, LJ_BLOCK_SLOTS> first_{};
+  std::vector<int32_t> first_;
 };
 
 std::string lineText(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
@@ -34,7 +36,8 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
   const Stmt &s = cx.stmt(i);
   int32_t n = s.ops[0].value;
   int slot = cx.tp.tcSlot(area, n);
-  if (slot >= LJ_TC_SLOTS) slot = -1; // a profile with more numbers than lj_state has slots
+  // A profile with more numbers than it has slots (TargetProfile::timerSlots).
+  if (slot >= (area == Area::Timer ? cx.tp.timerSlots() : LJ_TC_SLOTS)) slot = -1;
   const std::string letter = cx.tp.area(area).name;
   std::string name = letter + std::to_string(n);
   if (slot < 0) {
@@ -83,7 +86,10 @@ void assignSlots(Context &cx) {
   std::map<std::tuple<int, int32_t, int>, int32_t> objectSlot;
   std::vector<Operand> &objects = cx.prog.edgeObjects;
   objects.clear();
-  SlotUsers timers, counters, pls, plf, alt;
+  const auto blockSlots = static_cast<size_t>(
+      std::max({LJ_BLOCK_SLOTS, LJ_TC_SLOTS, cx.tp.timerSlots(), cx.tp.pulseSlots()}));
+  SlotUsers timers(blockSlots), counters(blockSlots), pls(blockSlots), plf(blockSlots),
+      alt(blockSlots);
   int32_t edges = 0, words = 0;
   auto n = static_cast<int32_t>(cx.prog.stmts.size());
   for (int32_t i = 0; i < n; ++i) {
@@ -128,7 +134,15 @@ void assignSlots(Context &cx) {
     case StateKind::Plf:
     case StateKind::Alt: {
       SlotUsers &users = ii.state == StateKind::Pls ? pls : ii.state == StateKind::Plf ? plf : alt;
-      auto num = static_cast<size_t>(s.ops[0].value); // 0..511, checked by the parser
+      // Checked by the parser: 0..511 (HNC-8), 1..1000 (FANUC, TargetProfile::pulseSlots).
+      auto num = static_cast<size_t>(s.ops[0].value);
+      const int limit = ii.state == StateKind::Alt ? LJ_BLOCK_SLOTS : cx.tp.pulseSlots();
+      if (s.ops[0].value < 0 || s.ops[0].value >= limit) {
+        cx.error(s.ops[0].loc, std::string(cx.spell(ii.op)) + " block number " +
+                                   std::to_string(s.ops[0].value) + " is out of range (0.." +
+                                   std::to_string(limit - 1) + ")");
+        break;
+      }
       cx.info(i).slot = s.ops[0].value;
       if (users[num] < 0) {
         users[num] = i;

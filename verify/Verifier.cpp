@@ -187,7 +187,8 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   prog.profile = parsed.profile;
   prog.stmts = parsed.stmts;
   prog.info.assign(prog.stmts.size(), StmtInfo{});
-  prog.subByNumber.fill(-1);
+  prog.subByNumber.assign(
+      static_cast<size_t>(std::max<int32_t>(512, prog.profile->area(Area::Subroutine).count)), -1);
   prog.plc2Nvalue = *opts.plc2Nvalue;
   int errorsBefore = diags.errorCount();
 

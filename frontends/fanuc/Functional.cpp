@@ -3,6 +3,7 @@
 // operations whose semantics are the reference's. ACT is ST0 (reference 5, [EXT]); W1 is left in
 // ST0 for a WRT to store.
 #include "frontends/fanuc/ParserInternal.h"
+#include "profiles/fanuc/FanucProfile.h"
 
 #include <array>
 
@@ -284,7 +285,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
   case Fn::Tmrb:
   case Fn::Tmrbf: {
     int64_t n, ms;
-    if (!e.constant(p[0], 1, 256, "timer number", n) ||
+    if (!e.constant(p[0], 1, kTmrbTimers, "timer number", n) ||
         !e.constant(p[1], 1, 32767000, "set time (ms)", ms) || !e.claimNumber('T', n, p[0].loc))
       return;
     Operand num = konst(n);
@@ -297,7 +298,9 @@ void emitFunctional(Emitter &e, const Functional &f) {
   case Fn::Difu:
   case Fn::Difd: {
     int64_t n;
-    if (!e.constant(p[0], 1, 511, "edge number", n) || !e.claimNumber('E', n, p[0].loc)) return;
+    // Edge numbers 1..1000 (reference 1 specification table, 6.8).
+    if (!e.constant(p[0], 1, kDifEdges, "edge number", n) || !e.claimNumber('E', n, p[0].loc))
+      return;
     Operand num = konst(n);
     num.loc = p[0].loc;
     e.emit(row->fn == Fn::Difu ? Op::RisePulse : Op::FallPulse, at, {num});

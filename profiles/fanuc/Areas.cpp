@@ -17,6 +17,14 @@ constexpr uint32_t kMem = static_cast<uint32_t>(offsetof(lj_state, mem));
 // Layout inside mem: [name, first range count, upper range lo, upper count] in this order.
 constexpr uint32_t kX = 0, kY = 256, kF = 512, kG = 1280, kR = 2048, kE = 10548, kA = 20548,
                    kC = 21048, kK = 21648, kT = 21848, kD = 22848, kEnd = 32848;
+// Hidden state after the areas (TargetProfile::BlockState): the lj_timer records of TMRB /
+// TMRBF 1..500 (slots 0..499), then the previous-ACT bytes of DIFU and DIFD edge numbers
+// 0..1000 (slot = number). abi.h's own arrays have 256 timer and 512 PLS/PLF slots.
+constexpr int32_t kTimers = fanuc::kTmrbTimers, kEdges = fanuc::kDifEdges + 1;
+constexpr uint32_t kTmrbState = kEnd, kDifu = kTmrbState + kTimers * sizeof(lj_timer),
+                   kDifd = kDifu + kEdges, kStateEnd = kDifd + kEdges;
+static_assert((kMem + kTmrbState) % alignof(lj_timer) == 0, "lj_timer records are aligned");
+static_assert(kStateEnd <= LJ_MEM_BYTES, "the FANUC hidden state fits lj_state.mem");
 static_assert(kEnd <= LJ_MEM_BYTES, "the FANUC areas fit lj_state.mem");
 
 constexpr AreaInfo byteArea(const char *name, int32_t count, bool writable, uint32_t at,
@@ -53,20 +61,20 @@ constexpr TargetProfile kFanuc{
         {"T", 0, 0, false, false, false, 0},      // Timer: TMRB/TMRBF numbers (timerNumbers)
         none(),                                   // Counter
         {"L", 10000, 0, false, false, false, 0},  // Label
-        {"P", 512, 0, false, false, false, 0},    // Subroutine
-        byteArea("K", 100, true, kK, 900, 100),   // KeepRelay
-        byteArea("E", 10000, true, kE),           // ExtraRelay
-        byteArea("A", 250, true, kA, 9000, 250),  // MessageBits
-        byteArea("T", 500, true, kT, 9000, 500),  // TimerData
-        byteArea("C", 400, true, kC, 5000, 200),  // CounterData
-        byteArea("D", 10000, true, kD),           // DataTable
-        none(),                                   // SystemBits
-        none(),                                   // SystemWords
-        none(),                                   // ConstWords
+        {"P", fanuc::kSubroutines + 1, 0, false, false, false, 0}, // Subroutine P1..P5000
+        byteArea("K", 100, true, kK, 900, 100),                    // KeepRelay
+        byteArea("E", 10000, true, kE),                            // ExtraRelay
+        byteArea("A", 250, true, kA, 9000, 250),                   // MessageBits
+        byteArea("T", 500, true, kT, 9000, 500),                   // TimerData
+        byteArea("C", 400, true, kC, 5000, 200),                   // CounterData
+        byteArea("D", 10000, true, kD),                            // DataTable
+        none(),                                                    // SystemBits
+        none(),                                                    // SystemWords
+        none(),                                                    // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
-    // TMRB/TMRBF timer numbers 1..256 (lj_state has 256 timer slots; [EXT] row "timer numbers").
-    {{{1, 256}, {0, -1}}},
+    // TMRB/TMRBF timer numbers 1..500 (ref 1 specification table, 6.3), in blockState.
+    {{{1, kTimers}, {0, -1}}},
     {{{0, -1}, {0, -1}}},
     {1, 8, 48, 100},
     areas(Area::KeepRelay, Area::TimerData, Area::CounterData, Area::DataTable),
@@ -86,6 +94,7 @@ constexpr TargetProfile kFanuc{
     {},
     {0, 0, 0, 0, 0, 0, 0},
     kSystemBits,
+    {kMem + kTmrbState, kTimers, kMem + kDifu, kMem + kDifd, kEdges},
 };
 
 static_assert(kFanuc.elementOffset(Area::Relay, 9091) == relayByte(9091), "R9091 layout");

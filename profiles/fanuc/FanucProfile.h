@@ -9,6 +9,10 @@
 
 namespace lj::fanuc {
 
+/// 0i-D PMC resource counts (reference 1, 4.2, 6.3, 6.8, 7 "Resource counts"): TMRB/TMRBF
+/// timer numbers 1..500, DIFU/DIFD edge numbers 1..1000, subroutines P1..P5000.
+constexpr int32_t kTmrbTimers = 500, kDifEdges = 1000, kSubroutines = 5000;
+
 /// The FANUC 0i-D PMC profile: byte-addressed areas laid out in lj_state.mem.
 const TargetProfile &profile();
 

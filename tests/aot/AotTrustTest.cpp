@@ -96,7 +96,7 @@ TEST_F(AotTrust, HandMadeSoWithTheRightHashIsRefused) {
   // Exports every symbol and reports the program's hash, as in the issue; unsigned, or with the
   // genuine trailer (naming the trusted key) around it.
   writeBytes(dir_.path("h.c"), "const char *ljprog_hash(void) { return \"" + testHash(prog_) +
-                                   "\"; }\nunsigned ljprog_abi_version(void) { return 4; }\n");
+                                   "\"; }\nunsigned ljprog_abi_version(void) { return 5; }\n");
   int rc = 0;
   runCommand("cc -shared -fPIC -o " + dir_.path("h.so") + " " + dir_.path("h.c"), rc);
   ASSERT_EQ(rc, 0);

@@ -88,7 +88,7 @@ __attribute__((constructor)) static void evil(void) {{
 }}
 static unsigned z(void *s, void *t, unsigned u) {{ (void)s; (void)t; (void)u; return 0; }}
 typedef struct {{ void *ctx; void *init, *plc1, *plc2; unsigned n; }} ent;
-unsigned ljprog_abi_version(void) {{ return {4 if not old_format else 2}; }}
+unsigned ljprog_abi_version(void) {{ return {5 if not old_format else 2}; }}
 const char *ljprog_hash(void) {{ return "{phash}"; }}
 unsigned ljprog_slice_count(void) {{ return 1; }}
 size_t ljprog_state_size(void);

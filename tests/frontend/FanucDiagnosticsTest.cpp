@@ -79,8 +79,8 @@ TEST(FanucDiagnostics, FunctionalInstructions) {
             "t.pmc:1:1: error: parameter line without a functional instruction before it\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nDIFU 3\nRD X0.0\nDIFD 3\n") + kEnd),
             "t.pmc:4:6: error: edge number 3 is already used on line 2\n");
-  EXPECT_EQ(diags(std::string("RD X0.0\nTMRB 300 100\n") + kEnd),
-            "t.pmc:2:6: error: timer number '300' out of range (1..256)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nTMRB 501 100\n") + kEnd),
+            "t.pmc:2:6: error: timer number '501' out of range (1..500)\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nAND 1 2\n") + kEnd),
             "t.pmc:2:1: error: AND takes one bit address, got 2\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nSUB 60\n(PRM) 0003\n(PRM) R0\n(PRM) 1\n(PRM) R1\n") + kEnd),
@@ -88,6 +88,24 @@ TEST(FanucDiagnostics, FunctionalInstructions) {
             "1001/1002/1004 (address)\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nMOVE 0001 2111 X10 R100\n") + kEnd),
             "t.pmc:2:11: error: a MOVE mask half is 4 binary digits (like 0001), got '2111'\n");
+}
+
+// The 0i-D resource counts (reference 1, 4.2 [L869], 6.3 [L1715], 6.8 [L3149-L3159]): TMRB /
+// TMRBF 1..500, DIFU / DIFD 1..1000, subroutines P1..P5000; one past each is a located error.
+TEST(FanucDiagnostics, ResourceLimits) {
+  EXPECT_EQ(diags(std::string("RD X0.0\nTMRB 500 100\nRD X0.0\nTMRBF 499 100\n") + kEnd), "");
+  EXPECT_EQ(diags(std::string("RD X0.0\nTMRBF 501 100\n") + kEnd),
+            "t.pmc:2:7: error: timer number '501' out of range (1..500)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nDIFU 1000\nRD X0.0\nDIFD 999\n") + kEnd), "");
+  EXPECT_EQ(diags(std::string("RD X0.0\nDIFU 1001\n") + kEnd),
+            "t.pmc:2:6: error: edge number '1001' out of range (1..1000)\n");
+  EXPECT_EQ(diags(std::string("RD X0.0\nSUB 58\n(PRM) 1001\n") + kEnd),
+            "t.pmc:3:7: error: edge number '1001' out of range (1..1000)\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCALL P5000\nEND2\nSP P5000\nSPE\nEND\n"), "");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCALL P5001\nEND2\nEND\n"),
+            "t.pmc:3:6: error: address 'P5001' out of range (P0..P5000)\n");
+  EXPECT_EQ(diags("END1\nEND2\nSP P5001\nSPE\nEND\n"),
+            "t.pmc:3:4: error: address 'P5001' out of range (P0..P5000)\n");
 }
 
 TEST(FanucDiagnostics, UnknownInstruction) {

@@ -1,4 +1,4 @@
-/* ladderjit AOT program ABI v4: the C functions a shared object built by `ladderjit compile`
+/* ladderjit AOT program ABI v5: the C functions a shared object built by `ladderjit compile`
  * exports (docs/aot.md). A host verifies the signed trailer (below) first, dlopens the verified
  * bytes, allocates an lj_state (abi.h) and drives it with ljprog_init / ljprog_tick, or with the
  * raw entry table from ljprog_entries and its own scheduler.
@@ -16,8 +16,10 @@ extern "C" {
 
 /* Version of this interface AND of the lj_state layout it was built against (LJ_ABI_VERSION).
  * Any incompatible change to program.h, to abi.h's layout or to the trailer bumps it (3: the
- * signed trailer replaced the unkeyed checksum; 4: lj_state gained the v3 byte region mem). */
-#define LJPROG_ABI_VERSION 4u
+ * signed trailer replaced the unkeyed checksum; 4: lj_state gained the v3 byte region mem; 5: the
+ * FANUC profile keeps TMRB/TMRBF and DIFU/DIFD state in mem, not in lj_state.T / pls_prev /
+ * plf_prev, so a v4 FANUC .so would not share it with this build's interpreter and JIT). */
+#define LJPROG_ABI_VERSION 5u
 
 /* The symbol version node every export carries (GNU symbol versioning). */
 #define LJPROG_SYMBOL_VERSION "LJPROG_1"
