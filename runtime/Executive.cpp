@@ -3,6 +3,7 @@
 #include "runtime/Executive.h"
 
 #include "hosts/SystemBits.h"
+#include "ir/Profile.h"
 
 #include <pthread.h>
 #include <sched.h>
@@ -33,8 +34,14 @@ void sleepUntil(int64_t ns) {
 
 } // namespace
 
-void clearRenumberedState(lj_state &s) {
+void clearRenumberedState(lj_state &s, const TargetProfile *tp) {
   std::memset(s.edge, 0, sizeof s.edge);
+  if (tp && tp->blockState.rise) { // as pls_prev / plf_prev, where the profile keeps them
+    auto *base = reinterpret_cast<unsigned char *>(&s);
+    const auto n = static_cast<size_t>(tp->pulseSlots());
+    std::memset(base + tp->pulseOffset(true, 0), 0, n);
+    std::memset(base + tp->pulseOffset(false, 0), 0, n);
+  }
   std::memset(s.pls_prev, 0, sizeof s.pls_prev);
   std::memset(s.plf_prev, 0, sizeof s.plf_prev);
   std::memset(s.alt_prev, 0, sizeof s.alt_prev);
@@ -216,7 +223,7 @@ void Executive::takeSwap(uint64_t tick) {
   scanStats_.tier = next->tier;
   lj_state &s = *state_;
   cur_ = next;
-  clearRenumberedState(s);
+  clearRenumberedState(s, cur_->prog ? cur_->prog->profile : nullptr);
   // hnc8-core.md 6.2 RESOLUTION: the new program's init part runs at the swap.
   if (lj_run_init(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
   scanStats_.swaps++;

@@ -175,7 +175,8 @@ private:
 
 /// Clear what the verifier numbers per program (edge memory, PLS/PLF/ALT arrays, inst_word)
 /// and restart PLC2 at its first slice: the state kept across an online change
-/// (docs/dialect-notes.md "State details").
-void clearRenumberedState(lj_state &s);
+/// (docs/dialect-notes.md "State details"). `tp`: also the PLS/PLF bytes a profile keeps in
+/// lj_state.mem (TargetProfile::BlockState, the FANUC DIFU/DIFD edges).
+void clearRenumberedState(lj_state &s, const TargetProfile *tp = nullptr);
 
 } // namespace lj::rt

@@ -5,6 +5,9 @@
 #include "runtime/Controller.h"
 #include "runtime/ProgramLoader.h"
 
+#include "ir/Profile.h"
+#include "profiles/fanuc/FanucProfile.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -13,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -496,6 +500,24 @@ TEST(Stats, HistogramPercentiles) {
   EXPECT_LE(h.percentileNs(0.999), 1000000);
   h.add(int64_t{50} * 1000000); // beyond the buckets: reported through max
   EXPECT_EQ(h.percentileNs(1.0), 50000000);
+}
+
+// docs/dialect-notes.md "What online change keeps": PLS/PLF memory is cleared at a swap, also
+// where a profile keeps it in lj_state.mem (FANUC DIFU/DIFD 1..1000); the areas are kept.
+TEST(Executive, OnlineChangeClearsProfileEdgeBytes) {
+  auto s = std::make_unique<lj_state>();
+  lj_state_reset(s.get());
+  const TargetProfile &tp = fanuc::profile();
+  auto *b = reinterpret_cast<unsigned char *>(s.get());
+  b[tp.pulseOffset(true, 1000)] = 1;
+  b[tp.pulseOffset(false, 999)] = 1;
+  b[tp.elementOffset(Area::KeepRelay, 5)] = 7;
+  s->pls_prev[3] = 1;
+  clearRenumberedState(*s, &tp);
+  EXPECT_EQ(b[tp.pulseOffset(true, 1000)], 0);
+  EXPECT_EQ(b[tp.pulseOffset(false, 999)], 0);
+  EXPECT_EQ(b[tp.elementOffset(Area::KeepRelay, 5)], 7);
+  EXPECT_EQ(s->pls_prev[3], 0);
 }
 
 } // namespace
