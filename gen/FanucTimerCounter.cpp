@@ -3,17 +3,33 @@
 // within the 0i-D resource counts, multi-byte operands stay inside the pools R0..R11, D0..D11.
 #include "gen/FanucTimerCounter.h"
 
+#include <cstdlib>
+
 namespace lj::gen {
 
 namespace {
 
 std::string num(int64_t v) { return std::to_string(v); }
 
-/// How many lines start with `prefix` (the next free number of that instruction).
-int used(const std::vector<std::string> &lines, const std::string &prefix) {
-  int n = 0;
-  for (const std::string &l : lines) n += l.rfind(prefix, 0) == 0;
-  return n;
+/// A number of 1..max that no line `prefix N` of the program uses yet, drawn over the whole
+/// range (so TMR 250, CTR 100 and CTRB 100, the last of the 0i-D counts, are generated too);
+/// 0 when all are taken.
+int freshNumber(Rng &r, const std::vector<std::string> &lines, const std::string &prefix, int max) {
+  std::vector<bool> taken(static_cast<size_t>(max) + 1, false);
+  int count = 0;
+  for (const std::string &l : lines) {
+    if (l.rfind(prefix, 0) != 0) continue;
+    const int v = std::atoi(l.c_str() + prefix.size());
+    if (v >= 1 && v <= max && !taken[static_cast<size_t>(v)]) {
+      taken[static_cast<size_t>(v)] = true;
+      ++count;
+    }
+  }
+  if (count == max) return 0;
+  for (;;) {
+    const auto v = static_cast<int>(r.range(1, max));
+    if (!taken[static_cast<size_t>(v)]) return v;
+  }
 }
 
 std::string bit(Rng &r) {
@@ -55,8 +71,8 @@ void pushInputs(Rng &r, std::vector<std::string> &out, int n) {
 void fanucTimerCounterRung(Rng &r, std::vector<std::string> &out) {
   switch (r.range(0, 8)) {
   case 0: { // TMR n: preset T(2(n-1)), precision T9000 + 2(n-1)
-    const int n = used(out, "TMR ") + 1;
-    if (n > 250) break;
+    const int n = freshNumber(r, out, "TMR ", 250);
+    if (n == 0) break;
     out.push_back("TMR " + num(n));
     out.push_back("WRT " + writeBit(r));
     presetInto(r, out, "T" + num(2 * (n - 1)));
@@ -68,8 +84,8 @@ void fanucTimerCounterRung(Rng &r, std::vector<std::string> &out) {
     out.push_back("WRT " + writeBit(r));
     return;
   case 2: { // CTR n: preset C(4(n-1)), current C(4(n-1)+2)
-    const int n = used(out, "CTR ") + 1;
-    if (n > 100) break;
+    const int n = freshNumber(r, out, "CTR ", 100);
+    if (n == 0) break;
     pushInputs(r, out, 3);
     out.push_back("CTR " + num(n));
     out.push_back("WRT " + writeBit(r));
@@ -77,8 +93,8 @@ void fanucTimerCounterRung(Rng &r, std::vector<std::string> &out) {
     return;
   }
   case 3: {
-    const int n = used(out, "CTRB ") + 1;
-    if (n > 100) break;
+    const int n = freshNumber(r, out, "CTRB ", 100);
+    if (n == 0) break;
     pushInputs(r, out, 3);
     out.push_back("CTRB " + num(n) + " " + num(r.range(0, 20)));
     out.push_back("WRT " + writeBit(r));
