@@ -3,6 +3,7 @@
 // same level, subroutines are called only from level 2.
 #include "gen/FanucProgram.h"
 
+#include "gen/FanucArith.h"
 #include "gen/FanucData.h"
 #include "gen/FanucTimerCounter.h"
 #include "gen/Rng.h"
@@ -132,6 +133,7 @@ private:
   void rung(int level, int subs) {
     logic();
     if (r_.chance(12)) return fanucDataRung(r_, lines_); // gen/FanucData.cpp (fanuc-b)
+    if (r_.chance(8)) return fanucArithRung(r_, lines_); // gen/FanucArith.cpp (fanuc-c)
     const int64_t c = pick(0, 19);
     if (c <= 6) {
       const int coils = static_cast<int>(pick(1, 3));

@@ -103,7 +103,7 @@ bool runPmcTc(const BlockCall &b) {
     return true;
   }
   default:
-    return false;
+    return runFanucArith(b); // fanuc-c's arithmetic (InterpFanucArith.cpp), else false
   }
 }
 

@@ -532,6 +532,25 @@ constexpr InstrInfo kTable[] = {
         konst("statements back to COM", 1, kI32Max), konst("kind", 0, 3), none(),
         "coil, negated coil, set or reset with input ST0 and the common line's enable (the two "
         "coils write 0 when it is off)"),
+    // ---- fanuc-c: FANUC PMC arithmetic (fanuc-pmc.md 6.10 [EXT]; docs/fanuc-pmc.md
+    // "Arithmetic"; the operation codes and flag bits are ir/PmcArith.h's). Inputs are ST
+    // entries (ACT = ST0, RST = ST1, BYT = ST2); the Edge slot holds W1 between executions. ----
+    ROWX(BinaryArith, PmcTc, Block, Required, 2, Result, Edge, 6,
+         "result := operand 1 op operand 2 over 1/2/4 signed bytes (reset, enable); flags Z/N/V; "
+         "the quotient's remainder; W1 := overflow or division by zero",
+         konst("operation", 0, 3), reg("operand 1", kSrcAreas, false), src("operand 2"),
+         reg("result", kDstAreas, true), reg("flags", kDstAreas, true),
+         reg("remainder", kDstAreas, true)),
+    ROW(BcdArith, PmcTc, Block, Required, 3, Result, Edge, 4, konst("operation", 0, 3),
+        spanning(reg("operand 1", kSrcAreas, false), 2),
+        spanning(regOrConst("operand 2", kSrcAreas, false), 2),
+        spanning(reg("result", kDstAreas, true), 2),
+        "result := operand 1 op operand 2 in BCD of 2 or 4 digits (width, reset, enable); "
+        "W1 := a digit above 9, a result outside the digits or division by zero"),
+    ROW(BcdConstant, PmcTc, Block, Required, 2, Result, None, 2, konst("BCD pattern", 0, 0x9999),
+        spanning(reg("output", kDstAreas, true), 2), none(), none(),
+        "output := the BCD pattern's low byte (width 0) or both bytes (width 1) when enabled; "
+        "leaves the enable"),
 };
 
 #undef ROW

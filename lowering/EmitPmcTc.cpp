@@ -139,7 +139,7 @@ llvm::Error FunctionEmitter::emitPmcTcBlock(int32_t i) {
     break;
   }
   default:
-    return fail(i, "no lowering for this instruction");
+    return emitFanucArith(i); // fanuc-c's arithmetic (EmitFanucArith.cpp)
   }
   return llvm::Error::success();
 }

@@ -247,6 +247,12 @@ private:
   std::pair<llvm::Value *, llvm::Value *> pmcOnDelay(int32_t slot, llvm::Value *act,
                                                      llvm::Value *presetMs);
 
+  // EmitFanucArith.cpp: the fanuc-c operations of family PmcTc (FANUC ADDB..DIVB, ADD..DIV,
+  // NUME; they reuse the fd* helpers of EmitFanucData.cpp).
+  llvm::Error emitFanucArith(int32_t i);
+  void emitFaBinary(const Stmt &s, int32_t slot);
+  void emitFaBcd(const Stmt &s, int32_t slot);
+
   llvm::Value *notV(llvm::Value *v) { return b_.CreateNot(v); }
   /// `c ? a : b` on i1 values as and/or: FastISel cannot select an i1 `select` and would hand
   /// the rest of the block to SelectionDAG (the fast tier's compile time).

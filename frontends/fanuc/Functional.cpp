@@ -137,7 +137,8 @@ constexpr FnRow kRows[] = {
     {"NOP", -1, Fn::Unsupported, 0}, // no SUB number (reference 6.1, L1451)
 };
 
-// Names that are also basic instructions (AND, OR) or SUB itself are functional only as SUB n.
+// Names that are also basic instructions (AND, OR) or SUB itself are functional only as SUB n:
+// `SUB` followed by a number is always that syntax, so the BCD subtract is written `SUB 20`.
 bool byNameOk(std::string_view n) { return n != "AND" && n != "OR" && n != "SUB"; }
 
 const FnRow *rowByName(std::string_view n) {
@@ -254,6 +255,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
   const SourceLoc at = f.head.loc;
   if (emitTimerCounter(e, f, row->sub, what)) return; // TimerCounter.cpp
   if (row->fn == Fn::Unsupported && emitDataFunctional(e, f, row->name, what)) return;
+  if (row->fn == Fn::Unsupported && emitArithFunctional(e, f, row->sub, what)) return;
   if (row->fn == Fn::Unsupported) {
     e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
     return;

@@ -512,7 +512,7 @@ const char *spell(Op op) {
   case Op::SubEnd:
     return "SPE";
   case Op::Move:
-    return "MOVB/MOVW/MOVD/MOVN";
+    return "MOVB/MOVW/MOVD/MOVN/NUMEB";
   case Op::BitAnd:
     return "AND(SUB60)/MOVE";
   case Op::BitOr:
@@ -547,6 +547,10 @@ const char *spell(Op op) {
     return "NEB/NEW/NED";
   case Op::CompareBetween:
     return "RNGB/RNGW/RNGD";
+  case Op::BinaryArith: // fanuc-c: frontends/fanuc/ArithFunctional.cpp
+  case Op::BcdArith:
+  case Op::BcdConstant:
+    return detail::spellArith(op);
   default:
     return detail::spellData(op); // nullptr: not spelled in this dialect (fanuc-b ops spelled)
   }

@@ -84,6 +84,13 @@ void closeRegions(Emitter &e, std::string_view marker, SourceLoc at);
 /// The FANUC mnemonic of the fanuc-b operations, nullptr for any other.
 const char *spellData(Op op);
 
+// ---- fanuc-c: arithmetic and constants (ArithFunctional.cpp) ----
+/// Check and emit SUB `sub` when it is ADDB, SUBB, MULB, DIVB, ADD, SUB, MUL, DIV, NUMEB or NUME
+/// (named `what` in messages); false for any other.
+bool emitArithFunctional(Emitter &e, const Functional &f, int sub, const std::string &what);
+/// The FANUC mnemonic of the fanuc-c operations, nullptr for any other.
+const char *spellArith(Op op);
+
 /// `s` in upper case.
 std::string upper(std::string_view s);
 
