@@ -204,6 +204,8 @@ enum class Op : uint8_t {
   SearchTable,     ///< DSCHB: index of the first table item equal to the search data
   CommonBegin,     ///< COM: the coils up to COME are written 0 while ACT = 0
   CommonCoil,      ///< WRT/WRT.NOT/SET/RST between COM and COME
+  BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
+  BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
   Count_
 };
 
