@@ -1,7 +1,8 @@
 // Random rungs of the fanuc-b instructions for the FANUC generator (FanucData.h): XMOVB, DSCHB,
-// PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM..COME, JMP..JMPE, NOP, over the same small
-// byte pools as gen/FanucProgram.cpp (R0..R11, D0..D11) so they meet the other instructions'
-// bytes, with table heads near the end of R as well (the range checks of XMOVB and DSCHB).
+// PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM..COME, JMP..JMPE, NOP and fanuc-d's XMOV and
+// DSCH, over the same small byte pools as gen/FanucProgram.cpp (R0..R11, D0..D11) so they meet the
+// other instructions' bytes, with table heads near the end of R as well (the range checks of XMOVB
+// and DSCHB).
 #include "gen/FanucData.h"
 
 namespace lj::gen {
@@ -13,7 +14,7 @@ public:
   DataRung(Rng &r, std::vector<std::string> &out) : r_(r), out_(out) {}
 
   void run() {
-    switch (pick(0, 13)) {
+    switch (pick(0, 15)) {
     case 0:
       inputs(2); // RW, RST, ACT
       xmovb();
@@ -76,6 +77,16 @@ public:
       line("NOP");
       coil();
       return;
+    case 13: // fanuc-d: XMOV (BYT, RW, RST, ACT)
+      inputs(3);
+      line("XMOV " + capacity() + " " + table(true) + " " + data(2, true) + " " + data(2, false));
+      w1();
+      return;
+    case 14: // fanuc-d: DSCH (BYT, RST, ACT), a D table only
+      inputs(2);
+      line("DSCH " + capacity() + " " + table(false) + " " + data(2, false) + " " + data(2, true));
+      w1();
+      return;
     default:
       coil();
       return;
@@ -124,6 +135,16 @@ private:
     line(ops[pick(0, 3)] + writeBit());
   }
 
+  /// A BCD table's capacity: small, at the index boundary, or large (fanuc-d).
+  std::string capacity() {
+    return std::to_string(r_.chance(70) ? pick(1, 12) : r_.chance(50) ? pick(99, 101) : 9999);
+  }
+  /// A BCD table head: the pools, or near the end of R / D (the range checks); D only for DSCH.
+  std::string table(bool anyArea) {
+    const bool r = anyArea && r_.chance(50);
+    if (r_.chance(80)) return std::string(r ? "R" : "D") + std::to_string(pick(0, 11));
+    return r ? "R" + std::to_string(pick(7990, 7999)) : "D" + std::to_string(pick(9990, 9999));
+  }
   void xmovb() {
     const int w = width();
     const int nn = static_cast<int>(r_.chance(50) ? pick(0, 1) : pick(2, 4));

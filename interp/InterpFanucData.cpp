@@ -8,6 +8,8 @@
 // ACT = 0 keeps it, RST = 1 clears it (after the execution).
 #include "interp/InterpreterInternal.h"
 
+#include <algorithm>
+
 namespace lj::interp {
 
 namespace {
@@ -238,6 +240,53 @@ void searchTable(const BlockCall &b) {
   w1(b, in.v[0], in.v[1], err);
 }
 
+/// Unsigned `width` bytes at `off` (BCD items are digit patterns, not signed values).
+uint32_t readRaw(const BlockCall &b, uint32_t off, int width) {
+  return static_cast<uint32_t>(readLe(b, off, width)) & (width == 1 ? 0xFFu : 0xFFFFu);
+}
+
+/// XMOV (ref 6.5): one item of 1 or 2 bytes (BYT) at the BCD index; W1 = invalid BCD index,
+/// index >= capacity (capacity = n + 1 for a table 0..n) or past the table's range.
+void bcdIndexedTable(const BlockCall &b) {
+  const Inputs in = take(b, 4); // ACT, RST, RW, BYT
+  bool err = false;
+  if (in.v[0]) {
+    const auto &o = b.stmt.ops;
+    const int width = in.v[3] ? 2 : 1;
+    int64_t index = 0;
+    err = !fromBcd(readRaw(b, b.ops[3].off, width), 2 * width, index) || index >= o[0].value ||
+          (index + 1) * width > roomAfter(b, o[1]);
+    if (!err) {
+      const uint32_t t = b.ops[1].off + static_cast<uint32_t>(index * width);
+      if (in.v[2])
+        writeLe(b, t, width, readRaw(b, b.ops[2].off, width));
+      else
+        writeLe(b, b.ops[2].off, width, readRaw(b, t, width));
+    }
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
+/// DSCH (ref 6.7): the first of the capacity items (1 or 2 bytes by BYT, within the table's
+/// range) equal to the search data; its index goes to the result as BCD. W1 = not found.
+void bcdSearchTable(const BlockCall &b) {
+  const Inputs in = take(b, 3); // ACT, RST, BYT
+  bool err = false;
+  if (in.v[0]) {
+    const auto &o = b.stmt.ops;
+    const int width = in.v[2] ? 2 : 1;
+    const int64_t n = std::min<int64_t>(o[0].value, roomAfter(b, o[1]) / width);
+    const uint32_t key = readRaw(b, b.ops[2].off, width);
+    int64_t found = -1;
+    for (int64_t k = 0; found < 0 && k < n; ++k)
+      if (readRaw(b, b.ops[1].off + static_cast<uint32_t>(k * width), width) == key) found = k;
+    // A found index the result's BCD digits cannot hold (100 and up with BYT = 0) is an error.
+    err = found < 0 || found >= (width == 1 ? 100 : 10000);
+    if (!err) writeLe(b, b.ops[3].off, width, toBcd(found, 2 * width));
+  }
+  w1(b, in.v[0], in.v[1], err);
+}
+
 void commonCoil(const BlockCall &b) {
   // The COM this coil belongs to is ops[1] statements back (frontends/fanuc); its edge slot holds
   // its ACT of this scan.
@@ -294,6 +343,12 @@ bool runFanucData(const BlockCall &b) {
     return true;
   case Op::SearchTable:
     searchTable(b);
+    return true;
+  case Op::BcdIndexedTable:
+    bcdIndexedTable(b);
+    return true;
+  case Op::BcdSearchTable:
+    bcdSearchTable(b);
     return true;
   case Op::CommonBegin:
     b.s->edge[b.info.slot] = b.f.top();

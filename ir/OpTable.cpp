@@ -551,6 +551,17 @@ constexpr InstrInfo kTable[] = {
         spanning(reg("output", kDstAreas, true), 2), none(), none(),
         "output := the BCD pattern's low byte (width 0) or both bytes (width 1) when enabled; "
         "leaves the enable"),
+    ROWX(BcdIndexedTable, Data, Block, Required, 4, Result, Edge, 4,
+         "table[index] <-> data, 1 or 2 bytes, BCD index (width, read/write, reset, enable); W1 := "
+         "bad index",
+         konst("capacity", 1, 9999), reg("table head", kDstAreas, true),
+         spanning(reg("data", kDstAreas, true), 2), spanning(reg("index", kSrcAreas, false), 2)),
+    ROWX(BcdSearchTable, Data, Block, Required, 3, Result, Edge, 4,
+         "result := BCD index of the first equal item, 1 or 2 bytes (width, reset, enable); W1 := "
+         "not found",
+         konst("capacity", 1, 9999), reg("table head", kSrcAreas, false),
+         spanning(reg("search data", kSrcAreas, false), 2),
+         spanning(reg("result", kDstAreas, true), 2)),
 };
 
 #undef ROW

@@ -208,6 +208,8 @@ enum class Op : uint8_t {
   BinaryArith, ///< ADDB..DIVB: signed 1/2/4-byte arithmetic, R9000 flags, W1 = error
   BcdArith,    ///< ADD..DIV: 2- or 4-digit BCD arithmetic (BYT at run time), W1 = error
   BcdConstant, ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
+  BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
+  BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
   Count_
 };
 

@@ -11,6 +11,8 @@
 #include <llvm/IR/GlobalVariable.h>
 #include <llvm/IR/Intrinsics.h>
 
+#include <algorithm>
+
 namespace lj::lower {
 
 namespace {
@@ -129,6 +131,12 @@ llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
     break;
   case Op::SearchTable:
     emitFdSearch(s, slot);
+    break;
+  case Op::BcdIndexedTable:
+    emitFdBcdIndexed(s, slot);
+    break;
+  case Op::BcdSearchTable:
+    emitFdBcdSearch(s, slot);
     break;
   case Op::CommonBegin:
     cache_.store(mc_.layout.edge(slot), b_.CreateZExt(st_.back(), b_.getInt8Ty()));
@@ -367,6 +375,95 @@ void FunctionEmitter::emitFdSearch(const Stmt &s, int32_t slot) {
   found->addIncoming(b_.getInt64(static_cast<uint64_t>(-1)), latch);
   llvm::Value *err = b_.CreateOr(badCap, b_.CreateICmpSLT(found, b_.getInt64(0)));
   writeInt(s.ops[3], b_.CreateTrunc(found, b_.getInt32Ty()), b_.CreateAnd(act, notV(err)));
+  fdW1(slot, act, in[1], err);
+}
+
+// XMOV: twin of interp bcdIndexedTable (one item of 1 or 2 bytes by BYT at a BCD index).
+void FunctionEmitter::emitFdBcdIndexed(const Stmt &s, int32_t slot) {
+  auto in = fdTake(4); // ACT, RST, RW, BYT
+  llvm::Value *act = in[0], *rw = in[2], *byt = in[3];
+  llvm::Value *lo = b_.CreateZExt(fdLoad(s.ops[3], 0, 1), b_.getInt32Ty());
+  llvm::Value *hi = b_.CreateZExt(fdLoad(s.ops[3], 1, 1), b_.getInt32Ty());
+  llvm::Value *raw = b_.CreateSelect(byt, b_.CreateOr(lo, b_.CreateShl(hi, 8)), lo);
+  auto [value, bad] = bcdValue(b_, raw, 4); // BYT = 0: the high digits are 0
+  llvm::Value *index = b_.CreateZExt(value, b_.getInt64Ty());
+  llvm::Value *width = b_.CreateSelect(byt, b_.getInt64(2), b_.getInt64(1));
+  llvm::Value *err = b_.CreateOr(
+      b_.CreateOr(bad, b_.CreateICmpSGE(index, b_.getInt64(static_cast<uint64_t>(s.ops[0].value)))),
+      b_.CreateICmpSGT(b_.CreateMul(b_.CreateAdd(index, b_.getInt64(1)), width),
+                       b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[1])))));
+  llvm::Value *en = b_.CreateAnd(act, notV(err));
+  llvm::BasicBlock *body = newBlock("xmov"), *high = newBlock("xmov.high"),
+                   *join = newBlock("xmov.end");
+  cache_.flush();
+  b_.CreateCondBr(en, body, join);
+  b_.SetInsertPoint(body);
+  llvm::Value *t = fdAddr(s.ops[1], b_.CreateMul(index, width));
+  llvm::Value *d = fdAddr(s.ops[2], b_.getInt64(0));
+  // RW = 1 writes the data into the table, RW = 0 reads the table into the data.
+  llvm::Value *from = b_.CreateSelect(rw, d, t), *to = b_.CreateSelect(rw, t, d);
+  llvm::Type *i8 = b_.getInt8Ty();
+  b_.CreateAlignedStore(b_.CreateAlignedLoad(i8, from, llvm::Align(1)), to, llvm::Align(1));
+  b_.CreateCondBr(byt, high, join);
+  b_.SetInsertPoint(high);
+  b_.CreateAlignedStore(
+      b_.CreateAlignedLoad(i8, b_.CreateConstInBoundsGEP1_64(i8, from, 1), llvm::Align(1)),
+      b_.CreateConstInBoundsGEP1_64(i8, to, 1), llvm::Align(1));
+  b_.CreateBr(join);
+  b_.SetInsertPoint(join);
+  fdW1(slot, act, in[1], err);
+}
+
+// DSCH: twin of interp bcdSearchTable.
+void FunctionEmitter::emitFdBcdSearch(const Stmt &s, int32_t slot) {
+  auto in = fdTake(3); // ACT, RST, BYT
+  llvm::Value *act = in[0], *byt = in[2];
+  llvm::Type *i8 = b_.getInt8Ty(), *i32 = b_.getInt32Ty();
+  auto item = [&](llvm::Value *klo, llvm::Value *khi) {
+    return b_.CreateSelect(byt, b_.CreateOr(klo, b_.CreateShl(khi, 8)), klo);
+  };
+  llvm::Value *key =
+      item(b_.CreateZExt(fdLoad(s.ops[2], 0, 1), i32), b_.CreateZExt(fdLoad(s.ops[2], 1, 1), i32));
+  const int64_t room = roomAfter(tp(), s.ops[1]), cap = s.ops[0].value;
+  llvm::Value *n = b_.CreateSelect(byt, b_.getInt64(static_cast<uint64_t>(std::min(cap, room / 2))),
+                                   b_.getInt64(static_cast<uint64_t>(std::min(cap, room))));
+  llvm::Value *width = b_.CreateSelect(byt, b_.getInt64(2), b_.getInt64(1));
+  llvm::Value *run = b_.CreateAnd(act, b_.CreateICmpSGT(n, b_.getInt64(0)));
+  llvm::BasicBlock *entry = b_.GetInsertBlock();
+  llvm::BasicBlock *loop = newBlock("dsch"), *latch = newBlock("dsch.next"),
+                   *done = newBlock("dsch.end");
+  cache_.flush();
+  b_.CreateCondBr(run, loop, done);
+  llvm::IRBuilder<> lb(loop); // plain builder: see emitFdSearch
+  llvm::PHINode *k = lb.CreatePHI(lb.getInt64Ty(), 2, "k");
+  k->addIncoming(lb.getInt64(0), entry);
+  llvm::Value *head =
+      lb.CreateConstInBoundsGEP1_64(i8, state_, tp().elementOffset(s.ops[1].area, s.ops[1].index));
+  llvm::Value *at = lb.CreateInBoundsGEP(i8, head, lb.CreateMul(k, width));
+  // The high byte only with BYT = 1 (read the low one again otherwise: no access past the range).
+  llvm::Value *atHi = lb.CreateSelect(byt, lb.CreateConstInBoundsGEP1_64(i8, at, 1), at);
+  llvm::Value *vlo = lb.CreateZExt(lb.CreateAlignedLoad(i8, at, llvm::Align(1)), i32);
+  llvm::Value *vhi = lb.CreateZExt(lb.CreateAlignedLoad(i8, atHi, llvm::Align(1)), i32);
+  llvm::Value *v = lb.CreateSelect(byt, lb.CreateOr(vlo, lb.CreateShl(vhi, 8)), vlo);
+  lb.CreateCondBr(lb.CreateICmpEQ(v, key), done, latch);
+  lb.SetInsertPoint(latch);
+  llvm::Value *k1 = lb.CreateAdd(k, lb.getInt64(1));
+  k->addIncoming(k1, latch);
+  lb.CreateCondBr(lb.CreateICmpSLT(k1, n), loop, done);
+  b_.SetInsertPoint(done);
+  llvm::PHINode *found = b_.CreatePHI(b_.getInt64Ty(), 3, "found");
+  found->addIncoming(b_.getInt64(static_cast<uint64_t>(-1)), entry);
+  found->addIncoming(k, loop);
+  found->addIncoming(b_.getInt64(static_cast<uint64_t>(-1)), latch);
+  // A found index the result's digits cannot hold (100 and up with BYT = 0) is an error.
+  llvm::Value *err = b_.CreateOr(
+      b_.CreateICmpSLT(found, b_.getInt64(0)),
+      b_.CreateICmpSGE(found, b_.CreateSelect(byt, b_.getInt64(10000), b_.getInt64(100))));
+  llvm::Value *en = b_.CreateAnd(act, notV(err));
+  llvm::Value *bcd =
+      b_.CreateTrunc(bcdDigits(b_, b_.CreateSelect(err, b_.getInt64(0), found), 4), i32);
+  fdStore(s.ops[3], 0, 1, bcd, en);
+  fdStore(s.ops[3], 1, 1, b_.CreateLShr(bcd, 8), b_.CreateAnd(en, byt));
   fdW1(slot, act, in[1], err);
 }
 

@@ -190,6 +190,8 @@ private:
   void emitFdCode(int32_t i);
   void emitFdIndexed(const Stmt &s, int32_t slot);
   void emitFdSearch(const Stmt &s, int32_t slot);
+  void emitFdBcdIndexed(const Stmt &s, int32_t slot); // XMOV
+  void emitFdBcdSearch(const Stmt &s, int32_t slot);  // DSCH
 
   // EmitNc.cpp: family Nc (MGET .. SAVEDATA), host callbacks. Helpers of that file go here.
   llvm::Error emitNcBlock(int32_t i);

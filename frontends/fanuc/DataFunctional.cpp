@@ -61,6 +61,8 @@ int32_t toBcd(int64_t v) {
 /// The inputs an instruction takes from ST, top to bottom (the last is ACT in ST0).
 const char *inputsOf(std::string_view n) {
   if (n == "XMOVB") return "RW, RST, ACT";
+  if (n == "XMOV") return "BYT, RW, RST, ACT";
+  if (n == "DSCH") return "BYT, RST, ACT";
   if (n == "DSCHB" || n == "CODB") return "RST, ACT";
   if (n == "PARI") return "O.E, RST, ACT";
   if (n == "SFT") return "DIR, CONT, RST, ACT";
@@ -194,9 +196,9 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
                     "describe (docs/fanuc-pmc.md \"Not supported\")");
     return true;
   }
-  static constexpr std::string_view kMine[] = {"XMOVB", "DSCHB", "PARI",  "SFT",  "COD",
-                                               "CODB",  "DCNV",  "DCNVB", "DEC",  "DECB",
-                                               "COM",   "COME",  "JMP",   "JMPE", "NOP"};
+  static constexpr std::string_view kMine[] = {"XMOVB", "DSCHB", "PARI", "SFT",  "COD", "CODB",
+                                               "DCNV",  "DCNVB", "DEC",  "DECB", "COM", "COME",
+                                               "JMP",   "JMPE",  "NOP",  "XMOV", "DSCH"};
   bool mine = false;
   for (std::string_view m : kMine) mine = mine || m == name;
   if (!mine) return false;
@@ -355,6 +357,26 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
          e.dataOperand(p[2], w, false, false, b) && e.dataOperand(p[3], w, false, false, c) &&
          e.dataOperand(p[4], w, false, true, r);
     if (ok) e.emit(Op::SearchTable, at, {a, b, c, r});
+  } else if (name == "XMOV" || name == "DSCH") {
+    // BCD tables (ref 6.5, 6.7): capacity = n + 1 for a table 0..n, a constant; entries of 1 or
+    // 2 bytes by BYT at run time, so the addresses are checked for 2 bytes.
+    const bool search = name == "DSCH";
+    int64_t cap;
+    ok =
+        paramCount(e, f, what, 4,
+                   search ? "table capacity (constant), table head, search data address, result "
+                            "address"
+                          : "table capacity (constant), table head, data address, index address") &&
+        e.constant(p[0], 1, 9999, "table capacity", cap) &&
+        spanOperand(e, p[1], 1, 1, !search, b) && spanOperand(e, p[2], 2, 1, !search, c) &&
+        spanOperand(e, p[3], 2, 1, search, d);
+    if (!ok) return true;
+    if (search && b.area != Area::DataTable) {
+      e.error(p[1].loc, "table head '" + std::string(p[1].text) +
+                            "': DSCH searches the data table only (a D address, ref 6.7)");
+      return true;
+    }
+    e.emit(search ? Op::BcdSearchTable : Op::BcdIndexedTable, at, {konst(cap, p[0].loc), b, c, d});
   }
   if (ok) e.setDepth(e.depth() - (inputs - 1));
   return true;
@@ -404,6 +426,10 @@ const char *spellData(Op op) {
     return "XMOVB";
   case Op::SearchTable:
     return "DSCHB";
+  case Op::BcdIndexedTable:
+    return "XMOV";
+  case Op::BcdSearchTable:
+    return "DSCH";
   case Op::CommonBegin:
     return "COM";
   case Op::CommonCoil:
