@@ -219,11 +219,34 @@ private:
       if (level == 2 && subs > 0) {
         out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") +
             std::to_string(subs_[static_cast<size_t>(pick(0, subs - 1))]));
+      if (level == 2 && subs > 0 && r_.chance(30)) {
+        selectCall(subs); // fanuc-e
+      } else if (level == 2 && subs > 0) {
+        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + std::to_string(pick(1, subs)));
       } else {
         out("WRT " + writeBit());
       }
       return;
     }
+  }
+
+  /// fanuc-e: a CS..CE select-call of 1..4 CM lines (docs/fanuc-pmc.md [EXT] select-call). The
+  /// index is usually first masked to 0..3 (SUB 60 AND with 3, under the same ACT) so that CM
+  /// entries are selected, out-of-range entries included; else any 2-byte pool value.
+  void selectCall(int subs) {
+    const std::string idx = data(2);
+    if (r_.chance(75)) {
+      out("SUB 60");
+      out("(PRM) 0002");
+      out("(PRM) " + data(2, false));
+      out("(PRM) 3");
+      out("(PRM) " + idx);
+    }
+    out(r_.chance(50) ? "CS " + idx : "SUB 74 " + idx);
+    const int n = static_cast<int>(pick(1, 4));
+    for (int k = 0; k < n; ++k)
+      out((r_.chance(50) ? "CM P" : "SUB 75 P") + std::to_string(pick(1, subs)));
+    out(r_.chance(50) ? "CE" : "SUB 76");
   }
 
   Rng r_;

@@ -36,6 +36,9 @@ enum class Fn : uint8_t {
   Lbl,
   Call,
   Callu,
+  Cs,
+  Cm,
+  Ce,
   Unsupported
 };
 
@@ -131,9 +134,9 @@ constexpr FnRow kRows[] = {
     {"AXCTL", 53, Fn::Unsupported, 0},
     {"PSGNL", 50, Fn::Unsupported, 0},
     {"PSGN2", 63, Fn::Unsupported, 0},
-    {"CS", 74, Fn::Unsupported, 0},
-    {"CM", 75, Fn::Unsupported, 0},
-    {"CE", 76, Fn::Unsupported, 0},
+    {"CS", 74, Fn::Cs, 0},
+    {"CM", 75, Fn::Cm, 0},
+    {"CE", 76, Fn::Ce, 0},
     {"NOP", -1, Fn::Unsupported, 0}, // no SUB number (reference 6.1, L1451)
 };
 
@@ -189,6 +192,12 @@ Shape shapeOf(Fn f) {
   case Fn::Call:
   case Fn::Callu:
     return {1, "subroutine"};
+  case Fn::Cs:
+    return {1, "index address"};
+  case Fn::Cm:
+    return {1, "subroutine"};
+  case Fn::Ce:
+    return {0, ""};
   case Fn::Unsupported:
     break;
   default:
@@ -232,7 +241,67 @@ bool format(Emitter &e, const Token &t, bool allowAddress, bool &isAddr, int &wi
   return true;
 }
 
+/// CS / CM / CE (docs/fanuc-pmc.md [EXT] select-call): CS pushes ACT on MS; each CM k re-reads
+/// it, ANDs "index = k" (CompareEq, 2-byte) and calls its subroutine when the result is 1; CE
+/// pops MS. Built from existing operations, so every engine runs it the same way.
+void selectCall(Emitter &e, Fn fn, const std::string &what, SourceLoc at,
+                const std::vector<Token> &p) {
+  FlowRegions &rg = e.regions();
+  Operand a;
+  if (fn == Fn::Cs) {
+    if (rg.csLine != at.line || rg.csOk) {
+      e.error(at, what + " inside the CS list opened on line " + std::to_string(rg.csLine) +
+                      " (CS..CE lists do not nest; close it with CE first)");
+      return;
+    }
+    if (!e.dataOperand(p[0], 2, false, false, a)) return;
+    rg.csCount = 0;
+    rg.csIndex = a;
+    rg.csOk = true;
+    e.emit(Op::BranchPush, at, {});
+    return;
+  }
+  if (rg.csLine == 0) {
+    e.error(at, what + " outside a CS..CE list (it must follow a CS)");
+    return;
+  }
+  if (fn == Fn::Ce) {
+    rg.csLine = 0;
+    if (!rg.csOk) return;
+    e.emit(Op::BranchPop, at, {});
+    e.setDepth(1);
+    return;
+  }
+  if (!e.labelOperand(p[0], Area::Subroutine, a) || !rg.csOk) return;
+  Operand k;
+  k.kind = Operand::Kind::Const;
+  k.value = rg.csCount++;
+  k.loc = p[0].loc;
+  e.emit(Op::BranchRead, at, {});
+  e.emit(Op::CompareEq, at, {rg.csIndex, k});
+  e.emit(Op::Call, at, {a});
+  e.setDepth(1);
+}
+
 } // namespace
+
+void closeSelect(Emitter &e, std::string_view marker, SourceLoc at) {
+  FlowRegions &rg = e.regions();
+  if (rg.csLine > 0)
+    e.error(at,
+            "CS on line " + std::to_string(rg.csLine) + " has no CE before " + std::string(marker));
+  rg.csLine = 0;
+}
+
+bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at) {
+  FlowRegions &rg = e.regions();
+  if (rg.csLine == 0 || head == "CS" || head == "CM" || head == "CE" || sub == 74 || sub == 75 ||
+      sub == 76)
+    return false;
+  e.error(at, "only CM lines may stand between CS (line " + std::to_string(rg.csLine) +
+                  ") and CE, got " + std::string(head));
+  return true;
+}
 
 bool isFunctionalName(std::string_view name) { return rowByName(name) != nullptr; }
 
@@ -260,6 +329,11 @@ void emitFunctional(Emitter &e, const Functional &f) {
     e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
     return;
   }
+  if (row->fn == Fn::Cs && e.regions().csLine == 0) {
+    // Open the list before CS's own checks so its CM/CE lines do not report again.
+    e.regions().csLine = at.line;
+    e.regions().csOk = false;
+  }
   const Shape shape = shapeOf(row->fn);
   if (static_cast<int>(f.params.size()) != shape.count) {
     e.error(at, what + " takes " + std::to_string(shape.count) + " parameters (" + shape.roles +
@@ -267,12 +341,13 @@ void emitFunctional(Emitter &e, const Functional &f) {
     return;
   }
   const auto &p = f.params;
-  const bool needsAct = row->fn != Fn::Callu && row->fn != Fn::Lbl;
+  const bool needsAct =
+      row->fn != Fn::Callu && row->fn != Fn::Lbl && row->fn != Fn::Cm && row->fn != Fn::Ce;
   if (needsAct && e.depth() < 1) {
     e.error(at, what + " needs its ACT input in ST0 (an RD before it)");
     return;
   }
-  if ((row->fn == Fn::Call || row->fn == Fn::Callu) && e.level() == 1) {
+  if ((row->fn == Fn::Call || row->fn == Fn::Callu || row->fn == Fn::Cs) && e.level() == 1) {
     e.error(at, what + ": level 1 cannot call subroutines (reference 4.2, L877)");
     return;
   }
@@ -416,6 +491,11 @@ void emitFunctional(Emitter &e, const Functional &f) {
     if (!e.labelOperand(p[0], Area::Subroutine, a)) return;
     if (row->fn == Fn::Callu) e.emit(Op::LoadTrue, at, {});
     e.emit(Op::Call, at, {a});
+    return;
+  case Fn::Cs:
+  case Fn::Cm:
+  case Fn::Ce:
+    selectCall(e, row->fn, what, at, p);
     return;
   case Fn::Unsupported:
     break;

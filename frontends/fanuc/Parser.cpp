@@ -7,6 +7,7 @@
 #include "frontends/fanuc/ParserInternal.h"
 #include "profiles/fanuc/FanucProfile.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <set>
@@ -108,6 +109,15 @@ public:
     if (afterEnd_) {
       error(toks[0].loc, "statement after END (END ends the program)");
       return;
+    }
+    if (!isMarkerName(head)) {
+      int64_t sub = -1;
+      if (head == "SUB" && toks.size() >= 2 && toks[1].text.size() <= 4 &&
+          std::all_of(toks[1].text.begin(), toks[1].text.end(),
+                      [](char c) { return c >= '0' && c <= '9'; }) &&
+          !toks[1].text.empty())
+        sub = std::stoll(std::string(toks[1].text));
+      if (detail::insideSelect(*this, head, sub, toks[0].loc)) return;
     }
     if (const Basic *b = basicNamed(head)) {
       basic(*b, toks);
@@ -419,6 +429,7 @@ private:
     }
     depth_ = 0;
     detail::closeRegions(*this, head, at);
+    detail::closeSelect(*this, head, at);
     if (head == "END1") {
       if (sawEnd1_) return error(at, "duplicate END1");
       sawEnd1_ = true;

@@ -24,6 +24,11 @@ struct FlowRegions {
   int32_t jmpLine = 0;
   bool jmpInsideCom = false; ///< the open JMP was opened after the open COM
   int32_t nextLabel = 10000; ///< hidden JMPE labels: above the user's L1..L9999
+  // fanuc-e: the open CS..CE select-call list (SelectCall in Functional.cpp).
+  int32_t csLine = 0;  ///< line of the open CS, 0: none open
+  int32_t csCount = 0; ///< CM lines so far in the open list
+  Operand csIndex;     ///< the open CS's index address (2-byte binary)
+  bool csOk = false;   ///< the open CS was emitted (else its CM/CE lines emit nothing)
 };
 
 /// What one functional instruction needs from the parser: its tokens and a way to check and
@@ -90,6 +95,11 @@ const char *spellData(Op op);
 bool emitArithFunctional(Emitter &e, const Functional &f, int sub, const std::string &what);
 /// The FANUC mnemonic of the fanuc-c operations, nullptr for any other.
 const char *spellArith(Op op);
+/// fanuc-e: at a level or subroutine boundary `marker`, an open CS..CE list is an error.
+void closeSelect(Emitter &e, std::string_view marker, SourceLoc at);
+/// fanuc-e: `head` (upper case; `sub` its SUB number or -1) at `at` while a CS list is open
+/// and it is not a CM or CE line: an error (true).
+bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at);
 
 /// `s` in upper case.
 std::string upper(std::string_view s);

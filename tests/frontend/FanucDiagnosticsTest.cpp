@@ -114,3 +114,35 @@ TEST(FanucDiagnostics, UnknownInstruction) {
 
 } // namespace
 } // namespace lj
+
+namespace lj {
+namespace {
+
+// fanuc-e: the CS / CM / CE select-call rules (docs/fanuc-pmc.md [EXT] select-call).
+TEST(FanucDiagnostics, SelectCallRules) {
+  const std::string subs = "SP P1\nSPE\nEND\n";
+  EXPECT_EQ(diags("RD X0.0\nCS R100\nCM P1\nCE\nEND1\nEND2\n" + subs),
+            "t.pmc:2:1: error: CS: level 1 cannot call subroutines (reference 4.2, L877)\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCM P1\nEND2\n" + subs),
+            "t.pmc:5:1: error: CS on line 3 has no CE before END2\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCM P1\nRD X0.1\nCE\nEND2\n" + subs),
+            "t.pmc:5:1: error: only CM lines may stand between CS (line 3) and CE, got RD\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCS R102\nCE\nEND2\n" + subs),
+            "t.pmc:4:1: error: CS inside the CS list opened on line 3 (CS..CE lists do not "
+            "nest; close it with CE first)\n");
+  EXPECT_EQ(diags("END1\nCM P1\nEND2\n" + subs),
+            "t.pmc:2:1: error: CM outside a CS..CE list (it must follow a CS)\n");
+  EXPECT_EQ(diags("END1\nSUB 76\nEND2\n" + subs),
+            "t.pmc:2:1: error: SUB 76 (CE) outside a CS..CE list (it must follow a CS)\n");
+  EXPECT_EQ(diags("END1\nCS R100\nCE\nEND2\n" + subs),
+            "t.pmc:2:1: error: CS needs its ACT input in ST0 (an RD before it)\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCS\nCE\nEND2\n" + subs),
+            "t.pmc:3:1: error: CS takes 1 parameters (index address), got 0\n");
+  EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCM P2\nCE\nEND2\n" + subs),
+            // the verifier's rule for CALL, in its dialect-neutral spelling (S = P)
+            "t.pmc:4:4: error: undefined subroutine S2\n"
+            "t.pmc:7:1: warning: subroutine S1 is never called\n");
+}
+
+} // namespace
+} // namespace lj
