@@ -175,6 +175,9 @@ struct LiveView::Impl {
     json stats;
     uint64_t round = 0;
     std::string wtext;
+    // The page of the running program, drawn now (seconds for 10,000 statements on a loaded
+    // machine), not when the first browser asks for it.
+    if (std::shared_ptr<rt::ProgramVersion> first = exec.current()) pageOf(*first);
     std::unique_lock<std::mutex> g(mu);
     // On a fixed 50 ms grid (the frame's own work does not stretch the period).
     auto due = std::chrono::steady_clock::now() + kHubPeriod;
