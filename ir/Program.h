@@ -71,6 +71,10 @@ struct DialectText {
   /// "dialect-only rows"); callers go through spelling(), which never returns null.
   const char *(*spell)(Op);
   std::string (*formatOperand)(const Operand &); ///< an operand as source text
+  /// Whether operand `k` of `op` is implied by the front end, not written in this dialect's
+  /// source (a fixed time unit the dialect's instruction has no parameter for): drawings leave
+  /// it out. nullptr: every operand is written.
+  bool (*implied)(Op op, int k) = nullptr;
 };
 
 /// Whether dialect `d` spells `op`.

@@ -326,6 +326,7 @@ Element elementOf(const VerifiedProgram &p, int32_t i) {
   }
   for (int k = 0; k < s.operandCount; ++k) {
     const Operand &o = s.ops[static_cast<size_t>(k)];
+    if (p.dialect && p.dialect->implied && p.dialect->implied(s.op, k)) e.implied |= 1u << k;
     // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).
     e.operands.push_back(p.dialect ? p.dialect->formatOperand(o) : formatOperand(o));
     e.symbols.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < p.symbols.size()

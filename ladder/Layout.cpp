@@ -4,6 +4,7 @@
 #include "ladder/Layout.h"
 
 #include <algorithm>
+#include <bit>
 
 namespace lj::ladder {
 
@@ -134,7 +135,8 @@ private:
   }
 
   static int boxHeight(const Node &n, int pins) {
-    int lines = 1 + static_cast<int>(n.elem.operands.size()); // mnemonic + one line per operand
+    int lines = 1 + static_cast<int>(n.elem.operands.size()) -
+                std::popcount(n.elem.implied); // mnemonic + one line per drawn operand
     return std::max({1, pins, (lines + 2) / 3});
   }
 
@@ -143,6 +145,7 @@ private:
     c.text = drawnText(n.elem);
     c.symbol.clear();
     for (size_t k = 0; k < n.elem.operands.size(); ++k) {
+      if (n.elem.implied >> k & 1) continue; // not in the source (DialectText::implied)
       std::string s = symbolOf(n.elem, k);
       c.operands.push_back(n.elem.operands[k] + (s.empty() ? "" : "<" + s + ">"));
     }
@@ -243,7 +246,8 @@ private:
 std::string stmtLine(const Element &e) {
   std::string t = drawnText(e);
   for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k)
-    t += " " + (k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k] : e.operands[k]);
+    if (!(e.implied >> k & 1))
+      t += " " + (k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k] : e.operands[k]);
   return t;
 }
 

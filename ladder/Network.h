@@ -26,6 +26,9 @@ struct Element {
   /// mnemonic(op). Only drawings use it; the JSON and text forms stay in HNC-8 STL.
   std::string drawn;
   bool drawnWhole = false; ///< `drawn` includes the operands (an IL label `%L64:`)
+  /// Bit k: operand k is implied by the front end, not in the source (DialectText::implied);
+  /// drawings leave it out, the JSON and text forms keep it.
+  uint32_t implied = 0;
 };
 
 enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };

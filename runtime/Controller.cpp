@@ -231,7 +231,8 @@ bool Controller::settle(const std::string &path, std::string &why, std::string *
 }
 
 bool Controller::change(const std::string &path, const std::optional<ContactForces> &forces,
-                        std::string &error, const std::string &so, bool allowShrink) {
+                        std::string &error, const std::string &so, bool allowShrink,
+                        bool interpreted) {
   struct Busy {
     std::atomic<int> &n;
     explicit Busy(std::atomic<int> &c) : n(c) { ++n; }
@@ -262,8 +263,8 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
     want = running->forces;
   }
   std::vector<std::string> dropped;
-  std::shared_ptr<ProgramVersion> next =
-      loader_.load(path, want, error, nullptr, so, forces ? nullptr : &dropped);
+  std::shared_ptr<ProgramVersion> next = loader_.load(
+      path, want, error, nullptr, so, forces ? nullptr : &dropped, nullptr, interpreted);
   if (!next) return refuse(what, error, error);
   // Stop wins over a compile in progress: a version finished after a stop request is dropped.
   if (shutdown_.load())
@@ -309,14 +310,21 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   return true;
 }
 
-bool Controller::setTraced(bool on, std::string &error) {
+bool Controller::setTraced(bool on, std::string &error, bool interpreterFirst) {
   if (loader_.aot() && on) {
     error = "an AOT .so is never traced; serve with --engine jit or interp for the live view";
     return false;
   }
   loader_.setTraced(on);
   std::shared_ptr<ProgramVersion> cur = exec_.current();
-  if (!cur || (cur->trace != nullptr) == on) return true;
+  if (!cur) return true;
+  const bool jit = loader_.engine() == "jit";
+  interpreterFirst = interpreterFirst && on && jit;
+  // Done when the running version is traced as asked, unless it is the interim traced
+  // interpreter build and the JIT one is asked for now.
+  if ((cur->trace != nullptr) == on &&
+      (!on || interpreterFirst || !jit || cur->tier != EngineTier::Interp))
+    return true;
   std::string path, so;
   {
     std::lock_guard<std::mutex> g(changeMu_);
@@ -325,8 +333,9 @@ bool Controller::setTraced(bool on, std::string &error) {
   }
   if (log_)
     log_(std::string("live view: building the ") + (on ? "traced" : "untraced") + " version of '" +
-         path + "'");
-  return change(path, std::nullopt, error, so);
+         path + "'" +
+         (interpreterFirst ? " on the interpreter (the traced JIT build follows)" : ""));
+  return change(path, std::nullopt, error, so, false, interpreterFirst);
 }
 
 void Controller::pollProgramFile() {

@@ -64,7 +64,8 @@ public:
   /// empty or lacks a part (init, PLC1, PLC2, a subroutine) the running one has, unless
   /// `allowShrink`; and once shutdown() was called.
   bool change(const std::string &path, const std::optional<ContactForces> &forces,
-              std::string &error, const std::string &so = {}, bool allowShrink = false);
+              std::string &error, const std::string &so = {}, bool allowShrink = false,
+              bool interpreted = false);
 
   /// Once a second from the main thread: if the PROGRAM file's (or, serving AOT, the .so's)
   /// mtime changed since the last look, reload it (forces carried over by statement id, as for
@@ -75,7 +76,10 @@ public:
   /// or untraced and swap it in at a tick boundary like an online change, forces kept; later
   /// loads (forces, online change) keep that choice. True at once when the running version
   /// already is so; false with `error` when the rebuild was refused or the engine is AOT.
-  bool setTraced(bool on, std::string &error);
+  /// `interpreterFirst` (the JIT engine, `on`): build the traced version on the interpreter, ready
+  /// within milliseconds of the verify, so a page is live at once; a later setTraced(true)
+  /// without it puts the traced JIT build in (it records the same trace, ir/Trace.h).
+  bool setTraced(bool on, std::string &error, bool interpreterFirst = false);
 
   /// Whether a client asked the server to stop.
   bool stopRequested() const { return stop_.load(); }

@@ -67,8 +67,8 @@ int64_t monoNs() {
 std::shared_ptr<ProgramVersion>
 ProgramLoader::load(const std::string &path, const ContactForces &forces, std::string &error,
                     std::optional<io::DitFile> *ditOut, const std::string &so,
-                    std::vector<std::string> *dropped, int64_t *readyNs) {
-  return loadAs(false, path, forces, error, ditOut, so, dropped, readyNs);
+                    std::vector<std::string> *dropped, int64_t *readyNs, bool interpreted) {
+  return loadAs(interpreted, path, forces, error, ditOut, so, dropped, readyNs);
 }
 
 std::shared_ptr<ProgramVersion> ProgramLoader::loadInterpreted(const std::string &path,

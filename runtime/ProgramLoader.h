@@ -49,10 +49,12 @@ public:
   /// forces are refused). Null with `error` = the diagnostics or the reason. `dit`, when given,
   /// receives the container (nothing for an STL file). `dropped`: see checkForces (null: a
   /// force whose id is not a contact refuses the load). `readyNs`: see loadInterpreted.
-  std::shared_ptr<ProgramVersion>
-  load(const std::string &path, const ContactForces &forces, std::string &error,
-       std::optional<io::DitFile> *dit = nullptr, const std::string &so = {},
-       std::vector<std::string> *dropped = nullptr, int64_t *readyNs = nullptr);
+  std::shared_ptr<ProgramVersion> load(const std::string &path, const ContactForces &forces,
+                                       std::string &error,
+                                       std::optional<io::DitFile> *dit = nullptr,
+                                       const std::string &so = {},
+                                       std::vector<std::string> *dropped = nullptr,
+                                       int64_t *readyNs = nullptr, bool interpreted = false);
   /// The same as load, but the version runs on the interpreter whatever the loader's engine:
   /// the first version of interpreter-first tiering (docs/serve.md "Tiering"), ready as soon as
   /// the program is verified. `readyNs`, when given, receives CLOCK_MONOTONIC at that moment.

@@ -3,6 +3,7 @@
 // TMRB, DIFU, END1) and addresses (R100.3, D100); an IEC IL program with the IL objects (%I0.1)
 // and words (ST, the %L label as `%L1:`), never the HNC-8 ones (COIN, MOV, PLS, OUT).
 #include "frontends/fanuc/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
 #include "ladder/Layout.h"
 
@@ -52,6 +53,53 @@ TEST(LadderDialect, FanucMnemonicsAndAddresses) {
       for (const Cell &c : r.cells)
         if (c.text == "MOVW") d100 = !c.operands.empty() && c.operands[0] == "D100";
   EXPECT_TRUE(d100) << "MOVW's first operand drawn as D100";
+}
+
+const Cell *boxNamed(const Layout &l, const std::string &text) {
+  for (const PartLayout &p : l.parts)
+    for (const RungLayout &r : p.rungs)
+      for (const Cell &c : r.cells)
+        if (c.kind == "box" && c.text == text) return &c;
+  return nullptr;
+}
+
+// ref 6.3: "[SUB24 TMRB | timer number | set time (ms)]" and "[SUB77 TMRBF | timer number | set
+// time]": the box shows those two parameters, not the IR's implied time unit between them.
+TEST(LadderDialect, FanucFixedTimersDrawTheirTwoParameters) {
+  const char *pmc = "RD X0.1\n"
+                    "TMRB 2 5000\n"
+                    "WRT R2.0\n"
+                    "RD X0.2\n"
+                    "TMRBF 3 700\n"
+                    "WRT R2.1\n"
+                    "RD X0.3\n"
+                    "MOVW D100 D102\n"
+                    "END1\n"
+                    "END2\n"
+                    "END\n";
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  Layout l = layout(fromProgram(*p));
+  const Cell *tmrb = boxNamed(l, "TMRB"), *tmrbf = boxNamed(l, "TMRBF"),
+             *movw = boxNamed(l, "MOVW");
+  ASSERT_TRUE(tmrb && tmrbf && movw);
+  EXPECT_EQ(tmrb->operands, (std::vector<std::string>{"2", "5000"}));
+  EXPECT_EQ(tmrbf->operands, (std::vector<std::string>{"3", "700"}));
+  EXPECT_EQ(movw->operands, (std::vector<std::string>{"D100", "D102"}))
+      << "other boxes keep theirs";
+}
+
+// An HNC-8 TMRB writes the time unit (hnc8-core.md: `TMRB 0 0 500`): all three operands drawn.
+TEST(LadderDialect, Hnc8TimerKeepsItsTimeUnit) {
+  Diagnostics d("t.stl");
+  std::optional<VerifiedProgram> p =
+      compileFrontEnd("LD X0.1\nTMRB 0 1 500\nOUT R2.0\n", "t.stl", VerifyOptions{}, d);
+  ASSERT_TRUE(p) << d.render();
+  Layout l = layout(fromProgram(*p));
+  const Cell *tmrb = boxNamed(l, "TMRB");
+  ASSERT_TRUE(tmrb);
+  EXPECT_EQ(tmrb->operands, (std::vector<std::string>{"0", "1", "500"}));
 }
 
 TEST(LadderDialect, IecObjectsAndWords) {

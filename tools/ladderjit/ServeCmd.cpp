@@ -503,7 +503,7 @@ int runServe(const ServeArgs &a) {
   // from here on, and a compile LLVM cannot interrupt is not waited for.
   controller.shutdown();
   tierUp.stop(); // TIER: nothing is switched in from here on
-  if (liveView) liveView->stop();
+  bool liveCompiling = liveView && liveView->stop();
   if (watch) watch->stop();
   // HOOK(modbus): stop the Modbus TCP server (before the executive, so no write is lost).
   if (modbus) modbus->stop();
@@ -532,6 +532,10 @@ int runServe(const ServeArgs &a) {
     tierUp.detach();
     fastExit = true;
     logLine("stopping without waiting for the background JIT compile");
+  }
+  if (liveCompiling) {
+    fastExit = true;
+    logLine("stopping without waiting for the live view's traced JIT build");
   }
   if (watch) {
     if (controller.busy()) {

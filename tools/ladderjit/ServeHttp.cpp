@@ -105,6 +105,8 @@ struct LiveView::Impl {
   uint64_t lastPublished = 0;
 
   std::thread hub;
+  std::thread tracer; // the traced JIT build after the interim traced interpreter one
+  std::atomic<bool> tracerBusy{false};
   std::mutex mu;
   std::condition_variable cv;
   bool stopping = false;
@@ -173,6 +175,9 @@ struct LiveView::Impl {
     json stats;
     uint64_t round = 0;
     std::string wtext;
+    // The page of the running program, drawn now (seconds for 10,000 statements on a loaded
+    // machine), not when the first browser asks for it.
+    if (std::shared_ptr<rt::ProgramVersion> first = exec.current()) pageOf(*first);
     std::unique_lock<std::mutex> g(mu);
     // On a fixed 50 ms grid (the frame's own work does not stretch the period).
     auto due = std::chrono::steady_clock::now() + kHubPeriod;
@@ -187,10 +192,25 @@ struct LiveView::Impl {
       if (watched != tracedWanted && (watched || now - lastWatched > kUntraceAfter)) {
         tracedWanted = watched;
         std::string err;
-        if (!ctl.setTraced(watched, err) && log) log("live view: " + err);
+        if (tracer.joinable()) tracer.join(); // a traced JIT build still compiling (rare)
+        // Watched: the traced interpreter build first (ready within milliseconds of the verify,
+        // so the page is live at once), then the traced JIT build on its own thread, swapped
+        // in when compiled; the hub goes on sending frames meanwhile.
+        if (!ctl.setTraced(watched, err, watched) && log) log("live view: " + err);
+        if (watched) {
+          tracerBusy.store(true);
+          tracer = std::thread([this] {
+            std::string e;
+            if (!ctl.setTraced(true, e) && log) log("live view: " + e);
+            tracerBusy.store(false);
+          });
+        }
       }
       std::shared_ptr<rt::ProgramVersion> cur = exec.current();
-      if (cur && (watched || round % 10 == 0)) {
+      // A traced version just swapped in (the traced JIT build after the interpreter one) and not
+      // yet published: no frame this round, so pages keep drawing power flow (no frame without it).
+      const bool unpublished = cur && cur->trace && cur->trace->published() == 0;
+      if (cur && (watched || round % 10 == 0) && !unpublished) {
         json m{{"v", cur->id},
                {"hash", cur->hash},
                {"traced", cur->trace != nullptr},
@@ -307,8 +327,8 @@ bool LiveView::start(std::string &error) {
   return true;
 }
 
-void LiveView::stop() {
-  if (!impl_) return;
+bool LiveView::stop() {
+  if (!impl_) return false;
   {
     std::lock_guard<std::mutex> g(impl_->mu);
     impl_->stopping = true;
@@ -316,6 +336,13 @@ void LiveView::stop() {
   impl_->cv.notify_all();
   if (impl_->http) impl_->http->stop();
   if (impl_->hub.joinable()) impl_->hub.join();
+  if (!impl_->tracer.joinable()) return false;
+  if (impl_->tracerBusy.load()) { // a JIT compile LLVM cannot interrupt: ends with the process
+    impl_->tracer.detach();
+    return true;
+  }
+  impl_->tracer.join();
+  return false;
 }
 
 int LiveView::port() const { return impl_->http ? impl_->http->port() : -1; }

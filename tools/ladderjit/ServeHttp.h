@@ -33,7 +33,9 @@ public:
   rt::Executive::AfterTickHook hook();
   /// Start the hub and the HTTP server (after exec.start); false with `error`.
   bool start(std::string &error);
-  void stop();
+  /// True when the traced JIT build was still compiling: its thread is detached and ends with
+  /// the process (the caller exits without destructors, as for the tier-up compile).
+  bool stop();
   int port() const;
 
   struct Impl;
