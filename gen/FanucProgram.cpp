@@ -216,18 +216,20 @@ private:
     case 18:
       return fanucTimerCounterRung(r_, lines_); // gen/FanucTimerCounter.cpp
     default:
-      if (level == 2 && subs > 0) {
-        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") +
-            std::to_string(subs_[static_cast<size_t>(pick(0, subs - 1))]));
       if (level == 2 && subs > 0 && r_.chance(30)) {
         selectCall(subs); // fanuc-e
       } else if (level == 2 && subs > 0) {
-        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + std::to_string(pick(1, subs)));
+        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + subroutine(subs));
       } else {
         out("WRT " + writeBit());
       }
       return;
     }
+  }
+
+  /// The number of one of the `subs` defined subroutines (drawn over P1..P5000, fanuc-f).
+  std::string subroutine(int subs) {
+    return std::to_string(subs_[static_cast<size_t>(pick(0, subs - 1))]);
   }
 
   /// fanuc-e: a CS..CE select-call of 1..4 CM lines (docs/fanuc-pmc.md [EXT] select-call). The
@@ -244,8 +246,7 @@ private:
     }
     out(r_.chance(50) ? "CS " + idx : "SUB 74 " + idx);
     const int n = static_cast<int>(pick(1, 4));
-    for (int k = 0; k < n; ++k)
-      out((r_.chance(50) ? "CM P" : "SUB 75 P") + std::to_string(pick(1, subs)));
+    for (int k = 0; k < n; ++k) out((r_.chance(50) ? "CM P" : "SUB 75 P") + subroutine(subs));
     out(r_.chance(50) ? "CE" : "SUB 76");
   }
 
