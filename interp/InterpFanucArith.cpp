@@ -8,6 +8,7 @@
 // clears it (after the execution, which still runs), as for fanuc-b's RST family. On an error
 // the BCD instructions and a division by zero write nothing; a binary overflow writes the
 // result wrapped to its bytes.
+#include "interp/InterpFanucCommon.h"
 #include "interp/InterpreterInternal.h"
 #include "ir/PmcArith.h"
 
@@ -15,25 +16,10 @@ namespace lj::interp {
 
 namespace {
 
-/// The top `k` ST entries, ST0 first; pops all but one (which W1 then replaces).
-struct Inputs {
-  bool v[3] = {};
-};
-Inputs take(const BlockCall &b, int k) {
-  Inputs in;
-  for (int j = 0; j < k; ++j) in.v[j] = b.f.st[b.f.sp - 1 - j] != 0;
-  b.f.sp -= k - 1;
-  return in;
-}
-
-void w1(const BlockCall &b, bool act, bool rst, bool err) {
-  uint8_t &held = b.s->edge[b.info.slot];
-  if (act) held = err;
-  if (rst) held = 0;
-  b.f.setTop(held != 0);
-}
-
-unsigned char *at(const BlockCall &b, uint32_t off) { return bytes(b.s) + off; }
+using fanuc::at;
+using fanuc::Inputs;
+using fanuc::take;
+using fanuc::w1;
 
 /// `v` wrapped to `width` bytes and sign-extended (reference 3.1).
 int64_t wrapTo(int64_t v, int width) {

@@ -6,6 +6,7 @@
 // with k inputs pops k - 1 of them and leaves W1 in ST0. The RST family (PARI, SFT, DCNV, DCNVB,
 // COD, CODB, XMOVB, DSCHB) keeps W1 in its edge slot: ACT = 1 sets it to this execution's error,
 // ACT = 0 keeps it, RST = 1 clears it (after the execution).
+#include "interp/InterpFanucCommon.h"
 #include "interp/InterpreterInternal.h"
 
 #include <algorithm>
@@ -14,26 +15,10 @@ namespace lj::interp {
 
 namespace {
 
-/// The top `k` ST entries, ST0 first; pops all but one (which W1 then replaces).
-struct Inputs {
-  bool v[4] = {};
-};
-Inputs take(const BlockCall &b, int k) {
-  Inputs in;
-  for (int j = 0; j < k; ++j) in.v[j] = b.f.st[b.f.sp - 1 - j] != 0;
-  b.f.sp -= k - 1;
-  return in;
-}
-
-/// W1 of the RST family (file comment), stored and left in ST0.
-void w1(const BlockCall &b, bool act, bool rst, bool err) {
-  uint8_t &held = b.s->edge[b.info.slot];
-  if (act) held = err;
-  if (rst) held = 0;
-  b.f.setTop(held != 0);
-}
-
-unsigned char *at(const BlockCall &b, uint32_t off) { return bytes(b.s) + off; }
+using fanuc::at;
+using fanuc::Inputs;
+using fanuc::take;
+using fanuc::w1;
 
 /// `width` bytes at `off`, little-endian, sign-extended (reference 3.1).
 int32_t readLe(const BlockCall &b, uint32_t off, int width) {

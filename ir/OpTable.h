@@ -205,9 +205,9 @@ enum class Op : uint8_t {
   CommonBegin,     ///< COM: the coils up to COME are written 0 while ACT = 0
   CommonCoil,      ///< WRT/WRT.NOT/SET/RST between COM and COME
   // ---- fanuc-c: FANUC PMC arithmetic (docs/fanuc-pmc.md "Arithmetic"; ir/PmcArith.h) ----
-  BinaryArith, ///< ADDB..DIVB: signed 1/2/4-byte arithmetic, R9000 flags, W1 = error
-  BcdArith,    ///< ADD..DIV: 2- or 4-digit BCD arithmetic (BYT at run time), W1 = error
-  BcdConstant, ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
+  BinaryArith,     ///< ADDB..DIVB: signed 1/2/4-byte arithmetic, R9000 flags, W1 = error
+  BcdArith,        ///< ADD..DIV: 2- or 4-digit BCD arithmetic (BYT at run time), W1 = error
+  BcdConstant,     ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
   BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
   BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
   Count_

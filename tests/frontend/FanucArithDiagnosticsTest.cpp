@@ -1,6 +1,6 @@
 // Located diagnostics of the FANUC arithmetic and constant instructions (frontends/fanuc/
 // ArithFunctional.cpp; docs/fanuc-pmc.md "Rules"): one test per rule.
-#include "frontends/fanuc/FrontEnd.h"
+#include "tests/frontend/FanucDiags.h"
 
 #include <gtest/gtest.h>
 
@@ -9,11 +9,7 @@
 namespace lj {
 namespace {
 
-std::string diags(const std::string &text) {
-  Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
-  return d.render();
-}
+std::string diags(const std::string &text) { return test::fanucDiags(text); }
 
 constexpr const char *kEnd = "END1\nEND2\nEND\n";
 constexpr const char *kTwo = "RD X0.0\nRD.STK X0.1\n";                // RST, ACT

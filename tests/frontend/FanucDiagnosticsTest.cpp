@@ -1,5 +1,5 @@
 // The FANUC front end's located diagnostics: one test per rule (docs/fanuc-pmc.md "Rules").
-#include "frontends/fanuc/FrontEnd.h"
+#include "tests/frontend/FanucDiags.h"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +8,7 @@
 namespace lj {
 namespace {
 
-std::string diags(const std::string &text) {
-  Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
-  return d.render();
-}
+std::string diags(const std::string &text) { return test::fanucDiags(text); }
 
 constexpr const char *kEnd = "END1\nEND2\nEND\n";
 
