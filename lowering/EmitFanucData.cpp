@@ -393,8 +393,8 @@ void FunctionEmitter::emitFdBcdIndexed(const Stmt &s, int32_t slot) {
       b_.CreateICmpSGT(b_.CreateMul(b_.CreateAdd(index, b_.getInt64(1)), width),
                        b_.getInt64(static_cast<uint64_t>(roomAfter(tp(), s.ops[1])))));
   llvm::Value *en = b_.CreateAnd(act, notV(err));
-  llvm::BasicBlock *body = newBlock("xmov"), *high = newBlock("xmov.high"),
-                   *join = newBlock("xmov.end");
+  llvm::BasicBlock *body = newBlock("xmov"), *low = newBlock("xmov.low"),
+                   *high = newBlock("xmov.high"), *join = newBlock("xmov.end");
   cache_.flush();
   b_.CreateCondBr(en, body, join);
   b_.SetInsertPoint(body);
@@ -402,13 +402,19 @@ void FunctionEmitter::emitFdBcdIndexed(const Stmt &s, int32_t slot) {
   llvm::Value *d = fdAddr(s.ops[2], b_.getInt64(0));
   // RW = 1 writes the data into the table, RW = 0 reads the table into the data.
   llvm::Value *from = b_.CreateSelect(rw, d, t), *to = b_.CreateSelect(rw, t, d);
+  // Both bytes are read before either is written, as the interpreter does: the table item and
+  // the data may overlap (e.g. table R1, data R2).
   llvm::Type *i8 = b_.getInt8Ty();
-  b_.CreateAlignedStore(b_.CreateAlignedLoad(i8, from, llvm::Align(1)), to, llvm::Align(1));
-  b_.CreateCondBr(byt, high, join);
+  llvm::Value *b0 = b_.CreateAlignedLoad(i8, from, llvm::Align(1));
+  b_.CreateCondBr(byt, high, low);
+  b_.SetInsertPoint(low);
+  b_.CreateAlignedStore(b0, to, llvm::Align(1));
+  b_.CreateBr(join);
   b_.SetInsertPoint(high);
-  b_.CreateAlignedStore(
-      b_.CreateAlignedLoad(i8, b_.CreateConstInBoundsGEP1_64(i8, from, 1), llvm::Align(1)),
-      b_.CreateConstInBoundsGEP1_64(i8, to, 1), llvm::Align(1));
+  llvm::Value *b1 =
+      b_.CreateAlignedLoad(i8, b_.CreateConstInBoundsGEP1_64(i8, from, 1), llvm::Align(1));
+  b_.CreateAlignedStore(b0, to, llvm::Align(1));
+  b_.CreateAlignedStore(b1, b_.CreateConstInBoundsGEP1_64(i8, to, 1), llvm::Align(1));
   b_.CreateBr(join);
   b_.SetInsertPoint(join);
   fdW1(slot, act, in[1], err);

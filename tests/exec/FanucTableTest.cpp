@@ -55,6 +55,28 @@ TEST_P(FanucTable, XmovReadsTwoDigitIndex) {
   EXPECT_EQ(byte(*m, "R100"), 0x10);
 }
 
+// 6.5 XMOV moves one item: with BYT = 1 the 2-byte item table[index] is copied as one value, so a
+// table (R1) that overlaps the data (R2) still gives data = the item read before the move: R1 = 2,
+// R2 = 0 -> R2 = 2, R3 = 0 (read, RW = 0); R2 = 5, R3 = 7 -> R1 = 5, R2 = 7 (write, RW = 1). Found
+// by the 100k FANUC fuzz (the JIT copied byte by byte).
+TEST_P(FanucTable, XmovOverlappingTableAndData) {
+  auto m = pmc("RD X0.3\nRD.STK X0.1\nRD.STK X0.2\nRD.STK X0.0\n"
+               "XMOV 12 R1 R2 R8\nEND1\nEND2\nEND\n");
+  ASSERT_TRUE(m);
+  set(*m, "X0.3", 1); // BYT = 1
+  set(*m, "X0.0", 1); // ACT
+  set(*m, "R1", 2);
+  m->tick();
+  EXPECT_EQ(byte(*m, "R2"), 2);
+  EXPECT_EQ(byte(*m, "R3"), 0);
+  set(*m, "X0.1", 1); // RW = 1: data R2..R3 into table[0] = R1..R2
+  set(*m, "R2", 5);
+  set(*m, "R3", 7);
+  m->tick();
+  EXPECT_EQ(byte(*m, "R1"), 5);
+  EXPECT_EQ(byte(*m, "R2"), 7);
+}
+
 // 6.5 XMOV, BYT = 1 (4-digit BCD, 2-byte items, index in 2 bytes): item k is D150 + 2k, D151 + 2k.
 // RW = 1 writes the data into the table [L2481-L2485].
 TEST_P(FanucTable, XmovWritesFourDigitItems) {
