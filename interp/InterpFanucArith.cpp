@@ -17,6 +17,7 @@ namespace lj::interp {
 namespace {
 
 using fanuc::at;
+using fanuc::fromBcd;
 using fanuc::Inputs;
 using fanuc::take;
 using fanuc::w1;
@@ -70,16 +71,11 @@ void binaryArith(const BlockCall &b) {
   w1(b, in.v[0], in.v[1], err);
 }
 
-/// The value of `bytes` (1, 2) bytes of BCD at `off`; false on a digit above 9.
+/// The value of `n` (1, 2) bytes of BCD at `off`, little-endian; false on a digit above 9.
 bool bcdAt(const BlockCall &b, uint32_t off, int n, int64_t &v) {
-  v = 0;
-  for (int k = n - 1; k >= 0; --k) {
-    const unsigned byte = at(b, off)[k];
-    const unsigned hi = byte >> 4, lo = byte & 0xF;
-    if (hi > 9 || lo > 9) return false;
-    v = v * 100 + hi * 10 + lo;
-  }
-  return true;
+  uint32_t raw = 0;
+  for (int k = 0; k < n; ++k) raw |= static_cast<uint32_t>(at(b, off)[k]) << (8 * k);
+  return fromBcd(raw, 2 * n, v);
 }
 
 void bcdArith(const BlockCall &b) {

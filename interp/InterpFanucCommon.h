@@ -35,4 +35,15 @@ inline void w1(const BlockCall &b, bool act, bool rst, bool err) {
 /// The state's byte at offset `off` of its profile-laid memory.
 inline unsigned char *at(const BlockCall &b, uint32_t off) { return bytes(b.s) + off; }
 
+/// Binary value of `digits` BCD digits in `raw`; false on a digit above 9.
+inline bool fromBcd(uint32_t raw, int digits, int64_t &out) {
+  out = 0;
+  for (int k = digits - 1; k >= 0; --k) {
+    const uint32_t d = (raw >> (4 * k)) & 0xF;
+    if (d > 9) return false;
+    out = out * 10 + d;
+  }
+  return true;
+}
+
 } // namespace lj::interp::fanuc

@@ -16,6 +16,7 @@ namespace lj::interp {
 namespace {
 
 using fanuc::at;
+using fanuc::fromBcd;
 using fanuc::Inputs;
 using fanuc::take;
 using fanuc::w1;
@@ -41,16 +42,6 @@ int64_t roomAfter(const BlockCall &b, const Operand &o) {
   return end - o.index;
 }
 
-/// Binary value of `digits` BCD digits in `raw`; false on a digit above 9.
-bool fromBcd(uint32_t raw, int digits, int64_t &out) {
-  out = 0;
-  for (int k = digits - 1; k >= 0; --k) {
-    const uint32_t d = (raw >> (4 * k)) & 0xF;
-    if (d > 9) return false;
-    out = out * 10 + d;
-  }
-  return true;
-}
 /// `v` (0 <= v < 10^digits) as BCD digits.
 uint32_t toBcd(int64_t v, int digits) {
   uint32_t r = 0;
