@@ -5,14 +5,15 @@
 // extremes of each width (overflow), BCD bytes with a nibble above 9 and constants too long for
 // two digits. A NUME before a BCD instruction often gives it valid BCD operands.
 #include "gen/FanucArith.h"
+#include "gen/FanucRung.h"
 
 namespace lj::gen {
 
 namespace {
 
-class ArithRung {
+class ArithRung : FanucRungBase {
 public:
-  ArithRung(Rng &r, std::vector<std::string> &out) : r_(r), out_(out) {}
+  ArithRung(Rng &r, std::vector<std::string> &out) : FanucRungBase(r, out) {}
 
   void run() {
     switch (pick(0, 5)) {
@@ -46,27 +47,6 @@ public:
   }
 
 private:
-  int64_t pick(int64_t lo, int64_t hi) { return r_.range(lo, hi); }
-  void line(std::string s) { out_.push_back(std::move(s)); }
-  int width() {
-    static constexpr int kW[] = {1, 2, 4};
-    return kW[pick(0, 2)];
-  }
-  std::string readBit() {
-    switch (pick(0, 4)) {
-    case 0:
-    case 1:
-      return "X" + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
-    case 2:
-      return "R9091." + std::to_string(pick(0, 1));
-    default:
-      return writeBit();
-    }
-  }
-  std::string writeBit() {
-    return std::string(r_.chance(60) ? "R" : "D") + std::to_string(pick(0, 7)) + "." +
-           std::to_string(pick(0, 7));
-  }
   /// A byte address of the pools leaving room for `span` bytes (X too when read-only; the
   /// flags and remainder bytes R9000..R9005 sometimes).
   std::string data(int span, bool writable) {
@@ -143,9 +123,6 @@ private:
     line(std::string(names[k]) + " " + (addr ? "1" : "0") + " " + data(2, false) + " " + b + " " +
          data(2, true));
   }
-
-  Rng &r_;
-  std::vector<std::string> &out_;
 };
 
 } // namespace

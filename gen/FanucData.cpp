@@ -4,14 +4,15 @@
 // other instructions' bytes, with table heads near the end of R as well (the range checks of XMOVB
 // and DSCHB).
 #include "gen/FanucData.h"
+#include "gen/FanucRung.h"
 
 namespace lj::gen {
 
 namespace {
 
-class DataRung {
+class DataRung : FanucRungBase {
 public:
-  DataRung(Rng &r, std::vector<std::string> &out) : r_(r), out_(out) {}
+  DataRung(Rng &r, std::vector<std::string> &out) : FanucRungBase(r, out) {}
 
   void run() {
     switch (pick(0, 15)) {
@@ -94,27 +95,6 @@ public:
   }
 
 private:
-  int64_t pick(int64_t lo, int64_t hi) { return r_.range(lo, hi); }
-  void line(std::string s) { out_.push_back(std::move(s)); }
-  int width() {
-    static constexpr int kW[] = {1, 2, 4};
-    return kW[pick(0, 2)];
-  }
-  std::string readBit() {
-    switch (pick(0, 4)) {
-    case 0:
-    case 1:
-      return "X" + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
-    case 2:
-      return "R9091." + std::to_string(pick(0, 1));
-    default:
-      return writeBit();
-    }
-  }
-  std::string writeBit() {
-    return std::string(r_.chance(60) ? "R" : "D") + std::to_string(pick(0, 7)) + "." +
-           std::to_string(pick(0, 7));
-  }
   /// A byte address of the pools leaving room for `span` bytes (X too when read-only).
   std::string data(int span, bool writable) {
     if (!writable && r_.chance(20)) return "X" + std::to_string(pick(0, 4 - std::min(span, 4)));
@@ -191,9 +171,6 @@ private:
     }
     line(com ? "COME" : "JMPE");
   }
-
-  Rng &r_;
-  std::vector<std::string> &out_;
 };
 
 } // namespace
