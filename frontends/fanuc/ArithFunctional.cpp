@@ -15,25 +15,6 @@ namespace lj::fanuc::detail {
 
 namespace {
 
-Operand konst(int64_t v, SourceLoc at) {
-  Operand o;
-  o.kind = Operand::Kind::Const;
-  o.value = static_cast<int32_t>(v);
-  o.loc = at;
-  return o;
-}
-
-/// Byte `index` of R read as `width` bytes: the R9000 flags and the R9002 remainder.
-Operand relay(int32_t index, int width, SourceLoc at) {
-  Operand o;
-  o.kind = Operand::Kind::Reg;
-  o.area = Area::Relay;
-  o.index = index;
-  o.width = static_cast<uint8_t>(width);
-  o.loc = at;
-  return o;
-}
-
 /// 0..9999 as its 4-digit BCD bit pattern (reference 3.2).
 int32_t toBcd(int64_t v) {
   int32_t r = 0;
@@ -114,8 +95,8 @@ bool binary(Emitter &e, const Spec &sp, const Functional &f, SourceLoc at) {
   if (!e.dataOperand(p[2], w, !isAddr, false, b) || !e.dataOperand(p[3], w, false, true, c))
     return false;
   e.emit(Op::BinaryArith, at,
-         {konst(sp.op, p[0].loc), a, b, c, relay(pmc::kFlagsRelay, 1, at),
-          relay(pmc::kRemainderRelay, w, at)});
+         {konst(sp.op, p[0].loc), a, b, c, implied(Area::Relay, pmc::kFlagsRelay, 1, at),
+          implied(Area::Relay, pmc::kRemainderRelay, w, at)});
   return true;
 }
 

@@ -10,14 +10,6 @@ namespace lj::fanuc::detail {
 
 namespace {
 
-Operand konst(int64_t v, SourceLoc at = {}) {
-  Operand o;
-  o.kind = Operand::Kind::Const;
-  o.value = static_cast<int32_t>(v);
-  o.loc = at;
-  return o;
-}
-
 /// A `0nnd` format (XMOVB, DECB): d = 1/2/4 bytes, nn = 0..99.
 bool formatNnd(Emitter &e, const Token &t, int &nn, int &d) {
   int64_t v;

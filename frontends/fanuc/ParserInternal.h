@@ -104,4 +104,25 @@ bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at);
 /// `s` in upper case.
 std::string upper(std::string_view s);
 
+/// A constant operand `v` located at `at`.
+inline Operand konst(int64_t v, SourceLoc at = {}) {
+  Operand o;
+  o.kind = Operand::Kind::Const;
+  o.value = static_cast<int32_t>(v);
+  o.loc = at;
+  return o;
+}
+
+/// Byte `index` of `area` read as `width` bytes (the T / C / R9000 / R9002 operands an
+/// instruction implies), located at `at`.
+inline Operand implied(Area area, int32_t index, int width, SourceLoc at) {
+  Operand o;
+  o.kind = Operand::Kind::Reg;
+  o.area = area;
+  o.index = index;
+  o.width = static_cast<uint8_t>(width);
+  o.loc = at;
+  return o;
+}
+
 } // namespace lj::fanuc::detail

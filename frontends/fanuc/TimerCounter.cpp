@@ -8,26 +8,6 @@ namespace lj::fanuc::detail {
 
 namespace {
 
-Operand konst(int64_t v, SourceLoc at) {
-  Operand o;
-  o.kind = Operand::Kind::Const;
-  o.value = static_cast<int32_t>(v);
-  o.loc = at;
-  return o;
-}
-
-/// Byte `index` of `area` read as `width` bytes (the T / C / R9000 operands the instruction
-/// implies), located at `at`.
-Operand implied(Area area, int32_t index, int width, SourceLoc at) {
-  Operand o;
-  o.kind = Operand::Kind::Reg;
-  o.area = area;
-  o.index = index;
-  o.width = static_cast<uint8_t>(width);
-  o.loc = at;
-  return o;
-}
-
 /// Resource counts of the 0i-D PMC (reference 7 "Resource counts", 6.3, 6.4).
 constexpr int64_t kTmrTimers = 250, kCtrCounters = 100, kCtrbCounters = 100;
 
