@@ -104,7 +104,7 @@ void checkCallGraph(Context &cx) {
     bool primary = cx.prog.subByNumber[static_cast<size_t>(sub.number)] == static_cast<int32_t>(s);
     if (!reached[s] && primary)
       cx.warning(cx.stmt(sub.spIndex).loc,
-                 "subroutine S" + std::to_string(sub.number) + " is never called");
+                 "subroutine " + subName(cx, static_cast<int32_t>(s)) + " is never called");
   }
 }
 

@@ -96,7 +96,9 @@ private:
     int32_t n = s.ops[0].index;
     int16_t sub = cx_.prog.subByNumber[static_cast<size_t>(n)];
     if (sub < 0) {
-      cx_.error(s.ops[0].loc, "undefined subroutine S" + std::to_string(n));
+      cx_.error(s.ops[0].loc, "undefined subroutine " +
+                                  std::string(cx_.tp.area(Area::Subroutine).name) +
+                                  std::to_string(n));
       return;
     }
     cx_.info(i).target = sub;

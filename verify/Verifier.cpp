@@ -102,7 +102,7 @@ void openSub(Context &cx, int32_t sp) {
   int16_t &slot = cx.prog.subByNumber[static_cast<size_t>(number)];
   if (slot >= 0) {
     const Subroutine &prev = cx.prog.subs[static_cast<size_t>(slot)];
-    cx.error(s.ops[0].loc, "duplicate subroutine S" + std::to_string(number) + " (first on " +
+    cx.error(s.ops[0].loc, "duplicate subroutine " + subText(cx, number) + " (first on " +
                                lineOf(cx.stmt(prev.spIndex)) + ")");
   } else {
     slot = static_cast<int16_t>(idx);

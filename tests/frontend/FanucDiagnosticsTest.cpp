@@ -135,9 +135,9 @@ TEST(FanucDiagnostics, SelectCallRules) {
   EXPECT_EQ(diags("END1\nRD X0.0\nCS\nCE\nEND2\n" + subs),
             "t.pmc:3:1: error: CS takes 1 parameters (index address), got 0\n");
   EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCM P2\nCE\nEND2\n" + subs),
-            // the verifier's rule for CALL, in its dialect-neutral spelling (S = P)
-            "t.pmc:4:4: error: undefined subroutine S2\n"
-            "t.pmc:7:1: warning: subroutine S1 is never called\n");
+            // the verifier's rule for CALL, in the dialect's spelling
+            "t.pmc:4:4: error: undefined subroutine P2\n"
+            "t.pmc:7:1: warning: subroutine P1 is never called\n");
 }
 
 } // namespace
