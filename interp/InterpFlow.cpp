@@ -16,7 +16,11 @@ uint32_t Interpreter::Impl::runPart(lj_state *s, StmtRange range, int32_t startD
   // A part (or a PLC2 slice) starts with empty MS; a slice starts with the dead entries the
   // previous slice left, as zeros (dialect-notes "PLC2 slicing").
   for (int32_t i = 0; i < startDepth; ++i) f.push(false);
-  return run(s, f, range.begin, range.end) == Flow::Watchdog ? LJ_FAULT_WATCHDOG : LJ_FAULT_NONE;
+  // A JumpOut never leaves a part: the verifier puts its label in the slice of every CALL that
+  // can take it.
+  Flow r = run(s, f, range.begin, range.end);
+  assert(r != Flow::JumpOut && "a JumpOut left a part");
+  return r == Flow::Watchdog ? LJ_FAULT_WATCHDOG : LJ_FAULT_NONE;
 }
 
 Flow Interpreter::Impl::call(lj_state *s, int32_t sub) {
@@ -24,7 +28,7 @@ Flow Interpreter::Impl::call(lj_state *s, int32_t sub) {
   Frame f = frame(1 + static_cast<size_t>(sub));
   const StmtRange body = prog.subs[sub].body;
   Flow r = run(s, f, body.begin, body.end);
-  return r == Flow::Watchdog ? Flow::Watchdog : Flow::Done;
+  return r == Flow::Watchdog || r == Flow::JumpOut ? r : Flow::Done;
 }
 
 template <bool kTrace>
@@ -165,7 +169,25 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
       }
       break;
     case Op::Call:
-      if (f.input() && call(s, c.target) == Flow::Watchdog) return Flow::Watchdog;
+      if (f.input()) {
+        Flow r = call(s, c.target);
+        if (r == Flow::Watchdog) return r;
+        if (r == Flow::JumpOut) {
+          // The callee left for a label: go on there when it is in this run (the sliced part's
+          // slice holding this CALL), else leave this run too (docs/fanuc-pmc.md "JMPC").
+          const int32_t to = jumpOutLabel;
+          if (to < begin || to >= end) return r;
+          if (to < pc && ++s->steps > s->max_backward_steps) return Flow::Watchdog;
+          pc = to; // the LBL runs next and empties the stacks
+          continue;
+        }
+      }
+      break;
+    case Op::JumpOut:
+      if (f.input()) {
+        jumpOutLabel = c.target;
+        return Flow::JumpOut;
+      }
       break;
     case Op::Return:
       if (f.input()) return Flow::Return;

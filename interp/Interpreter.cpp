@@ -73,6 +73,8 @@ Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces, i
     assert(slotInRange(*p.profile, instrInfo(c.op).state, c.slot) && "state slot out of range");
     assert((c.op != Op::Jump && c.op != Op::LoopBegin) ||
            (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
+    assert(c.op != Op::JumpOut ||
+           (c.target >= 0 && static_cast<size_t>(c.target) < p.stmts.size()));
     assert(c.op != Op::Call || (c.target >= 0 && static_cast<size_t>(c.target) < p.subs.size()));
   }
   edgeUpdates = p.profile->edgePolicy == EdgePolicy::PerInstance;

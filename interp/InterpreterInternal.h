@@ -222,7 +222,9 @@ bool runFanucArith(const BlockCall &b);
 namespace lj::interp {
 
 /// How a statement range ended.
-enum class Flow { Done, Return, Watchdog };
+/// How a run of statements ended. JumpOut: a subroutine took a JumpOut (FANUC JMPC); the run
+/// that holds Impl::jumpOutLabel goes on there, every other run returns JumpOut too.
+enum class Flow { Done, Return, Watchdog, JumpOut };
 
 /// Edge contact on memory m (DIALECT.md 3): updates m when it is the instance's own
 /// (EdgePolicy::PerInstance); an object's previous-scan image (PerObject) is only read here.
@@ -243,6 +245,8 @@ struct Interpreter::Impl {
   std::vector<std::array<interp::Ref, kMaxOperands>> wide;
   /// The last executed instruction that had no semantics (Op::Count_: none so far).
   Op unimplemented = Op::Count_;
+  /// The label (statement index in the sliced part) of the JumpOut being taken (Flow::JumpOut).
+  int32_t jumpOutLabel = -1;
   // Stacks: [0] is shared by the main parts, [1 + i] belongs to subroutine i.
   std::vector<std::vector<uint8_t>> stStore, msStore;
   /// EdgePolicy::PerInstance: edge contacts update their memory.

@@ -562,6 +562,10 @@ constexpr InstrInfo kTable[] = {
          konst("capacity", 1, 9999), reg("table head", kSrcAreas, false),
          spanning(reg("search data", kSrcAreas, false), 2),
          spanning(reg("result", kDstAreas, true), 2)),
+    // ---- FANUC PMC flow ----
+    ROW(JumpOut, Core, Block, Required, 1, None, None, 1, label(), none(), none(), none(),
+        "when ST0 = 1: leave this subroutine and every caller up to the sliced part, and go on "
+        "there at the label"),
 };
 
 #undef ROW

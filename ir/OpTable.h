@@ -210,6 +210,8 @@ enum class Op : uint8_t {
   BcdConstant,     ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
   BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
   BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
+  // ---- FANUC PMC flow (docs/fanuc-pmc.md "Jumps out of a subroutine") ----
+  JumpOut, ///< JMPC: leave the subroutine and its callers, go on at a label of the sliced part
   Count_
 };
 

@@ -7,8 +7,10 @@
 
 #include "frontends/hnc8/Symbols.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -125,7 +127,8 @@ struct StmtInfo {
   int32_t depth = 0;     ///< ST depth before the statement (statically known)
   int32_t msDepth = 0;   ///< MS depth before the statement
   int32_t target = -1;   ///< JMP: index of its LBL; LOOP: index of its NEXT; NEXT: its LOOP;
-                         ///< CALL: index into VerifiedProgram::subs
+                         ///< CALL: index into VerifiedProgram::subs; JumpOut: index of its
+                         ///< LBL in the sliced part
   int32_t slot = -1;     ///< edge slot (LDP..ORF, CTR, EVENT, SAVEDATA), timer/counter slot
                          ///< (lj_tc_slot), PLS/PLF/ALT number, or first inst_word (Words)
   bool hasInput = false; ///< a block reads ST0 (false: ST empty, input is 1)
@@ -172,6 +175,20 @@ struct VerifiedProgram {
   /// Every statement in exactly one rung, in order (Rungs.cpp). A slice boundary is always a
   /// rung boundary.
   std::vector<RungRange> rungs;
+  /// Where a CALL of the sliced part goes on when its callee (or a subroutine that callee
+  /// calls) takes a JumpOut (FANUC JMPC): (CALL index, LBL index) pairs sorted by CALL index,
+  /// one per label the call can reach. The slice planner and the chunker keep each pair in one
+  /// piece, like a JMP and its LBL.
+  std::vector<std::pair<int32_t, int32_t>> callExits;
 };
+
+/// The (CALL, LBL) pairs of `p.callExits` for the CALL at statement `call` (none: empty).
+inline std::span<const std::pair<int32_t, int32_t>> exitsOfCall(const VerifiedProgram &p,
+                                                                int32_t call) {
+  auto lo = std::lower_bound(p.callExits.begin(), p.callExits.end(), std::make_pair(call, -1));
+  auto hi = lo;
+  while (hi != p.callExits.end() && hi->first == call) ++hi;
+  return {lo, hi};
+}
 
 } // namespace lj

@@ -170,7 +170,15 @@ std::vector<ChunkPlan> planChunkFunctions(const VerifiedProgram &p, StmtRange r,
       pairs.emplace_back(i, info.target);
       labels.push_back(info.target);
     }
+    if (s.op == Op::Call) // a CALL goes on at a label too when its callee takes a JumpOut
+      for (const auto &[call, lbl] : exitsOfCall(p, i))
+        if (lbl >= r.begin && lbl < r.end) {
+          pairs.emplace_back(i, lbl);
+          labels.push_back(lbl);
+        }
   }
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
   const size_t m = pos.size();
   auto at = [&](int32_t stmt) {
     return static_cast<size_t>(std::lower_bound(pos.begin(), pos.end(), stmt) - pos.begin());

@@ -119,6 +119,8 @@ llvm::Error FunctionEmitter::emitStmtBody(int32_t i) {
     return emitNext(i);
   case Op::Call:
     return emitCall(i);
+  case Op::JumpOut:
+    return emitJumpOut(i);
   case Op::Return:
     emitRetn();
     return llvm::Error::success();
@@ -169,21 +171,23 @@ void FunctionEmitter::watchdogStep(llvm::BasicBlock *next) {
   b_.CreateCondBr(b_.CreateICmpUGT(steps, max), abort_, next);
 }
 
+llvm::BasicBlock *FunctionEmitter::jumpTarget(int32_t lbl) {
+  if (lbl >= range_.begin && lbl < range_.end) return labelBlock(lbl);
+  // The label starts another chunk of this body: its dispatcher goes on there.
+  if (!carry_.labelChunk || !carry_.labelChunk->count(lbl)) return nullptr;
+  llvm::BasicBlock *bb = newBlock("jump.chunk");
+  llvm::IRBuilder<> jb(bb);
+  jb.CreateRet(jb.getInt32(kStatusJump + carry_.labelChunk->at(lbl)));
+  return bb;
+}
+
 llvm::Error FunctionEmitter::emitJmp(int32_t i) {
   const StmtInfo &info = prog_.info[i];
   if (info.target < 0 || prog_.stmts[info.target].op != Op::Label)
     return fail(i, "jump target is not a Label");
   llvm::Value *en = enable(); // ST is left as it is
-  llvm::BasicBlock *target = nullptr;
-  if (info.target >= range_.begin && info.target < range_.end) {
-    target = labelBlock(info.target);
-  } else { // the label starts another chunk of this body: its dispatcher goes on there
-    if (!carry_.labelChunk || !carry_.labelChunk->count(info.target))
-      return fail(i, "jump target outside the lowered body");
-    target = newBlock("jump.chunk");
-    llvm::IRBuilder<> jb(target);
-    jb.CreateRet(jb.getInt32(kStatusJump + carry_.labelChunk->at(info.target)));
-  }
+  llvm::BasicBlock *target = jumpTarget(info.target);
+  if (!target) return fail(i, "jump target outside the lowered body");
   llvm::BasicBlock *cont = newBlock("nojump");
   cache_.flush();
   if (info.backward) {
@@ -301,7 +305,43 @@ llvm::Error FunctionEmitter::emitCall(int32_t i) {
   llvm::BasicBlock *propagate = newBlock("call.fault");
   b_.CreateCondBr(b_.CreateICmpNE(status, b_.getInt32(LJ_FAULT_NONE)), propagate, cont);
   b_.SetInsertPoint(propagate);
+  // A JumpOut the callee took goes on at its label when this CALL is one it can reach (the
+  // sliced part, VerifiedProgram::callExits); anything else (a watchdog abort, a JumpOut for the
+  // caller's caller) leaves this function with the same status.
+  std::span<const std::pair<int32_t, int32_t>> exits = exitsOfCall(prog_, i);
+  if (!exits.empty()) {
+    llvm::BasicBlock *up = newBlock("call.up");
+    llvm::SwitchInst *sw = b_.CreateSwitch(status, up, static_cast<unsigned>(exits.size()));
+    for (const auto &[call, lbl] : exits) {
+      llvm::BasicBlock *target = jumpTarget(lbl);
+      if (!target) return fail(i, "the label of a JumpOut is outside the lowered body");
+      llvm::BasicBlock *go = newBlock("call.jumpout");
+      sw->addCase(
+          b_.getInt32(kStatusJumpOut + static_cast<uint32_t>(prog_.stmts[lbl].ops[0].index)), go);
+      b_.SetInsertPoint(go);
+      if (lbl < i) // a backward jump counts one watchdog step, as a JMP does
+        watchdogStep(target);
+      else
+        b_.CreateBr(target);
+    }
+    b_.SetInsertPoint(up);
+  }
   b_.CreateRet(status); // a watchdog abort stops the whole tick
+  b_.SetInsertPoint(cont);
+  return llvm::Error::success();
+}
+
+llvm::Error FunctionEmitter::emitJumpOut(int32_t i) {
+  if (prog_.info[i].target < 0 || prog_.stmts[prog_.info[i].target].op != Op::Label)
+    return fail(i, "JumpOut target is not a Label");
+  llvm::Value *en = enable();
+  cache_.flush();
+  llvm::BasicBlock *out = newBlock("jumpout");
+  llvm::BasicBlock *cont = newBlock("nojumpout");
+  b_.CreateCondBr(en, out, cont);
+  b_.SetInsertPoint(out);
+  b_.CreateRet(b_.getInt32(kStatusJumpOut +
+                           static_cast<uint32_t>(prog_.stmts[prog_.info[i].target].ops[0].index)));
   b_.SetInsertPoint(cont);
   return llvm::Error::success();
 }

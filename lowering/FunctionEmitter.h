@@ -60,6 +60,10 @@ inline constexpr uint32_t kStatusReturn = 0x80000000u;
 /// Status kStatusJump + k: a chunk's JMP goes on at chunk k of the same body (never seen by the
 /// host either; chunk indices stay far below 2^30).
 inline constexpr uint32_t kStatusJump = 0x40000000u;
+/// Status kStatusJumpOut + n: a JumpOut (FANUC JMPC) to label n of the sliced part was taken; it
+/// passes up through every subroutine until the CALL in the sliced part that goes on at label n
+/// (never seen by the host: the verifier keeps that CALL and its label in one slice).
+inline constexpr uint32_t kStatusJumpOut = 0x20000000u;
 
 /// Emits statements into `fn`, whose state pointer is `state`. Usage: emitRange, then finish.
 class FunctionEmitter {
@@ -96,6 +100,11 @@ private:
   bool outlines(int32_t loopIndex) const;
   llvm::Error emitNext(int32_t i);
   llvm::Error emitCall(int32_t i);
+  /// A taken JumpOut returns kStatusJumpOut + its label's number.
+  llvm::Error emitJumpOut(int32_t i);
+  /// Where a jump to label statement `lbl` goes from here: the label's block in this body, or a
+  /// block returning kStatusJump + its chunk; null when neither (an internal error).
+  llvm::BasicBlock *jumpTarget(int32_t lbl);
   void emitRetn();
   /// `if (++steps > max_backward_steps) return LJ_FAULT_WATCHDOG;` then branch to `next`.
   void watchdogStep(llvm::BasicBlock *next);

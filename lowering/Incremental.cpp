@@ -69,6 +69,8 @@ std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
     // Where the target is, as the code sees it.
     if (in.target < 0) {
       put(s, 'n');
+    } else if (st.op == Op::JumpOut) {
+      put(s, 'o'); // returns its label's number (an operand above), wherever the label is
     } else if (in.target >= r.begin && in.target < r.end && st.op != Op::Call) {
       put(s, 'r');
       put(s, in.target - r.begin);
@@ -82,6 +84,21 @@ std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
       put(s, 'a'); // anything else: its absolute position (never reused after a shift)
       put(s, in.target);
     }
+    // A CALL that goes on at a JumpOut's label: each label's number and where it is.
+    if (st.op == Op::Call)
+      for (const auto &[call, lbl] : exitsOfCall(p, i)) {
+        put(s, p.stmts[lbl].ops[0].index);
+        if (lbl >= r.begin && lbl < r.end) {
+          put(s, 'r');
+          put(s, lbl - r.begin);
+        } else if (leaf.labelChunk && leaf.labelChunk->count(lbl)) {
+          put(s, 'j');
+          put(s, leaf.labelChunk->at(lbl));
+        } else {
+          put(s, 'a');
+          put(s, lbl);
+        }
+      }
     put(s, forced.empty() ? int8_t{-1} : forced[i]);
   }
   return s;

@@ -229,7 +229,7 @@ private:
       case StackRule::Block: {
         bool uncond = d == 0 || (i > unit_.body.begin && cx_.stmt(i - 1).op == Op::LoadTrue);
         block(i, ii, d);
-        if ((s.op == Op::Jump || s.op == Op::Return) && uncond) dead = true;
+        if ((s.op == Op::Jump || s.op == Op::JumpOut || s.op == Op::Return) && uncond) dead = true;
         break;
       }
       }

@@ -208,6 +208,7 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   verifier::checkNc(cx);
   verifier::checkCnc(cx);
   verifier::checkCallGraph(cx);
+  verifier::checkJumpOuts(cx);
   if (diags.errorCount() > errorsBefore) return std::nullopt;
   verifier::planRungs(cx);
   verifier::planSlices(cx);

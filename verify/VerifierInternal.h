@@ -64,6 +64,10 @@ void assignSlots(Context &cx);
 /// Recursion, call depth and never-called subroutines.
 void checkCallGraph(Context &cx);
 
+/// JumpOut targets (labels of the sliced part), and the labels each CALL there can go on at
+/// (VerifiedProgram::callExits, jumpSpans); after checkCallGraph (JumpOut.cpp).
+void checkJumpOuts(Context &cx);
+
 /// PLC2 slices per dialect-notes "PLC2 slicing" (SlicePlanner.cpp).
 void planSlices(Context &cx);
 

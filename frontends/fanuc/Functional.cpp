@@ -33,6 +33,7 @@ enum class Fn : uint8_t {
   Ge,
   Le,
   Jmpb,
+  Jmpc,
   Lbl,
   Call,
   Callu,
@@ -124,7 +125,7 @@ constexpr FnRow kRows[] = {
     {"COME", 29, Fn::Unsupported, 0},
     {"JMP", 10, Fn::Unsupported, 0},
     {"JMPE", 30, Fn::Unsupported, 0},
-    {"JMPC", 73, Fn::Unsupported, 0},
+    {"JMPC", 73, Fn::Jmpc, 0},
     {"ROT", 6, Fn::Unsupported, 0},
     {"ROTB", 26, Fn::Unsupported, 0},
     {"DISPB", 41, Fn::Unsupported, 0},
@@ -187,6 +188,7 @@ Shape shapeOf(Fn f) {
   case Fn::Not:
     return {3, "format, input address, output address"};
   case Fn::Jmpb:
+  case Fn::Jmpc:
   case Fn::Lbl:
     return {1, "label"};
   case Fn::Call:
@@ -480,6 +482,12 @@ void emitFunctional(Emitter &e, const Functional &f) {
   case Fn::Jmpb:
     if (!e.labelOperand(p[0], Area::Label, a)) return;
     e.emit(Op::Jump, at, {a});
+    return;
+  case Fn::Jmpc:
+    // From a subroutine to a level-2 label (reference 4.2 [EXT]); the verifier finds the
+    // label among level 2's and checks that JMPC stands in a subroutine.
+    if (!e.labelOperand(p[0], Area::Label, a)) return;
+    e.emit(Op::JumpOut, at, {a});
     return;
   case Fn::Lbl:
     if (!e.labelOperand(p[0], Area::Label, a)) return;

@@ -514,6 +514,8 @@ const char *spell(Op op) {
     return "END2";
   case Op::Jump:
     return "JMPB";
+  case Op::JumpOut:
+    return "JMPC";
   case Op::Label:
     return "LBL";
   case Op::Call:

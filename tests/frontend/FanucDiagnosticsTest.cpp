@@ -108,6 +108,34 @@ TEST(FanucDiagnostics, UnknownInstruction) {
   EXPECT_EQ(diags(std::string("LD X0.0\n") + kEnd), "t.pmc:1:1: error: unknown instruction 'LD'\n");
 }
 
+// JMPC (SUB 73): from a subroutine to a label of level 2 (docs/fanuc-pmc.md "JMPC").
+TEST(FanucDiagnostics, JmpcRules) {
+  const std::string call = "END1\nRD X0.0\nCALL P1\n";
+  EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nRD X0.1\nJMPC L1\nSPE\nEND\n"), "");
+  EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nRD X0.1\nSUB 73\n(PRM) L1\nSPE\nEND\n"), "");
+  EXPECT_EQ(diags("END1\nRD X0.0\nJMPC L1\nLBL L1\nEND2\nEND\n"),
+            "t.pmc:3:1: error: JMPC L1 outside a subroutine: it leaves a subroutine for a label "
+            "before END2\n");
+  EXPECT_EQ(diags("RD X0.0\nJMPC L1\nLBL L1\nEND1\nEND2\nEND\n"),
+            "t.pmc:2:1: error: JMPC L1 outside a subroutine: it leaves a subroutine for a label "
+            "before END2\n");
+  // The label must be level 2's: not missing, not level 1's, not the subroutine's own.
+  const char *missing = "error: missing label L5 before END2: JMPC L5 goes on at a label of the "
+                        "part that ends with END2\n";
+  EXPECT_EQ(diags(call + "END2\nSP P1\nRD X0.1\nJMPC L5\nSPE\nEND\n"),
+            std::string("t.pmc:7:6: ") + missing);
+  EXPECT_EQ(diags("LBL L5\nEND1\nRD X0.0\nCALL P1\nEND2\nSP P1\nRD X0.1\nJMPC L5\nSPE\nEND\n"),
+            std::string("t.pmc:8:6: ") + missing);
+  EXPECT_EQ(diags(call + "END2\nSP P1\nRD X0.1\nJMPC L5\nLBL L5\nSPE\nEND\n"),
+            std::string("t.pmc:7:6: ") + missing);
+  EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nJMPC L1\nSPE\nEND\n"),
+            "t.pmc:7:1: error: JMPC needs its ACT input in ST0 (an RD before it)\n");
+  EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nRD X0.1\nJMPC L1 L2\nSPE\nEND\n"),
+            "t.pmc:8:1: error: JMPC takes 1 parameters (label), got 2\n");
+  EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nRD X0.1\nJMPC P1\nSPE\nEND\n"),
+            "t.pmc:8:6: error: expected a label (L1), got 'P1'\n");
+}
+
 } // namespace
 } // namespace lj
 

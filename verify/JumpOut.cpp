@@ -1,0 +1,126 @@
+// Jumps out of a subroutine (Op::JumpOut, FANUC JMPC; docs/fanuc-pmc.md "JMPC"): each JumpOut
+// names a label of the sliced part (FANUC level 2), it stands only in a subroutine, and every
+// CALL of the sliced part whose callee can take one (itself or through the subroutines it calls)
+// gets that label as a second place to go on (VerifiedProgram::callExits). A CALL of another part
+// whose callee can leave that way is an error: its label is not in the caller's part.
+#include "verify/VerifierInternal.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace lj::verifier {
+
+namespace {
+
+std::string lineOf(const Stmt &s) { return "line " + std::to_string(s.loc.line); }
+
+} // namespace
+
+void checkJumpOuts(Context &cx) {
+  const size_t nsubs = cx.prog.subs.size();
+  const std::string lbl = cx.tp.area(Area::Label).name;
+  const std::string end2 = cx.spell(Op::EndSliced);
+
+  // Labels of the sliced part by number (duplicates are Scopes.cpp's error).
+  std::unordered_map<int32_t, int32_t> labels;
+  for (const Unit &u : cx.units) {
+    if (u.kind != Unit::Kind::Plc2) continue;
+    for (int32_t i = u.body.begin; i < u.body.end; ++i)
+      if (cx.stmt(i).op == Op::Label) labels.try_emplace(cx.stmt(i).ops[0].index, i);
+  }
+
+  // Each subroutine's own JumpOut targets (label statement indices).
+  std::vector<std::vector<int32_t>> exits(nsubs);
+  std::vector<int32_t> unitOfSub(nsubs, -1);
+  bool any = false;
+  for (size_t u = 0; u < cx.units.size(); ++u) {
+    const Unit &unit = cx.units[u];
+    if (unit.kind == Unit::Kind::Sub)
+      unitOfSub[static_cast<size_t>(unit.sub)] = static_cast<int32_t>(u);
+    for (int32_t i = unit.body.begin; i < unit.body.end; ++i) {
+      const Stmt &s = cx.stmt(i);
+      if (s.op != Op::JumpOut) continue;
+      const std::string what =
+          std::string(cx.spell(Op::JumpOut)) + " " + lbl + std::to_string(s.ops[0].index);
+      if (unit.kind != Unit::Kind::Sub) {
+        cx.error(s.loc, what +
+                            " outside a subroutine: it leaves a subroutine for a label "
+                            "before " +
+                            end2);
+        continue;
+      }
+      auto it = labels.find(s.ops[0].index);
+      if (it == labels.end()) {
+        cx.error(s.ops[0].loc, "missing label " + lbl + std::to_string(s.ops[0].index) +
+                                   " before " + end2 + ": " + what +
+                                   " goes on at a label of the part that ends with " + end2);
+        continue;
+      }
+      cx.info(i).target = it->second;
+      exits[static_cast<size_t>(unit.sub)].push_back(it->second);
+      any = true;
+    }
+  }
+  if (!any) return;
+
+  // Close over the call graph: a subroutine leaves for every label its callees leave for.
+  // Iterative, memoized; a cycle (recursion, reported by checkCallGraph) is cut where it closes.
+  enum : uint8_t { White, Gray, Black };
+  std::vector<uint8_t> color(nsubs, White);
+  std::vector<std::pair<int32_t, size_t>> stack;
+  for (size_t root = 0; root < nsubs; ++root) {
+    if (color[root] != White) continue;
+    color[root] = Gray;
+    stack.push_back({static_cast<int32_t>(root), 0});
+    while (!stack.empty()) {
+      auto &[sub, next] = stack.back();
+      const int32_t u = unitOfSub[static_cast<size_t>(sub)];
+      static const std::vector<CallSite> kNoCalls;
+      const std::vector<CallSite> &edges = u < 0 ? kNoCalls : cx.calls[static_cast<size_t>(u)];
+      if (next < edges.size()) {
+        const auto c = static_cast<size_t>(edges[next++].callee);
+        if (color[c] == White) {
+          color[c] = Gray;
+          stack.push_back({static_cast<int32_t>(c), 0});
+        }
+        continue;
+      }
+      std::vector<int32_t> &mine = exits[static_cast<size_t>(sub)];
+      for (const CallSite &e : edges) {
+        const std::vector<int32_t> &theirs = exits[static_cast<size_t>(e.callee)];
+        mine.insert(mine.end(), theirs.begin(), theirs.end());
+      }
+      std::sort(mine.begin(), mine.end());
+      mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+      color[static_cast<size_t>(sub)] = Black;
+      stack.pop_back();
+    }
+  }
+
+  // Every CALL of a main part whose callee can leave: in the sliced part a second target (and
+  // a span no slice boundary cuts), elsewhere an error.
+  for (size_t u = 0; u < cx.units.size(); ++u) {
+    const Unit &unit = cx.units[u];
+    if (unit.kind == Unit::Kind::Sub) continue;
+    for (const CallSite &e : cx.calls[u]) {
+      const std::vector<int32_t> &to = exits[static_cast<size_t>(e.callee)];
+      if (to.empty()) continue;
+      if (unit.kind != Unit::Kind::Plc2) {
+        cx.error(cx.stmt(e.stmt).loc, std::string(cx.spell(Op::Call)) +
+                                          " of a subroutine that can leave through " +
+                                          cx.spell(Op::JumpOut) + " for " + lbl +
+                                          std::to_string(cx.stmt(to.front()).ops[0].index) + " (" +
+                                          lineOf(cx.stmt(to.front())) + "), a label before " +
+                                          end2 + ": this call is not in that part");
+        continue;
+      }
+      for (int32_t l : to) {
+        cx.prog.callExits.emplace_back(e.stmt, l);
+        cx.jumpSpans.emplace_back(std::min(l, e.stmt), std::max(l, e.stmt));
+      }
+    }
+  }
+  std::sort(cx.prog.callExits.begin(), cx.prog.callExits.end());
+}
+
+} // namespace lj::verifier
