@@ -1,6 +1,7 @@
 // PLC2 slice planning per dialect-notes "PLC2 slicing": rung boundaries with ST liveness, no
 // boundary inside loop bodies or between a JMP and its label, nvalue 0 and empty PLC2.
 #include "FrontEndTestUtil.h"
+#include "frontends/fanuc/FrontEnd.h"
 
 #include <gtest/gtest.h>
 
@@ -126,6 +127,38 @@ TEST(SlicePlanner, SubroutinesNotCounted) {
   EXPECT_EQ(c.prog->slices[0].end, 3);
   EXPECT_EQ(c.prog->slices[1].begin, 3);
   EXPECT_EQ(c.prog->slices[1].end, 5);
+}
+
+// FANUC JMPC (docs/fanuc-pmc.md "JMPC"): a CALL whose subroutine can leave for a level-2 label
+// and that label are one span, like a JMP and its LBL: with nvalue 1 every other rung start is
+// a boundary, none in (CALL, LBL]. Level 2 starts at statement 1 (after END1).
+Slices pmcSlices(const std::string &level2, const std::string &sub) {
+  VerifyOptions o;
+  o.plc2Nvalue = 1;
+  Diagnostics d("t.pmc");
+  auto p = fanuc::compilePmc("END1\n" + level2 + "END2\nSP P1\n" + sub + "SPE\nEND\n", "t.pmc", o,
+                             d, nullptr);
+  EXPECT_TRUE(p.has_value()) << d.render();
+  Slices out;
+  if (!p) return out;
+  EXPECT_EQ(p->plc2.begin, 1);
+  for (const StmtRange &r : p->slices) out.emplace_back(r.begin - 1, r.end - 1);
+  return out;
+}
+
+TEST(SlicePlanner, FanucCallAndItsJmpcLabelStayInOneSlice) {
+  // 0 RD X0.0, 1 WRT Y0.0, 2 RD X0.1, 3 CALL P1, 4 RD X0.2, 5 WRT Y0.2, 6 LBL L1, 7 RD X0.3,
+  // 8 WRT Y0.3.
+  const std::string level2 = "RD X0.0\nWRT Y0.0\nRD X0.1\nCALL P1\nRD X0.2\nWRT Y0.2\nLBL L1\n"
+                             "RD X0.3\nWRT Y0.3\n";
+  EXPECT_EQ(pmcSlices(level2, "RD X1.0\nWRT Y1.0\n"),
+            (Slices{{0, 2}, {2, 4}, {4, 6}, {6, 7}, {7, 9}}));
+  EXPECT_EQ(pmcSlices(level2, "RD X1.0\nJMPC L1\n"), (Slices{{0, 2}, {2, 7}, {7, 9}}));
+  // A label before the CALL: (LBL, CALL] has no boundary. 0 RD, 1 WRT, 2 LBL L1, 3 RD X0.1,
+  // 4 CALL P1, 5 RD X0.2, 6 WRT Y0.2.
+  EXPECT_EQ(pmcSlices("RD X0.0\nWRT Y0.0\nLBL L1\nRD X0.1\nCALL P1\nRD X0.2\nWRT Y0.2\n",
+                      "RD X1.0\nJMPC L1\n"),
+            (Slices{{0, 2}, {2, 5}, {5, 7}}));
 }
 
 } // namespace
