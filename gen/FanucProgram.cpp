@@ -1,6 +1,7 @@
 // The FANUC random generator (FanucProgram.h). Programs verify by construction: the ST depth
 // is tracked (1..8), timer and edge numbers are used once, jumps go forward to a label of the
-// same level, subroutines are called only from level 2.
+// same level, subroutines are called from level 2 and from the subroutines defined before them,
+// and JMPC leaves a subroutine for a label of level 2.
 #include "gen/FanucProgram.h"
 
 #include "gen/FanucArith.h"
@@ -26,11 +27,18 @@ public:
     for (int k = 0; k < count; ++k) subs_.push_back(fresh(subUsed_, kSubs));
     rungs(statements / 4 + 1, 1, count);
     out("END1");
+    if (count > 0) { // the JMPC guard starts every level-2 scan at 0 (jumpOut below)
+      out("RD R9091.1");
+      out("NUMEB 2 0 " + std::string(kJumpGuard));
+    }
     rungs(statements / 2 + 1, 2, count);
     out("END2");
-    for (int p : subs_) {
-      out("SP P" + std::to_string(p));
-      rungs(static_cast<int>(r_.range(1, 4)), 4, 0);
+    // A subroutine calls only the ones defined after it (no recursion), so chains of calls
+    // carry a JMPC up through more than one subroutine.
+    for (size_t k = 0; k < subs_.size(); ++k) {
+      out("SP P" + std::to_string(subs_[k]));
+      callFrom_ = static_cast<int>(k) + 1;
+      rungs(static_cast<int>(r_.range(1, 4)), 4, count);
       out("SPE");
     }
     out("END");
@@ -117,6 +125,20 @@ private:
 
   void rungs(int n, int level, int subs) {
     for (int i = 0; i < n; ++i) {
+      if (level == 2 && subs > 0 && r_.chance(10)) { // a label JMPC can go on at
+        const int lbl = ++label_;
+        exitLabels_.push_back(lbl);
+        out("LBL L" + std::to_string(lbl));
+      }
+      if (level == 4 && !exitLabels_.empty() && r_.chance(25)) {
+        jumpOut();
+        continue;
+      }
+      if (level == 2 && !exitLabels_.empty() && r_.chance(10)) { // more calls that can JMPC
+        logic();
+        out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + subroutine(subs));
+        continue;
+      }
       if (r_.chance(8)) { // a forward jump over a few rungs of the same level
         const int lbl = ++label_;
         logic();
@@ -216,9 +238,11 @@ private:
     case 18:
       return fanucTimerCounterRung(r_, lines_); // gen/FanucTimerCounter.cpp
     default:
-      if (level == 2 && subs > 0 && r_.chance(30)) {
+      if (level == 4 && callFrom_ >= subs) { // the last subroutine calls none
+        out("WRT " + writeBit());
+      } else if (level >= 2 && subs > 0 && r_.chance(30)) {
         selectCall(subs); // fanuc-e
-      } else if (level == 2 && subs > 0) {
+      } else if (level >= 2 && subs > 0) {
         out(std::string(r_.chance(50) ? "CALL P" : "CALLU P") + subroutine(subs));
       } else {
         out("WRT " + writeBit());
@@ -227,9 +251,31 @@ private:
     }
   }
 
-  /// The number of one of the `subs` defined subroutines (drawn over P1..P5000, fanuc-f).
+  /// The number of one of the `subs` defined subroutines (drawn over P1..P5000, fanuc-f); in a
+  /// subroutine one defined after it.
   std::string subroutine(int subs) {
-    return std::to_string(subs_[static_cast<size_t>(pick(0, subs - 1))]);
+    return std::to_string(subs_[static_cast<size_t>(pick(callFrom_, subs - 1))]);
+  }
+
+  /// A JMPC to one of level 2's labels (before or after the CALL that reaches it), taken when
+  /// the logic line is 1 and, usually, while the guard counts fewer than a bound: the guard is
+  /// 0 at every level-2 start and counts each pass here, so a JMPC back to a label before the
+  /// CALL loops a few times; an unguarded one runs into the watchdog while its input holds.
+  void jumpOut() {
+    out("RD R9091.0");     // RST 0
+    out("RD.STK R9091.1"); // ACT 1
+    out("ADDB 0002 " + std::string(kJumpGuard) + " 1 " + std::string(kJumpGuard));
+    logic();
+    if (r_.chance(90)) out("LTW " + std::string(kJumpGuard) + " " + std::to_string(pick(1, 4)));
+    const std::string lbl =
+        "L" +
+        std::to_string(exitLabels_[static_cast<size_t>(pick(0, int64_t(exitLabels_.size()) - 1))]);
+    if (r_.chance(50)) {
+      out("JMPC " + lbl);
+    } else {
+      out("SUB 73");
+      out("(PRM) " + lbl);
+    }
   }
 
   /// fanuc-e: a CS..CE select-call of 1..4 CM lines (docs/fanuc-pmc.md [EXT] select-call). The
@@ -253,6 +299,10 @@ private:
   Rng r_;
   std::vector<std::string> lines_;
   int label_ = 0;
+  std::vector<int> exitLabels_; ///< level-2 labels a JMPC may name
+  int callFrom_ = 0;            ///< the first subroutine (index into subs_) rung() may call
+  /// The JMPC guard: outside the data pools (R0..R11, D0..D11) and the table pools.
+  static constexpr const char *kJumpGuard = "D200";
   std::vector<bool> timerUsed_, edgeUsed_, subUsed_;
   std::vector<int> subs_; ///< the subroutine numbers, in definition order
 };
@@ -285,6 +335,10 @@ Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
         r.chance(90) ? static_cast<uint64_t>(r.range(1, 8)) : static_cast<uint64_t>(r.range(0, 50));
     st.nowMs.push_back(now);
   }
+  // Drawn last so the writes above are the same as before JMPC: a backward JMPC without a guard
+  // runs into the watchdog, at a limit that keeps such ticks short.
+  static constexpr uint64_t kLimits[] = {50, 300, 2000, 20000};
+  st.maxBackwardSteps = kLimits[r.range(0, 3)];
   return st;
 }
 
