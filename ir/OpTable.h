@@ -210,6 +210,9 @@ enum class Op : uint8_t {
   BcdConstant,     ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
   BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
   BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
+  // ---- rot: FANUC PMC rotation control (docs/fanuc-pmc.md "Rotation control") ----
+  BcdRotation,    ///< ROT: direction and goal/steps of a rotor, BCD positions (width by BYT)
+  BinaryRotation, ///< ROTB: the same with binary positions and the position count in memory
   Count_
 };
 
