@@ -1,8 +1,8 @@
 // Random rungs of the fanuc-b instructions for the FANUC generator (FanucData.h): XMOVB, DSCHB,
-// PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM..COME, JMP..JMPE, NOP and fanuc-d's XMOV and
-// DSCH, over the same small byte pools as gen/FanucProgram.cpp (R0..R11, D0..D11) so they meet the
-// other instructions' bytes, with table heads near the end of R as well (the range checks of XMOVB
-// and DSCHB).
+// PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM..COME, JMP..JMPE, NOP, fanuc-d's XMOV and
+// DSCH and the rotation control ROT and ROTB, over the same small byte pools as
+// gen/FanucProgram.cpp (R0..R11, D0..D11) so they meet the other instructions' bytes, with table
+// heads near the end of R as well (the range checks of XMOVB and DSCHB).
 #include "gen/FanucData.h"
 #include "gen/FanucRung.h"
 
@@ -15,7 +15,7 @@ public:
   DataRung(Rng &r, std::vector<std::string> &out) : FanucRungBase(r, out) {}
 
   void run() {
-    switch (pick(0, 15)) {
+    switch (pick(0, 17)) {
     case 0:
       inputs(2); // RW, RST, ACT
       xmovb();
@@ -88,6 +88,12 @@ public:
       line("DSCH " + capacity() + " " + table(false) + " " + data(2, false) + " " + data(2, true));
       w1();
       return;
+    case 15: // ROT (RN0, BYT, DIR, POS, INC, ACT)
+      rot();
+      return;
+    case 16: // ROTB (RN0, DIR, POS, INC, ACT)
+      rotb();
+      return;
     default:
       coil();
       return;
@@ -124,6 +130,101 @@ private:
     const bool r = anyArea && r_.chance(50);
     if (r_.chance(80)) return std::string(r ? "R" : "D") + std::to_string(pick(0, 11));
     return r ? "R" + std::to_string(pick(7990, 7999)) : "D" + std::to_string(pick(9990, 9999));
+  }
+  /// A rotor index count n: small, 8, around the 2-digit boundary, 200 or the largest of ROT.
+  int64_t rotorCount() {
+    switch (pick(0, 5)) {
+    case 0:
+      return 8;
+    case 1:
+      return pick(98, 101);
+    case 2:
+      return r_.chance(50) ? 200 : 9999;
+    default:
+      return pick(2, 12);
+    }
+  }
+  /// A position for n positions numbered from 0 or 1 (RN0 is drawn at run time): mostly in
+  /// 0..n (often 0..99, the 2-digit ones), sometimes just outside.
+  int64_t position(int64_t n) {
+    if (r_.chance(80)) return pick(0, r_.chance(30) ? std::min<int64_t>(n, 99) : n);
+    return r_.chance(50) ? n + pick(1, 3) : pick(-3, -1);
+  }
+  /// Current and goal positions; a quarter half a turn apart (a tie with DIR = 1, n even).
+  std::pair<int64_t, int64_t> positions(int64_t n) {
+    const int64_t c = position(n);
+    return {c, r_.chance(25) ? c + n / 2 : position(n)};
+  }
+  /// ACT of the set-up lines: always on, or a bit that changes between scans.
+  void setUp() { line("RD.STK " + (r_.chance(70) ? std::string("R9091.1") : readBit())); }
+  /// Back to the caller's line after the set-up (ST depth 1).
+  void setUpEnd() { line(r_.chance(50) ? "AND.STK" : "OR.STK"); }
+  /// NUMEB writing the low `w` bytes of `v` (as the signed value NUMEB accepts).
+  void numeb(int w, int64_t v, const std::string &at) {
+    const int shift = 64 - 8 * w;
+    v = static_cast<int64_t>(static_cast<uint64_t>(v) << shift) >> shift;
+    line("NUMEB " + std::to_string(w) + " " + std::to_string(v) + " " + at);
+  }
+  /// `v` >= 0 as BCD digits (a digit above 9 for -1: 0x1A, the invalid BCD of the rules).
+  static int64_t bcd(int64_t v) {
+    if (v < 0) return 0x1A;
+    int64_t r = 0;
+    for (int shift = 0; v > 0; shift += 4, v /= 10) r |= (v % 10) << shift;
+    return r;
+  }
+  /// The `count` operand addresses of a rotation, `w` bytes each, the last one written: one
+  /// after the other in R or D, or drawn from a few bytes so that they overlap (n in memory
+  /// shared with the positions or the result).
+  std::vector<std::string> rotAddresses(int count, int w) {
+    std::vector<std::string> a;
+    const std::string area = r_.chance(50) ? "R" : "D";
+    const bool apart = r_.chance(70);
+    const int64_t base = pick(0, 12);
+    for (int k = 0; k < count; ++k) {
+      if (apart)
+        a.push_back(area + std::to_string(base + k * w));
+      else
+        a.push_back(r_.chance(20) ? data(w, k == count - 1) : area + std::to_string(pick(0, 4)));
+    }
+    return a;
+  }
+  void rot() {
+    const int64_t n = rotorCount();
+    const std::vector<std::string> at = rotAddresses(3, 2);
+    const std::string &cur = at[0], &goal = at[1], &out = at[2];
+    if (r_.chance(85)) { // BCD positions (or 0x1A) of 1 or 2 bytes
+      setUp();
+      const auto [c, g] = positions(n);
+      for (const auto &[a, v] : {std::pair{&cur, c}, std::pair{&goal, g}}) {
+        if (a->front() == 'X') continue;
+        const int bytes = r_.chance(50) ? 1 : 2; // one draw per statement: a fixed order
+        numeb(bytes, bcd(r_.chance(10) ? -1 : v % 10000), *a);
+      }
+      setUpEnd();
+    }
+    inputs(5);
+    line(std::string(r_.chance(30) ? "SUB 6 " : "ROT ") + std::to_string(n) + " " + cur + " " +
+         goal + " " + out);
+    w1();
+  }
+  void rotb() {
+    const int w = width();
+    const std::vector<std::string> at = rotAddresses(4, w);
+    const std::string &cnt = at[0], &cur = at[1], &goal = at[2], &out = at[3];
+    const int64_t lim = w == 1 ? 127 : w == 2 ? 32767 : 2147483647;
+    const int64_t n = r_.chance(10) ? pick(-2, 1) : r_.chance(10) ? lim : rotorCount() % (lim + 1);
+    if (r_.chance(85)) { // n and the positions (n written on some scans only)
+      setUp();
+      if (cnt.front() != 'X') numeb(w, n, cnt);
+      const auto [c, g] = positions(n < 2 ? 8 : n);
+      for (const auto &[a, v] : {std::pair{&cur, c}, std::pair{&goal, g}})
+        if (a->front() != 'X') numeb(w, r_.chance(10) ? lim : v, *a);
+      setUpEnd();
+    }
+    inputs(4);
+    line(std::string(r_.chance(30) ? "SUB 26 " : "ROTB ") + std::to_string(w) + " " + cnt + " " +
+         cur + " " + goal + " " + out);
+    w1();
   }
   void xmovb() {
     const int w = width();

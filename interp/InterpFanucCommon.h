@@ -12,9 +12,9 @@
 
 namespace lj::interp::fanuc {
 
-/// The top `k` (at most 4) ST entries, ST0 first.
+/// The top `k` (at most 6: ROT) ST entries, ST0 first.
 struct Inputs {
-  bool v[4] = {};
+  bool v[6] = {};
 };
 /// Takes the top `k` ST entries and pops all but one (which W1 then replaces).
 inline Inputs take(const BlockCall &b, int k) {

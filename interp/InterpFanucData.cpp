@@ -5,7 +5,8 @@
 // Control inputs are ST entries: ACT = ST0, the next input ST1, ... (reference 5). An instruction
 // with k inputs pops k - 1 of them and leaves W1 in ST0. The RST family (PARI, SFT, DCNV, DCNVB,
 // COD, CODB, XMOVB, DSCHB) keeps W1 in its edge slot: ACT = 1 sets it to this execution's error,
-// ACT = 0 keeps it, RST = 1 clears it (after the execution).
+// ACT = 0 keeps it, RST = 1 clears it (after the execution). ROT / ROTB (no RST) hold their W1,
+// the direction, in the edge slot too: only an execution that decides a direction sets it.
 #include "interp/InterpFanucCommon.h"
 #include "interp/InterpreterInternal.h"
 
@@ -263,6 +264,64 @@ void bcdSearchTable(const BlockCall &b) {
   w1(b, in.v[0], in.v[1], err);
 }
 
+/// What ROT / ROTB output: the result and the direction (W1).
+struct Rotation {
+  int64_t result = 0;
+  bool reverse = false; ///< W1: 1 reverse (position numbers decreasing), 0 forward
+};
+
+/// Rotation control (docs/fanuc-pmc.md "Rotation control"): n positions numbered from s (RN0),
+/// current c, goal g. False, nothing decided, when n < 2 or c or g is outside s..s + n - 1.
+bool rotate(int64_t n, int64_t s, int64_t c, int64_t g, bool dir, bool pos, bool inc, Rotation &r) {
+  if (n < 2 || c < s || c > s + n - 1 || g < s || g > s + n - 1) return false;
+  const auto mod = [n](int64_t x) { return (x % n + n) % n; };
+  const int64_t cc = c - s, gg = g - s;
+  const int64_t fwd = mod(gg - cc), rev = mod(cc - gg);
+  r.reverse = dir && rev < fwd; // DIR = 1: the shorter way, a tie forward; DIR = 0: forward
+  const int64_t steps = r.reverse ? rev : fwd;
+  if (inc)
+    r.result = pos ? std::max<int64_t>(steps - 1, 0) : steps;
+  else
+    r.result = pos ? mod(gg + (r.reverse ? 1 : -1)) + s : g; // the position before the goal
+  return true;
+}
+
+/// W1 of ROT / ROTB, held in the edge slot: the direction of an execution that decided one,
+/// else (ACT = 0 or an error) the previous W1.
+void rotationW1(const BlockCall &b, bool decided, bool reverse) {
+  uint8_t &held = b.s->edge[b.info.slot];
+  if (decided) held = reverse;
+  b.f.setTop(held != 0);
+}
+
+/// ROT: BCD positions and result of 2 digits (BYT = 0, 1 byte) or 4 (BYT = 1, 2 bytes); a digit
+/// above 9 or a result with more digits is an error (nothing written).
+void bcdRotation(const BlockCall &b) {
+  const Inputs in = take(b, 6); // ACT, INC, POS, DIR, BYT, RN0
+  Rotation r;
+  bool ok = false;
+  if (in.v[0]) {
+    const int width = in.v[4] ? 2 : 1;
+    int64_t c, g;
+    ok = fromBcd(readRaw(b, b.ops[1].off, width), 2 * width, c) &&
+         fromBcd(readRaw(b, b.ops[2].off, width), 2 * width, g) &&
+         rotate(b.stmt.ops[0].value, in.v[5], c, g, in.v[3], in.v[2], in.v[1], r) &&
+         r.result < (width == 1 ? 100 : 10000);
+    if (ok) writeLe(b, b.ops[3].off, width, toBcd(r.result, 2 * width));
+  }
+  rotationW1(b, ok, r.reverse);
+}
+
+/// ROTB: the position count, positions and result signed binary of the format's bytes.
+void binaryRotation(const BlockCall &b) {
+  const Inputs in = take(b, 5); // ACT, INC, POS, DIR, RN0
+  Rotation r;
+  const bool ok = in.v[0] && rotate(readValue(b.s, b.ops[1]), in.v[4], readValue(b.s, b.ops[2]),
+                                    readValue(b.s, b.ops[3]), in.v[3], in.v[2], in.v[1], r);
+  if (ok) writeValue(b.s, b.ops[4], static_cast<int32_t>(r.result));
+  rotationW1(b, ok, r.reverse);
+}
+
 void commonCoil(const BlockCall &b) {
   // The COM this coil belongs to is ops[1] statements back (frontends/fanuc); its edge slot holds
   // its ACT of this scan.
@@ -325,6 +384,12 @@ bool runFanucData(const BlockCall &b) {
     return true;
   case Op::BcdSearchTable:
     bcdSearchTable(b);
+    return true;
+  case Op::BcdRotation:
+    bcdRotation(b);
+    return true;
+  case Op::BinaryRotation:
+    binaryRotation(b);
     return true;
   case Op::CommonBegin:
     b.s->edge[b.info.slot] = b.f.top();

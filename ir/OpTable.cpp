@@ -85,6 +85,8 @@ constexpr OperandSpec onlyValues(OperandSpec s, std::span<const ValueRange> v) {
 }
 /// Alarms 1..256 (G3010-3025) and prompts 501..884 (G3056-3079; hnc8-cnc-interface.md 2).
 constexpr ValueRange kAlarmNumbers[] = {{1, 256}, {501, 884}};
+/// A FANUC data length (ROTB's format): 1, 2 or 4 bytes.
+constexpr ValueRange kDataLengths[] = {{1, 2}, {4, 4}};
 
 // Timer/counter numbers are constants 0..427; the gap 128..299 is rejected by the verifier.
 constexpr OperandSpec tcNumber(const char *role) { return konst(role, 0, 427); }
@@ -566,6 +568,22 @@ constexpr InstrInfo kTable[] = {
     ROW(JumpOut, Core, Block, Required, 1, None, None, 1, label(), none(), none(), none(),
         "when ST0 = 1: leave this subroutine and every caller up to the sliced part, and go on "
         "there at the label"),
+    // ---- rot: FANUC PMC rotation control (fanuc-pmc.md 6.10 [EXT]; docs/fanuc-pmc.md
+    // "Rotation control"). Inputs are ST entries, ACT = ST0, INC, POS, DIR, [BYT,] RN0 above it;
+    // the Edge slot holds W1 (the direction) between executions. ----
+    ROW(BcdRotation, Data, Block, Required, 6, Result, Edge, 4, konst("rotor index count", 2, 9999),
+        spanning(reg("current position", kSrcAreas, false), 2),
+        spanning(reg("goal position", kSrcAreas, false), 2),
+        spanning(reg("result", kDstAreas, true), 2),
+        "result := the goal, the position before it or the steps to it, BCD of 2 or 4 digits "
+        "(positions from 0 or 1, width, shortest way, position before, steps, enable); W1 := "
+        "reverse"),
+    ROWX(BinaryRotation, Data, Block, Required, 5, Result, Edge, 5,
+         "result := the goal, the position before it or the steps to it, 1/2/4 signed bytes "
+         "(positions from 0 or 1, shortest way, position before, steps, enable); W1 := reverse",
+         onlyValues(konst("format (data length)", 1, 4), kDataLengths),
+         reg("rotor index count", kSrcAreas, false), reg("current position", kSrcAreas, false),
+         reg("goal position", kSrcAreas, false), reg("result", kDstAreas, true)),
 };
 
 #undef ROW

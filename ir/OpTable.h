@@ -210,8 +210,11 @@ enum class Op : uint8_t {
   BcdConstant,     ///< NUME: a BCD constant written as 1 or 2 bytes (BYT at run time)
   BcdIndexedTable, ///< XMOV: read/write one BCD table item at a BCD index (width by BYT)
   BcdSearchTable,  ///< DSCH: BCD index of the first table item equal to the search data
-  // ---- FANUC PMC flow (docs/fanuc-pmc.md "Jumps out of a subroutine") ----
+  // ---- FANUC PMC flow (docs/fanuc-pmc.md "JMPC (SUB 73)") ----
   JumpOut, ///< JMPC: leave the subroutine and its callers, go on at a label of the sliced part
+  // ---- rot: FANUC PMC rotation control (docs/fanuc-pmc.md "Rotation control") ----
+  BcdRotation,    ///< ROT: direction and goal/steps of a rotor, BCD positions (width by BYT)
+  BinaryRotation, ///< ROTB: the same with binary positions and the position count in memory
   Count_
 };
 

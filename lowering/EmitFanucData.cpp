@@ -138,6 +138,10 @@ llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
   case Op::BcdSearchTable:
     emitFdBcdSearch(s, slot);
     break;
+  case Op::BcdRotation:
+  case Op::BinaryRotation:
+    emitFdRotation(s, slot);
+    break;
   case Op::CommonBegin:
     cache_.store(mc_.layout.edge(slot), b_.CreateZExt(st_.back(), b_.getInt8Ty()));
     break;
@@ -471,6 +475,72 @@ void FunctionEmitter::emitFdBcdSearch(const Stmt &s, int32_t slot) {
   fdStore(s.ops[3], 0, 1, bcd, en);
   fdStore(s.ops[3], 1, 1, b_.CreateLShr(bcd, 8), b_.CreateAnd(en, byt));
   fdW1(slot, act, in[1], err);
+}
+
+// ROT / ROTB: twin of interp bcdRotation / binaryRotation (rotate()). Positions are checked
+// in range first, so the modular steps need no division: c', g' lie in 0..n-1.
+void FunctionEmitter::emitFdRotation(const Stmt &s, int32_t slot) {
+  const bool bcd = s.op == Op::BcdRotation;
+  auto in = fdTake(bcd ? 6 : 5); // ACT, INC, POS, DIR, [BYT,] RN0
+  llvm::Value *act = in[0], *inc = in[1], *pos = in[2], *dir = in[3], *byt = bcd ? in[4] : nullptr;
+  llvm::Type *i32 = b_.getInt32Ty(), *i64 = b_.getInt64Ty();
+  auto k64 = [&](int64_t v) { return b_.getInt64(static_cast<uint64_t>(v)); };
+  llvm::Value *n, *c, *g, *bad = b_.getFalse();
+  if (bcd) {
+    // 2 digits from 1 byte (BYT = 0) or 4 from 2 bytes (BYT = 1); a digit above 9 is an error.
+    auto position = [&](const Operand &o) {
+      llvm::Value *lo = b_.CreateZExt(fdLoad(o, 0, 1), i32);
+      llvm::Value *hi = b_.CreateZExt(fdLoad(o, 1, 1), i32);
+      auto [v, digitBad] =
+          bcdValue(b_, b_.CreateSelect(byt, b_.CreateOr(lo, b_.CreateShl(hi, 8)), lo), 4);
+      bad = b_.CreateOr(bad, digitBad);
+      return b_.CreateZExt(v, i64);
+    };
+    n = k64(s.ops[0].value);
+    c = position(s.ops[1]);
+    g = position(s.ops[2]);
+  } else {
+    n = b_.CreateSExt(readInt(s.ops[1]), i64);
+    c = b_.CreateSExt(readInt(s.ops[2]), i64);
+    g = b_.CreateSExt(readInt(s.ops[3]), i64);
+  }
+  llvm::Value *first = b_.CreateZExt(in[bcd ? 5 : 4], i64); // RN0: positions from 0 or 1
+  llvm::Value *cc = b_.CreateSub(c, first), *gg = b_.CreateSub(g, first);
+  // n >= 2 and 0 <= c', g' < n (unsigned: a negative c' or g' is above n).
+  llvm::Value *ok = b_.CreateAnd(b_.CreateAnd(notV(bad), b_.CreateICmpSGE(n, k64(2))),
+                                 b_.CreateAnd(b_.CreateICmpULT(cc, n), b_.CreateICmpULT(gg, n)));
+  llvm::Value *d = b_.CreateSub(gg, cc);
+  llvm::Value *fwd = b_.CreateSelect(b_.CreateICmpSLT(d, k64(0)), b_.CreateAdd(d, n), d);
+  llvm::Value *rev =
+      b_.CreateSelect(b_.CreateICmpSGT(d, k64(0)), b_.CreateSub(n, d), b_.CreateSub(k64(0), d));
+  llvm::Value *reverse = b_.CreateAnd(dir, b_.CreateICmpSLT(rev, fwd)); // a tie goes forward
+  llvm::Value *steps = b_.CreateSelect(reverse, rev, fwd);
+  llvm::Value *next = b_.CreateAdd(gg, k64(1)), *prev = b_.CreateSub(gg, k64(1));
+  llvm::Value *before =
+      b_.CreateAdd(b_.CreateSelect(reverse, b_.CreateSelect(b_.CreateICmpEQ(next, n), k64(0), next),
+                                   b_.CreateSelect(b_.CreateICmpSLT(prev, k64(0)),
+                                                   b_.CreateSub(n, k64(1)), prev)),
+                   first);
+  llvm::Value *stepsBefore =
+      b_.CreateSelect(b_.CreateICmpEQ(steps, k64(0)), k64(0), b_.CreateSub(steps, k64(1)));
+  llvm::Value *result = b_.CreateSelect(inc, b_.CreateSelect(pos, stepsBefore, steps),
+                                        b_.CreateSelect(pos, before, g));
+  if (bcd) // the result must fit the digits of its width
+    ok = b_.CreateAnd(ok, b_.CreateICmpULE(result, b_.CreateSelect(byt, k64(9999), k64(99))));
+  llvm::Value *en = b_.CreateAnd(act, ok);
+  if (bcd) {
+    llvm::Value *digits =
+        b_.CreateTrunc(bcdDigits(b_, b_.CreateSelect(en, result, k64(0)), 4), i32);
+    fdStore(s.ops[3], 0, 1, digits, en);
+    fdStore(s.ops[3], 1, 1, b_.CreateLShr(digits, 8), b_.CreateAnd(en, byt));
+  } else {
+    writeInt(s.ops[4], b_.CreateTrunc(result, i32), en);
+  }
+  // W1: the direction of an execution that decided one, else the previous W1.
+  StateLoc loc = mc_.layout.edge(slot);
+  llvm::Value *w = selectBit(en, reverse, b_.CreateICmpNE(cache_.load(loc), b_.getInt8(0)));
+  cache_.store(loc, b_.CreateZExt(w, b_.getInt8Ty()));
+  st_.back() = w;
 }
 
 } // namespace lj::lower

@@ -201,6 +201,7 @@ private:
   void emitFdSearch(const Stmt &s, int32_t slot);
   void emitFdBcdIndexed(const Stmt &s, int32_t slot); // XMOV
   void emitFdBcdSearch(const Stmt &s, int32_t slot);  // DSCH
+  void emitFdRotation(const Stmt &s, int32_t slot);   // ROT, ROTB
 
   // EmitNc.cpp: family Nc (MGET .. SAVEDATA), host callbacks. Helpers of that file go here.
   llvm::Error emitNcBlock(int32_t i);

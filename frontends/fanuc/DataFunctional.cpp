@@ -1,7 +1,8 @@
 // The FANUC transfer, search, conversion and flow instructions (fanuc-b; reference 4.2, 6.5, 6.7,
-// 6.8, 6.9, 6.10; docs/fanuc-pmc.md): parameters checked with located errors and mapped onto the
-// fanuc-b IR operations (ir/OpTable.h). Control inputs are loaded top to bottom, so ACT is ST0,
-// RST ST1 and so on (reference 5); an instruction with k inputs pops k - 1 and leaves W1 in ST0.
+// 6.8, 6.9, 6.10; docs/fanuc-pmc.md) and the rotation control ROT/ROTB (6.10 [EXT]): parameters
+// checked with located errors and mapped onto the fanuc-b IR operations (ir/OpTable.h). Control
+// inputs are loaded top to bottom, so ACT is ST0, RST ST1 and so on (reference 5); an instruction
+// with k inputs pops k - 1 and leaves W1 in ST0.
 #include "frontends/fanuc/ParserInternal.h"
 
 #include <string>
@@ -55,6 +56,8 @@ const char *inputsOf(std::string_view n) {
   if (n == "XMOVB") return "RW, RST, ACT";
   if (n == "XMOV") return "BYT, RW, RST, ACT";
   if (n == "DSCH") return "BYT, RST, ACT";
+  if (n == "ROT") return "RN0, BYT, DIR, POS, INC, ACT";
+  if (n == "ROTB") return "RN0, DIR, POS, INC, ACT";
   if (n == "DSCHB" || n == "CODB") return "RST, ACT";
   if (n == "PARI") return "O.E, RST, ACT";
   if (n == "SFT") return "DIR, CONT, RST, ACT";
@@ -188,9 +191,9 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
                     "describe (docs/fanuc-pmc.md \"Not supported\")");
     return true;
   }
-  static constexpr std::string_view kMine[] = {"XMOVB", "DSCHB", "PARI", "SFT",  "COD", "CODB",
-                                               "DCNV",  "DCNVB", "DEC",  "DECB", "COM", "COME",
-                                               "JMP",   "JMPE",  "NOP",  "XMOV", "DSCH"};
+  static constexpr std::string_view kMine[] = {
+      "XMOVB", "DSCHB", "PARI", "SFT",  "COD", "CODB", "DCNV", "DCNVB", "DEC", "DECB",
+      "COM",   "COME",  "JMP",  "JMPE", "NOP", "XMOV", "DSCH", "ROT",   "ROTB"};
   bool mine = false;
   for (std::string_view m : kMine) mine = mine || m == name;
   if (!mine) return false;
@@ -339,16 +342,22 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
     ok = e.dataOperand(p[1], w, false, false, a) && spanOperand(e, p[2], w, w, true, b) &&
          spanOperand(e, p[3], items * w, w, true, c) && e.dataOperand(p[4], w, false, false, d);
     if (ok) e.emit(Op::IndexedTable, at, {konst(items, p[0].loc), a, b, c, d});
-  } else if (name == "DSCHB") {
+  } else if (name == "DSCHB" || name == "ROTB") {
+    // A data length and four addresses of that many bytes, the last one written: DSCHB (ref
+    // 6.7) and the binary rotation control (ref 6.10 [EXT]; n read from memory at run time).
+    const bool rot = name == "ROTB";
     int w;
     Operand r;
     ok = paramCount(e, f, what, 5,
-                    "data length 1/2/4, capacity address, table head, search data address, "
-                    "result address") &&
-         length(e, p[0], "data length", w) && e.dataOperand(p[1], w, false, false, a) &&
-         e.dataOperand(p[2], w, false, false, b) && e.dataOperand(p[3], w, false, false, c) &&
-         e.dataOperand(p[4], w, false, true, r);
-    if (ok) e.emit(Op::SearchTable, at, {a, b, c, r});
+                    rot ? "format 1/2/4, rotor index count address, current position address, "
+                          "goal position address, result address"
+                        : "data length 1/2/4, capacity address, table head, search data address, "
+                          "result address") &&
+         length(e, p[0], rot ? "format" : "data length", w) &&
+         e.dataOperand(p[1], w, false, false, a) && e.dataOperand(p[2], w, false, false, b) &&
+         e.dataOperand(p[3], w, false, false, c) && e.dataOperand(p[4], w, false, true, r);
+    if (ok && rot) e.emit(Op::BinaryRotation, at, {konst(w, p[0].loc), a, b, c, r});
+    if (ok && !rot) e.emit(Op::SearchTable, at, {a, b, c, r});
   } else if (name == "XMOV" || name == "DSCH") {
     // BCD tables (ref 6.5, 6.7): capacity = n + 1 for a table 0..n, a constant; entries of 1 or
     // 2 bytes by BYT at run time, so the addresses are checked for 2 bytes.
@@ -369,6 +378,17 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
       return true;
     }
     e.emit(search ? Op::BcdSearchTable : Op::BcdIndexedTable, at, {konst(cap, p[0].loc), b, c, d});
+  } else if (name == "ROT") {
+    // Rotation control, BCD (ref 6.10 [EXT]): n a constant; positions and the result of 1 or 2
+    // bytes by BYT at run time, so the addresses are checked for 2 bytes (as XMOV's).
+    int64_t n;
+    ok = paramCount(e, f, what, 4,
+                    "rotor index count n (constant 2..9999), current position address, goal "
+                    "position address, result address") &&
+         e.constant(p[0], 2, 9999, "rotor index count", n) &&
+         spanOperand(e, p[1], 2, 1, false, b) && spanOperand(e, p[2], 2, 1, false, c) &&
+         spanOperand(e, p[3], 2, 1, true, d);
+    if (ok) e.emit(Op::BcdRotation, at, {konst(n, p[0].loc), b, c, d});
   }
   if (ok) e.setDepth(e.depth() - (inputs - 1));
   return true;
@@ -422,6 +442,10 @@ const char *spellData(Op op) {
     return "XMOV";
   case Op::BcdSearchTable:
     return "DSCH";
+  case Op::BcdRotation:
+    return "ROT";
+  case Op::BinaryRotation:
+    return "ROTB";
   case Op::CommonBegin:
     return "COM";
   case Op::CommonCoil:

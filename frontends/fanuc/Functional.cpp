@@ -87,7 +87,8 @@ constexpr FnRow kRows[] = {
     {"LBL", 69, Fn::Lbl, 0},
     {"CALL", 65, Fn::Call, 0},
     {"CALLU", 66, Fn::Callu, 0},
-    // In the reference but not implemented by this build (docs/fanuc-pmc.md "Not yet").
+    // Rows whose checks and statements live in the family files (TimerCounter.cpp,
+    // DataFunctional.cpp, ArithFunctional.cpp), reached through emitFunctional's hooks.
     {"TMR", 3, Fn::Unsupported, 0},
     {"TMRC", 54, Fn::Unsupported, 0},
     {"CTR", 5, Fn::Unsupported, 0},

@@ -79,7 +79,8 @@ void emitFunctional(Emitter &e, const Functional &f);
 bool emitTimerCounter(Emitter &e, const Functional &f, int sub, const std::string &what);
 // ---- fanuc-b: transfer, search, conversion and flow instructions (DataFunctional.cpp) ----
 /// Check and emit `name` (XMOVB, DSCHB, PARI, SFT, COD, CODB, DCNV, DCNVB, DEC, DECB, COM, COME,
-/// JMP, JMPE, NOP; DISPB .. PSGN2 as "not supported"); false for a name it does not handle.
+/// JMP, JMPE, NOP, XMOV, DSCH, ROT, ROTB; DISPB .. PSGN2 as "not supported"); false for a name it
+/// does not handle.
 bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
                         const std::string &what);
 /// A WRT / WRT.NOT / SET / RST (`op`) of `bit` inside an open COM: emitted gated (true).

@@ -69,8 +69,8 @@ TEST(FanucDiagnostics, FunctionalInstructions) {
   EXPECT_EQ(diags(std::string("RD X0.0\nSUB 999\n") + kEnd),
             "t.pmc:2:5: error: unknown functional instruction SUB 999\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nSUB 26\n(PRM) 1\n") + kEnd),
-            "t.pmc:2:1: error: SUB 26 (ROTB) is not implemented in this build (docs/fanuc-pmc.md "
-            "\"Not yet\")\n");
+            "t.pmc:2:1: error: SUB 26 (ROTB) needs its inputs RN0, DIR, POS, INC, ACT in ST4..ST0 "
+            "(RD, then RD.STK for each further input), found 1\n");
   EXPECT_EQ(diags(std::string("(PRM) 1\n") + kEnd),
             "t.pmc:1:1: error: parameter line without a functional instruction before it\n");
   EXPECT_EQ(diags(std::string("RD X0.0\nDIFU 3\nRD X0.0\nDIFD 3\n") + kEnd),

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <set>
 
 namespace lj::ladder {
@@ -21,6 +22,17 @@ std::set<std::string> texts(const Layout &l, const std::string &kindPrefix) {
       for (const Cell &c : r.cells)
         if (c.kind.rfind(kindPrefix, 0) == 0) out.insert(c.text);
   return out;
+}
+
+/// The ladder layout of a FANUC program (none, and a test failure, when it does not compile).
+std::optional<Layout> fanucLayout(const char *pmc) {
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  if (!p) {
+    ADD_FAILURE() << d.render();
+    return std::nullopt;
+  }
+  return layout(fromProgram(*p));
 }
 
 TEST(LadderDialect, FanucMnemonicsAndAddresses) {
@@ -38,10 +50,9 @@ TEST(LadderDialect, FanucMnemonicsAndAddresses) {
                     "WRT R2.0\n"
                     "END2\n"
                     "END\n";
-  Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
-  ASSERT_TRUE(p) << d.render();
-  Layout l = layout(fromProgram(*p));
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const Layout &l = *fl;
   EXPECT_EQ(texts(l, "box"), (std::set<std::string>{"EQB", "DIFU", "MOVW", "TMRB"}));
   EXPECT_EQ(texts(l, "marker"), (std::set<std::string>{"END1", "END2"}));
   std::set<std::string> contacts = texts(l, "contact");
@@ -77,10 +88,9 @@ TEST(LadderDialect, FanucFixedTimersDrawTheirTwoParameters) {
                     "END1\n"
                     "END2\n"
                     "END\n";
-  Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
-  ASSERT_TRUE(p) << d.render();
-  Layout l = layout(fromProgram(*p));
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const Layout &l = *fl;
   const Cell *tmrb = boxNamed(l, "TMRB"), *tmrbf = boxNamed(l, "TMRBF"),
              *movw = boxNamed(l, "MOVW");
   ASSERT_TRUE(tmrb && tmrbf && movw);
@@ -88,6 +98,25 @@ TEST(LadderDialect, FanucFixedTimersDrawTheirTwoParameters) {
   EXPECT_EQ(tmrbf->operands, (std::vector<std::string>{"3", "700"}));
   EXPECT_EQ(movw->operands, (std::vector<std::string>{"D100", "D102"}))
       << "other boxes keep theirs";
+}
+
+// ROT / ROTB (ref 6.10): boxes named as the PMC names them, with the parameters as written
+// (ROT: n, current, goal, result; ROTB: the format first).
+TEST(LadderDialect, FanucRotationBoxes) {
+  const char *pmc = "RD X0.5\nRD.STK X0.4\nRD.STK X0.3\nRD.STK X0.2\nRD.STK X0.1\nRD.STK X0.0\n"
+                    "ROT 12 R10 R12 R14\n"
+                    "WRT R0.0\n"
+                    "RD X0.5\nRD.STK X0.3\nRD.STK X0.2\nRD.STK X0.1\nRD.STK X0.0\n"
+                    "SUB 26 2 D0 D2 D4 D6\n"
+                    "WRT R0.1\n"
+                    "END1\nEND2\nEND\n";
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const Layout &l = *fl;
+  const Cell *rot = boxNamed(l, "ROT"), *rotb = boxNamed(l, "ROTB");
+  ASSERT_TRUE(rot && rotb);
+  EXPECT_EQ(rot->operands, (std::vector<std::string>{"12", "R10", "R12", "R14"}));
+  EXPECT_EQ(rotb->operands, (std::vector<std::string>{"2", "D0", "D2", "D4", "D6"}));
 }
 
 // An HNC-8 TMRB writes the time unit (hnc8-core.md: `TMRB 0 0 500`): all three operands drawn.
