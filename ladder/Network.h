@@ -23,11 +23,11 @@ struct Element {
   std::string comment;               ///< trailing comment on its line
   bool hasComment = false;
   /// The instruction as the drawing shows it, in the program's dialect (Spelling.cpp); empty:
-  /// mnemonic(op). Only drawings use it; the JSON and text forms stay in HNC-8 STL.
+  /// mnemonic(op). Drawings and the text form use it; the JSON form stays in HNC-8 STL.
   std::string drawn;
   bool drawnWhole = false; ///< `drawn` includes the operands (an IL label `%L64:`)
   /// Bit k: operand k is implied by the front end, not in the source (DialectText::implied);
-  /// drawings leave it out, the JSON and text forms keep it.
+  /// drawings leave it out, the JSON and text forms keep it (an IL label drawn whole excepted).
   uint32_t implied = 0;
 };
 

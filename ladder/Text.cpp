@@ -51,8 +51,8 @@ std::string leafText(const Node &n) {
     }
     if (!e.operands.empty()) t += " " + operandText(e, 0);
   } else {
-    t = std::string("[") + mnemonic(e.op);
-    for (size_t k = 0; k < e.operands.size(); ++k) t += " " + operandText(e, k);
+    t = "[" + drawnText(e);
+    for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k) t += " " + operandText(e, k);
     t += "]";
     if (n.rail) t = "|rail| " + t;
   }
@@ -136,8 +136,8 @@ Lines render(const Node &n) {
 }
 
 std::string stmtText(const Element &e) {
-  std::string t = mnemonic(e.op);
-  for (size_t k = 0; k < e.operands.size(); ++k) t += " " + operandText(e, k);
+  std::string t = drawnText(e);
+  for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k) t += " " + operandText(e, k);
   if (e.hasComment) t += "  ; " + e.comment;
   return t;
 }

@@ -6,6 +6,7 @@
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
 #include "ladder/Layout.h"
+#include "ladder/Text.h"
 
 #include <gtest/gtest.h>
 
@@ -153,6 +154,23 @@ TEST(LadderDialect, IecObjectsAndWords) {
   std::set<std::string> markers = texts(l, "marker");
   EXPECT_TRUE(markers.count("%L1:")) << "the label as IL writes it";
   for (const std::string &m : markers) EXPECT_EQ(m.find("LBL"), std::string::npos) << m;
+}
+
+// The text form (`ladderjit ladder --format text`) names instructions as the drawing does: a
+// FANUC program shows END1, SP, JMPC and ROTB, not the HNC-8 words or the IR's names.
+TEST(LadderDialect, FanucTextForm) {
+  const char *pmc = "END1\nRD X0.0\nCALL P1\nLBL L1\nEND2\nSP P1\nRD X0.1\nJMPC L1\n"
+                    "RD R9091.0\nRD.STK R9091.1\nRD.STK R9091.1\nRD.STK R9091.0\nRD.STK X0.2\n"
+                    "ROTB 2 D0 D2 D4 D6\nWRT R0.0\nSPE\nEND\n";
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  const std::string t = renderText(fromProgram(*p));
+  for (const char *want : {"--- END1 ---", "--- END2 ---", "--- SP P1 ---", "--- SPE ---",
+                           "[JMPC L1]", "[CALL P1]", "[ROTB 2 D0 D2 D4 D6]"})
+    EXPECT_NE(t.find(want), std::string::npos) << want << " in\n" << t;
+  for (const char *never : {"1END", "2END", "JumpOut", "BinaryRotation"})
+    EXPECT_EQ(t.find(never), std::string::npos) << never << " in\n" << t;
 }
 
 } // namespace
