@@ -334,26 +334,22 @@ llvm::Error FunctionEmitter::emitCall(int32_t i) {
 llvm::Error FunctionEmitter::emitJumpOut(int32_t i) {
   if (prog_.info[i].target < 0 || prog_.stmts[prog_.info[i].target].op != Op::Label)
     return fail(i, "JumpOut target is not a Label");
-  llvm::Value *en = enable();
-  cache_.flush();
-  llvm::BasicBlock *out = newBlock("jumpout");
-  llvm::BasicBlock *cont = newBlock("nojumpout");
-  b_.CreateCondBr(en, out, cont);
-  b_.SetInsertPoint(out);
-  b_.CreateRet(b_.getInt32(kStatusJumpOut +
-                           static_cast<uint32_t>(prog_.stmts[prog_.info[i].target].ops[0].index)));
-  b_.SetInsertPoint(cont);
+  returnWhenEnabled(kStatusJumpOut +
+                        static_cast<uint32_t>(prog_.stmts[prog_.info[i].target].ops[0].index),
+                    "jumpout");
   return llvm::Error::success();
 }
 
-void FunctionEmitter::emitRetn() {
+void FunctionEmitter::emitRetn() { returnWhenEnabled(retnStatus_, "retn"); }
+
+void FunctionEmitter::returnWhenEnabled(uint32_t status, const char *name) {
   llvm::Value *en = enable();
   cache_.flush();
-  llvm::BasicBlock *ret = newBlock("retn");
-  llvm::BasicBlock *cont = newBlock("noretn");
+  llvm::BasicBlock *ret = newBlock(name);
+  llvm::BasicBlock *cont = newBlock((std::string("no") + name).c_str());
   b_.CreateCondBr(en, ret, cont);
   b_.SetInsertPoint(ret);
-  b_.CreateRet(b_.getInt32(retnStatus_));
+  b_.CreateRet(b_.getInt32(status));
   b_.SetInsertPoint(cont);
 }
 

@@ -102,6 +102,8 @@ private:
   llvm::Error emitCall(int32_t i);
   /// A taken JumpOut returns kStatusJumpOut + its label's number.
   llvm::Error emitJumpOut(int32_t i);
+  /// Return `status` from the function when ST0 (the enable) is 1, else go on (RETN, JumpOut).
+  void returnWhenEnabled(uint32_t status, const char *name);
   /// Where a jump to label statement `lbl` goes from here: the label's block in this body, or a
   /// block returning kStatusJump + its chunk; null when neither (an internal error).
   llvm::BasicBlock *jumpTarget(int32_t lbl);

@@ -64,36 +64,22 @@ void checkJumpOuts(Context &cx) {
   if (!any) return;
 
   // Close over the call graph: a subroutine leaves for every label its callees leave for.
-  // Iterative, memoized; a cycle (recursion, reported by checkCallGraph) is cut where it closes.
-  enum : uint8_t { White, Gray, Black };
-  std::vector<uint8_t> color(nsubs, White);
-  std::vector<std::pair<int32_t, size_t>> stack;
-  for (size_t root = 0; root < nsubs; ++root) {
-    if (color[root] != White) continue;
-    color[root] = Gray;
-    stack.push_back({static_cast<int32_t>(root), 0});
-    while (!stack.empty()) {
-      auto &[sub, next] = stack.back();
-      const int32_t u = unitOfSub[static_cast<size_t>(sub)];
-      static const std::vector<CallSite> kNoCalls;
-      const std::vector<CallSite> &edges = u < 0 ? kNoCalls : cx.calls[static_cast<size_t>(u)];
-      if (next < edges.size()) {
-        const auto c = static_cast<size_t>(edges[next++].callee);
-        if (color[c] == White) {
-          color[c] = Gray;
-          stack.push_back({static_cast<int32_t>(c), 0});
-        }
-        continue;
-      }
-      std::vector<int32_t> &mine = exits[static_cast<size_t>(sub)];
-      for (const CallSite &e : edges) {
+  // Rounds until nothing grows; the call depth bounds them, and nsubs + 1 rounds bound a cycle
+  // (recursion, reported by checkCallGraph).
+  bool grew = true;
+  for (size_t round = 0; grew && round <= nsubs; ++round) {
+    grew = false;
+    for (size_t sub = 0; sub < nsubs; ++sub) {
+      if (unitOfSub[sub] < 0) continue;
+      std::vector<int32_t> &mine = exits[sub];
+      const size_t before = mine.size();
+      for (const CallSite &e : cx.calls[static_cast<size_t>(unitOfSub[sub])]) {
         const std::vector<int32_t> &theirs = exits[static_cast<size_t>(e.callee)];
         mine.insert(mine.end(), theirs.begin(), theirs.end());
       }
       std::sort(mine.begin(), mine.end());
       mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
-      color[static_cast<size_t>(sub)] = Black;
-      stack.pop_back();
+      grew = grew || mine.size() != before;
     }
   }
 
