@@ -51,5 +51,41 @@ TEST(FanucExamples, ToolChange) {
   }
 }
 
+// examples/fanuc_magazine.pmc: 12 pots numbered 1..12 (ROTB with RN0 = 1, DIR = 1), 8 ms ticks.
+TEST(FanucExamples, Magazine) {
+  for (const char *engine : {"interp", "jit"}) {
+    CliResult r =
+        runCli({"run", sourcePath("examples/fanuc_magazine.pmc"), "--engine", engine, "--ticks",
+                "52", "--period-ms", "8", "--stimulus", sourcePath("examples/fanuc_magazine.stim"),
+                "--watch", "R41,R42,R30.1,Y2.0,Y2.1,Y2.2,G4.3,A0.1"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 1, "Y2.1"), 0); // no T command yet
+    // T10 at pot 2: forward 8 pots, reverse 4 -> reverse; 3 steps to the pot before (11).
+    EXPECT_EQ(csvValue(r.out, 2, "R30.1"), 1);
+    EXPECT_EQ(csvValue(r.out, 2, "R41"), 4);
+    EXPECT_EQ(csvValue(r.out, 2, "R42"), 3);
+    EXPECT_EQ(csvValue(r.out, 2, "Y2.1"), 1);
+    EXPECT_EQ(csvValue(r.out, 2, "Y2.0"), 0);
+    EXPECT_EQ(csvValue(r.out, 10, "R41"), 2); // pot 12
+    EXPECT_EQ(csvValue(r.out, 13, "Y2.2"), 0);
+    EXPECT_EQ(csvValue(r.out, 14, "Y2.2"), 1); // pot 11: the next one is 10, slow
+    EXPECT_EQ(csvValue(r.out, 18, "Y2.1"), 0); // pot 10 at tick 18 (144 ms): stop
+    EXPECT_EQ(csvValue(r.out, 18, "Y2.2"), 0);
+    EXPECT_EQ(csvValue(r.out, 30, "G4.3"), 0); // 240 ms < 144 + 100
+    EXPECT_EQ(csvValue(r.out, 31, "G4.3"), 1); // 248 ms
+    EXPECT_EQ(csvValue(r.out, 36, "G4.3"), 0); // TF dropped
+    // T3 with the door open: the message, P10 leaves by JMPC, ROTB does not run (R41 keeps 0).
+    EXPECT_EQ(csvValue(r.out, 40, "A0.1"), 1);
+    EXPECT_EQ(csvValue(r.out, 40, "R41"), 0);
+    EXPECT_EQ(csvValue(r.out, 40, "Y2.0") + csvValue(r.out, 40, "Y2.1"), 0);
+    // Door closed: 10 -> 3 is 5 forward or 7 reverse: forward.
+    EXPECT_EQ(csvValue(r.out, 46, "A0.1"), 0);
+    EXPECT_EQ(csvValue(r.out, 46, "R41"), 5);
+    EXPECT_EQ(csvValue(r.out, 46, "R42"), 4);
+    EXPECT_EQ(csvValue(r.out, 46, "Y2.0"), 1);
+    EXPECT_EQ(csvValue(r.out, 46, "R30.1"), 0);
+  }
+}
+
 } // namespace
 } // namespace lj::clitest
