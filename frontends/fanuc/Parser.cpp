@@ -35,6 +35,63 @@ std::string quote(std::string_view t) {
 
 const TargetProfile &tp() { return profile(); }
 
+} // namespace
+
+namespace detail {
+
+std::string ranges(Area a) {
+  const AreaInfo &i = profile().area(a);
+  std::string n(i.name);
+  std::string r = n + "0.." + n + std::to_string(i.count - 1);
+  if (i.upperCount > 0)
+    r += ", " + n + std::to_string(i.upperLo) + ".." + n +
+         std::to_string(i.upperLo + i.upperCount - 1);
+  return r;
+}
+
+bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, std::string &error) {
+  size_t n = 0;
+  while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
+  std::optional<Area> a = profile().areaFromName(s.substr(0, n));
+  if (n == 0 || !a) {
+    error = "unknown address " + quote(s) + " (areas: X Y F G R E A T C K D" +
+            (labels ? "; labels L, subroutines P)" : ")");
+    return false;
+  }
+  size_t pos = n;
+  int64_t idx = 0;
+  size_t start = pos;
+  while (pos < s.size() && isDigit(s[pos])) {
+    idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
+    ++pos;
+  }
+  bit = -1;
+  bool ok = pos > start;
+  if (ok && pos < s.size() && s[pos] == '.') {
+    ++pos;
+    size_t bs = pos;
+    bit = 0;
+    while (pos < s.size() && isDigit(s[pos]))
+      bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
+    ok = pos > bs;
+  }
+  if (!ok || pos != s.size()) {
+    error = "malformed address " + quote(s);
+    return false;
+  }
+  out = Operand{};
+  out.area = *a;
+  out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
+  if (!profile().validIndex(*a, idx)) {
+    error = "address " + quote(s) + " out of range (" + ranges(*a) + ")";
+    return false;
+  }
+  return true;
+}
+} // namespace detail
+
+namespace {
+
 /// The basic instructions (reference 5) and how each changes ST.
 struct Basic {
   const char *name;
@@ -171,56 +228,16 @@ public:
   // ---- Emitter ----
   void error(SourceLoc at, std::string msg) override { diags_.error(at, std::move(msg)); }
 
+  /// Token `t` as an address (`R100`, `X0.0`): area and index in range, `bit` -1 or the number
+  /// after the dot.
   bool address(const Token &t, Operand &out, int64_t &bit) {
-    std::string_view s = t.text;
-    size_t n = 0;
-    while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
-    std::optional<Area> a = tp().areaFromName(s.substr(0, n));
-    if (n == 0 || !a) {
-      error(t.loc, "unknown address " + quote(s) +
-                       " (areas: X Y F G R E A T C K D; labels L, subroutines P)");
+    std::string why;
+    if (!detail::readAddress(t.text, true, out, bit, why)) {
+      error(t.loc, why);
       return false;
     }
-    size_t pos = n;
-    int64_t idx = 0;
-    size_t start = pos;
-    while (pos < s.size() && isDigit(s[pos])) {
-      idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
-      ++pos;
-    }
-    bit = -1;
-    bool ok = pos > start;
-    if (ok && pos < s.size() && s[pos] == '.') {
-      ++pos;
-      size_t bs = pos;
-      bit = 0;
-      while (pos < s.size() && isDigit(s[pos]))
-        bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
-      ok = pos > bs;
-    }
-    if (!ok || pos != s.size()) {
-      error(t.loc, "malformed address " + quote(s));
-      return false;
-    }
-    out = Operand{};
-    out.area = *a;
-    out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
     out.loc = t.loc;
-    if (!tp().validIndex(*a, idx)) {
-      error(t.loc, "address " + quote(s) + " out of range (" + ranges(*a) + ")");
-      return false;
-    }
     return true;
-  }
-
-  static std::string ranges(Area a) {
-    const AreaInfo &i = tp().area(a);
-    std::string n(i.name);
-    std::string r = n + "0.." + n + std::to_string(i.count - 1);
-    if (i.upperCount > 0)
-      r += ", " + n + std::to_string(i.upperLo) + ".." + n +
-           std::to_string(i.upperLo + i.upperCount - 1);
-    return r;
   }
 
   bool bitOperand(const Token &t, bool writes, Operand &out) override {
@@ -302,7 +319,7 @@ public:
     }
     if (!tp().validSpan(out.area, out.index, width)) {
       error(t.loc, quote(s) + " as " + std::to_string(width) + " bytes runs past the end of " +
-                       ranges(out.area));
+                       detail::ranges(out.area));
       return false;
     }
     if (writes && !tp().area(out.area).writable) {

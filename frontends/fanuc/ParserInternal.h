@@ -105,6 +105,13 @@ bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at);
 /// `s` in upper case.
 std::string upper(std::string_view s);
 
+/// `s` as a FANUC address (`R100`, `X0000.3`): `out` gets its area and index (in one of the
+/// area's ranges), `bit` -1 or the number after the dot (not checked against 0..7). False with
+/// `error` set otherwise; `labels`: the unknown-area message lists L and P too.
+bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, std::string &error);
+/// The ranges of area `a` as messages show them: `R0..R7999, R9000..R9499`.
+std::string ranges(Area a);
+
 /// A constant operand `v` located at `at`.
 inline Operand konst(int64_t v, SourceLoc at = {}) {
   Operand o;
