@@ -144,10 +144,25 @@ void tokenize(std::string_view line, int32_t lineNo, std::vector<Token> &toks,
 
 class Parser final : public detail::Emitter {
 public:
-  Parser(ParsedProgram &p, Diagnostics &d) : prog_(p), diags_(d) {}
+  /// `symbols`: the program's symbol table (null: none, names are not resolved); `rejected`:
+  /// the names (upper case) of symbol definitions that had errors, and their lines.
+  Parser(ParsedProgram &p, Diagnostics &d, const SymbolTable *symbols,
+         const std::map<std::string, int32_t> &rejected)
+      : prog_(p), diags_(d), symbols_(symbols), rejected_(rejected) {}
 
   void line(const std::vector<Token> &toks, bool hasComment, std::string_view comment) {
     const std::string head = detail::upper(toks[0].text);
+    if (!toks[0].text.empty() && toks[0].text[0] == '%') {
+      error(toks[0].loc, quote(toks[0].text) +
+                             " among mnemonic lines: a mnemonic file starts with %@A or a section "
+                             "header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md");
+      return;
+    }
+    if (symbols_)
+      for (size_t k = 1; k < toks.size(); ++k)
+        if (const Symbol *sym =
+                SymbolTable::isNameShaped(toks[k].text) ? symbols_->find(toks[k].text) : nullptr)
+          symbolAt_.emplace(std::make_pair(toks[k].loc.line, toks[k].loc.col), sym);
     if (head == "(PRM)" || head == "PRM") {
       if (!pending_) {
         error(toks[0].loc, "parameter line without a functional instruction before it");
@@ -226,17 +241,44 @@ public:
   }
 
   // ---- Emitter ----
-  void error(SourceLoc at, std::string msg) override { diags_.error(at, std::move(msg)); }
+  // An error at an operand written as a symbol says what the symbol stands for.
+  void error(SourceLoc at, std::string msg) override {
+    if (auto it = symbolAt_.find({at.line, at.col}); it != symbolAt_.end())
+      msg += " (symbol " + SymbolTable::quote(it->second->name) + " = " + it->second->address + ")";
+    diags_.error(at, std::move(msg));
+  }
 
-  /// Token `t` as an address (`R100`, `X0.0`): area and index in range, `bit` -1 or the number
-  /// after the dot.
+  std::string unknownSymbol(std::string_view name) const {
+    auto it = rejected_.find(detail::upper(name));
+    return "unknown symbol " + SymbolTable::quote(name) +
+           (it == rejected_.end()
+                ? std::string()
+                : " (its definition on line " + std::to_string(it->second) + " has an error)");
+  }
+
+  /// Token `t` as an address (`R100`, `X0.0`; with a symbol table a name stands for its
+  /// symbol's address): area and index in range, `bit` -1 or the number after the dot.
   bool address(const Token &t, Operand &out, int64_t &bit) {
+    std::string_view s = t.text;
+    int16_t symbol = -1;
+    if (symbols_ && SymbolTable::isNameShaped(s)) {
+      const Symbol *sym = symbols_->find(s);
+      if (!sym) {
+        error(t.loc, unknownSymbol(s));
+        return false;
+      }
+      // The table holds canonical addresses: the checks that follow are exactly those of the
+      // address written out, and their messages name the symbol (error()).
+      s = sym->address;
+      symbol = static_cast<int16_t>(sym - symbols_->symbols().data());
+    }
     std::string why;
-    if (!detail::readAddress(t.text, true, out, bit, why)) {
+    if (!detail::readAddress(s, true, out, bit, why)) {
       error(t.loc, why);
       return false;
     }
     out.loc = t.loc;
+    out.symbol = symbol;
     return true;
   }
 
@@ -333,6 +375,12 @@ public:
   }
 
   bool labelOperand(const Token &t, Area a, Operand &out) override {
+    if (symbols_ && SymbolTable::isNameShaped(t.text)) {
+      error(t.loc, std::string("expected ") +
+                       (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
+                       quote(t.text) + ": labels and subroutines are not symbols");
+      return false;
+    }
     int64_t bit;
     if (!address(t, out, bit) || out.area != a || bit >= 0) {
       if (out.area != a || bit >= 0)
@@ -485,6 +533,10 @@ private:
 
   ParsedProgram &prog_;
   Diagnostics &diags_;
+  const SymbolTable *symbols_;
+  const std::map<std::string, int32_t> &rejected_;
+  /// (line, column) of each operand token written as a symbol name.
+  std::map<std::pair<int32_t, int32_t>, const Symbol *> symbolAt_;
   int depth_ = 0, level_ = 1;
   int32_t level3Start_ = -1;
   bool sawEnd1_ = false, sawEnd2_ = false, afterEnd_ = false, inSub_ = false;
@@ -615,17 +667,27 @@ const DialectText &dialectText() {
 }
 
 ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags) {
+  return parsePmc(text, std::move(file), diags, nullptr);
+}
+
+ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags,
+                       const SymbolTable *symbols) {
   ParsedProgram prog;
   prog.file = std::move(file);
   prog.dialect = &dialectText();
   prog.profile = &profile();
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  Parser p(prog, diags);
+  SymbolTable table(symbolRules());
+  const detail::PmcSource src = detail::readPmcSource(text, symbols, table, diags);
+  if (!src.hasLadder) return prog;
+  if (src.hasTable) prog.symbols = table.symbols();
+  Parser p(prog, diags, src.hasTable ? &table : nullptr, src.rejected);
   std::vector<Token> toks;
   std::string_view comment;
   bool hasComment = false;
-  int32_t line = 0;
+  int32_t line = src.firstLine - 1;
   size_t pos = 0;
+  text = src.ladder;
   while (pos < text.size()) {
     size_t nl = text.find('\n', pos);
     if (nl == std::string_view::npos) nl = text.size();
@@ -656,11 +718,7 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
 std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
-  if (symbols && !symbols->symbols().empty()) {
-    diags.error({1, 1}, "symbols are not supported for FANUC PMC programs yet");
-    return std::nullopt;
-  }
-  ParsedProgram parsed = parsePmc(text, std::move(file), diags);
+  ParsedProgram parsed = parsePmc(text, std::move(file), diags, symbols);
   if (diags.hasErrors()) return std::nullopt;
   std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
   if (diags.hasErrors()) return std::nullopt;
