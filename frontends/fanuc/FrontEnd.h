@@ -13,13 +13,28 @@
 
 namespace lj::fanuc {
 
-/// Parse PMC mnemonic text. Never fails as a whole: bad lines become diagnostics.
+/// Parse a `.pmc` text: plain mnemonic lines, or a FANUC mnemonic file whose %@3 section holds
+/// them and whose %@2-E sections define symbols (docs/fanuc-pmc.md "Symbols and comments").
+/// Never fails as a whole: bad lines become diagnostics.
 ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags);
 
-/// parsePmc + verify; nothing on any error. `symbols` is not supported yet (must be null).
+/// parsePmc with `symbols` (may be null) defined before the file's own (a name defined in both
+/// is an error). With any symbols or a %@2-E section, an operand token shaped like a name
+/// (SymbolTable::isNameShaped) is replaced by its symbol's address and checked like that
+/// address (Operand::symbol records it); an unknown name is the error "unknown symbol 'NAME'".
+ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags,
+                       const SymbolTable *symbols);
+
+/// parsePmc (with `symbols`, may be null: e.g. the table a ladder JSON carries, checked again
+/// under symbolRules()) + verify; nothing on any error.
 std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols);
+
+/// The rules of a FANUC symbol table: names of at most 40 bytes (0i-D extended symbols),
+/// comments of at most 255, FANUC bit or byte addresses (not L or P) written canonically
+/// (`F0000.0` -> `F0.0`).
+const SymbolRules &symbolRules();
 
 /// An operand as PMC text: `X0.0`, `R100`, `D100` (width shown by the instruction), `P10`.
 std::string formatOperand(const Operand &op);

@@ -35,6 +35,63 @@ std::string quote(std::string_view t) {
 
 const TargetProfile &tp() { return profile(); }
 
+} // namespace
+
+namespace detail {
+
+std::string ranges(Area a) {
+  const AreaInfo &i = profile().area(a);
+  std::string n(i.name);
+  std::string r = n + "0.." + n + std::to_string(i.count - 1);
+  if (i.upperCount > 0)
+    r += ", " + n + std::to_string(i.upperLo) + ".." + n +
+         std::to_string(i.upperLo + i.upperCount - 1);
+  return r;
+}
+
+bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, std::string &error) {
+  size_t n = 0;
+  while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
+  std::optional<Area> a = profile().areaFromName(s.substr(0, n));
+  if (n == 0 || !a) {
+    error = "unknown address " + quote(s) + " (areas: X Y F G R E A T C K D" +
+            (labels ? "; labels L, subroutines P)" : ")");
+    return false;
+  }
+  size_t pos = n;
+  int64_t idx = 0;
+  size_t start = pos;
+  while (pos < s.size() && isDigit(s[pos])) {
+    idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
+    ++pos;
+  }
+  bit = -1;
+  bool ok = pos > start;
+  if (ok && pos < s.size() && s[pos] == '.') {
+    ++pos;
+    size_t bs = pos;
+    bit = 0;
+    while (pos < s.size() && isDigit(s[pos]))
+      bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
+    ok = pos > bs;
+  }
+  if (!ok || pos != s.size()) {
+    error = "malformed address " + quote(s);
+    return false;
+  }
+  out = Operand{};
+  out.area = *a;
+  out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
+  if (!profile().validIndex(*a, idx)) {
+    error = "address " + quote(s) + " out of range (" + ranges(*a) + ")";
+    return false;
+  }
+  return true;
+}
+} // namespace detail
+
+namespace {
+
 /// The basic instructions (reference 5) and how each changes ST.
 struct Basic {
   const char *name;
@@ -87,10 +144,25 @@ void tokenize(std::string_view line, int32_t lineNo, std::vector<Token> &toks,
 
 class Parser final : public detail::Emitter {
 public:
-  Parser(ParsedProgram &p, Diagnostics &d) : prog_(p), diags_(d) {}
+  /// `symbols`: the program's symbol table (null: none, names are not resolved); `rejected`:
+  /// the names (upper case) of symbol definitions that had errors, and their lines.
+  Parser(ParsedProgram &p, Diagnostics &d, const SymbolTable *symbols,
+         const std::map<std::string, int32_t> &rejected)
+      : prog_(p), diags_(d), symbols_(symbols), rejected_(rejected) {}
 
   void line(const std::vector<Token> &toks, bool hasComment, std::string_view comment) {
     const std::string head = detail::upper(toks[0].text);
+    if (!toks[0].text.empty() && toks[0].text[0] == '%') {
+      error(toks[0].loc, quote(toks[0].text) +
+                             " among mnemonic lines: a mnemonic file starts with %@A or a section "
+                             "header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md");
+      return;
+    }
+    if (symbols_)
+      for (size_t k = 1; k < toks.size(); ++k)
+        if (const Symbol *sym =
+                SymbolTable::isNameShaped(toks[k].text) ? symbols_->find(toks[k].text) : nullptr)
+          symbolAt_.emplace(std::make_pair(toks[k].loc.line, toks[k].loc.col), sym);
     if (head == "(PRM)" || head == "PRM") {
       if (!pending_) {
         error(toks[0].loc, "parameter line without a functional instruction before it");
@@ -169,58 +241,45 @@ public:
   }
 
   // ---- Emitter ----
-  void error(SourceLoc at, std::string msg) override { diags_.error(at, std::move(msg)); }
-
-  bool address(const Token &t, Operand &out, int64_t &bit) {
-    std::string_view s = t.text;
-    size_t n = 0;
-    while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
-    std::optional<Area> a = tp().areaFromName(s.substr(0, n));
-    if (n == 0 || !a) {
-      error(t.loc, "unknown address " + quote(s) +
-                       " (areas: X Y F G R E A T C K D; labels L, subroutines P)");
-      return false;
-    }
-    size_t pos = n;
-    int64_t idx = 0;
-    size_t start = pos;
-    while (pos < s.size() && isDigit(s[pos])) {
-      idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
-      ++pos;
-    }
-    bit = -1;
-    bool ok = pos > start;
-    if (ok && pos < s.size() && s[pos] == '.') {
-      ++pos;
-      size_t bs = pos;
-      bit = 0;
-      while (pos < s.size() && isDigit(s[pos]))
-        bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
-      ok = pos > bs;
-    }
-    if (!ok || pos != s.size()) {
-      error(t.loc, "malformed address " + quote(s));
-      return false;
-    }
-    out = Operand{};
-    out.area = *a;
-    out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
-    out.loc = t.loc;
-    if (!tp().validIndex(*a, idx)) {
-      error(t.loc, "address " + quote(s) + " out of range (" + ranges(*a) + ")");
-      return false;
-    }
-    return true;
+  // An error at an operand written as a symbol says what the symbol stands for.
+  void error(SourceLoc at, std::string msg) override {
+    if (auto it = symbolAt_.find({at.line, at.col}); it != symbolAt_.end())
+      msg += " (symbol " + SymbolTable::quote(it->second->name) + " = " + it->second->address + ")";
+    diags_.error(at, std::move(msg));
   }
 
-  static std::string ranges(Area a) {
-    const AreaInfo &i = tp().area(a);
-    std::string n(i.name);
-    std::string r = n + "0.." + n + std::to_string(i.count - 1);
-    if (i.upperCount > 0)
-      r += ", " + n + std::to_string(i.upperLo) + ".." + n +
-           std::to_string(i.upperLo + i.upperCount - 1);
-    return r;
+  std::string unknownSymbol(std::string_view name) const {
+    auto it = rejected_.find(detail::upper(name));
+    return "unknown symbol " + SymbolTable::quote(name) +
+           (it == rejected_.end()
+                ? std::string()
+                : " (its definition on line " + std::to_string(it->second) + " has an error)");
+  }
+
+  /// Token `t` as an address (`R100`, `X0.0`; with a symbol table a name stands for its
+  /// symbol's address): area and index in range, `bit` -1 or the number after the dot.
+  bool address(const Token &t, Operand &out, int64_t &bit) {
+    std::string_view s = t.text;
+    int16_t symbol = -1;
+    if (symbols_ && SymbolTable::isNameShaped(s)) {
+      const Symbol *sym = symbols_->find(s);
+      if (!sym) {
+        error(t.loc, unknownSymbol(s));
+        return false;
+      }
+      // The table holds canonical addresses: the checks that follow are exactly those of the
+      // address written out, and their messages name the symbol (error()).
+      s = sym->address;
+      symbol = static_cast<int16_t>(sym - symbols_->symbols().data());
+    }
+    std::string why;
+    if (!detail::readAddress(s, true, out, bit, why)) {
+      error(t.loc, why);
+      return false;
+    }
+    out.loc = t.loc;
+    out.symbol = symbol;
+    return true;
   }
 
   bool bitOperand(const Token &t, bool writes, Operand &out) override {
@@ -302,7 +361,7 @@ public:
     }
     if (!tp().validSpan(out.area, out.index, width)) {
       error(t.loc, quote(s) + " as " + std::to_string(width) + " bytes runs past the end of " +
-                       ranges(out.area));
+                       detail::ranges(out.area));
       return false;
     }
     if (writes && !tp().area(out.area).writable) {
@@ -316,6 +375,12 @@ public:
   }
 
   bool labelOperand(const Token &t, Area a, Operand &out) override {
+    if (symbols_ && SymbolTable::isNameShaped(t.text)) {
+      error(t.loc, std::string("expected ") +
+                       (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
+                       quote(t.text) + ": labels and subroutines are not symbols");
+      return false;
+    }
     int64_t bit;
     if (!address(t, out, bit) || out.area != a || bit >= 0) {
       if (out.area != a || bit >= 0)
@@ -468,6 +533,10 @@ private:
 
   ParsedProgram &prog_;
   Diagnostics &diags_;
+  const SymbolTable *symbols_;
+  const std::map<std::string, int32_t> &rejected_;
+  /// (line, column) of each operand token written as a symbol name.
+  std::map<std::pair<int32_t, int32_t>, const Symbol *> symbolAt_;
   int depth_ = 0, level_ = 1;
   int32_t level3Start_ = -1;
   bool sawEnd1_ = false, sawEnd2_ = false, afterEnd_ = false, inSub_ = false;
@@ -598,17 +667,27 @@ const DialectText &dialectText() {
 }
 
 ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags) {
+  return parsePmc(text, std::move(file), diags, nullptr);
+}
+
+ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags,
+                       const SymbolTable *symbols) {
   ParsedProgram prog;
   prog.file = std::move(file);
   prog.dialect = &dialectText();
   prog.profile = &profile();
   if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  Parser p(prog, diags);
+  SymbolTable table(symbolRules());
+  const detail::PmcSource src = detail::readPmcSource(text, symbols, table, diags);
+  if (!src.hasLadder) return prog;
+  if (src.hasTable) prog.symbols = table.symbols();
+  Parser p(prog, diags, src.hasTable ? &table : nullptr, src.rejected);
   std::vector<Token> toks;
   std::string_view comment;
   bool hasComment = false;
-  int32_t line = 0;
+  int32_t line = src.firstLine - 1;
   size_t pos = 0;
+  text = src.ladder;
   while (pos < text.size()) {
     size_t nl = text.find('\n', pos);
     if (nl == std::string_view::npos) nl = text.size();
@@ -639,11 +718,7 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
 std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
-  if (symbols && !symbols->symbols().empty()) {
-    diags.error({1, 1}, "symbols are not supported for FANUC PMC programs yet");
-    return std::nullopt;
-  }
-  ParsedProgram parsed = parsePmc(text, std::move(file), diags);
+  ParsedProgram parsed = parsePmc(text, std::move(file), diags, symbols);
   if (diags.hasErrors()) return std::nullopt;
   std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
   if (diags.hasErrors()) return std::nullopt;

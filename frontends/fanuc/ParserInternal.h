@@ -2,9 +2,11 @@
 // and Functional.cpp (the functional instructions: SUB numbers, names, parameters).
 #pragma once
 
+#include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -104,6 +106,30 @@ bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at);
 
 /// `s` in upper case.
 std::string upper(std::string_view s);
+
+/// `s` as a FANUC address (`R100`, `X0000.3`): `out` gets its area and index (in one of the
+/// area's ranges), `bit` -1 or the number after the dot (not checked against 0..7). False with
+/// `error` set otherwise; `labels`: the unknown-area message lists L and P too.
+bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, std::string &error);
+/// The ranges of area `a` as messages show them: `R0..R7999, R9000..R9499`.
+std::string ranges(Area a);
+
+// ---- mnemonic files (MnemonicFile.cpp, B-66234EN 6.7) ----
+/// Where the ladder of a `.pmc` text is and what its symbol sections defined.
+struct PmcSource {
+  bool hasLadder = true;   ///< false: a mnemonic file without a %@3 section (an error given)
+  std::string_view ladder; ///< the mnemonic lines (the whole text of a plain file)
+  int32_t firstLine = 1;   ///< the file's line number of the ladder's first line
+  bool hasTable = false;   ///< symbols given or a %@2-E section read: names are resolved
+  /// Names (upper case) of symbol definitions rejected with an error, and their lines.
+  std::map<std::string, int32_t> rejected;
+};
+
+/// Split `text` (a plain mnemonic text or a mnemonic file of %@ sections) and read its %@2-E
+/// symbol sections into `table` after the `external` symbols (may be null), with located
+/// diagnostics for every section and symbol error.
+PmcSource readPmcSource(std::string_view text, const SymbolTable *external, SymbolTable &table,
+                        Diagnostics &diags);
 
 /// A constant operand `v` located at `at`.
 inline Operand konst(int64_t v, SourceLoc at = {}) {

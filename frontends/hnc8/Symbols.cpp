@@ -82,6 +82,12 @@ std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error
   return out;
 }
 
+const SymbolRules &SymbolTable::hnc8Rules() {
+  static constexpr SymbolRules kRules{kMaxSymbols, kMaxNameBytes, kMaxCommentBytes, "HNC-8 limit",
+                                      &SymbolTable::canonicalAddress};
+  return kRules;
+}
+
 std::string SymbolTable::key(std::string_view name) {
   std::string k(name);
   for (char &c : k)
@@ -90,10 +96,13 @@ std::string SymbolTable::key(std::string_view name) {
 }
 
 bool SymbolTable::add(std::string_view name, std::string_view address, std::string_view comment,
-                      std::string &error) {
-  if (name.size() > kMaxNameBytes) {
-    error = "symbol name " + quote(name) + " is longer than " + std::to_string(kMaxNameBytes) +
-            " bytes";
+                      std::string &error, Field *failed) {
+  Field scratch;
+  Field &field = failed ? *failed : scratch;
+  field = Field::Name;
+  if (name.size() > rules_->maxNameBytes) {
+    error = "symbol name " + quote(name) + " is longer than " +
+            std::to_string(rules_->maxNameBytes) + " bytes";
     return false;
   }
   if (!isNameShaped(name)) {
@@ -102,8 +111,9 @@ bool SymbolTable::add(std::string_view name, std::string_view address, std::stri
             "letters, digits, '_' or non-ASCII characters, and is not an address like X10";
     return false;
   }
-  std::string canon = canonicalAddress(address, error);
+  std::string canon = rules_->canonicalAddress(address, error);
   if (canon.empty()) {
+    field = Field::Address;
     error = "symbol " + quote(name) + ": " + error;
     return false;
   }
@@ -112,9 +122,10 @@ bool SymbolTable::add(std::string_view name, std::string_view address, std::stri
     comment.remove_prefix(1);
   while (!comment.empty() && (comment.back() == ' ' || comment.back() == '\t'))
     comment.remove_suffix(1);
-  if (comment.size() > kMaxCommentBytes) {
-    error = "symbol " + quote(name) + ": comment longer than " + std::to_string(kMaxCommentBytes) +
-            " bytes";
+  field = Field::Comment;
+  if (comment.size() > rules_->maxCommentBytes) {
+    error = "symbol " + quote(name) + ": comment longer than " +
+            std::to_string(rules_->maxCommentBytes) + " bytes";
     return false;
   }
   for (char c : comment) {
@@ -124,14 +135,16 @@ bool SymbolTable::add(std::string_view name, std::string_view address, std::stri
       return false;
     }
   }
+  field = Field::Name;
   std::string k = key(name);
   if (auto it = index_.find(k); it != index_.end()) {
     error = "duplicate symbol " + quote(name) + " (already defined as " +
             quote(list_[it->second].name) + "; names are case-insensitive)";
     return false;
   }
-  if (list_.size() >= kMaxSymbols) {
-    error = "too many symbols: at most " + std::to_string(kMaxSymbols) + " (HNC-8 limit)";
+  if (list_.size() >= rules_->maxSymbols) {
+    error = "too many symbols: at most " + std::to_string(rules_->maxSymbols) + " (" +
+            rules_->limitOf + ")";
     return false;
   }
   index_.emplace(std::move(k), list_.size());

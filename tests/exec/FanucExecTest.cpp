@@ -211,5 +211,52 @@ TEST_P(FanucExec, SystemRelays) {
   }
 }
 
+// docs/fanuc-pmc.md "Symbols and comments": a mnemonic file whose operands are symbol names runs
+// exactly like the plain program with their addresses written out (bit, byte and functional
+// operands, (PRM) lines), tick by tick on every engine.
+TEST_P(FanucExec, SymbolsRunLikeTheirAddresses) {
+  auto named = pmc("%@A\n"
+                   "%@2-E(SYM=1 ADR=2 CM1=3 CM2=4)\n"
+                   "START,X0000.0,START KEY,\n"
+                   "STOP,X0000.1,STOP KEY,\n"
+                   "SETPOINT,X0001,SET POINT,BINARY\n"
+                   "RUN,Y0000.0,RUN LAMP,\n"
+                   "DONE,Y0000.1,\n"
+                   "EDGE,R0000.0,START EDGE,\n"
+                   "LATCH,R0000.1,\n"
+                   "COPY,D0010,SET POINT COPY,\n"
+                   "SUM,D0012,\n"
+                   "%\n"
+                   "%@3\n"
+                   "RD START\nDIFU 1\nWRT EDGE\n"
+                   "RD EDGE\nOR LATCH\nAND.NOT STOP\nWRT LATCH\nWRT RUN\n"
+                   "RD LATCH\nSUB 24\n(PRM) 1\n(PRM) 40\nWRT DONE\n"
+                   "RD LATCH\nMOVB SETPOINT COPY\n"
+                   "RD STOP\nRD.STK LATCH\nADDB 1 COPY 3 SUM\n"
+                   "END1\nEND2\nEND\n"
+                   "%\n"
+                   "%@E\n");
+  auto plain = pmc("RD X0.0\nDIFU 1\nWRT R0.0\n"
+                   "RD R0.0\nOR R0.1\nAND.NOT X0.1\nWRT R0.1\nWRT Y0.0\n"
+                   "RD R0.1\nSUB 24\n(PRM) 1\n(PRM) 40\nWRT Y0.1\n"
+                   "RD R0.1\nMOVB X1 D10\n"
+                   "RD X0.1\nRD.STK R0.1\nADDB 1 D10 3 D12\n"
+                   "END1\nEND2\nEND\n");
+  ASSERT_TRUE(named && plain);
+  for (Machine *m : {named.get(), plain.get()}) m->setPeriodMs(8);
+  for (int t = 0; t < 60; ++t) {
+    for (Machine *m : {named.get(), plain.get()}) {
+      set(*m, "X0.0", t >= 3 && t < 6);
+      set(*m, "X0.1", t >= 40 && t < 42);
+      set(*m, "X1", 17 * t);
+      m->tick();
+    }
+    for (const char *a : {"Y0", "R0", "D10", "D12"})
+      ASSERT_EQ(get(*named, a), get(*plain, a)) << a << " tick " << t;
+  }
+  EXPECT_EQ(get(*plain, "Y0.1"), 0);                      // the stop key ended the run ...
+  EXPECT_EQ(get(*plain, "D12"), 17 * 39 % 256 - 256 + 3); // ... after copying X1 at tick 39
+}
+
 } // namespace
 } // namespace lj::test
