@@ -51,6 +51,22 @@ bool readProgramFile(const std::string &path, ProgramSource &src, std::string &e
       return false;
     }
     src.dialect = named;
+    if (named != &defaultDialect()) { // read back through the program text it carries
+      auto nets = std::make_shared<ladder::Networks>();
+      if (!ladder::readJson(text, *nets, error)) {
+        error = path + ": " + error;
+        return false;
+      }
+      if (nets->source.empty()) {
+        error = path + ": a " + std::string(named->name) +
+                " ladder JSON is read back through the program text it carries (\"source\", "
+                "written by `ladderjit ladder --format json`); this one has none";
+        return false;
+      }
+      src.text = nets->source;
+      src.carried = std::move(nets);
+      return true;
+    }
     auto lad = std::make_shared<ladder::StlFromJson>();
     if (!ladder::stlFromJson(text, *lad, error)) {
       error = path + ": " + error;
@@ -90,6 +106,13 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
       capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
                kMaxDiagnosticLines, src.path);
   if (prog && src.ladder) ladder::applyOrigins(*prog, *src.ladder);
+  std::string edited;
+  if (prog && !diags.hasErrors() && src.carried &&
+      !ladder::sameStatementsAs(*src.carried, ladder::fromProgram(*prog), edited)) {
+    diagnostics += src.path + ": error: " + edited + "; the networks of a " + src.dialect->name +
+                   " program are not read back on their own: edit its program text\n";
+    return std::nullopt;
+  }
   if (prog && !diags.hasErrors()) return prog;
   if (!diags.hasErrors()) // a front-end bug, but the user still deserves a reason
     diagnostics += src.path + ": error: program rejected without a diagnostic\n";

@@ -15,7 +15,8 @@
 
 namespace lj::ladder {
 struct StlFromJson;
-}
+struct Networks;
+} // namespace lj::ladder
 
 namespace lj::io {
 
@@ -28,6 +29,9 @@ struct ProgramSource {
   /// A `.json` PROGRAM (ladder networks, docs/ladder-json.md): its symbols and line map; `text`
   /// is the STL made from it.
   std::shared_ptr<const ladder::StlFromJson> ladder;
+  /// A `.json` PROGRAM of another dialect (FANUC, IEC): its networks, which must hold the
+  /// statements of the program text it carries ("source"); `text` is that program text.
+  std::shared_ptr<const ladder::Networks> carried;
   /// The dialect it is written in (formats/Dialects.h): --dialect, else the extension, else
   /// the JSON's "dialect" member, else HNC-8.
   const Dialect *dialect = &defaultDialect();

@@ -1,5 +1,6 @@
 // Writing and reading the ladder network JSON (docs/ladder-json.md), and the JSON PROGRAM
-// path: JSON -> networks -> statements -> STL text for the HNC-8 parser.
+// paths: HNC-8 JSON -> networks -> statements -> STL text for the HNC-8 parser; another
+// dialect's JSON -> the program text it carries, checked against its networks.
 #include "ladder/Json.h"
 #include "frontends/hnc8/Mnemonics.h"
 
@@ -97,6 +98,17 @@ const char *kindName(Rung::Kind k) {
   return k == Rung::Kind::Ladder ? "ladder" : k == Rung::Kind::Stl ? "stl" : "marker";
 }
 
+/// The op whose neutral name (InstrInfo::name) is `m`: how the JSON writes an operation HNC-8
+/// does not spell (a FANUC ROT is `BcdRotation`).
+bool neutralName(std::string_view m, Op &out) {
+  for (int k = 0; k < kOpCount; ++k)
+    if (m == instrInfo(static_cast<Op>(k)).name) {
+      out = static_cast<Op>(k);
+      return true;
+    }
+  return false;
+}
+
 /// Reader with the JSON path of the value being read, for messages.
 class Reader {
 public:
@@ -158,7 +170,7 @@ public:
     if (needInstr) {
       std::string m;
       if (!str(j, "instr", path, m)) return false;
-      if (!hnc8::lookupMnemonic(m, e.op))
+      if (!hnc8::lookupMnemonic(m, e.op) && !neutralName(m, e.op))
         return fail(path + ".instr", "unknown instruction " + quoteToken(m, 40));
     }
     if (!integer(j, "id", path, e.id) || !integer(j, "line", path, e.loc.line) ||
@@ -311,12 +323,13 @@ private:
 
 } // namespace
 
-std::string writeJson(const Networks &nets) {
+std::string writeJson(const Networks &nets, std::string_view source) {
   json j;
   j["format"] = "ladderjit-ladder";
   j["version"] = kJsonVersion;
   j["dialect"] = nets.dialect;
   j["file"] = nets.file;
+  if (!source.empty()) j["source"] = std::string(source);
   json syms = json::array();
   for (const Symbol &s : nets.symbols)
     syms.push_back({{"name", s.name}, {"address", s.address}, {"comment", s.comment}});
@@ -359,11 +372,13 @@ bool readJson(std::string_view text, Networks &out, std::string &error) {
   if (!j.contains("version") || !j["version"].is_number_integer() ||
       j["version"].get<int64_t>() != kJsonVersion)
     return rd.fail("version", "this ladderjit reads version " + std::to_string(kJsonVersion));
-  if (dialect != "hnc8")
-    return rd.fail("dialect", "unsupported dialect " + quoteToken(dialect, 40) + " (have: hnc8)");
+  if (dialect.empty()) return rd.fail("dialect", "empty");
   out = Networks{};
   out.dialect = dialect;
   if (!rd.str(j, "file", "", out.file, false)) return false;
+  if (j.contains("source") && !j["source"].is_string())
+    return rd.fail("source", "expected a string (the program text)");
+  if (j.contains("source")) out.source = j["source"].get<std::string>();
   if (j.contains("symbols")) {
     const json &s = j["symbols"];
     if (!s.is_array()) return rd.fail("symbols", "expected an array");
@@ -422,6 +437,12 @@ std::string stlText(const std::vector<Element> &stmts, const std::vector<std::st
 bool stlFromJson(std::string_view text, StlFromJson &out, std::string &error) {
   Networks nets;
   if (!readJson(text, nets, error)) return false;
+  if (nets.dialect != "hnc8") {
+    error = "dialect: " + quoteToken(nets.dialect, 40) +
+            " networks are read back through the program text they carry (\"source\"), not as "
+            "HNC-8 STL";
+    return false;
+  }
   for (size_t i = 0; i < nets.symbols.size(); ++i) {
     const Symbol &s = nets.symbols[i];
     std::string err;
@@ -464,6 +485,38 @@ std::string renderDiagnostics(const Diagnostics &diags, const StlFromJson &src) 
     }
   }
   return out.render();
+}
+
+bool sameStatementsAs(const Networks &given, const Networks &made, std::string &error) {
+  std::vector<Element> a, b;
+  std::vector<std::string> where, whereMade;
+  if (!toStatements(given, a, error, &where) || !toStatements(made, b, error, &whereMade))
+    return false;
+  auto operandsOf = [](const Element &e) {
+    std::string t;
+    for (size_t k = 0; k < e.operands.size(); ++k)
+      t += " " + (k < e.symbols.size() && !e.symbols[k].empty()
+                      ? e.symbols[k] + "(" + e.operands[k] + ")"
+                      : e.operands[k]);
+    return t;
+  };
+  auto show = [&](const Element &e) { return mnemonic(e.op) + operandsOf(e); };
+  const size_t n = std::min(a.size(), b.size());
+  for (size_t i = 0; i < n; ++i) {
+    if (a[i].op == b[i].op && a[i].operands == b[i].operands && a[i].symbols == b[i].symbols &&
+        a[i].id == b[i].id)
+      continue;
+    error = where[i] + " (id " + std::to_string(a[i].id) + "): the networks say '" + show(a[i]) +
+            "', the program text they carry says '" + show(b[i]) + "' (id " +
+            std::to_string(b[i].id) + ")";
+    return false;
+  }
+  if (a.size() != b.size()) {
+    error = "the networks hold " + std::to_string(a.size()) +
+            " statements, the program text they carry " + std::to_string(b.size());
+    return false;
+  }
+  return true;
 }
 
 void applyOrigins(VerifiedProgram &prog, const StlFromJson &src) {

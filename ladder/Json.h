@@ -12,8 +12,10 @@ namespace lj::ladder {
 
 constexpr int kJsonVersion = 1;
 
-/// The networks as JSON text (one object; schema docs/ladder-json.md).
-std::string writeJson(const Networks &nets);
+/// The networks as JSON text (one object; schema docs/ladder-json.md). `source`, when not
+/// empty, is written as the "source" member: the program text a JSON of a dialect other than
+/// HNC-8 is read back through (docs/ladder-json.md "Other dialects").
+std::string writeJson(const Networks &nets, std::string_view source = {});
 
 /// Parse the JSON form. False with `error` naming the place (`parts[1].rungs[3].network...`).
 bool readJson(std::string_view text, Networks &out, std::string &error);
@@ -39,6 +41,12 @@ std::string stlText(const std::vector<Element> &stmts, const std::vector<std::st
 
 /// JSON PROGRAM -> STL. False with `error` for bad JSON or a network with no STL form.
 bool stlFromJson(std::string_view json, StlFromJson &out, std::string &error);
+
+/// Whether `given` (networks read from a JSON) hold the statements of `made` (the networks of
+/// the program verified from the text the JSON carries): the same operations, operand texts,
+/// symbols and statement ids in the same order; rung splits and comments may differ. False with
+/// `error` naming the first difference by its place in `given`.
+bool sameStatementsAs(const Networks &given, const Networks &made, std::string &error);
 
 /// Diagnostics on generated STL, pointed back into the JSON (rung and element, recorded line).
 std::string renderDiagnostics(const Diagnostics &diags, const StlFromJson &src);

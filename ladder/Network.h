@@ -82,6 +82,8 @@ struct Networks {
   std::vector<Part> parts;
   std::vector<Symbol> symbols;
   std::vector<std::string> trailingComments; ///< comment lines after the last statement
+  /// The JSON's "source": the program text a non-HNC-8 JSON is read back through (empty: none).
+  std::string source;
 };
 
 /// Networks of a verified program: every logic rung that has a network whose canonical STL

@@ -84,6 +84,44 @@ TEST(Dialect, LadderJsonNamesItsDialect) {
       << r.err;
 }
 
+// A FANUC program's ladder JSON (CLI.md: accepted back as PROGRAM) carries its program text and
+// is read back through it, after its networks are checked against that text: the same JSON runs
+// like the .pmc; networks edited on their own, or a JSON without its text, are refused with the
+// place and the reason (docs/ladder-json.md "Other dialects").
+TEST(Dialect, FanucLadderJsonIsReadBackThroughItsText) {
+  const std::string pmc = writeScratch("and.pmc", "RD X0.0\nAND X0.1\nWRT Y0.0\nEND1\nEND2\nEND\n");
+  CliResult lad = runCli({"ladder", pmc, "--format", "json"});
+  ASSERT_EQ(lad.exitCode, 0) << lad.err;
+  ASSERT_NE(lad.out.find("\"dialect\": \"fanuc\""), std::string::npos) << lad.out;
+  ASSERT_NE(lad.out.find("\"source\": \"RD X0.0\\nAND X0.1\\nWRT Y0.0"), std::string::npos)
+      << lad.out;
+  const std::string json = writeScratch("and.json", lad.out);
+  // Y0.0 = X0.0 AND X0.1 (fanuc-pmc.md 5): 1 only with both inputs on.
+  for (const char *x1 : {"X0.1=0", "X0.1=1"}) {
+    CliResult r =
+        runCli({"run", json, "--engine", "jit", "--set", "X0.0=1", "--set", x1, "--watch", "Y0.0"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 0, "Y0.0"), x1[5] == '1' ? 1 : 0) << x1;
+  }
+  std::string edited = lad.out;
+  edited.replace(edited.find("\"text\": \"X0.1\""), 16, "\"text\": \"X0.2\"");
+  CliResult r = runCli({"check", writeScratch("edited.json", edited)});
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(says(r, "edited.json: error: PLC1 rung 1 element 2 (id 1): the networks say 'AND "
+                      "X0.2', the program text they carry says 'AND X0.1' (id 1); the networks "
+                      "of a fanuc program are not read back on their own: edit its program text"))
+      << r.err;
+  std::string bare = lad.out;
+  const size_t at = bare.find("\"source\"");
+  bare.erase(at, bare.find('\n', at) + 1 - at);
+  r = runCli({"check", writeScratch("bare.json", bare)});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_TRUE(says(r, "bare.json: a fanuc ladder JSON is read back through the program text it "
+                      "carries (\"source\", written by `ladderjit ladder --format json`); this "
+                      "one has none"))
+      << r.err;
+}
+
 // A FANUC program by extension: run with FANUC addresses on --set / --watch (docs/fanuc-pmc.md
 // "Addresses"); RD X0.0 / WRT Y0.0 copies the input bit.
 TEST(Dialect, FanucProgramRunsWithFanucAddresses) {

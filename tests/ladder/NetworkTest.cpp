@@ -89,8 +89,16 @@ TEST(LadderNetwork, JsonErrorsNameThePlace) {
   std::string err;
   EXPECT_FALSE(readJson(json, n, err));
   EXPECT_EQ(err, "parts[0].rungs[0].network.children[0].type: unknown node type 'wire'");
-  EXPECT_FALSE(readJson(R"({"format":"ladderjit-ladder","version":1,"dialect":"fanuc"})", n, err));
-  EXPECT_EQ(err, "dialect: unsupported dialect 'fanuc' (have: hnc8)");
+  // Another dialect's networks are read, but not turned into HNC-8 STL: they go back through
+  // the program text they carry (docs/ladder-json.md "Other dialects").
+  const char *fanuc = R"({"format":"ladderjit-ladder","version":1,"dialect":"fanuc",
+    "source":"RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n","parts":[]})";
+  ASSERT_TRUE(readJson(fanuc, n, err)) << err;
+  EXPECT_EQ(n.source, "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n");
+  StlFromJson stl;
+  EXPECT_FALSE(stlFromJson(fanuc, stl, err));
+  EXPECT_EQ(err, "dialect: 'fanuc' networks are read back through the program text they carry "
+                 "(\"source\"), not as HNC-8 STL");
   EXPECT_FALSE(readJson("{", n, err));
   EXPECT_EQ(err, "not valid JSON");
   // An operand that would become two STL tokens is refused, not pasted into the text.

@@ -26,7 +26,8 @@ int runLadder(const LadderArgs &a) {
   ladder::Networks nets = ladder::fromProgram(*prog);
   std::string out;
   if (a.format == "json")
-    out = ladder::writeJson(nets);
+    // Another dialect's JSON carries its program text: it is read back through it.
+    out = ladder::writeJson(nets, src.dialect == &io::defaultDialect() ? "" : src.text);
   else if (a.format == "text")
     out = ladder::renderText(nets);
   else {
