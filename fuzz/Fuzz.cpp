@@ -203,8 +203,11 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
 
 uint64_t run(const FuzzOptions &opts, std::ostream &out) {
   if (opts.roundTrip) {
-    out << "round trip: interpreter on each program against the interpreter on its ladder "
-           "round trip (STL -> networks -> JSON -> networks -> STL)\n";
+    out << (opts.fanuc || opts.iec
+                ? "round trip: each program's networks -> JSON -> networks must hold exactly its "
+                  "statements (a FANUC / IEC JSON is read back through its program text)\n"
+                : "round trip: interpreter on each program against the interpreter on its ladder "
+                  "round trip (STL -> networks -> JSON -> networks -> STL)\n");
     auto counts = std::make_shared<ladder::RungCounts>();
     FuzzStats st = runWith(opts, out, roundTripFactory(counts));
     out << "round trip rungs: ladder " << counts->ladder << ", stl " << counts->stl << ", marker "

@@ -10,7 +10,9 @@
 namespace lj::fuzz {
 
 /// Builds, for each program, the interpreter on its round-tripped twin (STL -> networks -> JSON
-/// text -> networks -> STL -> verify). Adds each program's rung counts to `counts` if given.
+/// text -> networks -> STL -> verify); for a FANUC or IEC program, checks that networks -> JSON
+/// -> networks holds exactly its statements (an engine error otherwise) and runs the program
+/// itself. Adds each program's rung counts to `counts` if given.
 EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts);
 
 } // namespace lj::fuzz

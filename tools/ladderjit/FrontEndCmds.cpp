@@ -77,8 +77,6 @@ int runFuzz(const FuzzArgs &a) {
     return usageError(
         std::string("fuzz generates only hnc8, fanuc and iec programs, not dialect '") + d->name +
         "'");
-  if ((fanuc || iec) && a.roundTrip)
-    return usageError("fuzz --round-trip reads only hnc8 programs (the ladder round trip is STL)");
   fuzz::FuzzOptions opts;
   opts.fanuc = fanuc;
   opts.iec = iec;
