@@ -145,7 +145,7 @@ void FunctionBlocks::begin(std::string_view text, SourceLoc loc, SourceLoc opLoc
     return;
   }
   use(*blk);
-  open_.emplace();
+  open_ = Open{}; // not emplace(): clang rejects it for a nested aggregate with member initializers
   open_->blk = *blk;
   open_->loc = loc;
 }
