@@ -270,10 +270,10 @@ private:
       }
       const std::string_view num = item.substr(eq + 1);
       int n = 0;
-      bool ok = !num.empty() && num.size() <= 2;
-      for (char c : num) {
-        ok = ok && c >= '0' && c <= '9';
-        n = n * 10 + (c - '0');
+      bool ok = !num.empty() && num.size() <= 2; // at most 2 digits: n cannot overflow
+      for (size_t d = 0; ok && d < num.size(); ++d) {
+        ok = num[d] >= '0' && num[d] <= '9';
+        n = n * 10 + (num[d] - '0');
       }
       if (!ok || n < 1 || n > kMaxColumn) {
         diags_.error({line, at + static_cast<int32_t>(eq) + 1},

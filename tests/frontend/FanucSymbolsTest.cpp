@@ -199,6 +199,9 @@ TEST(FanucSymbols, OptionErrors) {
             "t.pmc:1:17: error: bad column number 'x' for ADR (1..99)\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=100)"),
             "t.pmc:1:17: error: bad column number '100' for ADR (1..99)\n");
+  // Many digits are a bad column, not an int overflow (found by fuzz_pmc under UBSan).
+  EXPECT_EQ(with("%@2-E(SYM=1 ADR=99999999999999999999)"),
+            "t.pmc:1:17: error: bad column number '99999999999999999999' for ADR (1..99)\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=2 SYM=3)"),
             "t.pmc:1:19: error: SYM is given twice in the %@2-E option\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=1)"),
