@@ -373,15 +373,24 @@ Networks fromProgram(const VerifiedProgram &prog) {
   for (int32_t i = 0; i < n; ++i) elems.push_back(elementOf(prog, i));
   // Comments: the block before a rung's first statement is the rung comment; others stay with
   // their statement.
+  // A comment line holds no line break (the JSON and text forms are line based): a lone CR in a
+  // comment, or an IL comment over several lines, becomes several comment lines, or blanks in a
+  // trailing comment.
   std::vector<std::vector<std::string>> before(prog.stmts.size() + 1);
   for (const Comment &c : prog.comments) {
     if (c.stmt < 0 || c.stmt > n) continue;
     if (c.trailing && c.stmt < n) {
-      elems[static_cast<size_t>(c.stmt)].comment = c.text;
+      std::string t = c.text;
+      std::replace_if(
+          t.begin(), t.end(), [](char ch) { return ch == '\r' || ch == '\n'; }, ' ');
+      elems[static_cast<size_t>(c.stmt)].comment = std::move(t);
       elems[static_cast<size_t>(c.stmt)].hasComment = true;
-    } else {
-      before[static_cast<size_t>(c.stmt)].push_back(c.text);
+      continue;
     }
+    std::string_view t = c.text;
+    for (size_t b; (b = t.find_first_of("\r\n")) != std::string_view::npos; t.remove_prefix(b + 1))
+      before[static_cast<size_t>(c.stmt)].emplace_back(t.substr(0, b));
+    before[static_cast<size_t>(c.stmt)].emplace_back(t);
   }
   nets.trailingComments = before[static_cast<size_t>(n)];
   for (const RungRange &rr : prog.rungs) {

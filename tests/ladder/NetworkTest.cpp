@@ -81,6 +81,20 @@ TEST(LadderNetwork, CanonicalStlWithoutHints) {
   EXPECT_EQ(stlOf(n), "LD X0.0\nORI X0.1\nMPS\nANDP X0.2\nOUT Y0.0\nMPP\nSET R1.0\n");
 }
 
+// A lone CR inside a comment (found by fuzz_il: an IL comment over CR-only lines) must not make
+// the JSON unreadable: comment lines hold no line break. Before it: one line per CR-separated
+// piece; trailing: the CR becomes a blank.
+TEST(LadderNetwork, CommentsWithCarriageReturnsStayReadable) {
+  Networks n = fromProgram(verified("; one\rtwo\nLD X0.0 ; a\rb\nOUT Y0.0\n"));
+  ASSERT_EQ(n.parts[0].rungs.size(), 1u);
+  EXPECT_EQ(n.parts[0].rungs[0].comment, (std::vector<std::string>{"one", "two"}));
+  EXPECT_EQ(n.parts[0].rungs[0].network.children[0].elem.comment, "a b");
+  Networks back;
+  std::string err;
+  ASSERT_TRUE(readJson(writeJson(n), back, err)) << err;
+  EXPECT_EQ(stlOf(back), "; one\n; two\nLD X0.0 ; a b\nOUT Y0.0\n");
+}
+
 TEST(LadderNetwork, JsonErrorsNameThePlace) {
   const char *json = R"({"format":"ladderjit-ladder","version":1,"dialect":"hnc8","parts":[
     {"name":"PLC1","rungs":[{"kind":"ladder","network":{"type":"series","children":[
