@@ -1,6 +1,9 @@
-// libFuzzer target for the front end: any bytes -> parseStl + verify (+ printProgram when the
-// program is accepted). The front end must never crash, hang or read out of bounds.
+// libFuzzer target for the front end: any bytes -> parseStl + verify (+ printProgram and the
+// ladder networks, their text and their JSON read back, when the program is accepted). The front
+// end and the ladder stage must never crash, hang or read out of bounds.
 #include "frontends/hnc8/FrontEnd.h"
+#include "ladder/Json.h"
+#include "ladder/Text.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +25,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     for (size_t k = 1; k < prog->slices.size(); ++k)
       if (prog->slices[k].begin != prog->slices[k - 1].end) __builtin_trap();
     (void)lj::printProgram(*prog);
+    // Its ladder networks: the text form, and the JSON read back as PROGRAM must verify again
+    // with the same statements (what `ladderjit ladder --format json` promises).
+    lj::ladder::Networks nets = lj::ladder::fromProgram(*prog);
+    (void)lj::ladder::renderText(nets);
+    lj::ladder::StlFromJson back;
+    std::string error;
+    if (!lj::ladder::stlFromJson(lj::ladder::writeJson(nets), back, error)) __builtin_trap();
+    lj::Diagnostics again("fuzz.json");
+    std::optional<lj::VerifiedProgram> twin =
+        lj::compileFrontEnd(back.text, "fuzz.json", opts, again, &back.symbols);
+    if (!twin || twin->stmts.size() != prog->stmts.size()) __builtin_trap();
   }
   (void)diags.render();
   return 0;
