@@ -114,7 +114,7 @@ private:
       }
       code[i] = line[i];
     }
-    if (inComment_ && !comment.empty()) hadComment = true;
+    if (!comment.empty()) hadComment = true; // the middle and last lines of a long (* ... *)
     const size_t before = prog_.stmts.size();
     bool hasCode = false;
     for (char c : code)

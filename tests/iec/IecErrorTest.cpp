@@ -97,5 +97,18 @@ TEST(IecSyntax, NumbersCommentsAndCase) {
   EXPECT_TRUE(p->comments[1].trailing);
 }
 
+// A comment over several lines keeps every line's text (the last one, before `*)`, was lost).
+TEST(IecSyntax, CommentOverSeveralLines) {
+  Diagnostics diags("test.il");
+  auto p = iec::compileIl("(* first\n   second\n   third *)\nLD %I0.0\nST %Q0.0 (* t1\nt2 *)\n",
+                          "test.il", VerifyOptions{}, diags);
+  ASSERT_TRUE(p.has_value()) << diags.render();
+  ASSERT_EQ(p->comments.size(), 5u);
+  const char *text[] = {"first", "second", "third", "t1", "t2"};
+  for (size_t k = 0; k < 5; ++k) EXPECT_EQ(p->comments[k].text, text[k]) << k;
+  EXPECT_TRUE(p->comments[3].trailing);
+  EXPECT_FALSE(p->comments[4].trailing);
+}
+
 } // namespace
 } // namespace lj::test
