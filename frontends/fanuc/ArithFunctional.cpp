@@ -15,13 +15,6 @@ namespace lj::fanuc::detail {
 
 namespace {
 
-/// 0..9999 as its 4-digit BCD bit pattern (reference 3.2).
-int32_t toBcd(int64_t v) {
-  int32_t r = 0;
-  for (int shift = 0; shift < 16; shift += 4, v /= 10) r |= static_cast<int32_t>(v % 10) << shift;
-  return r;
-}
-
 struct Spec {
   int sub;
   const char *name;
@@ -153,7 +146,7 @@ bool nume(Emitter &e, const Functional &f, SourceLoc at) {
   if (!e.constant(p[0], 0, 9999, "BCD constant (at most 4 digits)", v) ||
       !e.dataOperand(p[1], 2, false, true, c))
     return false;
-  e.emit(Op::BcdConstant, at, {konst(toBcd(v), p[0].loc), c});
+  e.emit(Op::BcdConstant, at, {konst(detail::toBcd(v), p[0].loc), c});
   return true;
 }
 

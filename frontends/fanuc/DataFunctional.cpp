@@ -44,13 +44,6 @@ bool spanOperand(Emitter &e, const Token &t, int span, int width, bool writes, O
   return true;
 }
 
-/// 0..9999 written in decimal as its 4-digit BCD bit pattern (reference 3.2).
-int32_t toBcd(int64_t v) {
-  int32_t r = 0;
-  for (int shift = 0; shift < 16; shift += 4, v /= 10) r |= static_cast<int32_t>(v % 10) << shift;
-  return r;
-}
-
 /// The inputs an instruction takes from ST, top to bottom (the last is ACT in ST0).
 const char *inputsOf(std::string_view n) {
   if (n == "XMOVB") return "RW, RST, ACT";
@@ -173,7 +166,7 @@ void codeTable(Emitter &e, const Functional &f, const std::string &what, bool bi
                                 : static_cast<int32_t>(v));
     } else {
       if (!e.constant(p[j], 0, 9999, "BCD table entry", v)) return;
-      values.push_back(toBcd(v));
+      values.push_back(detail::toBcd(v));
     }
   }
   e.emit(binary ? Op::CodeTableBinary : Op::CodeTable, at, {konst(size, sizeTok.loc), in, out});

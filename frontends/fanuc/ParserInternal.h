@@ -131,6 +131,13 @@ struct PmcSource {
 PmcSource readPmcSource(std::string_view text, const SymbolTable *external, SymbolTable &table,
                         Diagnostics &diags);
 
+/// 0..9999 written in decimal as its 4-digit BCD bit pattern (reference 3.2).
+inline int32_t toBcd(int64_t v) {
+  int32_t r = 0;
+  for (int shift = 0; shift < 16; shift += 4, v /= 10) r |= static_cast<int32_t>(v % 10) << shift;
+  return r;
+}
+
 /// A constant operand `v` located at `at`.
 inline Operand konst(int64_t v, SourceLoc at = {}) {
   Operand o;
