@@ -105,7 +105,10 @@ L.force=function(id,mode){return fetch('api/force',{method:'POST',headers:{'Cont
 function loadModel(){return fetch('api/model').then(function(r){return r.json()}).then(function(m){model=m;prev=[]})}
 function boxVal(g,vals){var t=g.querySelector('text.val');if(!t){var r=g.querySelector('rect.box');if(!r)return;t=document.createElementNS('http://www.w3.org/2000/svg','text');
  t.setAttribute('class','val');t.setAttribute('text-anchor','middle');t.setAttribute('x',+r.getAttribute('x')+ +r.getAttribute('width')/2);
- t.setAttribute('y',+r.getAttribute('y')+ +r.getAttribute('height')-4);g.appendChild(t)}t.textContent=vals.join('  ')}
+ var by=+r.getAttribute('y'),vy=by+ +r.getAttribute('height')-4,ts=g.querySelectorAll('text.mn,text.op');
+ // A box whose operand lines fill it (a one-row EQB D0 8): its lines move closer so the values line covers none.
+ if(ts.length>1&&+ts[ts.length-1].getAttribute('y')>vy-12){var s=(vy-12-(by+12))/(ts.length-1);ts.forEach(function(x,i){x.setAttribute('y',by+12+i*s)})}
+ t.setAttribute('y',vy);g.appendChild(t)}t.textContent=vals.join('  ')}
 function paintOne(id,w){var d=model.stmts[id],gs=byId[id];if(!d||!gs||!w)return;var at=d[0],k=d[1],n=d[2],ns=w[at]===null;
  var on=!ns&&!!(k==='box'?w[at+1]:w[at]);
  gs.forEach(function(g){g.classList.toggle('on',on);g.classList.toggle('off',!on&&!ns);g.classList.toggle('ns',ns);

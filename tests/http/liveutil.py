@@ -23,16 +23,18 @@ def modbus_write_coil(port, addr, on):
         assert len(ans) >= 12 and ans[7] == 5, "modbus answer %r" % ans
 
 
-def start_serve(exe, program, sock, errfile, duration, wait=20):
-    """serve PROGRAM --http 127.0.0.1:0 --modbus 0 --modbus-write-inputs; (proc, url, token,
-    modbus port), or exit 1 when it did not print both addresses within `wait` seconds."""
+def start_serve(exe, program, sock, errfile, duration, wait=20, modbus=True):
+    """serve PROGRAM --http 127.0.0.1:0 --modbus 0 --modbus-write-inputs (without the Modbus
+    options when `modbus` is false); (proc, url, token, modbus port or None), or exit 1 when it
+    did not print the addresses within `wait` seconds."""
     import time
-    serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0", "--modbus", "0",
-                              "--modbus-write-inputs", "--control", sock, "--duration", str(duration)],
+    mb = ["--modbus", "0", "--modbus-write-inputs"] if modbus else []
+    serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0"] + mb +
+                             ["--control", sock, "--duration", str(duration)],
                              stdout=subprocess.PIPE, stderr=open(errfile, "w"), text=True)
     url = token = mport = None
     deadline = time.time() + wait
-    while time.time() < deadline and (url is None or mport is None):
+    while time.time() < deadline and (url is None or (modbus and mport is None)):
         line = serve.stdout.readline()
         if not line:
             break
@@ -42,7 +44,7 @@ def start_serve(exe, program, sock, errfile, duration, wait=20):
         m = re.search(r"modbus TCP on [\d.]+:(\d+)", line)
         if m:
             mport = int(m.group(1))
-    if not url or not mport:
+    if not url or (modbus and not mport):
         print("serve did not print the live view and modbus lines", file=sys.stderr)
         serve.kill()
         sys.exit(1)
