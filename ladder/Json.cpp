@@ -489,9 +489,8 @@ std::string renderDiagnostics(const Diagnostics &diags, const StlFromJson &src) 
 
 bool sameStatementsAs(const Networks &given, const Networks &made, std::string &error) {
   std::vector<Element> a, b;
-  std::vector<std::string> where, whereMade;
-  if (!toStatements(given, a, error, &where) || !toStatements(made, b, error, &whereMade))
-    return false;
+  std::vector<std::string> where;
+  if (!toStatements(given, a, error, &where) || !toStatements(made, b, error)) return false;
   auto operandsOf = [](const Element &e) {
     std::string t;
     for (size_t k = 0; k < e.operands.size(); ++k)

@@ -6,6 +6,7 @@
 #include "frontends/iec/FrontEnd.h"
 #include "ladder/Json.h"
 #include "ladder/Text.h"
+#include "tests/fuzz/ProgramInvariants.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,11 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   std::optional<lj::VerifiedProgram> prog = lj::iec::compileIl(text, file, opts, diags);
 #endif
   if (prog) {
-    // Invariants every engine relies on (ir/Program.h); a violation is a front-end bug.
-    if (prog->info.size() != prog->stmts.size() || prog->slices.empty() ||
-        prog->slices.size() != prog->sliceDepth.size() ||
-        prog->slices.front().begin != prog->plc2.begin || prog->slices.back().end != prog->plc2.end)
-      __builtin_trap();
+    lj::fuzztest::checkProgramInvariants(*prog);
     lj::ladder::Networks nets = lj::ladder::fromProgram(*prog);
     (void)lj::ladder::renderText(nets);
     // The JSON written is read back, and holds exactly the program's statements.

@@ -4,6 +4,7 @@
 #include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Json.h"
 #include "ladder/Text.h"
+#include "tests/fuzz/ProgramInvariants.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -17,13 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   opts.plc2Nvalue = size % 7;
   std::optional<lj::VerifiedProgram> prog = lj::compileFrontEnd(text, "fuzz.stl", opts, diags);
   if (prog) {
-    // Invariants every engine relies on (Program.h); a violation is a front-end bug.
-    if (prog->info.size() != prog->stmts.size() || prog->slices.empty() ||
-        prog->slices.size() != prog->sliceDepth.size() ||
-        prog->slices.front().begin != prog->plc2.begin || prog->slices.back().end != prog->plc2.end)
-      __builtin_trap();
-    for (size_t k = 1; k < prog->slices.size(); ++k)
-      if (prog->slices[k].begin != prog->slices[k - 1].end) __builtin_trap();
+    lj::fuzztest::checkProgramInvariants(*prog);
     (void)lj::printProgram(*prog);
     // Its ladder networks: the text form, and the JSON read back as PROGRAM must verify again
     // with the same statements (what `ladderjit ladder --format json` promises).
