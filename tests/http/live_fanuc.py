@@ -4,7 +4,8 @@ python3-selenium and chromedriver): `serve --http` on examples/fanuc_coolant.pmc
 mnemonic file with %@2-E symbols). The page draws FANUC words (EQB, DIFU, TMRBF, TMRB, END2; no
 HNC-8 or IR name), the symbol names under the addresses, and runs live: the 1 s clock R9091.6
 (CLOCK_1S, written by the runtime, ON:OFF = 1:1, fanuc-pmc.md 2) is drawn on and off in turn on
-the level-2 tab. Keeps a screenshot. Usage: live_fanuc.py LADDERJIT EXAMPLES_DIR OUTDIR"""
+the level-2 tab, and a full one-row box gets its values line below its operands. Keeps a
+screenshot. Usage: live_fanuc.py LADDERJIT EXAMPLES_DIR OUTDIR"""
 import json, os, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -51,6 +52,14 @@ try:
             seen.add(v)
         time.sleep(0.02)
     check(seen == {True, False}, "R9091.6 (CLOCK_1S) drawn on and off: %s" % sorted(seen))
+    # The EQB F10 8 box of rung 1 is one row with two operand lines: its values line (written by
+    # the page) lies below its last operand line, not over it (11 px text needs 11 px).
+    eqb = next(c["stmt"] for c in layout["parts"][1]["rungs"][0]["cells"] if c["kind"] == "box")
+    gap = driver.execute_script(
+        "var g=document.querySelector('g.el[data-stmt=\"%d\"]'),v=g&&g.querySelector('text.val'),"
+        "o=g&&g.querySelectorAll('text.op');return v&&o.length?+v.getAttribute('y')-"
+        "+o[o.length-1].getAttribute('y'):null" % eqb)
+    check(gap is not None and gap >= 11, "EQB box: values line %s px below its last operand" % gap)
     texts = driver.execute_script("return document.querySelector('section.part.sel').textContent")
     check("CLOCK_1S" in texts and "KEY_PULSE" in texts, "symbol names on the level-2 tab")
     driver.save_screenshot(os.path.join(out, "live_fanuc.png"))
