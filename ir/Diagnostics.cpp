@@ -5,17 +5,26 @@
 
 namespace lj {
 
-std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii) {
+namespace {
+
+/// `c` as `\xNN`.
+void appendEscaped(std::string &out, unsigned char c) {
   static constexpr char kHex[] = "0123456789ABCDEF";
+  out += "\\x";
+  out += kHex[c >> 4];
+  out += kHex[c & 15];
+}
+
+} // namespace
+
+std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii) {
   std::string out = "'";
   for (size_t i = 0; i < text.size() && i < maxBytes; ++i) {
     auto c = static_cast<unsigned char>(text[i]);
     if ((c >= 0x20 && c < 0x7f && c != '\\') || (keepNonAscii && c >= 0x80)) {
       out += static_cast<char>(c);
     } else {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
+      appendEscaped(out, c);
     }
   }
   if (text.size() > maxBytes) out += "...";
@@ -76,7 +85,14 @@ std::string Diagnostics::render() const {
       out += ": ";
       out += severityName(d.severity);
       out += ": ";
-      out += d.message;
+      // One line per diagnostic, whatever bytes the program held: a control byte a message
+      // quotes (a NUL, a CR) is written as \xNN, so it can neither end the output early nor
+      // break the `file:line:col: severity: text` line.
+      for (unsigned char c : d.message)
+        if (c < 0x20 || c == 0x7f)
+          appendEscaped(out, c);
+        else
+          out += static_cast<char>(c);
       out += '\n';
     }
   }

@@ -122,6 +122,24 @@ TEST(Dialect, FanucLadderJsonIsReadBackThroughItsText) {
       << r.err;
 }
 
+// A control byte in a program (a NUL inside an operand) is shown escaped in its diagnostic and
+// ends nothing: before, the FANUC and IEC front ends quoted it raw, the NUL cut the printed
+// diagnostics there, and every later error was lost.
+TEST(Dialect, ControlBytesInDiagnosticsAreEscaped) {
+  using namespace std::string_literals; // the NUL stays in the text
+  CliResult r =
+      runCli({"check", writeScratch("nul.pmc", "RD X0.0\0x\nWRT Y0.0\nEND1\nEND2\nEND\n"s)});
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(says(r, "nul.pmc:1:4: error: malformed address 'X0.0\\x00x'")) << r.err;
+  EXPECT_TRUE(says(r, "nul.pmc:2:1: error: WRT without a logic line (start it with RD)")) << r.err;
+  r = runCli({"check", writeScratch("nul.il", "LD %I0.0\0x\nST %Q0.0\n"s)});
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_TRUE(
+      says(r, "nul.il:1:4: error: LD: '%I0.0\\x00x': expected a point number after the '.'"))
+      << r.err;
+  EXPECT_EQ(r.err.find('\0'), std::string::npos);
+}
+
 // A FANUC program by extension: run with FANUC addresses on --set / --watch (docs/fanuc-pmc.md
 // "Addresses"); RD X0.0 / WRT Y0.0 copies the input bit.
 TEST(Dialect, FanucProgramRunsWithFanucAddresses) {
