@@ -133,7 +133,7 @@ function stats(s){document.getElementById('counters').innerHTML='at tick '+s.tic
 function apply(m){lastMsg=m;L.live.last=m;if(hash&&m.hash!==hash){setConn('new program version: reloading',true);location.reload();return}hash=m.hash;
  document.getElementById('ver').textContent='version '+m.v+(m.traced?'':m.aot?' (AOT: untraced, no power flow)':' (waiting for the traced build)');
  document.getElementById('tick').textContent='tick '+m.tick+(m.w?'':' (no trace)');L.live.tick=m.tick;
- var go=function(){paint(m);forced(m);if(m.stats)stats(m.stats)};if(!model||model.version!==m.v)loadModel().then(go);else go()}
+ var go=function(){paint(m);forced(m);if(m.stats)stats(m.stats)};if(!model||model.version!==m.v||model.traced!==m.traced)loadModel().then(go);else go()}
 L.live={tick:-1,last:null};
 function connect(){var es=new EventSource('api/events');es.addEventListener('state',function(e){setConn('live',true);apply(JSON.parse(e.data))});
  es.onerror=function(){setConn('disconnected: retrying',false)}}

@@ -60,13 +60,13 @@ void ChangeOptimizer::run() {
     }
     if (!opt) {
       if (log_)
-        log_("online change: the optimized build of version " + std::to_string(v->id) +
+        log_("optimizer: the optimized build of version " + std::to_string(v->id) +
              " failed, it keeps running as " + engineTierName(v->tier) + ": " + error);
       continue;
     }
     // Refused when another change came first (counted as a tiering refusal).
     if (!exec_.tierUp(opt, std::chrono::seconds(5), error) && log_ && exec_.running())
-      log_("online change: optimized version " + std::to_string(v->id) +
+      log_("optimizer: the optimized build of version " + std::to_string(v->id) +
            " not switched in: " + error);
   }
 }

@@ -2,6 +2,7 @@
 // "ok" and either the result or "error" (docs/serve.md "Control").
 #include "runtime/Controller.h"
 
+#include "engines/EngineSpec.h"
 #include "formats/Dialects.h"
 
 #include "formats/InputFiles.h"
@@ -51,6 +52,15 @@ std::string printable(const std::string &text) {
   }
   return out;
 }
+
+// Counts a request in progress for Controller::busy().
+struct BusyCount {
+  std::atomic<int> &n;
+  explicit BusyCount(std::atomic<int> &c) : n(c) { ++n; }
+  ~BusyCount() { --n; }
+  BusyCount(const BusyCount &) = delete;
+  BusyCount &operator=(const BusyCount &) = delete;
+};
 
 // What a settle interval compares: size, mtime, inode and content.
 struct FileMark {
@@ -233,11 +243,7 @@ bool Controller::settle(const std::string &path, std::string &why, std::string *
 bool Controller::change(const std::string &path, const std::optional<ContactForces> &forces,
                         std::string &error, const std::string &so, bool allowShrink,
                         bool interpreted) {
-  struct Busy {
-    std::atomic<int> &n;
-    explicit Busy(std::atomic<int> &c) : n(c) { ++n; }
-    ~Busy() { --n; }
-  } busy(busy_);
+  BusyCount busy(busy_);
   std::lock_guard<std::mutex> g(changeMu_);
   const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
   if (shutdown_.load()) return refuse(what, "the server is stopping", error);
@@ -263,9 +269,26 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
     want = running->forces;
   }
   std::vector<std::string> dropped;
-  std::shared_ptr<ProgramVersion> next = loader_.load(
-      path, want, error, nullptr, so, forces ? nullptr : &dropped, nullptr, interpreted);
+  // An AOT .so cannot be forced: with forces, the served .so is loaded (and kept, aotBase_) and
+  // forced JIT code of the same program is swapped in instead (rebuildRunning).
+  const bool aotForced = loader_.aot() && !want.empty();
+  std::shared_ptr<ProgramVersion> next =
+      loader_.load(path, aotForced ? ContactForces{} : want, error, nullptr, so,
+                   forces ? nullptr : &dropped, nullptr, interpreted);
   if (!next) return refuse(what, error, error);
+  std::shared_ptr<ProgramVersion> aotBase = loader_.aot() ? next : nullptr;
+  if (aotForced) {
+    if (!checkForces(*next->prog, want, error, forces ? nullptr : &dropped))
+      return refuse(what, error, error);
+    if (!want.empty()) {
+      std::shared_ptr<ProgramVersion> forced =
+          loader_.rebuild(*next, want, false, engines::EngineKind::Jit, error);
+      if (!forced) return refuse(what, error, error);
+      forced->frontendNs = next->frontendNs;
+      forced->so = next->so;
+      next = std::move(forced);
+    }
+  }
   // Stop wins over a compile in progress: a version finished after a stop request is dropped.
   if (shutdown_.load())
     return refuse(what, "the server is stopping; the new version is discarded", error);
@@ -291,6 +314,7 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   }
   // The touched groups run at the fast tier: build the optimized ones in the background.
   if (quick && !shutdown_.load()) optimizer_.offer(std::move(quick));
+  aotBase_ = std::move(aotBase);
   program_ = path;
   so_ = so;
   mtime_ = mt;
@@ -310,12 +334,56 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   return true;
 }
 
+bool Controller::rebuildRunning(const ContactForces &forces, bool traced, bool interpreted,
+                                std::string &error) {
+  std::shared_ptr<ProgramVersion> cur = exec_.current();
+  if (!cur) {
+    error = "no program is running yet";
+    return false;
+  }
+  if (shutdown_.load()) {
+    error = "the server is stopping";
+    return false;
+  }
+  // The served .so's build is kept while forced JIT code runs (the version serve started with,
+  // or the last online change's).
+  if (loader_.aot() && cur->tier == EngineTier::Aot) aotBase_ = cur;
+  std::shared_ptr<ProgramVersion> next;
+  if (loader_.aot() && forces.empty() && !traced) {
+    // Back to the served .so: the same build object as at its load, now replacing the forced
+    // JIT code (variants: rebuild's rule, Executive::switchCode). Nothing else reads it.
+    if (!aotBase_ || aotBase_->prog != cur->prog) {
+      error = "the served .so of the running program is not at hand";
+      return false;
+    }
+    if (aotBase_.get() == cur.get()) return true;
+    aotBase_->baseVariant = cur->variant;
+    next = aotBase_;
+  } else {
+    if (loader_.aot() && traced) {
+      error = "an AOT .so is never traced; serve with --engine jit or interp for the live view";
+      return false;
+    }
+    const bool interp = interpreted || loader_.engine() == "interp";
+    next = loader_.rebuild(*cur, forces, traced,
+                           interp ? engines::EngineKind::Interp : engines::EngineKind::Jit, error);
+    if (!next) return false;
+    if (!cur->so.empty()) next->so = cur->so;
+  }
+  std::shared_ptr<ProgramVersion> quick = next->tier == EngineTier::JitQuick ? next : nullptr;
+  if (!exec_.switchCode(std::move(next), std::chrono::milliseconds(5000), error)) return false;
+  if (quick && !shutdown_.load()) optimizer_.offer(std::move(quick));
+  return true;
+}
+
 bool Controller::setTraced(bool on, std::string &error, bool interpreterFirst) {
   if (loader_.aot() && on) {
     error = "an AOT .so is never traced; serve with --engine jit or interp for the live view";
     return false;
   }
   loader_.setTraced(on);
+  BusyCount busy(busy_);
+  std::lock_guard<std::mutex> g(changeMu_);
   std::shared_ptr<ProgramVersion> cur = exec_.current();
   if (!cur) return true;
   const bool jit = loader_.engine() == "jit";
@@ -325,17 +393,12 @@ bool Controller::setTraced(bool on, std::string &error, bool interpreterFirst) {
   if ((cur->trace != nullptr) == on &&
       (!on || interpreterFirst || !jit || cur->tier != EngineTier::Interp))
     return true;
-  std::string path, so;
-  {
-    std::lock_guard<std::mutex> g(changeMu_);
-    path = program_;
-    so = so_;
-  }
   if (log_)
-    log_(std::string("live view: building the ") + (on ? "traced" : "untraced") + " version of '" +
-         path + "'" +
-         (interpreterFirst ? " on the interpreter (the traced JIT build follows)" : ""));
-  return change(path, std::nullopt, error, so, false, interpreterFirst);
+    log_(std::string("live view: switching to the ") + (on ? "traced" : "untraced") +
+         " code of version " + std::to_string(cur->id) +
+         (interpreterFirst ? " on the interpreter (the traced JIT build follows)" : "") +
+         " (no init, nothing cleared)");
+  return rebuildRunning(cur->forces, on, interpreterFirst, error);
 }
 
 void Controller::pollProgramFile() {
@@ -442,9 +505,8 @@ json Controller::doForce(const json &req) {
                 " is out of range");
   if (mode != "on" && mode != "off" && mode != "restore")
     return fail("force: mode must be on, off or restore, got '" + mode + "'");
-  if (loader_.aot())
-    return fail("force: this server runs an AOT .so, and forcing needs recompilation; serve "
-                "the program with --engine jit or interp to force contacts");
+  BusyCount busy(busy_);
+  std::lock_guard<std::mutex> g(changeMu_); // one force, view switch or online change at a time
   std::shared_ptr<ProgramVersion> cur = exec_.current();
   if (!cur) return fail("force: no program is running yet");
   // The LINE form is an alias: the statements on that line of the running version, by id.
@@ -470,9 +532,20 @@ json Controller::doForce(const json &req) {
     if (!checkForces(*cur->prog, asked, err)) return fail("force: " + err);
     for (StmtId id : ids) forces[id] = mode == "on" ? 1 : 0; // 允许 = on, 禁止 = off (6.1)
   }
+  // Not an online change (hnc8-core.md 6.1: 禁止/允许/恢复 mask one element of the running
+  // ladder): the running program rebuilt with the new forces, switched in at the next tick
+  // boundary on the same state, without init.
   std::string err;
-  if (!change(cur->path, forces, err)) return fail(err);
+  if (!rebuildRunning(forces, cur->trace != nullptr, false, err)) return fail("force: " + err);
   std::shared_ptr<ProgramVersion> now = exec_.current();
+  if (log_) {
+    std::string list;
+    for (StmtId id : ids) list += (list.empty() ? "" : ", ") + std::to_string(id);
+    log_("force: statement id(s) " + list + " " +
+         (mode == "restore" ? std::string("restored") : "forced " + mode) +
+         " from the next tick (no init, nothing cleared); " + std::to_string(now->forces.size()) +
+         " force(s) set");
+  }
   json list = json::array();
   for (const auto &[id, v] : now->forces) {
     const Stmt *st = stmtById(*now->prog, id);

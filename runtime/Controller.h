@@ -1,6 +1,6 @@
-// The serve control logic: online change (command or PROGRAM file change), forcing (by
-// recompiling with Stmt::force), the lock list, reads/writes and stats, as JSON requests from
-// the control socket (docs/serve.md "Control").
+// The serve control logic: online change (command or PROGRAM file change), forcing and the live
+// view's traced code (rebuilds of the running program switched in without init), the lock list,
+// reads/writes and stats, as JSON requests from the control socket (docs/serve.md "Control").
 #pragma once
 
 #include "runtime/ChangeOptimizer.h"
@@ -73,11 +73,12 @@ public:
   void pollProgramFile();
 
   /// The live view (docs/ladder-view.md "Live view"): rebuild the running program traced (`on`)
-  /// or untraced and swap it in at a tick boundary like an online change, forces kept; later
-  /// loads (forces, online change) keep that choice. True at once when the running version
-  /// already is so; false with `error` when the rebuild was refused or the engine is AOT.
-  /// `interpreterFirst` (the JIT engine, `on`): build the traced version on the interpreter, ready
-  /// within milliseconds of the verify, so a page is live at once; a later setTraced(true)
+  /// or untraced and switch it in at a tick boundary, forces kept. Like a force, this is not an
+  /// online change: the same program on the same state, no init, nothing cleared, no file read,
+  /// the version unchanged (rebuildRunning). Later loads keep the choice. True at once when the
+  /// running version already is so; false with `error` when the rebuild was refused or the
+  /// engine is AOT. `interpreterFirst` (the JIT engine, `on`): build the traced version on the
+  /// interpreter, ready within milliseconds, so a page is live at once; a later setTraced(true)
   /// without it puts the traced JIT build in (it records the same trace, ir/Trace.h).
   bool setTraced(bool on, std::string &error, bool interpreterFirst = false);
 
@@ -101,6 +102,12 @@ private:
   nlohmann::json doLock(const nlohmann::json &req);
   nlohmann::json doLoad(const nlohmann::json &req);
   bool refuse(const std::string &what, const std::string &why, std::string &error);
+  /// Build the running program again with `forces` and traced or not, on the server's engine
+  /// (the interpreter when `interpreted`; serving AOT: the JIT while any force is set, the
+  /// served .so again once none is), and switch it in with Executive::switchCode: no init, no
+  /// memory cleared, no file read, the same version id. Call with changeMu_ held.
+  bool rebuildRunning(const ContactForces &forces, bool traced, bool interpreted,
+                      std::string &error);
   bool allowed(const std::string &path, std::string &why) const;
   /// `hash`, when given, receives the settled file's sha256Hash (empty when unreadable).
   bool settle(const std::string &path, std::string &why, std::string *hash = nullptr);
@@ -123,7 +130,11 @@ private:
   ChangeStats changeStats_; // guarded by statsMu_
   std::mutex sleepMu_;
   std::condition_variable sleepCv_; // woken by shutdown()
-  ChangeOptimizer optimizer_;       // last: stopped and joined before the rest goes
+  /// Serving AOT: the build of the served .so (unforced, untraced), kept while forced JIT code
+  /// of the same program runs, to switch back to once the last force is restored. Guarded by
+  /// changeMu_.
+  std::shared_ptr<ProgramVersion> aotBase_;
+  ChangeOptimizer optimizer_; // last: stopped and joined before the rest goes
 };
 
 } // namespace lj::rt

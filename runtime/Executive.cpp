@@ -234,26 +234,32 @@ bool Executive::takeTierUp(uint64_t tick) {
   if (stop_.load(std::memory_order_acquire)) return false;
   ProgramVersion *next = pendingTier_.exchange(nullptr, std::memory_order_acq_rel);
   if (!next) return false;
-  if (next->prog != cur_->prog) { // built for a version an online change has replaced
+  // Built for a version an online change has replaced, or from a build (forces, tracing) that
+  // another rebuild has replaced since: its code would undo that.
+  if (next->prog != cur_->prog || next->baseVariant != cur_->variant) {
     ++scanStats_.tierRefusals;
     tiersRefused_.fetch_add(1, std::memory_order_release);
     return false;
   }
   // The whole switch: the next lj_tick calls other code on the same lj_state.
-  if (scanStats_.tierSwitches < TickStats::kMaxSwitches) {
-    TierSwitch &w = scanStats_.switches[scanStats_.tierSwitches];
-    w.tick = tick;
-    w.from = cur_->tier;
-    w.to = next->tier;
-    w.buildNs = next->buildNs;
+  if (next->variant != cur_->variant) {
+    ++scanStats_.rebuilds; // forces or tracing changed: not a tier switch
+  } else {
+    if (scanStats_.tierSwitches < TickStats::kMaxSwitches) {
+      TierSwitch &w = scanStats_.switches[scanStats_.tierSwitches];
+      w.tick = tick;
+      w.from = cur_->tier;
+      w.to = next->tier;
+      w.buildNs = next->buildNs;
+    }
+    ++scanStats_.tierSwitches;
+    if (scanStats_.changeCount) { // the optimized build of the last online change
+      ChangeRecord &c = scanStats_.changes[(scanStats_.changeCount - 1) % TickStats::kMaxChanges];
+      if (c.version == next->id && c.tier == EngineTier::JitQuick && !c.optimizedNs)
+        c.optimizedNs = monoNs();
+    }
   }
-  ++scanStats_.tierSwitches;
   scanStats_.tier = next->tier;
-  if (scanStats_.changeCount) { // the optimized build of the last online change
-    ChangeRecord &c = scanStats_.changes[(scanStats_.changeCount - 1) % TickStats::kMaxChanges];
-    if (c.version == next->id && c.tier == EngineTier::JitQuick && !c.optimizedNs)
-      c.optimizedNs = monoNs();
-  }
   cur_ = next;
   tiersTaken_.fetch_add(1, std::memory_order_release);
   return true;
@@ -282,7 +288,7 @@ bool Executive::waitTaken(std::atomic<ProgramVersion *> &pending, ProgramVersion
   auto until = std::chrono::steady_clock::now() + timeout;
   while (counter.load(std::memory_order_acquire) == before) {
     if (refused && refused->load(std::memory_order_acquire) != refusedBefore) {
-      error = "the running program changed before the faster code was ready";
+      error = "the running program changed before the new code was ready";
       return false;
     }
     if (std::chrono::steady_clock::now() >= until || !running()) {
@@ -323,38 +329,45 @@ bool Executive::swap(std::shared_ptr<ProgramVersion> next, std::chrono::millisec
 
 bool Executive::tierUp(std::shared_ptr<ProgramVersion> faster, std::chrono::milliseconds timeout,
                        std::string &error) {
+  if (!switchCode(faster, timeout, error)) return false;
+  if (log_)
+    log_(std::string("tiering: version ") + std::to_string(current()->id) + " now runs on " +
+         engineTierName(current()->tier));
+  return true;
+}
+
+bool Executive::switchCode(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
+                           std::string &error) {
   std::lock_guard<std::mutex> one(swapMu_); // never at the same time as an online change
   if (!running()) {
     error = "the scan thread is not running";
     return false;
   }
-  if (!faster || !faster->engine) {
+  if (!next || !next->engine) {
     error = "no engine to switch to";
     return false;
   }
   {
     std::lock_guard<std::mutex> g(ownerMu_);
-    if (!currentOwner_ || currentOwner_->prog != faster->prog) {
-      error = "the running program changed before the faster code was ready";
+    if (!currentOwner_ || currentOwner_->prog != next->prog ||
+        currentOwner_->variant != next->baseVariant) {
+      error = "the running program changed before the new code was ready";
       return false;
     }
   }
   uint64_t before = tiersTaken_.load(std::memory_order_acquire);
   uint64_t refusedBefore = tiersRefused_.load(std::memory_order_acquire);
-  pendingTier_.store(faster.get(), std::memory_order_release);
-  if (!waitTaken(pendingTier_, faster.get(), tiersTaken_, before, &tiersRefused_, refusedBefore,
+  pendingTier_.store(next.get(), std::memory_order_release);
+  if (!waitTaken(pendingTier_, next.get(), tiersTaken_, before, &tiersRefused_, refusedBefore,
                  timeout, error))
     return false;
   std::shared_ptr<ProgramVersion> old;
   {
     std::lock_guard<std::mutex> g(ownerMu_);
     old = std::move(currentOwner_);
-    currentOwner_ = std::move(faster);
+    currentOwner_ = std::move(next);
   }
-  old.reset(); // the slower engine goes away off the scan thread; the program stays (shared)
-  if (log_)
-    log_(std::string("tiering: version ") + std::to_string(current()->id) + " now runs on " +
-         engineTierName(current()->tier));
+  old.reset(); // the replaced engine goes away off the scan thread; the program stays (shared)
   return true;
 }
 

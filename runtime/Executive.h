@@ -41,6 +41,11 @@ struct ProgramVersion {
   std::unique_ptr<Engine> engine;
   ContactForces forces; ///< statement id -> forced conducting value (0/1)
   uint64_t id = 0;      ///< 1, 2, ... in load order (a tier of a version keeps its id)
+  /// Which build of `prog` this is: a new number for every load and every rebuild with other
+  /// forces or tracing (ProgramLoader::rebuild); a tier of a build keeps it. `baseVariant`: the
+  /// build this one may replace at a tick boundary (Executive::switchCode): its own variant for a
+  /// tier, the variant it was rebuilt from for a rebuild, 0 for a load.
+  uint64_t variant = 0, baseVariant = 0;
   EngineTier tier = EngineTier::Interp; ///< which code `engine` is
   int64_t buildNs = 0;                  ///< how long building `engine` took
   // What an online change's statistics need (runtime/Stats.h ChangeRecord): set by the loader
@@ -114,6 +119,14 @@ public:
   /// executive is not running or `timeout` passed. The replaced version is destroyed here.
   bool tierUp(std::shared_ptr<ProgramVersion> faster, std::chrono::milliseconds timeout,
               std::string &error);
+  /// The same switch as tierUp, for any other build of the running program: `next` (built with
+  /// other contact forces or traced/untraced, ProgramLoader::rebuild) runs from the next tick
+  /// boundary on, on the same lj_state: no init, nothing cleared, the version id unchanged
+  /// (docs/serve.md "Forcing"). Taken only while the running build is `next->baseVariant`; false
+  /// (with `error`) when another build or an online change came first, when the executive is not
+  /// running or `timeout` passed. Logs nothing: the caller says why it switched.
+  bool switchCode(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
+                  std::string &error);
   /// Ask the scan thread to stop after the current tick (async-signal-unsafe: not from a
   /// signal handler).
   void requestStop() { stop_.store(true, std::memory_order_release); }

@@ -106,6 +106,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
   out->prog = v.prog; // the same verified program: the switch is of code only
   out->forces = v.forces;
   out->id = v.id;
+  out->variant = out->baseVariant = v.variant; // a tier of the same build (forces, tracing)
   out->tier = tier;
   engines::EngineOptions eo;
   eo.forces = v.forces;
@@ -130,6 +131,63 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
   out->groups = times.leaves;
   out->groupsCompiled = times.leavesCompiled;
   if (tier == EngineTier::JitOpt) optimizingWarm_.store(true);
+  return out;
+}
+
+std::shared_ptr<ProgramVersion> ProgramLoader::rebuild(const ProgramVersion &v,
+                                                       const ContactForces &forces, bool traced,
+                                                       engines::EngineKind kind,
+                                                       std::string &error) {
+  if (kind != engines::EngineKind::Interp && kind != engines::EngineKind::Jit) {
+    error = "a rebuild runs on the interpreter or the JIT";
+    return nullptr;
+  }
+  const int64_t t0 = monoNs();
+  auto out = std::make_shared<ProgramVersion>();
+  out->path = v.path;
+  out->hash = v.hash;
+  out->prog = v.prog; // the same verified program: nothing is read, nothing renumbered
+  out->id = v.id;
+  out->baseVariant = v.variant;
+  out->variant = nextVariant_.fetch_add(1);
+  out->forces = forces;
+  if (!checkForces(*out->prog, out->forces, error)) return nullptr;
+  engines::EngineOptions eo;
+  eo.forces = out->forces;
+  if (traced) {
+    out->trace = std::make_unique<TraceBuffer>(traceLayout(*out->prog).words);
+    eo.trace = out->trace->live();
+  }
+  jit::CompileTimes times;
+  out->tier = EngineTier::Interp;
+  if (kind == engines::EngineKind::Jit) {
+    out->tier = EngineTier::JitOpt;
+    eo.times = &times;
+    // As an online change: once the optimizing session's cache is full, only the groups the
+    // forces touch are compiled, at the fast tier (ChangeOptimizer builds them optimized). A
+    // traced build is never incremental.
+    eo.quickLeaves = optimizingWarm_.load() && !eo.trace;
+    std::lock_guard<std::mutex> g(mu_);
+    eo.session = session(false, error);
+    if (!eo.session) return nullptr;
+  }
+  // Not under mu_ (as buildTier): a session compiles from several threads.
+  Result<std::unique_ptr<Engine>> made =
+      engines::makeEngine(engines::EngineSpec{kind, {}}, *out->prog, eo);
+  if (!made) {
+    error = std::string(engines::engineKindName(kind)) + ": " + made.status().message();
+    return nullptr;
+  }
+  out->engine = std::move(made).value();
+  out->buildNs = monoNs() - t0;
+  if (kind == engines::EngineKind::Jit) {
+    out->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
+    out->groups = times.leaves;
+    out->groupsCompiled = times.leavesCompiled;
+    out->groupsQuick = times.leavesQuick;
+    if (times.leavesQuick) out->tier = EngineTier::JitQuick;
+    if (!eo.trace) optimizingWarm_.store(true);
+  }
   return out;
 }
 
@@ -227,6 +285,7 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     std::lock_guard<std::mutex> g(mu_);
     v->id = nextId_++;
   }
+  v->variant = nextVariant_.fetch_add(1);
   if (ditOut) *ditOut = std::move(src.dit);
   return v;
 }

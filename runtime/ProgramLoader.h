@@ -5,6 +5,7 @@
 #pragma once
 
 #include "engines/AotTrust.h"
+#include "engines/EngineSpec.h"
 #include "formats/PlcDit.h"
 #include "runtime/Executive.h"
 
@@ -66,6 +67,16 @@ public:
   /// compile of tiering; runs on the calling thread. Null with `error` when the JIT fails.
   std::shared_ptr<ProgramVersion> buildTier(const ProgramVersion &v, EngineTier tier,
                                             std::string &error);
+  /// Another build of the running program `v` (the same VerifiedProgram, path, hash and id: no
+  /// file is read) with exactly the contact forces `forces` and traced or not: what forcing and
+  /// the live view switch in with Executive::switchCode, so that they never run init nor clear
+  /// any memory (docs/serve.md "Forcing"). `kind`: Interp builds on the interpreter (ready within
+  /// milliseconds), Jit on the optimizing session (incremental: only the groups a force touches
+  /// are compiled, at the fast tier once the session is warm, EngineTier::JitQuick). Null with
+  /// `error` when a force is not a contact of the program or the build fails.
+  std::shared_ptr<ProgramVersion> rebuild(const ProgramVersion &v, const ContactForces &forces,
+                                          bool traced, engines::EngineKind kind,
+                                          std::string &error);
   const std::string &engine() const { return engine_; }
   /// Whether the next loads build traced versions (ir/Trace.h; the live view while a page
   /// watches). Ignored for AOT, which is never traced.
@@ -96,6 +107,7 @@ private:
   std::shared_ptr<jit::Session> session_;     // optimizing tier, created on first use
   std::shared_ptr<jit::Session> fastSession_; // fast tier (tiering only), created on first use
   uint64_t nextId_ = 1;
+  std::atomic<uint64_t> nextVariant_{1};
 };
 
 } // namespace lj::rt

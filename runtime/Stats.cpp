@@ -142,6 +142,7 @@ nlohmann::json TickStats::toJson() const {
           {"missed_deadlines", missedDeadlines},
           {"fault_ticks", faultTicks},
           {"swaps", swaps},
+          {"rebuilds", rebuilds},
           {"swap_tick_max_us", static_cast<double>(swapTickMaxNs) / 1000.0},
           {"swap_overruns", swapOverruns},
           {"missed_after_swap", missedAfterSwap},

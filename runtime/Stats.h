@@ -76,6 +76,7 @@ struct TickStats {
   uint64_t missedDeadlines = 0; ///< deadlines skipped without a tick (see docs/serve.md)
   uint64_t faultTicks = 0;      ///< ticks that ended with a fault (watchdog)
   uint64_t swaps = 0;           ///< online changes applied
+  uint64_t rebuilds = 0;        ///< same-program rebuilds switched in (forces, live view; no init)
   uint64_t swapTickMaxNs = 0;   ///< longest scan of a tick that swapped (init + tick)
   uint64_t swapOverruns = 0;    ///< overruns of ticks that swapped
   uint64_t missedAfterSwap = 0; ///< deadlines missed right after a swap tick

@@ -6,7 +6,7 @@ online change by `monitor load PROGRAM PATH.so` / `load PATH.so` and by a rebuil
 program running. The .so files are built here with `ladderjit compile`.
 
 Values are polled until they show up (bounded by a generous deadline)."""
-import os
+import json, os
 import shutil
 import subprocess
 import sys
@@ -78,9 +78,23 @@ def main():
     check(rc == 0, "write accepted")
     check(wait_value(sock, "Y1.0", 1), "the .so's PLC1 runs: Y1.0 follows X1.0")
 
-    rc, _, err = monitor(sock, "force", f"line:{LINE_LD_X10}", "off")
-    check(rc == 2 and "AOT" in err and "recompilation" in err, "force is refused: " + err)
-    check(wait_value(sock, "Y1.0", 1), "nothing was forced")
+    # A force on an AOT server runs forced JIT code of the same program until the last force is
+    # restored, then the .so again; neither switch runs init (D10 was set to 7 by init: write 8).
+    rc, _, _ = monitor(sock, "write", "D10=8")
+    check(rc == 0, "write D10=8")
+    rc, out, err = monitor(sock, "force", f"line:{LINE_LD_X10}", "off")
+    check(rc == 0 and "forced off" in out, "force on an AOT server: " + out + err)
+    check(wait_value(sock, "Y1.0", 0), "the forced contact is off: Y1.0 = 0 with X1.0 = 1")
+    rc, out, err = monitor(sock, "force", f"line:{LINE_LD_X10}", "restore")
+    check(rc == 0, "restore: " + out + err)
+    check(wait_value(sock, "Y1.0", 1), "restored: Y1.0 follows X1.0 again")
+    check(read(sock, "D10") == 8, "no init ran for the force or the restore (D10 = 8)")
+    rc, out, _ = monitor(sock, "stats")
+    st = json.loads(out)
+    check(rc == 0 and st["swaps"] == 0 and st["rebuilds"] == 2 and st["program"]["version"] == 1,
+          "force and restore are rebuilds of version 1, not online changes: swaps %s rebuilds %s"
+          % (st.get("swaps"), st.get("rebuilds")))
+    rc, _, _ = monitor(sock, "write", "D10=7")
 
     rc, _, err = monitor(sock, "load", v2)
     check(rc == 2 and ".so" in err, "load without a .so is refused: " + err)

@@ -47,6 +47,9 @@ def main():
     check(rc == 0, "write accepted")
     check(wait_value(sock, "Y1.0", 1), "Y1.0 follows X1.0 = 1")
 
+    # A force is not an online change (issue 28 finding 1): init (D10 = 7) never runs for one.
+    rc, _, _ = monitor(sock, "write", "D10=8")
+    check(rc == 0, "write D10=8")
     # line:N is the alias of the older LINE form; the answer names the statement id.
     rc, out, _ = monitor(sock, "force", f"line:{LINE_LD_X10}", "off")
     check(rc == 0 and f"line {LINE_LD_X10} forced off" in out, "force off accepted: " + out)
@@ -68,6 +71,8 @@ def main():
     rc, out, _ = monitor(sock, "force", f"line:{LINE_LD_X10}", "restore")
     check(rc == 0 and "no forced contacts" in out, "restore by line accepted: " + out)
     check(wait_value(sock, "Y1.0", 1), "restored again")
+    check(read(sock, "D10") == 8, "four forces and restores ran no init (D10 = 8, not 7)")
+    rc, _, _ = monitor(sock, "write", "D10=7")
 
     rc, out, _ = monitor(sock, "lock", "D20=55")
     check(rc == 0 and "D20=55" in out, "lock accepted")
@@ -114,7 +119,9 @@ def main():
 
     rc, out, _ = monitor(sock, "stats")
     st = json.loads(out) if rc == 0 else {}
-    check(st.get("swaps", 0) >= 4, "stats count the online changes: " + out[:200])
+    # Two online changes (load v2, the file change); the four forces and restores are rebuilds.
+    check(st.get("swaps") == 2 and st.get("rebuilds") == 4,
+          "stats count the online changes and the rebuilds apart: " + out[:300])
 
     rc, _, _ = monitor(sock, "stop")
     check(rc == 0, "stop accepted")

@@ -117,7 +117,7 @@ struct LiveView::Impl {
 
   std::mutex cacheMu;
   std::string pageHash, page; // the page of the program with this hash
-  uint64_t modelVersion = 0;
+  uint64_t modelVariant = 0;  // the build (ProgramVersion::variant) `model` describes
   json model;
 
   Impl(rt::Executive &e, rt::Exchange &x, rt::Controller &c,
@@ -140,7 +140,7 @@ struct LiveView::Impl {
 
   json modelOf(const rt::ProgramVersion &v) {
     std::lock_guard<std::mutex> g(cacheMu);
-    if (modelVersion != v.id) {
+    if (modelVariant != v.variant) { // a version's traced and untraced builds differ
       json stmts = json::object();
       if (v.trace) {
         TraceLayout tl = traceLayout(*v.prog);
@@ -163,7 +163,7 @@ struct LiveView::Impl {
                {"traced", v.trace != nullptr},
                {"words", v.trace ? v.trace->words() : 0},
                {"stmts", stmts}};
-      modelVersion = v.id;
+      modelVariant = v.variant;
     }
     return model;
   }
