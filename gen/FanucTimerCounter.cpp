@@ -33,7 +33,10 @@ int freshNumber(Rng &r, const std::vector<std::string> &lines, const std::string
 }
 
 std::string bit(Rng &r) {
-  if (r.chance(40)) return "X" + num(r.range(0, 3)) + "." + num(r.range(0, 7));
+  if (r.chance(40)) {
+    const std::string area = r.chance(70) ? "X" : "F";
+    return area + num(r.range(0, 3)) + "." + num(r.range(0, 7));
+  }
   if (r.chance(15)) return "R9091." + num(r.range(0, 1));
   return std::string(r.chance(50) ? "R" : "D") + num(r.range(0, 7)) + "." + num(r.range(0, 7));
 }
