@@ -349,6 +349,8 @@ Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
   // runs into the watchdog, at a limit that keeps such ticks short.
   static constexpr uint64_t kLimits[] = {50, 300, 2000, 20000};
   st.maxBackwardSteps = kLimits[r.range(0, 3)];
+  // CTR counts in binary or in BCD (the counter data type system parameter, ref 6.4).
+  st.counterFormat = r.chance(50) ? TargetProfile::kCounterBcd : TargetProfile::kCounterBinary;
   return st;
 }
 
