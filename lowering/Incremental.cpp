@@ -65,6 +65,8 @@ std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
       put(s, o.index);
       put(s, o.bit);
       put(s, o.value);
+      put(s, o.width); // MOVB and MOVW of the same bytes differ only here
+      put(s, static_cast<uint8_t>(o.bcd));
     }
     put(s, in.depth);
     put(s, in.msDepth);
