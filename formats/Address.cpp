@@ -42,6 +42,8 @@ const TargetProfile &profileOf(const CliAddress &a) {
 }
 
 Cell cellOf(const lj_state &s, const CliAddress &a) {
+  if (a.area == Area::None && a.profile) // a system-parameter byte (CliAddress::area)
+    return {reinterpret_cast<const unsigned char *>(&s) + a.index, 1, false};
   const TargetProfile &tp = profileOf(a);
   const AreaInfo &info = tp.area(a.area);
   if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element

@@ -1,11 +1,14 @@
 // Stimulus and parameter file parsers: line-oriented, located errors, no exceptions.
 #include "formats/InputFiles.h"
 
+#include "ir/Profile.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 
@@ -144,6 +147,98 @@ std::optional<std::vector<Assignment>> parseParams(std::string_view text, const 
   });
   if (!ok) return std::nullopt;
   return params;
+}
+
+std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
+                                                   std::string &error, const TargetProfile *tp) {
+  if (!tp || tp->systemParams.counterFormat == 0) return parseParams(text, file, error);
+  struct Value {
+    Assignment a;
+    int32_t line, col;
+  };
+  std::vector<Value> values;
+  std::optional<Assignment> type;
+  auto up = [](std::string_view v) {
+    std::string u(v);
+    for (char &c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return u;
+  };
+  bool ok = forEachLine(text, [&](int32_t lineNo, std::string_view line) {
+    size_t k = 0;
+    while (k < line.size() && isBlank(line[k])) ++k;
+    if (k == line.size()) return true;
+    auto at = [&](size_t pos) {
+      return file + ":" + std::to_string(lineNo) + ":" + std::to_string(pos + 1) + ": ";
+    };
+    const size_t eq = line.find('=');
+    size_t v = eq == std::string_view::npos ? line.size() : eq + 1;
+    while (v < line.size() && isBlank(line[v])) ++v;
+    std::string compact;
+    for (char c : line)
+      if (!isBlank(c)) compact.push_back(c);
+    const std::string key = up(compact.substr(0, compact.find('=')));
+    if (key == "COUNTER") {
+      const std::string val = up(compact.substr(compact.find('=') + 1));
+      if (eq == std::string_view::npos || (val != "BCD" && val != "BINARY")) {
+        error = at(v) + "the counter data type is BCD or BINARY, got '" +
+                std::string(line.substr(v)) + "' (COUNTER = BCD or COUNTER = BINARY)";
+        return false;
+      }
+      CliAddress a;
+      a.area = Area::None;
+      a.index = static_cast<int32_t>(tp->systemParams.counterFormat);
+      a.profile = tp;
+      a.width = 1;
+      a.text = "COUNTER";
+      type =
+          Assignment{a, val == "BCD" ? TargetProfile::kCounterBcd : TargetProfile::kCounterBinary};
+      return true;
+    }
+    std::string why;
+    std::optional<Assignment> a = parseProfileAssignment(*tp, compact, why);
+    if (!a) {
+      error = at(k) + why + " (expected COUNTER = BCD|BINARY or a PMC parameter ADDR = VALUE)";
+      return false;
+    }
+    const Area pa = a->addr.area;
+    if (pa != Area::TimerData && pa != Area::CounterData && pa != Area::KeepRelay &&
+        pa != Area::DataTable) {
+      error = at(k) + "'" + a->addr.text + "' is not a PMC parameter (areas T, C, K, D)";
+      return false;
+    }
+    values.push_back({std::move(*a), lineNo, static_cast<int32_t>(v)});
+    return true;
+  });
+  if (!ok) return std::nullopt;
+  std::vector<Assignment> out;
+  const bool bcd = type && type->value == TargetProfile::kCounterBcd;
+  if (type) out.push_back(*type);
+  const AreaInfo &c = tp->area(Area::CounterData);
+  for (Value &x : values) {
+    CliAddress &a = x.a.addr;
+    // CTR's presets and counts (C0.., reference 6.4) are BCD when the data type is: the screen
+    // shows decimal [L1971-L1973], so the value is written as its decimal digits.
+    if (bcd && a.area == Area::CounterData && a.index < c.count && !a.isBit()) {
+      const int digits = 2 * (a.width ? a.width : c.bytes);
+      int64_t lim = 1;
+      for (int d = 0; d < digits; ++d) lim *= 10;
+      if (x.a.value < 0 || x.a.value >= lim) {
+        error = file + ":" + std::to_string(x.line) + ":" + std::to_string(x.col + 1) +
+                ": counter value " + std::to_string(x.a.value) + " of " + a.text +
+                " is not BCD: the counter data type is BCD and " + a.text + " holds " +
+                std::to_string(digits) + " digits (0.." + std::to_string(lim - 1) + ")";
+        return std::nullopt;
+      }
+      int64_t bcdValue = 0;
+      for (int d = 0; d < digits; ++d) {
+        bcdValue |= (x.a.value % 10) << (4 * d);
+        x.a.value /= 10;
+      }
+      x.a.value = bcdValue;
+    }
+    out.push_back(std::move(x.a));
+  }
+  return out;
 }
 
 bool readFile(const std::string &path, std::string &out, std::string &error, size_t maxBytes) {

@@ -43,6 +43,17 @@ std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &
 std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
                                                    std::string &error);
 
+/// The parameter file of the program's target `tp` (nullptr or HNC-8: the P values above). A
+/// target with system parameters (TargetProfile::SystemParams, FANUC) reads one setting per
+/// line, `NAME = VALUE`, `#` comments (docs/fanuc-pmc.md "System parameters"):
+/// `COUNTER = BCD` or `BINARY` (the counter data type; an Assignment of Area::None at the
+/// parameter byte's offset) and PMC parameter values `ADDR = VALUE` of the areas T, C, K and D
+/// in the target's address syntax; with BCD, a value of CTR's counter data (the first range of
+/// C) is written as BCD digits and must have as many digits as its bytes hold (a located error
+/// `file:line:col: ...` otherwise). Assignments come in file order, the counter data type first.
+std::optional<std::vector<Assignment>> parseParams(std::string_view text, const std::string &file,
+                                                   std::string &error, const TargetProfile *tp);
+
 /// Size limit of every file a user hands to ladderjit (PROGRAM, plc.dit, stimulus, params,
 /// symbols): a 10,000-statement program is about 1 MiB.
 inline constexpr size_t kMaxInputFileBytes = size_t{16} << 20;

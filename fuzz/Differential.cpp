@@ -209,9 +209,11 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
     lj_state_reset(s);
     (s == sa.get() ? ha : hb).attach(*s);
     s->max_backward_steps = c.stim.maxBackwardSteps;
-    if (c.fanuc)
+    if (c.fanuc) {
       gen::applyFanucWrites(*prog->profile, *s, c.stim.beforeInit);
-    else
+      if (const uint32_t at = prog->profile->systemParams.counterFormat) // as --params does
+        reinterpret_cast<unsigned char *>(s)[at] = c.stim.counterFormat;
+    } else
       gen::applyWrites(*s, c.stim.beforeInit);
     s->now_ms = c.stim.initNowMs;
   }

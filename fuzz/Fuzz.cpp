@@ -8,6 +8,7 @@
 
 #include "gen/IlGenerator.h"
 #include "gen/Rng.h"
+#include "ir/Profile.h"
 
 #include <algorithm>
 #include <chrono>
@@ -74,6 +75,8 @@ void printCase(std::ostream &out, const Case &c) {
   out << ") ---\n";
   for (const std::string &l : c.lines) out << l << "\n";
   out << "--- NC host: tests/support/TestHost(" << c.hostSeed << ") per engine ---\n";
+  if (c.fanuc && c.stim.counterFormat == TargetProfile::kCounterBcd)
+    out << "--- counter data type BCD (--params file: COUNTER = BCD) ---\n";
   out << "--- stimulus (" << c.stim.ticks() << " ticks; --stimulus file) ---\n";
   out << gen::formatStimulus(c.stim);
   out << "--- end ---\n";

@@ -120,6 +120,11 @@ public:
       wd.stim.maxBackwardSteps = 1000000;
       if (fails(wd)) best = std::move(wd);
     }
+    if (best.stim.counterFormat != 0) { // FANUC: binary counters replay without --params
+      Case bin = best;
+      bin.stim.counterFormat = 0;
+      if (fails(bin)) best = std::move(bin);
+    }
   }
 
   uint32_t runs() const { return runs_; }

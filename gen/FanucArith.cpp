@@ -50,7 +50,10 @@ private:
   /// A byte address of the pools leaving room for `span` bytes (X too when read-only; the
   /// flags and remainder bytes R9000..R9005 sometimes).
   std::string data(int span, bool writable) {
-    if (!writable && r_.chance(20)) return "X" + std::to_string(pick(0, 4 - std::min(span, 4)));
+    if (!writable && r_.chance(20)) {
+      const std::string area = r_.chance(70) ? "X" : "F";
+      return area + std::to_string(pick(0, 4 - std::min(span, 4)));
+    }
     if (r_.chance(8)) return "R" + std::to_string(pick(9000, 9006 - span));
     return std::string(r_.chance(50) ? "R" : "D") + std::to_string(pick(0, 12 - span));
   }

@@ -103,7 +103,10 @@ public:
 private:
   /// A byte address of the pools leaving room for `span` bytes (X too when read-only).
   std::string data(int span, bool writable) {
-    if (!writable && r_.chance(20)) return "X" + std::to_string(pick(0, 4 - std::min(span, 4)));
+    if (!writable && r_.chance(20)) {
+      const std::string area = r_.chance(70) ? "X" : "F";
+      return area + std::to_string(pick(0, 4 - std::min(span, 4)));
+    }
     if (span <= 12 && !r_.chance(10))
       return std::string(r_.chance(50) ? "R" : "D") + std::to_string(pick(0, 12 - span));
     return "R" + std::to_string(pick(7990 - span, 8000 - span));
@@ -196,7 +199,7 @@ private:
       setUp();
       const auto [c, g] = positions(n);
       for (const auto &[a, v] : {std::pair{&cur, c}, std::pair{&goal, g}}) {
-        if (a->front() == 'X') continue;
+        if (a->front() == 'X' || a->front() == 'F') continue; // inputs: read-only
         const int bytes = r_.chance(50) ? 1 : 2; // one draw per statement: a fixed order
         numeb(bytes, bcd(r_.chance(10) ? -1 : v % 10000), *a);
       }
@@ -215,10 +218,10 @@ private:
     const int64_t n = r_.chance(10) ? pick(-2, 1) : r_.chance(10) ? lim : rotorCount() % (lim + 1);
     if (r_.chance(85)) { // n and the positions (n written on some scans only)
       setUp();
-      if (cnt.front() != 'X') numeb(w, n, cnt);
+      if (cnt.front() != 'X' && cnt.front() != 'F') numeb(w, n, cnt);
       const auto [c, g] = positions(n < 2 ? 8 : n);
       for (const auto &[a, v] : {std::pair{&cur, c}, std::pair{&goal, g}})
-        if (a->front() != 'X') numeb(w, r_.chance(10) ? lim : v, *a);
+        if (a->front() != 'X' && a->front() != 'F') numeb(w, r_.chance(10) ? lim : v, *a);
       setUpEnd();
     }
     inputs(4);

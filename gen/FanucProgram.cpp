@@ -70,8 +70,10 @@ private:
   std::string readBit() {
     switch (pick(0, 5)) {
     case 0:
-    case 1:
-      return "X" + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
+    case 1: { // an input from the machine (X) or the CNC (F): live in level 1, latched in level 2
+      const std::string area = r_.chance(70) ? "X" : "F";
+      return area + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
+    }
     case 2:
       return "Y" + std::to_string(pick(0, 1)) + "." + std::to_string(pick(0, 7));
     case 3:
@@ -87,7 +89,10 @@ private:
   }
   /// A byte address of the data pools R0..R11, D0..D11 leaving room for `width` bytes.
   std::string data(int width, bool writable = true) {
-    if (!writable && r_.chance(25)) return "X" + std::to_string(pick(0, 4 - width));
+    if (!writable && r_.chance(25)) {
+      const std::string area = r_.chance(70) ? "X" : "F";
+      return area + std::to_string(pick(0, 4 - width));
+    }
     return std::string(r_.chance(50) ? "R" : "D") + std::to_string(pick(0, 12 - width));
   }
   std::string konst(int width) {
@@ -317,18 +322,23 @@ Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
   Rng r(seed);
   Stimulus st;
   uint64_t now = 0;
-  for (int k = 0; k < 4; ++k)
-    st.beforeInit.push_back({Area::Input, k, -1, static_cast<int32_t>(r.range(0, 255))});
+  for (Area a : {Area::Input, Area::NcStatus})
+    for (int k = 0; k < 4; ++k)
+      st.beforeInit.push_back({a, k, -1, static_cast<int32_t>(r.range(0, 255))});
+  // X0..X3 and F0..F3 change on any tick, so also in the middle of a level-2 scan, which must
+  // go on with the inputs latched at its first slice (docs/fanuc-pmc.md "Level 2 and its
+  // inputs").
   for (uint32_t t = 0; t < ticks; ++t) {
     std::vector<HostWrite> w;
     const int n = static_cast<int>(r.range(0, 3));
     for (int k = 0; k < n; ++k) {
+      const Area a = r.chance(65) ? Area::Input : Area::NcStatus;
       if (r.chance(50))
-        w.push_back({Area::Input, static_cast<int32_t>(r.range(0, 3)), -1,
-                     static_cast<int32_t>(r.range(0, 255))});
+        w.push_back(
+            {a, static_cast<int32_t>(r.range(0, 3)), -1, static_cast<int32_t>(r.range(0, 255))});
       else
-        w.push_back({Area::Input, static_cast<int32_t>(r.range(0, 3)),
-                     static_cast<int8_t>(r.range(0, 7)), static_cast<int32_t>(r.range(0, 1))});
+        w.push_back({a, static_cast<int32_t>(r.range(0, 3)), static_cast<int8_t>(r.range(0, 7)),
+                     static_cast<int32_t>(r.range(0, 1))});
     }
     st.writes.push_back(std::move(w));
     now +=
@@ -339,6 +349,8 @@ Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks) {
   // runs into the watchdog, at a limit that keeps such ticks short.
   static constexpr uint64_t kLimits[] = {50, 300, 2000, 20000};
   st.maxBackwardSteps = kLimits[r.range(0, 3)];
+  // CTR counts in binary or in BCD (the counter data type system parameter, ref 6.4).
+  st.counterFormat = r.chance(50) ? TargetProfile::kCounterBcd : TargetProfile::kCounterBinary;
   return st;
 }
 

@@ -16,8 +16,8 @@ namespace lj::gen {
 /// A random program (one instruction per line) with about `statements` lines.
 std::vector<std::string> generateFanuc(uint64_t seed, int32_t statements);
 
-/// Random X inputs (bytes X0..X3, bits) and now_ms for `ticks` ticks; writes name FANUC areas
-/// (apply them with applyFanucWrites).
+/// Random X and F inputs (bytes X0..X3 and F0..F3, bits), changing on any tick, and now_ms for
+/// `ticks` ticks; writes name FANUC areas (apply them with applyFanucWrites).
 Stimulus generateFanucStimulus(uint64_t seed, uint32_t ticks);
 
 /// Apply writes whose areas are FANUC's (byte elements at profile offsets).

@@ -25,8 +25,10 @@ protected:
   std::string readBit() {
     switch (pick(0, 4)) {
     case 0:
-    case 1:
-      return "X" + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
+    case 1: {
+      const std::string area = r_.chance(70) ? "X" : "F";
+      return area + std::to_string(pick(0, 3)) + "." + std::to_string(pick(0, 7));
+    }
     case 2:
       return "R9091." + std::to_string(pick(0, 1));
     default:

@@ -4,6 +4,7 @@
 #include "gen/FanucTimerCounter.h"
 
 #include <cstdlib>
+#include <iterator>
 
 namespace lj::gen {
 
@@ -33,7 +34,10 @@ int freshNumber(Rng &r, const std::vector<std::string> &lines, const std::string
 }
 
 std::string bit(Rng &r) {
-  if (r.chance(40)) return "X" + num(r.range(0, 3)) + "." + num(r.range(0, 7));
+  if (r.chance(40)) {
+    const std::string area = r.chance(70) ? "X" : "F";
+    return area + num(r.range(0, 3)) + "." + num(r.range(0, 7));
+  }
   if (r.chance(15)) return "R9091." + num(r.range(0, 1));
   return std::string(r.chance(50) ? "R" : "D") + num(r.range(0, 7)) + "." + num(r.range(0, 7));
 }
@@ -60,6 +64,18 @@ void presetInto(Rng &r, std::vector<std::string> &out, const std::string &target
   out.push_back("(PRM) " + data(r, 2));
   out.push_back("(PRM) " + num(r.chance(80) ? r.range(0, 15) : r.range(0, 32767)));
   out.push_back("(PRM) " + target);
+}
+/// `RD act` / `NUMEB 2 v target` with v a value near BCD digit carries or invalid BCD (CTR in
+/// either counter data type, docs/fanuc-pmc.md "System parameters").
+void bcdInto(Rng &r, std::vector<std::string> &out, const std::string &act,
+             const std::string &target) {
+  static constexpr int32_t kValues[] = {
+      9,     10, 16, 19, 20, 0x19, 0x20, 0x1A, 0x99, 0x100, 0x999, 0x1234, -26216 /* 0x9998 */,
+      -26215 /* 0x9999 */};
+  out.push_back("RD " + act);
+  out.push_back("NUMEB 2 " +
+                num(kValues[r.range(0, static_cast<int64_t>(std::size(kValues)) - 1)]) + " " +
+                target);
 }
 /// Three more inputs on top of the logic line (CN0 / BYT), ACT last.
 void pushInputs(Rng &r, std::vector<std::string> &out, int n) {
@@ -89,7 +105,12 @@ void fanucTimerCounterRung(Rng &r, std::vector<std::string> &out) {
     pushInputs(r, out, 3);
     out.push_back("CTR " + num(n));
     out.push_back("WRT " + writeBit(r));
-    if (r.chance(60)) presetInto(r, out, "C" + num(4 * (n - 1)));
+    if (r.chance(60))
+      presetInto(r, out, "C" + num(4 * (n - 1)));
+    else if (r.chance(60)) // a preset whose BCD and binary readings differ (20 vs 0x20)
+      bcdInto(r, out, "R9091.1", "C" + num(4 * (n - 1)));
+    if (r.chance(40)) // now and then a count a digit below a BCD carry (0x09, 0x99, 0x9999)
+      bcdInto(r, out, bit(r), "C" + num(4 * (n - 1) + 2));
     return;
   }
   case 3: {

@@ -89,6 +89,9 @@ struct Stimulus {
   std::vector<std::vector<HostWrite>> writes; ///< per tick, applied before that tick's scan
   std::vector<uint64_t> nowMs;                ///< per tick
   uint64_t maxBackwardSteps = 1000000;
+  /// FANUC: the counter data type system parameter at power-up (TargetProfile::kCounterBinary
+  /// or kCounterBcd), written before init like --params does.
+  uint8_t counterFormat = 0;
   uint32_t ticks() const { return static_cast<uint32_t>(nowMs.size()); }
 };
 

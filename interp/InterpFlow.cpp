@@ -4,6 +4,7 @@
 // "Flow"); function blocks go to InterpBlocks.cpp and the family files.
 #include "interp/Interpreter.h"
 #include "interp/InterpreterInternal.h"
+#include "ir/SyncInputs.h"
 
 #include <cassert>
 
@@ -234,7 +235,8 @@ void Interpreter::Impl::traceAfter(lj_state *s, const Frame &f, int32_t pc) {
   int32_t k = 2;
   const Stmt &st = prog.stmts[pc];
   for (int o = 0; o < st.operandCount && o < 8; ++o)
-    if (traceAt.operand[pc] & (1u << o)) w[k++] = readValue(s, decode(*prog.profile, st.ops[o]));
+    if (traceAt.operand[pc] & (1u << o))
+      w[k++] = readValue(s, decode(*prog.profile, st.ops[o], readsSyncInputs(prog, pc)));
   const StateKind sk = instrInfo(st.op).state;
   if (instrInfo(st.op).family == Family::Core && sk == StateKind::Timer)
     w[k] = static_cast<int32_t>(static_cast<uint32_t>(timerAt(s, code[pc].slot).elapsed_ms));

@@ -26,6 +26,13 @@ bool onDelay(lj_state *s, int32_t slot, bool act, uint32_t presetMs) {
   return w[1] == 2;
 }
 
+/// The 4 BCD digits of `v` (>= 0; digits above the fourth dropped).
+int32_t bcdDigits(int32_t v) {
+  int32_t r = 0;
+  for (int k = 0; k < 4; ++k, v /= 10) r |= (v % 10) << (4 * k);
+  return r;
+}
+
 uint32_t elapsedMs(const lj_state *s, int32_t slot, uint32_t presetMs) {
   const int32_t *w = &s->inst_word[slot];
   if (w[1] == 0) return 0;
@@ -56,7 +63,16 @@ bool runPmcTc(const BlockCall &b) {
   case Op::PmcCounter: {
     // ST3..ST0 = CN0, UPDOWN, RST, ACT (reference 5: ACT is the last loaded).
     const bool act = b.f.pop(), rst = b.f.pop(), down = b.f.pop(), cn0 = b.f.pop();
-    const int32_t pv = readValue(s, o[0]), cv = readValue(s, o[1]);
+    // CTR follows the counter data type of the system parameter (reference 6.4): in BCD the
+    // preset and the count are 4 BCD digits (a digit above 9 counts its binary value, as
+    // COMP/COIN read it) and the new count is written as the 4 digits of its value.
+    const uint32_t typeAt = b.tp.systemParams.counterFormat;
+    const bool bcd = o[2].kind == Ref::Kind::Const && o[2].value == pmc::kCounterSystemType &&
+                     typeAt != 0 && bytes(s)[typeAt] == TargetProfile::kCounterBcd;
+    auto value = [&](const Ref &r) {
+      return bcd ? pmc::bcdValue(readValue(s, r), 2) : readValue(s, r);
+    };
+    const int32_t pv = value(o[0]), cv = value(o[1]);
     const int32_t init = cn0 ? 1 : 0;
     const bool rise = act && s->edge[b.c.slot] == 0;
     int32_t next = cv;
@@ -67,8 +83,8 @@ bool runPmcTc(const BlockCall &b) {
     else if (rise)
       next = cv >= pv ? init : addWrap(cv, 1);
     s->edge[b.c.slot] = act;
-    writeValue(s, o[1], next);
-    const int32_t stored = readValue(s, o[1]); // as the register holds it (2 bytes)
+    writeValue(s, o[1], bcd ? bcdDigits(next) : next);
+    const int32_t stored = value(o[1]); // as the register holds it (2 bytes)
     const bool reached = down ? stored <= init : stored >= pv;
     b.f.push(!rst && reached);
     return true;

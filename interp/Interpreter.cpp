@@ -9,6 +9,7 @@
 // (they are emptied at LOOP and NEXT anyway).
 #include "interp/Interpreter.h"
 #include "interp/InterpreterInternal.h"
+#include "ir/SyncInputs.h"
 
 #include <algorithm>
 #include <array>
@@ -59,16 +60,18 @@ Interpreter::Impl::Impl(const VerifiedProgram &p, const ContactForces &forces, i
     const Stmt &st = p.stmts[i];
     Code &c = code[i];
     c.op = st.op;
-    c.a = decode(*prog.profile, st.ops[0]);
-    c.b = decode(*prog.profile, st.ops[1]);
-    c.c = decode(*prog.profile, st.ops[2]);
+    // FANUC level 2 reads X and F through the synchronized input memory (ir/SyncInputs.h).
+    const bool sync = readsSyncInputs(p, static_cast<int32_t>(i));
+    c.a = decode(*prog.profile, st.ops[0], sync);
+    c.b = decode(*prog.profile, st.ops[1], sync);
+    c.c = decode(*prog.profile, st.ops[2], sync);
     c.target = p.info[i].target;
     c.slot = p.info[i].slot;
     if (!forced.empty()) c.force = forced[i];
     if (opFamily(st.op) != Family::Core) {
       c.wide = static_cast<int32_t>(wide.size());
       std::array<Ref, kMaxOperands> &w = wide.emplace_back();
-      for (int k = 0; k < st.operandCount; ++k) w[k] = decode(*prog.profile, st.ops[k]);
+      for (int k = 0; k < st.operandCount; ++k) w[k] = decode(*prog.profile, st.ops[k], sync);
     }
     assert(slotInRange(*p.profile, instrInfo(c.op).state, c.slot) && "state slot out of range");
     assert((c.op != Op::Jump && c.op != Op::LoopBegin) ||
@@ -140,6 +143,12 @@ uint32_t Interpreter::runPlc1(lj_state *s) {
 
 uint32_t Interpreter::runPlc2Slice(lj_state *s, uint32_t slice) {
   const VerifiedProgram &p = impl_->prog;
+  if (slice == 0 && latchesSyncInputs(p)) {
+    // A scan of the divided sliced part starts: latch the inputs it reads (FANUC level 2's
+    // synchronized input memory, ir/Profile.h SyncInputs).
+    const TargetProfile::SyncInputs &m = p.profile->syncInputs;
+    std::memcpy(bytes(s) + m.copy, bytes(s) + m.from, m.bytes);
+  }
   if (p.slices.empty()) return slice == 0 ? impl_->runPart(s, p.plc2, 0) : LJ_FAULT_NONE;
   if (slice >= p.slices.size()) return LJ_FAULT_NONE;
   int32_t depth = slice < p.sliceDepth.size() ? p.sliceDepth[slice] : 0;

@@ -113,6 +113,15 @@ inline Ref decode(const TargetProfile &tp, const Operand &o) {
   return r;
 }
 
+/// `o` decoded as a statement reads it: with `sync` (the statement reads the synchronized input
+/// memory, ir/SyncInputs.h) an area that memory holds (FANUC X, F) is read from its copy.
+inline Ref decode(const TargetProfile &tp, const Operand &o, bool sync) {
+  Ref r = decode(tp, o);
+  if (sync && (o.kind == Operand::Kind::Reg || o.kind == Operand::Kind::Bit))
+    r.off = tp.syncReadOffset(o.area, r.off);
+  return r;
+}
+
 /// The Neza function blocks %TMi / %Ci (InterpIec.cpp, docs/iec-il.md "Function blocks").
 void iecTimer(lj_state *s, Frame &f, const Code &c);
 void iecCounter(lj_state *s, Frame &f, const Code &c);

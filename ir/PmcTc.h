@@ -11,6 +11,12 @@ namespace lj::pmc {
 /// R9000 bits written by COMPB (reference 2): Z (#0) equal, N (#1) input < comparison.
 constexpr int32_t kFlagZ = 1, kFlagN = 2;
 
+/// PmcCounter's data-type operand (ops[2]): binary always (CTRB, CTRC), or the counter data type
+/// of the system parameter (CTR, reference 6.4 [L1971-L1973]: BCD or binary, "chosen globally";
+/// TargetProfile::SystemParams::counterFormat). In BCD the preset and the count are 4 BCD digits
+/// in their 2 bytes, 0..9999 (reference 6.4 [L2031]).
+constexpr int32_t kCounterBinary = 0, kCounterSystemType = 1;
+
 /// BcdCompare relation operand: COMP (input <= comparison) or COIN (input == comparison).
 constexpr int32_t kBcdLessEqual = 0, kBcdEqual = 1;
 

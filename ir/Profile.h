@@ -102,6 +102,31 @@ struct TargetProfile {
     uint32_t fall = 0;      ///< lj_state offset of falling-edge (PLF) slot 0 (0: plf_prev)
     int32_t pulseSlots = 0; ///< slots of each
   } blockState{};
+  /// The synchronized input memory of the sliced part (FANUC level 2, ref 4.1): when the sliced
+  /// part is divided (more than one slice), the engines copy the `bytes` bytes of lj_state at
+  /// `from` to `copy` right before slice 0 runs, i.e. at the start of every scan of the sliced
+  /// part, and every read of an area in `areas` by a statement of the sliced part or of a
+  /// subroutine reads the copy (offset - from + copy) instead of the live bytes. The every-tick
+  /// part keeps reading live inputs. All zero (HNC-8, IEC): none.
+  struct SyncInputs {
+    AreaMask areas = 0;
+    uint32_t from = 0, copy = 0, bytes = 0;
+  } syncInputs{};
+  /// System parameters the host writes into lj_state at power-up (from --params) and the
+  /// engines read at run time: byte offsets, 0 = the target has none.
+  struct SystemParams {
+    /// Counter data type of CTR (FANUC ref 6.4, "chosen globally on the system parameter
+    /// screen"): the byte is 0 for binary, 1 for BCD (kCounterBcd).
+    uint32_t counterFormat = 0;
+  } systemParams{};
+  static constexpr uint8_t kCounterBinary = 0, kCounterBcd = 1;
+
+  /// Where a read of element `n` of area `a` at lj_state offset `off` goes when the reader
+  /// reads the synchronized input memory (SyncInputs): the copy for an area the memory holds,
+  /// `off` itself otherwise.
+  constexpr uint32_t syncReadOffset(Area a, uint32_t off) const {
+    return hasArea(syncInputs.areas, a) ? off - syncInputs.from + syncInputs.copy : off;
+  }
 
   /// The facts of area `a`.
   constexpr const AreaInfo &area(Area a) const { return areas[static_cast<int>(a)]; }

@@ -8,7 +8,7 @@
 namespace lj::lower {
 
 StateLoc FunctionEmitter::areaLoc(const Operand &op, unsigned width) {
-  const uint32_t off = tp().elementOffset(op.area, op.index);
+  const uint32_t off = readOffset(op);
   if (!StateLayout::inMem(off)) return mc_.layout.area(op.area, op.index);
   if (width == 0) width = op.width ? op.width : tp().area(op.area).bytes;
   std::string name;

@@ -58,8 +58,7 @@ void FunctionEmitter::fdStore(const Operand &o, int32_t k, unsigned width, llvm:
 }
 
 llvm::Value *FunctionEmitter::fdAddr(const Operand &o, llvm::Value *dyn) {
-  llvm::Value *p =
-      b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), state_, tp().elementOffset(o.area, o.index));
+  llvm::Value *p = b_.CreateConstInBoundsGEP1_64(b_.getInt8Ty(), state_, readOffset(o));
   return b_.CreateInBoundsGEP(b_.getInt8Ty(), p, dyn);
 }
 
@@ -362,9 +361,7 @@ void FunctionEmitter::emitFdSearch(const Stmt &s, int32_t slot) {
   llvm::PHINode *k = lb.CreatePHI(lb.getInt64Ty(), 2, "k");
   k->addIncoming(lb.getInt64(0), entry);
   llvm::Value *item = lb.CreateInBoundsGEP(
-      lb.getInt8Ty(),
-      lb.CreateConstInBoundsGEP1_64(lb.getInt8Ty(), state_,
-                                    tp().elementOffset(s.ops[1].area, s.ops[1].index)),
+      lb.getInt8Ty(), lb.CreateConstInBoundsGEP1_64(lb.getInt8Ty(), state_, readOffset(s.ops[1])),
       lb.CreateMul(k, lb.getInt64(width)));
   llvm::Value *v = lb.CreateAlignedLoad(ty, item, llvm::Align(1));
   lb.CreateCondBr(lb.CreateICmpEQ(v, key), done, latch);
@@ -447,8 +444,7 @@ void FunctionEmitter::emitFdBcdSearch(const Stmt &s, int32_t slot) {
   llvm::IRBuilder<> lb(loop); // plain builder: see emitFdSearch
   llvm::PHINode *k = lb.CreatePHI(lb.getInt64Ty(), 2, "k");
   k->addIncoming(lb.getInt64(0), entry);
-  llvm::Value *head =
-      lb.CreateConstInBoundsGEP1_64(i8, state_, tp().elementOffset(s.ops[1].area, s.ops[1].index));
+  llvm::Value *head = lb.CreateConstInBoundsGEP1_64(i8, state_, readOffset(s.ops[1]));
   llvm::Value *at = lb.CreateInBoundsGEP(i8, head, lb.CreateMul(k, width));
   // The high byte only with BYT = 1 (read the low one again otherwise: no access past the range).
   llvm::Value *atHi = lb.CreateSelect(byt, lb.CreateConstInBoundsGEP1_64(i8, at, 1), at);

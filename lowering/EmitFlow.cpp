@@ -3,6 +3,8 @@
 // fault code is propagated, and the watchdog `if (++steps > max) return LJ_FAULT_WATCHDOG`.
 #include "lowering/FunctionEmitter.h"
 
+#include "ir/SyncInputs.h"
+
 #include "ladderjit/abi.h"
 
 namespace lj::lower {
@@ -49,6 +51,7 @@ llvm::Error FunctionEmitter::emitRange(StmtRange r, int32_t deadDepth, const Chu
   ms_.clear();
   chunk_ = chunk && carry ? chunk : nullptr;
   range_ = r;
+  syncReads_ = readsSyncInputs(prog_, r.begin); // a body never spans two parts
   if (carry) carry_ = *carry;
   if (chunk_ && carry_.buf) {
     ms_.assign(static_cast<size_t>(prog_.info[r.begin].msDepth), b_.getFalse());

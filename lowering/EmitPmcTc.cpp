@@ -79,7 +79,29 @@ llvm::Error FunctionEmitter::emitPmcTcBlock(int32_t i) {
     llvm::Value *act = st_.back(), *rst = st_[st_.size() - 2], *down = st_[st_.size() - 3],
                 *cn0 = st_[st_.size() - 4];
     st_.resize(st_.size() - 4);
-    llvm::Value *pv = readInt(o[0]), *cv = readInt(o[1]);
+    // CTR follows the counter data type system parameter (reference 6.4), read at run time:
+    // in BCD the preset and count are 4 BCD digits (pmc::bcdValue) and the count is written
+    // back as the 4 digits of its value.
+    const uint32_t typeAt = tp().systemParams.counterFormat;
+    const bool byType = o[2].kind == Operand::Kind::Const &&
+                        o[2].value == pmc::kCounterSystemType && typeAt; // CTR, not CTRB/CTRC
+    llvm::Value *isBcd = b_.getFalse();
+    if (byType) {
+      llvm::Value *t = cache_.load(mc_.layout.memBytes(typeAt, 1, "counter_type"));
+      isBcd = b_.CreateICmpEQ(t, b_.getInt8(TargetProfile::kCounterBcd), "bcd");
+    }
+    auto bcd4 = [&](llvm::Value *raw) {
+      llvm::Value *v = k32(0);
+      int32_t scale = 1;
+      for (int k = 0; k < 4; ++k, scale *= 10)
+        v = b_.CreateAdd(
+            v, b_.CreateMul(b_.CreateAnd(b_.CreateLShr(raw, k32(4 * k)), k32(0xF)), k32(scale)));
+      return v;
+    };
+    auto value = [&](llvm::Value *raw) {
+      return byType ? b_.CreateSelect(isBcd, bcd4(raw), raw) : raw;
+    };
+    llvm::Value *pv = value(readInt(o[0])), *cv = value(readInt(o[1]));
     llvm::Value *init = b_.CreateZExt(cn0, b_.getInt32Ty());
     StateLoc prevL = mc_.layout.edge(slot);
     llvm::Value *prev = b_.CreateICmpNE(cache_.load(prevL), b_.getInt8(0));
@@ -89,15 +111,25 @@ llvm::Error FunctionEmitter::emitPmcTcBlock(int32_t i) {
     llvm::Value *counted = b_.CreateSelect(rise, b_.CreateSelect(down, dn, up), cv);
     llvm::Value *next = b_.CreateSelect(rst, b_.CreateSelect(down, pv, init), counted, "cv");
     cache_.store(prevL, b_.CreateZExt(act, b_.getInt8Ty()));
-    writeInt(o[1], next, nullptr);
+    llvm::Value *written = next;
+    if (byType) { // the 4 BCD digits of next (>= 0 in BCD)
+      llvm::Value *digits = k32(0), *rest = next;
+      for (int k = 0; k < 4; ++k) {
+        digits = b_.CreateOr(digits, b_.CreateShl(b_.CreateURem(rest, k32(10)), k32(4 * k)));
+        rest = b_.CreateUDiv(rest, k32(10));
+      }
+      written = b_.CreateSelect(isBcd, digits, next);
+    }
+    writeInt(o[1], written, nullptr);
     // The value as the register holds it (its width, its area's sign).
     const unsigned width = o[1].width ? o[1].width : tp().area(o[1].area).bytes;
-    llvm::Value *stored = next;
+    llvm::Value *stored = written;
     if (width < 4) {
-      llvm::Value *t = b_.CreateTrunc(next, b_.getIntNTy(8 * width));
+      llvm::Value *t = b_.CreateTrunc(written, b_.getIntNTy(8 * width));
       stored = tp().area(o[1].area).isSigned ? b_.CreateSExt(t, b_.getInt32Ty())
                                              : b_.CreateZExt(t, b_.getInt32Ty());
     }
+    stored = value(stored);
     llvm::Value *reached =
         selectBit(down, b_.CreateICmpSLE(stored, init), b_.CreateICmpSGE(stored, pv));
     st_.push_back(b_.CreateAnd(notV(rst), reached, "w1"));

@@ -120,6 +120,13 @@ private:
   /// Where operand `op` (a Reg or Bit of a numeric area) lives: its image field, or `width`
   /// bytes (0: the operand's access width) of lj_state.mem for a profile-laid area.
   StateLoc areaLoc(const Operand &op, unsigned width = 0);
+  /// lj_state offset of operand `op` (a Reg or Bit of a numeric area) as this body reads it:
+  /// X and F from the synchronized input memory when the body's statements read it
+  /// (ir/SyncInputs.h: FANUC level 2 and subroutines of a divided level 2).
+  uint32_t readOffset(const Operand &op) const {
+    const uint32_t off = tp().elementOffset(op.area, op.index);
+    return syncReads_ ? tp().syncReadOffset(op.area, off) : off;
+  }
   /// Field `f` of timer slot `slot` / the previous-input byte of PLS (`rise`) or PLF block
   /// `slot`, where the profile keeps them (TargetProfile::timerOffset / pulseOffset).
   StateLoc timerLoc(int32_t slot, TimerField f) const;
@@ -300,6 +307,7 @@ private:
   const ChunkPlan *chunk_ = nullptr;  ///< set for a chunk with carried entries
   CarryBuffer carry_;
   StmtRange range_{};
+  bool syncReads_ = false; ///< readsSyncInputs of the range's statements (one part each)
 };
 
 /// Split [r.begin, r.end) into consecutive ranges of about `target` statements. Cuts are placed

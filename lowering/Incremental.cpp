@@ -3,6 +3,8 @@
 // that only moves the leaf keeps its key, and every fact that changes its code changing it.
 #include "lowering/Incremental.h"
 
+#include "ir/SyncInputs.h"
+
 #include <type_traits>
 
 namespace lj::lower {
@@ -38,6 +40,9 @@ std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
   put(s, static_cast<uint8_t>(leaf.chunk));
   put(s, static_cast<uint8_t>(leaf.carried));
   put(s, leaf.msBase);
+  // X and F read live or from the synchronized input memory (the same statements in level 1
+  // and in a divided level 2 of a FANUC program address different bytes).
+  put(s, static_cast<uint8_t>(readsSyncInputs(p, r.begin)));
   if (leaf.chunk) {
     const ChunkPlan &c = leaf.plan;
     put(s, static_cast<uint8_t>(c.carriedIn));
@@ -60,6 +65,8 @@ std::string leafDigestInput(const VerifiedProgram &p, const Leaf &leaf,
       put(s, o.index);
       put(s, o.bit);
       put(s, o.value);
+      put(s, o.width); // MOVB and MOVW of the same bytes differ only here
+      put(s, static_cast<uint8_t>(o.bcd));
     }
     put(s, in.depth);
     put(s, in.msDepth);

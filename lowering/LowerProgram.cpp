@@ -4,6 +4,8 @@
 #include "lowering/FunctionEmitter.h"
 #include "lowering/Lower.h"
 
+#include "ir/SyncInputs.h"
+
 #include "ladderjit/abi.h"
 
 #include <llvm/ADT/STLExtras.h>
@@ -197,7 +199,8 @@ llvm::Error lowerTopBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int
   return llvm::Error::success();
 }
 
-void emitSliceSwitch(llvm::Function *plc2, const std::vector<llvm::Function *> &slices) {
+void emitSliceSwitch(const VerifiedProgram &prog, llvm::Function *plc2,
+                     const std::vector<llvm::Function *> &slices) {
   llvm::LLVMContext &ctx = plc2->getContext();
   llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", plc2));
   llvm::BasicBlock *none = llvm::BasicBlock::Create(ctx, "no.slice", plc2);
@@ -206,6 +209,15 @@ void emitSliceSwitch(llvm::Function *plc2, const std::vector<llvm::Function *> &
     llvm::BasicBlock *bb = llvm::BasicBlock::Create(ctx, "slice" + std::to_string(k), plc2);
     sw->addCase(b.getInt32(static_cast<uint32_t>(k)), bb);
     b.SetInsertPoint(bb);
+    if (k == 0 && latchesSyncInputs(prog)) {
+      // A scan of the divided sliced part starts: latch the inputs its statements read from
+      // the synchronized input memory (FANUC level 2, ir/Profile.h SyncInputs).
+      const TargetProfile::SyncInputs &m = prog.profile->syncInputs;
+      llvm::Value *s = stateArg(plc2);
+      b.CreateMemCpy(b.CreateConstInBoundsGEP1_64(b.getInt8Ty(), s, m.copy), llvm::MaybeAlign(1),
+                     b.CreateConstInBoundsGEP1_64(b.getInt8Ty(), s, m.from), llvm::MaybeAlign(1),
+                     m.bytes);
+    }
     b.CreateRet(b.CreateCall(slices[k], {stateArg(plc2)}));
   }
   b.SetInsertPoint(none);
@@ -302,7 +314,7 @@ lowerModule(const VerifiedProgram &prog, llvm::LLVMContext &ctx, const llvm::Dat
     if (llvm::Error e = lowerTopBody(mc, fn, slices[k], dead, false, namer)) return e;
   }
   if (opts.partition == 0)
-    emitSliceSwitch(makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
+    emitSliceSwitch(prog, makeFunction(*mod, kPlc2Symbol, FnKind::SliceEntry), sliceFns);
   // Declarations nobody here calls would only be noise in the object's symbol table.
   for (llvm::Function &f : llvm::make_early_inc_range(*mod))
     if (f.isDeclaration() && f.use_empty() && !f.isIntrinsic()) f.eraseFromParent();

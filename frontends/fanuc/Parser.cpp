@@ -659,7 +659,11 @@ std::string formatOperand(const Operand &op) {
 // TMRB and TMRBF have two parameters, the timer number and the set time in ms (ref 6.3: "[SUB24
 // TMRB | timer number | set time (ms)]", SUB77 alike); the IR's time-unit operand between them is
 // implied (Functional.cpp emits 0 = ms).
-bool implied(Op op, int k) { return (op == Op::OnDelayTimer || op == Op::OffDelayTimer) && k == 1; }
+// A counter's data-type operand (CTR: the system parameter, CTRB/CTRC: binary) is implied too.
+bool implied(Op op, int k) {
+  return ((op == Op::OnDelayTimer || op == Op::OffDelayTimer) && k == 1) ||
+         (op == Op::PmcCounter && k == 2);
+}
 
 const DialectText &dialectText() {
   static constexpr DialectText kText{"fanuc", &spell, &formatOperand, &implied};

@@ -2,6 +2,7 @@
 // docs/fanuc-pmc.md): TMR, TMRC, CTR, CTRB, CTRC, COMPB, COMP, COIN, NEB/NEW/NED, RNGB/RNGW/RNGD.
 // Functional.cpp resolves `SUB n` or the name and hands the instruction here first.
 #include "frontends/fanuc/ParserInternal.h"
+#include "ir/PmcTc.h"
 #include "profiles/fanuc/FanucProfile.h"
 
 namespace lj::fanuc::detail {
@@ -93,9 +94,10 @@ void emitSpec(Emitter &e, const Spec &sp, const Functional &f) {
     if (!e.constant(p[0], 1, kCtrCounters, "counter number", n) || !e.claimNumber('C', n, p[0].loc))
       return;
     const auto k = static_cast<int32_t>(4 * (n - 1));
+    // The data type is the system parameter's (ref 6.4 "chosen globally": --params).
     e.emit(Op::PmcCounter, at,
            {implied(Area::CounterData, k, 2, p[0].loc),
-            implied(Area::CounterData, k + 2, 2, p[0].loc)});
+            implied(Area::CounterData, k + 2, 2, p[0].loc), konst(pmc::kCounterSystemType, at)});
     break;
   }
   case 56: { // CTRB: constant preset, count value at C5000 + 2(n-1)
@@ -103,15 +105,16 @@ void emitSpec(Emitter &e, const Spec &sp, const Functional &f) {
     if (!e.constant(p[0], 1, kCtrbCounters, "counter number", n) ||
         !e.constant(p[1], 0, 32767, "preset", pv) || !e.claimNumber('B', n, p[0].loc))
       return;
-    e.emit(Op::PmcCounter, at,
+    e.emit(Op::PmcCounter, at, // binary (ref 6.4 [L2073])
            {konst(pv, p[1].loc),
-            implied(Area::CounterData, static_cast<int32_t>(5000 + 2 * (n - 1)), 2, p[0].loc)});
+            implied(Area::CounterData, static_cast<int32_t>(5000 + 2 * (n - 1)), 2, p[0].loc),
+            konst(pmc::kCounterBinary, at)});
     break;
   }
   case 55: { // CTRC: 2-byte preset, 4-byte register holding the count in its first 2 bytes
     if (!e.dataOperand(p[0], 2, false, false, a) || !e.dataOperand(p[1], 4, false, true, b)) return;
     b.width = 2;
-    e.emit(Op::PmcCounter, at, {a, b});
+    e.emit(Op::PmcCounter, at, {a, b, konst(pmc::kCounterBinary, at)});
     break;
   }
   case 32: { // COMPB: result in R9000 (reference 2, 6.6)

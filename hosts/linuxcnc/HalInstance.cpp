@@ -114,7 +114,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   if (!opt.params.empty()) {
     std::string text;
     if (!io::readFile(opt.params, text, error)) return nullptr;
-    auto list = io::parseParams(text, opt.params, error);
+    auto list = io::parseParams(text, opt.params, error, inst->profile_);
     if (!list) return nullptr;
     for (const io::Assignment &a : *list) io::writeAddress(*inst->state_, a.addr, a.value);
   }

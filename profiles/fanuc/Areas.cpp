@@ -23,9 +23,16 @@ constexpr uint32_t kX = 0, kY = 256, kF = 512, kG = 1280, kR = 2048, kE = 10548,
 constexpr int32_t kTimers = fanuc::kTmrbTimers, kEdges = fanuc::kDifEdges + 1;
 constexpr uint32_t kTmrbState = kEnd, kDifu = kTmrbState + kTimers * sizeof(lj_timer),
                    kDifd = kDifu + kEdges, kStateEnd = kDifd + kEdges;
+// Then the synchronized input memory of level 2 (ref 4.1, TargetProfile::SyncInputs): a copy of
+// the bytes from X to the end of F, latched before the first slice of each level-2 scan (Y lies
+// between X and F: it is copied too, one memcpy, but never read from the copy). Then the system
+// parameters the host writes at power-up: the counter data type (ref 6.4).
+constexpr uint32_t kSync = (kStateEnd + 15) / 16 * 16, kSyncBytes = kG - kX,
+                   kCounterFormat = kSync + kSyncBytes, kHiddenEnd = kCounterFormat + 1;
 static_assert((kMem + kTmrbState) % alignof(lj_timer) == 0, "lj_timer records are aligned");
-static_assert(kStateEnd <= LJ_MEM_BYTES, "the FANUC hidden state fits lj_state.mem");
+static_assert(kHiddenEnd <= LJ_MEM_BYTES, "the FANUC hidden state fits lj_state.mem");
 static_assert(kEnd <= LJ_MEM_BYTES, "the FANUC areas fit lj_state.mem");
+static_assert(kX < kF && kF + 768 == kG, "X and F lie in the bytes the synchronized memory copies");
 
 constexpr AreaInfo byteArea(const char *name, int32_t count, bool writable, uint32_t at,
                             int32_t upperLo = 0, int32_t upperCount = 0) {
@@ -95,6 +102,9 @@ constexpr TargetProfile kFanuc{
     {0, 0, 0, 0, 0, 0, 0},
     kSystemBits,
     {kMem + kTmrbState, kTimers, kMem + kDifu, kMem + kDifd, kEdges},
+    // Level 2 reads X and F through the synchronized input memory (ref 4.1 L841-L843).
+    {areas(Area::Input, Area::NcStatus), kMem + kX, kMem + kSync, kSyncBytes},
+    {kMem + kCounterFormat},
 };
 
 static_assert(kFanuc.elementOffset(Area::Relay, 9091) == relayByte(9091), "R9091 layout");

@@ -87,5 +87,54 @@ TEST(FanucExamples, Magazine) {
   }
 }
 
+// The issue's program through `run --plc2-nvalue 2` (docs/fanuc-pmc.md "Level 2 and its
+// inputs"): X0.0 = 1 at tick 4 only, the first tick of a level-2 scan; its three level-2 reads
+// (ticks 4, 6, 7) all see the latched 1; level 1 (R2.0) sees it at tick 4 only.
+TEST(FanucCli, Level2ReadsTheLatchedInputs) {
+  std::string prog = writeScratch("sync.pmc", "RD X0.0\nWRT R2.0\nEND1\nRD X0.0\nWRT R1.0\n"
+                                              "RD F1.0\nWRT R1.3\nRD X0.0\nWRT R1.1\n"
+                                              "RD X0.0\nWRT R1.2\nEND2\nEND\n");
+  std::string stim = writeScratch("sync.stim", "@4 X0.0=1\n@5 X0.0=0\n");
+  for (const char *engine : {"interp", "jit"}) {
+    CliResult r = runCli({"run", prog, "--engine", engine, "--plc2-nvalue", "2", "--ticks", "9",
+                          "--stimulus", stim, "--watch", "R2.0,R1.0,R1.1,R1.2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 4, "R2.0"), 1);
+    EXPECT_EQ(csvValue(r.out, 5, "R2.0"), 0);
+    EXPECT_EQ(csvValue(r.out, 7, "R1.0"), 1);
+    EXPECT_EQ(csvValue(r.out, 7, "R1.1"), 1);
+    EXPECT_EQ(csvValue(r.out, 7, "R1.2"), 1);
+    EXPECT_EQ(csvValue(r.out, 8, "R1.0"), 0); // the next scan latched X0.0 = 0
+  }
+}
+
+// --params with the counter data type (docs/fanuc-pmc.md "System parameters", ref 6.4): CTR 1
+// (CN0 = 0, up, ACT = X0.0) with the preset given as 12 on the parameter screen counts in BCD:
+// after 10 rising edges its count is 0x0010 (16 as a binary number), at 12 W1 (R0.0) is 1.
+TEST(FanucCli, ParamsCounterDataTypeBcd) {
+  std::string prog = writeScratch("ctr.pmc", "RD R9091.0\nRD.STK R9091.0\nRD.STK R9091.0\n"
+                                             "RD.STK X0.0\nCTR 1\nWRT R0.0\nEND1\nEND2\nEND\n");
+  std::string params = writeScratch("ctr.params", "COUNTER = BCD\nC0:2 = 12 # preset\n");
+  std::string stim;
+  for (int k = 0; k < 12; ++k)
+    stim += "@" + std::to_string(2 * k) + " X0.0=1\n@" + std::to_string(2 * k + 1) + " X0.0=0\n";
+  std::string stimFile = writeScratch("ctr.stim", stim);
+  for (const char *engine : {"interp", "jit"}) {
+    CliResult r = runCli({"run", prog, "--engine", engine, "--ticks", "24", "--params", params,
+                          "--stimulus", stimFile, "--watch", "C0:2,C2:2,R0.0"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvValue(r.out, 0, "C0:2"), 0x12);
+    EXPECT_EQ(csvValue(r.out, 19, "C2:2"), 0x10); // the 10th edge (tick 18)
+    EXPECT_EQ(csvValue(r.out, 19, "R0.0"), 0);
+    EXPECT_EQ(csvValue(r.out, 23, "C2:2"), 0x12); // the 12th edge (tick 22)
+    EXPECT_EQ(csvValue(r.out, 23, "R0.0"), 1);
+  }
+  std::string bad = writeScratch("bad.params", "COUNTER = BCD\nC0:2 = 12000\n");
+  CliResult r = runCli({"run", prog, "--params", bad});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(bad + ":2:8: counter value 12000 of C0:2 is not BCD"), std::string::npos)
+      << r.err;
+}
+
 } // namespace
 } // namespace lj::clitest

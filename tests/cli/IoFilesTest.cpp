@@ -2,6 +2,7 @@
 // (formats: CLI.md `--stimulus`, `--params`, `--dump`; ordering rules: README "Stimulus files").
 #include "formats/InputFiles.h"
 #include "formats/StateJson.h"
+#include "profiles/fanuc/FanucProfile.h"
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,51 @@ TEST(Params, OnlyWholePElements) {
   EXPECT_EQ(e, "m.params:1: bad address 'P200': element out of range (0..199)");
   EXPECT_FALSE(parseParams("P3=\n", "m.params", e));
   EXPECT_EQ(e, "m.params:1: bad value '': expected a number");
+}
+
+// A FANUC program's parameter file (docs/fanuc-pmc.md "System parameters"): the counter data
+// type of the system parameter screen (ref 6.4 [L1971-L1973]) and PMC parameter values; with
+// BCD, CTR's counter data is written as the decimal digits the screen shows.
+TEST(Params, FanucCounterDataTypeAndValues) {
+  const TargetProfile &tp = fanuc::profile();
+  std::string e;
+  std::optional<std::vector<Assignment>> ps = parseParams(
+      "C0:2 = 20   # CTR 1 preset\nCOUNTER = bcd\nT0:2=30\nC5000:2 = 20\n", "f.params", e, &tp);
+  ASSERT_TRUE(ps) << e;
+  ASSERT_EQ(ps->size(), 4u);
+  lj_state s;
+  lj_state_reset(&s);
+  for (const Assignment &a : *ps) writeAddress(s, a.addr, a.value);
+  const auto *b = reinterpret_cast<const unsigned char *>(&s);
+  EXPECT_EQ(b[tp.systemParams.counterFormat], TargetProfile::kCounterBcd);
+  EXPECT_EQ(b[tp.elementOffset(Area::CounterData, 0)], 0x20); // BCD 20, low byte first
+  EXPECT_EQ(b[tp.elementOffset(Area::CounterData, 1)], 0x00);
+  EXPECT_EQ(b[tp.elementOffset(Area::TimerData, 0)], 30);      // T is not counter data
+  EXPECT_EQ(b[tp.elementOffset(Area::CounterData, 5000)], 20); // CTRB's count: binary
+  ps = parseParams("COUNTER = BINARY\nC0:2 = 20\n", "f.params", e, &tp);
+  ASSERT_TRUE(ps) << e;
+  EXPECT_EQ((*ps)[0].value, TargetProfile::kCounterBinary);
+  EXPECT_EQ((*ps)[1].value, 20);
+}
+
+TEST(Params, FanucBcdCounterValueThatIsNotBcdIsALocatedError) {
+  const TargetProfile &tp = fanuc::profile();
+  std::string e;
+  EXPECT_FALSE(parseParams("COUNTER = BCD\nC0:2 = 12000\n", "f.params", e, &tp));
+  EXPECT_EQ(e, "f.params:2:8: counter value 12000 of C0:2 is not BCD: the counter data type is "
+               "BCD and C0:2 holds 4 digits (0..9999)");
+  EXPECT_FALSE(parseParams("C4 = 100\nCOUNTER=BCD\n", "f.params", e, &tp));
+  EXPECT_EQ(e, "f.params:1:6: counter value 100 of C4 is not BCD: the counter data type is BCD "
+               "and C4 holds 2 digits (0..99)");
+  EXPECT_FALSE(parseParams("COUNTER = BCD\nC2:2 = -1\n", "f.params", e, &tp));
+  EXPECT_EQ(e.substr(0, 12), "f.params:2:8");
+  // In binary the same values are fine.
+  EXPECT_TRUE(parseParams("C0:2 = 12000\n", "f.params", e, &tp)) << e;
+  EXPECT_FALSE(parseParams("COUNTER = DECIMAL\n", "f.params", e, &tp));
+  EXPECT_EQ(e, "f.params:1:11: the counter data type is BCD or BINARY, got 'DECIMAL' (COUNTER = "
+               "BCD or COUNTER = BINARY)");
+  EXPECT_FALSE(parseParams("  R0 = 1\n", "f.params", e, &tp));
+  EXPECT_EQ(e, "f.params:1:3: 'R0' is not a PMC parameter (areas T, C, K, D)");
 }
 
 TEST(ReadFile, MissingFileNamed) {

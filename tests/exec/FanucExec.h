@@ -12,10 +12,9 @@ namespace lj::test {
 
 class FanucExecTest : public ExecTest {
 protected:
-  std::unique_ptr<Machine> pmc(std::string_view text) {
+  std::unique_ptr<Machine> pmc(std::string_view text, const VerifyOptions &opts = {}) {
     Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p =
-        fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
+    std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", opts, d, nullptr);
     if (!p) {
       ADD_FAILURE() << d.render() << text;
       return nullptr;

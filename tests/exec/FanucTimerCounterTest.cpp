@@ -129,6 +129,66 @@ TEST_P(FanucTc, CtrVector4CountsOneToTwenty) {
   EXPECT_EQ(get(*m, "R0.0"), 0);
 }
 
+/// The counter data type system parameter (ref 6.4 [L1971-L1973], "chosen globally"), as
+/// --params `COUNTER = BCD` writes it at power-up.
+void counterType(Machine &m, uint8_t type) {
+  reinterpret_cast<unsigned char *>(&m.state())[fanuc::profile().systemParams.counterFormat] = type;
+}
+
+// 7.4 again with the counter data type BCD: the preset 20 is the BCD digits 0x0020 and the
+// count runs 1..20 in BCD (0x0001 .. 0x0009, 0x0010, .. 0x0020); W1 at 20. In binary 0x0020
+// would be the preset 32.
+TEST_P(FanucTc, CtrVector4InBcd) {
+  auto m = pmc(kCtr1);
+  ASSERT_TRUE(m);
+  counterType(*m, TargetProfile::kCounterBcd);
+  set(*m, "C0:2", 0x0020);
+  set(*m, "F1.1", 1);
+  m->tick();
+  EXPECT_EQ(get(*m, "C2:2"), 0x0001);
+  set(*m, "F1.1", 0);
+  for (int k = 1; k <= 19; ++k) {
+    pulse(*m, "X0.0");
+    const int v = 1 + k; // the count in decimal, held as BCD digits
+    ASSERT_EQ(get(*m, "C2:2"), (v / 10) << 4 | v % 10) << "edge " << k;
+    ASSERT_EQ(get(*m, "R0.0"), k == 19 ? 1 : 0) << "edge " << k;
+  }
+  pulse(*m, "X0.0"); // ring: the edge after the preset gives the CN0 value again
+  EXPECT_EQ(get(*m, "C2:2"), 0x0001);
+  EXPECT_EQ(get(*m, "R0.0"), 0);
+}
+
+// BCD range 0..9999 (ref 6.4 [L2031]): an up count from 9998 with the preset 9999 reaches
+// 0x9999 (read as a signed 2-byte value: -26215) and W1; a down counter (UPDOWN = X0.1) reset
+// to the preset 1234 counts 1233 as 0x1233. CTRB stays binary whatever the parameter says
+// (ref 6.4 [L2073]).
+TEST_P(FanucTc, CtrBcdFourDigitsAndCtrbStaysBinary) {
+  auto m = pmc("RD R9091.0\nRD.STK R9091.0\nRD.STK F1.1\nRD.STK X0.0\nCTR 1\nWRT R0.0\n"
+               "RD R9091.0\nRD.STK X0.1\nRD.STK F1.1\nRD.STK X0.0\nCTR 2\nWRT R0.1\n"
+               "RD R9091.0\nRD.STK R9091.0\nRD.STK F1.1\nRD.STK X0.0\nCTRB 1 12\nWRT R0.2\n"
+               "END1\nEND2\nEND\n");
+  ASSERT_TRUE(m);
+  counterType(*m, TargetProfile::kCounterBcd);
+  set(*m, "C0:2", 0x9999);
+  set(*m, "C2:2", 0x9998);
+  set(*m, "C4:2", 0x1234);
+  set(*m, "X0.1", 1);
+  set(*m, "F1.1", 1);
+  m->tick(); // counter 2 (down) resets to its preset; counter 1 (up) to CN0 = 0
+  EXPECT_EQ(get(*m, "C6:2"), 0x1234);
+  EXPECT_EQ(get(*m, "C2:2"), 0);
+  set(*m, "F1.1", 0);
+  set(*m, "C2:2", 0x9998);
+  pulse(*m, "X0.0");
+  EXPECT_EQ(get(*m, "C2:2"), static_cast<int16_t>(0x9999));
+  EXPECT_EQ(get(*m, "R0.0"), 1);
+  EXPECT_EQ(get(*m, "C6:2"), 0x1233);
+  EXPECT_EQ(get(*m, "C5000:2"), 1); // CTRB 1: binary count 1 of 12
+  for (int k = 0; k < 9; ++k) pulse(*m, "X0.0");
+  EXPECT_EQ(get(*m, "C5000:2"), 10); // binary 10, not BCD 0x10
+  EXPECT_EQ(get(*m, "C6:2"), 0x1224);
+}
+
 // 6.4 [L1975-L1977, L2013]: it counts rising edges only (ACT held at 1 counts once) and, as a
 // ring counter, the edge after the preset starts again at the CN0 value.
 TEST_P(FanucTc, CtrCountsEdgesAndRings) {

@@ -84,7 +84,9 @@ int mainImpl(int argc, char **argv) {
   lastWins(cRun->add_option("--format", run.format, "csv | jsonl (default csv)"));
   lastWins(
       cRun->add_option("--dump", run.dump, "write the final state as JSON to FILE ('-' = stdout)"));
-  lastWins(cRun->add_option("--params", run.params, "P values, 'P12=345' per line"));
+  lastWins(cRun->add_option("--params", run.params,
+                            "P values, 'P12=345' per line (FANUC: COUNTER = BCD|BINARY and PMC "
+                            "parameters, docs/fanuc-pmc.md)"));
   repeatable(cRun, "--trust-key", run.trustKeys,
              "public key whose aot .so files are accepted; repeatable (default: the default "
              "key pair's, docs/aot.md)");
@@ -245,7 +247,9 @@ int mainImpl(int argc, char **argv) {
                ->check(CLI::Range(1, 60000)));
   cServe->add_flag("--modbus-write-inputs", serve.modbusWriteInputs,
                    "allow Modbus writes to X and F (simulation only)");
-  lastWins(cServe->add_option("--params", serve.params, "P values, 'P12=345' per line"));
+  lastWins(cServe->add_option("--params", serve.params,
+                              "P values, 'P12=345' per line (FANUC: COUNTER = BCD|BINARY and PMC "
+                              "parameters, docs/fanuc-pmc.md)"));
   repeatable(cServe, "--set", serve.sets, "ADDR=VALUE at power-up; repeatable");
   lastWins(cServe
                ->add_option("--duration", serve.duration,

@@ -64,7 +64,8 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
   }
   if (!a.params.empty()) {
     if (!io::readFile(a.params, text, error)) return false;
-    std::optional<std::vector<io::Assignment>> ps = io::parseParams(text, a.params, error);
+    std::optional<std::vector<io::Assignment>> ps =
+        io::parseParams(text, a.params, error, d.profile);
     if (!ps) return false;
     sim.params = std::move(*ps);
   }

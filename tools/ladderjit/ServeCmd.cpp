@@ -240,18 +240,20 @@ int runServe(const ServeArgs &a) {
   } else if (!a.httpTokenFile.empty() || a.httpReadOnly) {
     return usageError("--http-token-file and --http-read-only need --http [HOST:]PORT");
   }
+  // --set addresses and --params in the program's dialect (CLI.md): --dialect, else the
+  // extension.
+  const io::Dialect *setDialect = a.dialect.empty() ? io::dialectForPath(a.program, error)
+                                                    : io::dialectForOption(a.dialect, error);
+  if (!setDialect) return usageError(error);
   std::vector<io::Assignment> powerUp;
   if (!a.params.empty()) {
     std::string text;
     if (!io::readFile(a.params, text, error)) return usageError(error);
-    std::optional<std::vector<io::Assignment>> ps = io::parseParams(text, a.params, error);
+    std::optional<std::vector<io::Assignment>> ps =
+        io::parseParams(text, a.params, error, setDialect->profile);
     if (!ps) return usageError(error);
     powerUp = std::move(*ps);
   }
-  // --set addresses in the program's dialect (CLI.md): --dialect, else the extension.
-  const io::Dialect *setDialect = a.dialect.empty() ? io::dialectForPath(a.program, error)
-                                                    : io::dialectForOption(a.dialect, error);
-  if (!setDialect) return usageError(error);
   // The Modbus map (docs/modbus-map.md "Map files"): the program's dialect's addresses.
   std::shared_ptr<const io::ModbusMap> modbusMap;
   if (!a.modbusMap.empty()) {
