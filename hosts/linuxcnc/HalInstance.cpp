@@ -130,7 +130,8 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
       return nullptr;
     }
     io::RestoreReport rep = inst->retain_->restore(*inst->state_, 0);
-    if (rep.status == io::RestoreStatus::LayoutMismatch) {
+    if (rep.status == io::RestoreStatus::LayoutMismatch ||
+        rep.status == io::RestoreStatus::DamagedNotKept) {
       error = "retain store '" + opt.retain + "': " + rep.message;
       return nullptr;
     }

@@ -383,6 +383,9 @@ int runServe(const ServeArgs &a) {
     io::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
     if (rep.status == io::RestoreStatus::LayoutMismatch)
       return usageError("--retain: " + a.retain + " belongs to another layout (see above)");
+    if (rep.status == io::RestoreStatus::DamagedNotKept)
+      return usageError("--retain: " + a.retain +
+                        " is damaged and cannot be moved aside (see above)");
     exec.addStartHook(
         [r = restored.get(), st = retain.get()](lj_state &s) { st->copyRetained(*r, s); });
     exec.addAfterTickHook(
