@@ -4,6 +4,7 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "engines/EngineSpec.h"
+#include "formats/OutputFile.h"
 #include "formats/StateJson.h"
 #include "hosts/Simulation.h"
 #include "ir/Engine.h"
@@ -126,9 +127,9 @@ public:
   bool open(const std::string &path, std::string &error) {
     path_ = path;
     if (path.empty() || path == "-") return true;
-    file_.open(path, std::ios::binary | std::ios::trunc);
-    if (!file_) error = "--dump: cannot write '" + path + "'";
-    return static_cast<bool>(file_);
+    if (io::checkOutputPath(path, error)) return true;
+    error = "--dump: " + error;
+    return false;
   }
   bool write(const lj_state &s, const io::SimNc &nc, const TargetProfile &tp, std::string &error) {
     if (path_.empty()) return true;
@@ -139,16 +140,13 @@ public:
       std::fwrite(text.data(), 1, text.size(), stdout);
       return true;
     }
-    if (!(file_ << text) || !file_.flush()) {
-      error = "--dump: cannot write '" + path_ + "'";
-      return false;
-    }
-    return true;
+    if (io::writeOutputFile(path_, text, error)) return true;
+    error = "--dump: " + error;
+    return false;
   }
 
 private:
   std::string path_;
-  std::ofstream file_;
 };
 
 // TIER: the JIT tiers of `run --tier` (docs/serve.md "Tiering"), built one after another on a
