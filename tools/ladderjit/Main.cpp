@@ -196,6 +196,9 @@ int mainImpl(int argc, char **argv) {
   lastWins(cCompile->add_option("--sign-key", comp.signKey,
                                 "private key to sign with (default: the default key pair, created "
                                 "on first use; docs/aot.md)"));
+  lastWins(cCompile->add_option("--cc-timeout", comp.ccTimeout,
+                                "seconds the C compiler may take before it is killed (default "
+                                "120, or $LADDERJIT_CC_TIMEOUT; docs/aot.md)"));
 
   KeygenArgs keygen;
   CLI::App *cKeygen = app.add_subcommand("keygen", "new key pair to sign AOT shared objects");
