@@ -252,8 +252,9 @@ int runRun(const RunArgs &a) {
     return usageError("--format: expected csv or jsonl, got '" + a.format + "'");
   Result<engines::EngineSpec> spec = engines::parseEngineSpec(a.engine);
   if (!spec) return usageError(spec.status().message());
-  if (a.periodMs > (uint64_t{1} << 40))
-    return usageError("--period-ms: too large (at most 2^40 ms)");
+  // 0 would stop time (now_ms = tick * period): no timer would ever run out.
+  if (a.periodMs < 1 || a.periodMs > (uint64_t{1} << 40))
+    return usageError("--period-ms: expected 1..2^40, got " + std::to_string(a.periodMs));
   std::string tierError;
   std::optional<rt::TierPlan> plan = rt::parseTierPlan(a.tier, tierError);
   if (!plan) return usageError(tierError);
