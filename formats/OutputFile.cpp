@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +35,18 @@ Registry &registry() {
 }
 
 std::string errnoText(int e) { return std::strerror(e); }
+
+/// Remove a directory tree. The signal cleanup thread and the thread that made the tree may
+/// remove it at the same time, and one remove_all stops at an entry the other removed first:
+/// retry until it is gone.
+void removeTree(const std::string &path) {
+  std::error_code ec;
+  for (int i = 0; i < 200; ++i) {
+    fs::remove_all(path, ec);
+    if (!fs::exists(fs::symlink_status(path, ec))) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
 
 } // namespace
 
@@ -121,8 +134,7 @@ bool OutputFile::commit(std::string &error) {
 
 void OutputFile::discard() {
   if (dir_.empty()) return;
-  std::error_code ec;
-  fs::remove_all(dir_, ec);
+  removeTree(dir_);
   unregisterTempPath(dir_);
   dir_.clear();
   temp_.clear();
@@ -185,8 +197,7 @@ void installSignalCleanup() {
         std::lock_guard g(r.mu);
         for (const std::atomic<int> *pg : r.groups)
           if (int id = pg->load(); id > 0) ::kill(-id, SIGKILL); // our own child's group
-        std::error_code ec;
-        for (const std::string &p : r.paths) fs::remove_all(p, ec);
+        for (const std::string &p : r.paths) removeTree(p);
         r.paths.clear();
       }
       // Die of the same signal, as without the cleanup.
