@@ -6,6 +6,8 @@
 #include "ir/Diagnostics.h"
 #include "ladder/Json.h"
 
+#include <algorithm>
+
 namespace lj::io {
 
 namespace {
@@ -92,9 +94,47 @@ int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiv
   return src.dit->plc2Nvalue;
 }
 
+namespace {
+
+/// The symbol table of a FANUC/IEC ladder JSON must be the one of the program text it carries
+/// (the text's is the one used): an edit of it alone is refused, never silently ignored.
+bool sameSymbols(const std::vector<Symbol> &json, const std::vector<Symbol> &text,
+                 std::string &error) {
+  auto show = [](const Symbol &s) {
+    return s.name + " " + s.address + (s.comment.empty() ? "" : " " + s.comment);
+  };
+  for (size_t i = 0; i < std::max(json.size(), text.size()); ++i) {
+    if (i < json.size() && i < text.size() && json[i].name == text[i].name &&
+        json[i].address == text[i].address && json[i].comment == text[i].comment)
+      continue;
+    error = "symbols[" + std::to_string(i) + "]: the JSON's symbol table says " +
+            (i < json.size() ? "'" + show(json[i]) + "'" : "nothing") +
+            ", the program text it carries says " +
+            (i < text.size() ? "'" + show(text[i]) + "'" : "nothing");
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
 std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                              std::string &diagnostics) {
   Diagnostics diags(src.path);
+  // Lines end with LF or CRLF. A file whose lines end with a CR alone would reach the front
+  // end as one long line ("LD takes 1 operand, got 3"): say what is wrong instead.
+  for (size_t i = 0, line = 1, lineStart = 0; i + 1 < src.text.size(); ++i) {
+    if (src.text[i] == '\n') {
+      ++line;
+      lineStart = i + 1;
+    } else if (src.text[i] == '\r' && src.text[i + 1] != '\n') {
+      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)},
+                  "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
+                  "not with CR alone");
+      diagnostics = diags.render();
+      return std::nullopt;
+    }
+  }
   VerifyOptions opts;
   opts.plc2Nvalue = plc2Nvalue;
   const SymbolTable *symbols = src.dit      ? &src.dit->symbols
@@ -108,7 +148,8 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
   if (prog && src.ladder) ladder::applyOrigins(*prog, *src.ladder);
   std::string edited;
   if (prog && !diags.hasErrors() && src.carried &&
-      !ladder::sameStatementsAs(*src.carried, ladder::fromProgram(*prog), edited)) {
+      (!ladder::sameStatementsAs(*src.carried, ladder::fromProgram(*prog), edited) ||
+       !sameSymbols(src.carried->symbols, prog->symbols, edited))) {
     diagnostics += src.path + ": error: " + edited + "; the networks of a " + src.dialect->name +
                    " program are not read back on their own: edit its program text\n";
     return std::nullopt;

@@ -17,6 +17,17 @@ void appendEscaped(std::string &out, unsigned char c) {
 
 } // namespace
 
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (unsigned char c : text)
+    if (c < 0x20 || c == 0x7f)
+      appendEscaped(out, c);
+    else
+      out += static_cast<char>(c);
+  return out;
+}
+
 std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii) {
   std::string out = "'";
   for (size_t i = 0; i < text.size() && i < maxBytes; ++i) {
@@ -88,11 +99,7 @@ std::string Diagnostics::render() const {
       // One line per diagnostic, whatever bytes the program held: a control byte a message
       // quotes (a NUL, a CR) is written as \xNN, so it can neither end the output early nor
       // break the `file:line:col: severity: text` line.
-      for (unsigned char c : d.message)
-        if (c < 0x20 || c == 0x7f)
-          appendEscaped(out, c);
-        else
-          out += static_cast<char>(c);
+      out += printable(d.message);
       out += '\n';
     }
   }

@@ -14,6 +14,11 @@ namespace lj {
 /// readable), cut after `maxBytes` with "..." so one bad line cannot produce megabytes of text.
 std::string quoteToken(std::string_view text, size_t maxBytes, bool keepNonAscii = false);
 
+/// `text` as one line of a message: a control byte (< 0x20, 0x7f) written as \xNN, everything
+/// else kept. What Diagnostics::render does to every message, and the CLI to every error it
+/// prints, so a value quoted from input can neither end the output early nor break the line.
+std::string printable(std::string_view text);
+
 struct Diagnostic {
   enum class Severity : uint8_t { Error, Warning, Note } severity = Severity::Error;
   SourceLoc loc;

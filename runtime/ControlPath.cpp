@@ -148,12 +148,21 @@ bool findControlSocket(std::string &path, std::string &error) {
   return false;
 }
 
+std::string connectError(const std::string &path, int err) {
+  std::string out = "cannot connect to the server at '" + path + "': " + std::strerror(err);
+  // Only a missing socket or one nobody listens on suggests that serve is not running.
+  if (err == ENOENT || err == ECONNREFUSED)
+    return out + " (is `ladderjit serve` running? see --control)";
+  if (err == EACCES || err == EPERM)
+    return out + " (run monitor as the user serve runs as, or as root)";
+  return out;
+}
+
 bool checkControlSocket(const std::string &path, std::string &error) {
   const uid_t me = ::geteuid();
   struct stat st;
   if (::lstat(path.c_str(), &st) != 0) {
-    error = "cannot connect to the server at '" + path + "': " + std::strerror(errno) +
-            " (is `ladderjit serve` running? see --control)";
+    error = connectError(path, errno);
     return false;
   }
   if (!S_ISSOCK(st.st_mode)) {

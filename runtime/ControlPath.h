@@ -21,6 +21,10 @@ bool defaultControlPath(std::string &path, std::string &error);
 /// /tmp). False with `error` when there is none or more than one.
 bool findControlSocket(std::string &path, std::string &error);
 
+/// "cannot connect to the server at 'PATH': <errno text>", with a hint that fits `err`
+/// ("is `ladderjit serve` running?" only for a missing socket or a refused connection).
+std::string connectError(const std::string &path, int err);
+
 /// monitor --control PATH: PATH must be a socket owned by our euid or root, in a directory
 /// owned by our euid or root that others cannot write to (unless it is sticky, like /tmp).
 bool checkControlSocket(const std::string &path, std::string &error);

@@ -2,6 +2,7 @@
 #include "runtime/ControlSocket.h"
 
 #include "formats/StateJson.h"
+#include "runtime/ControlPath.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -13,6 +14,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <set>
+#include <vector>
 
 namespace lj::rt {
 
@@ -59,6 +62,25 @@ bool peerUid(int fd, uid_t &uid) {
   return true;
 }
 
+/// Parse one request; a key given twice in one object is refused (which one would win is a
+/// guess: nlohmann keeps the last, another reader the first), named in `duplicate`.
+nlohmann::json parseRequest(std::string_view line, std::string &duplicate) {
+  std::vector<std::set<std::string>> open; // keys seen, per enclosing object
+  auto cb = [&](int, nlohmann::json::parse_event_t ev, nlohmann::json &parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (ev == E::object_start) {
+      open.emplace_back();
+    } else if (ev == E::object_end) {
+      if (!open.empty()) open.pop_back();
+    } else if (ev == E::key && !open.empty() && parsed.is_string()) {
+      if (!open.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+        duplicate = parsed.get<std::string>();
+    }
+    return true;
+  };
+  return nlohmann::json::parse(line, cb, false);
+}
+
 } // namespace
 
 bool ControlSocket::allowedPeer(uid_t uid) { return uid == 0 || uid == ::geteuid(); }
@@ -66,9 +88,12 @@ bool ControlSocket::allowedPeer(uid_t uid) { return uid == 0 || uid == ::geteuid
 std::string ControlSocket::answer(const Handler &h, std::string_view line) {
   nlohmann::json resp;
   try {
-    nlohmann::json req = nlohmann::json::parse(line, nullptr, false);
+    std::string duplicate;
+    nlohmann::json req = parseRequest(line, duplicate);
     if (req.is_discarded() || !req.is_object())
       resp = failure("request is not a JSON object");
+    else if (!duplicate.empty())
+      resp = failure("request has the key '" + duplicate + "' more than once");
     else
       resp = h(req);
   } catch (const std::exception &e) {
@@ -298,8 +323,7 @@ bool controlRequest(const std::string &path, const nlohmann::json &request,
   if (!fillAddress(path, addr, error)) return false;
   int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (fd < 0 || ::connect(fd, reinterpret_cast<sockaddr *>(&addr), sizeof addr) != 0) {
-    error = "cannot connect to the server at '" + path + "': " + std::strerror(errno) +
-            " (is `ladderjit serve` running? see --control)";
+    error = connectError(path, errno);
     if (fd >= 0) ::close(fd);
     return false;
   }

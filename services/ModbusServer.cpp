@@ -353,7 +353,19 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
       std::lock_guard lk(mu_);
       ++stats_.exceptions; // the request itself was counted below
     }
-    return modbus_reply_exception(ctx, req, code) >= 0;
+    if (fc < 0x80) return modbus_reply_exception(ctx, req, code) >= 0;
+    // libmodbus adds 0x80 to the function code in 8 bits: 0x83 would be answered as 03 01,
+    // which reads as an FC3 reply. The exception reply keeps fc | 0x80 (= fc): MBAP header
+    // (transaction, protocol 0, length 3, unit), function, exception code.
+    uint8_t rsp[9] = {req[0], req[1], 0, 0, 0, 3, req[hl - 1], fc, code};
+    const int fd = modbus_get_socket(ctx);
+    for (size_t at = 0; at < sizeof rsp;) {
+      ssize_t w = ::send(fd, rsp + at, sizeof rsp - at, MSG_NOSIGNAL);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) return false;
+      at += static_cast<size_t>(w);
+    }
+    return true;
   };
   {
     std::lock_guard lk(mu_);

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
 #include <filesystem>
 #include <openssl/evp.h>
@@ -148,6 +149,35 @@ bool writeAll(int fd, const unsigned char *p, size_t n) {
     n -= static_cast<size_t>(w);
   }
   return true;
+}
+
+/// Move the damaged store file `path` aside to `path.damaged-YYYYMMDDTHHMMSSZ` (a numeric suffix
+/// when that name is taken) so no save ever overwrites it. link + unlink, not rename: an existing
+/// file of that name is never replaced. False (with `error`) when it cannot be moved.
+bool moveAside(const std::string &path, std::string &moved, std::string &error) {
+  char stamp[32];
+  std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
+  const std::string base = path + ".damaged-" + stamp;
+  for (int n = 1; n < 1000; ++n) {
+    moved = n == 1 ? base : base + "-" + std::to_string(n);
+    if (::link(path.c_str(), moved.c_str()) == 0) {
+      if (::unlink(path.c_str()) != 0) {
+        error = std::string("cannot remove ") + path + " after keeping it as " + moved + ": " +
+                std::strerror(errno);
+        return false;
+      }
+      return true;
+    }
+    if (errno != EEXIST) {
+      error = std::string("cannot keep ") + path + " as " + moved + ": " + std::strerror(errno);
+      return false;
+    }
+  }
+  error = "cannot keep " + path + ": too many " + base + "* files";
+  return false;
 }
 
 std::string dirOf(const std::string &path) {
@@ -504,6 +534,22 @@ RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
     logLine(rep.message);
     return rep;
   }
+  // A damaged file may still hold almost all of the machine's data: move it aside before the
+  // first save could overwrite it, and say where (docs/retain.md "Restore").
+  std::string kept;
+  for (auto [r, file] : {std::pair{rMain, cfg_.path}, std::pair{rPrev, prev}}) {
+    if (r != ReadResult::Corrupt || ::access(file.c_str(), F_OK) != 0) continue;
+    std::string moved, err;
+    if (!moveAside(file, moved, err)) {
+      refused_ = true;
+      rep.status = RestoreStatus::DamagedNotKept;
+      rep.message = "retain: ERROR: " + (file == cfg_.path ? errMain : errPrev) + "; " + err +
+                    ": refusing to overwrite it";
+      logLine(rep.message);
+      return rep;
+    }
+    kept += (kept.empty() ? "; damaged file kept as " : ", ") + moved;
+  }
   if (loadedFrom.empty()) {
     if (rMain == ReadResult::Missing && rPrev == ReadResult::Missing) {
       rep.status = RestoreStatus::NoFile;
@@ -512,7 +558,7 @@ RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
       rep.status = RestoreStatus::BothBad;
       mainIsGood_ = false;
       rep.message = "retain: ERROR: no usable retain file (" + errMain + "; " + errPrev +
-                    "): starting with zeros";
+                    "): starting with zeros" + kept;
     }
     logLine(rep.message);
     return rep;
@@ -540,7 +586,7 @@ RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
                          ? "retain: WARNING: " + errMain + "; falling back to " + prev + ": "
                          : "retain: ";
   line += "restored " + loadedFrom + " (save #" + std::to_string(seq) + ", tick " +
-          std::to_string(img.tick) + ")";
+          std::to_string(img.tick) + ")" + kept;
   if (!cfg_.programHash.empty() && !savedHash.empty() && savedHash != cfg_.programHash)
     line += "; note: saved by program " + savedHash + ", now running " + cfg_.programHash;
   rep.message = line;

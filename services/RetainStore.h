@@ -62,6 +62,7 @@ enum class RestoreStatus {
   BothBad,        ///< both files unusable: zeros
   LayoutMismatch, ///< a file of another layout: refused (nothing loaded)
   LayoutForced,   ///< a file of another layout, --retain-force: zeros, the file is replaced
+  DamagedNotKept, ///< a damaged file could not be moved aside: refused (nothing is written)
 };
 
 /// restore() result: the status and the log lines explaining it (already passed to the log).

@@ -35,7 +35,9 @@ std::string canonicalAddress(std::string_view text, std::string &error) {
     return {};
   }
   if (bit > 7) {
-    error = "bit number " + std::to_string(bit) + " out of range in " + shown + " (bits 0..7)";
+    error = "bit number " +
+            (bit >= (int64_t{1} << 40) ? std::string() : std::to_string(bit) + " ") +
+            "out of range in " + shown + " (bits 0..7)"; // the digits saturate at 2^40
     return {};
   }
   op.kind = bit >= 0 ? Operand::Kind::Bit : Operand::Kind::Reg;

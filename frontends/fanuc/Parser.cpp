@@ -294,8 +294,10 @@ public:
       return false;
     }
     if (bit > 7) {
-      error(t.loc, "bit number " + std::to_string(bit) + " out of range in " + quote(t.text) +
-                       " (bits 0..7)");
+      // The digits saturate at 2^40: a longer number is not shown as that value.
+      error(t.loc, "bit number " +
+                       (bit >= (int64_t{1} << 40) ? std::string() : std::to_string(bit) + " ") +
+                       "out of range in " + quote(t.text) + " (bits 0..7)");
       return false;
     }
     if (writes && !tp().area(out.area).writable) {

@@ -280,8 +280,9 @@ private:
       if (r.bit >= hnc8::profile().bitWidth(r.area)) {
         std::string l(hnc8::profile().area(r.area).name);
         error(t,
-              "bit number " + std::to_string(r.bit) + " out of range in " + quote(t.text) + " (" +
-                  l +
+              // A saturated number (more digits than any index) is not shown as 2^40.
+              "bit number " + (r.bit >= kSaturate ? std::string() : std::to_string(r.bit) + " ") +
+                  "out of range in " + quote(t.text) + " (" + l +
                   (hnc8::profile().bitWidth(r.area) == 1
                        ? std::string(" has only bit .0")
                        : " has bits 0.." + std::to_string(hnc8::profile().bitWidth(r.area) - 1)) +

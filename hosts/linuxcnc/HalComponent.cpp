@@ -37,7 +37,7 @@ static char *params = nullptr;
 RTAPI_MP_STRING(params, "P values, one Pn=VALUE per line, applied before init");
 static char *retain = nullptr;
 RTAPI_MP_STRING(retain, "retentive store file (B, T300..T427, C300..C427; docs/retain.md)");
-static int plc2_nvalue = -1;
+static int plc2_nvalue = lj::hal::Options::kNvalueUnset; // not given: the container's, else 200
 RTAPI_MP_INT(plc2_nvalue, "PLC2 nvalue the .so was built with (default: container's, else 200)");
 }
 

@@ -6,8 +6,10 @@
 #include "formats/InputFiles.h"
 #include "formats/ProgramFile.h"
 #include "hosts/SystemBits.h"
+#include "ir/Diagnostics.h"
 #include "services/RetainStore.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <new>
@@ -41,10 +43,23 @@ std::vector<std::string> splitComma(const std::string &s) {
 
 bool loadProgram(const Options &opt, const std::string &sourcePath, const std::string &prefix,
                  Loaded &out, std::string &error) {
+  // A bad parameter is an error naming it, never silently the default (issue 28 finding 10).
+  const bool nvalueGiven = opt.plc2Nvalue != Options::kNvalueUnset;
+  if (nvalueGiven && opt.plc2Nvalue < 0) {
+    error = "plc2_nvalue: expected 0..2147483647, got " + std::to_string(opt.plc2Nvalue);
+    return false;
+  }
+  const std::vector<std::string> trustFiles = splitComma(opt.trust);
+  if (!opt.trust.empty() &&
+      trustFiles.size() !=
+          static_cast<size_t>(std::count(opt.trust.begin(), opt.trust.end(), ',')) + 1) {
+    error = "trust: an empty key file name in '" + printable(opt.trust) +
+            "' (expected KEY.pub[,KEY.pub...])";
+    return false;
+  }
   io::ProgramSource src;
   if (!io::readProgramFile(sourcePath, src, error)) return false;
-  int32_t nvalue =
-      io::effectiveNvalue(src, opt.plc2Nvalue < 0 ? 200 : opt.plc2Nvalue, opt.plc2Nvalue >= 0);
+  int32_t nvalue = io::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
   std::string diags;
   std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diags);
   if (!prog) {
@@ -53,7 +68,7 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
     return false;
   }
   io::TrustedKeys keys;
-  if (!io::loadTrustedKeys(splitComma(opt.trust), keys, error)) {
+  if (!io::loadTrustedKeys(trustFiles, keys, error)) {
     error = "trusted keys: " + error;
     return false;
   }
@@ -130,7 +145,8 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
       return nullptr;
     }
     io::RestoreReport rep = inst->retain_->restore(*inst->state_, 0);
-    if (rep.status == io::RestoreStatus::LayoutMismatch) {
+    if (rep.status == io::RestoreStatus::LayoutMismatch ||
+        rep.status == io::RestoreStatus::DamagedNotKept) {
       error = "retain store '" + opt.retain + "': " + rep.message;
       return nullptr;
     }

@@ -24,13 +24,14 @@ namespace lj::hal {
 
 /// The module parameters (HalComponent.cpp, docs/linuxcnc.md).
 struct Options {
-  std::string program; ///< the AOT .so
-  std::string source;  ///< the program it was built from; empty: beside `program`
-  std::string map;     ///< map file, empty: default pins only
-  std::string trust;   ///< comma-separated public key files; empty: the default key
-  std::string params;  ///< P values file
-  std::string retain;  ///< retentive store file
-  int32_t plc2Nvalue = -1;
+  std::string program;               ///< the AOT .so
+  std::string source;                ///< the program it was built from; empty: beside `program`
+  std::string map;                   ///< map file, empty: default pins only
+  std::string trust;                 ///< comma-separated public key files; empty: the default key
+  std::string params;                ///< P values file
+  std::string retain;                ///< retentive store file
+  int32_t plc2Nvalue = kNvalueUnset; ///< plc2_nvalue=N (0..2^31-1), or unset
+  static constexpr int32_t kNvalueUnset = INT32_MIN;
   std::function<void(const std::string &)> log; ///< RTAPI log (one line per call)
 };
 

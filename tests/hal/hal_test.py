@@ -7,7 +7,8 @@
   pins     `halcmd show pin ladderjit.` for examples/lathe_panel.dit: the pins the program's
            contacts and coils and its symbol table give (names by hand from the .symbols file);
   bad      unsigned, truncated, random-bytes, wrong-ABI, foreign-signer and other-program .so
-           files are refused with an RTAPI message and the component does not exist;
+           files are refused with an RTAPI message and the component does not exist; so are
+           bad parameters (trust=, a trailing comma, plc2_nvalue=-5), each named;
   retain   B0 survives an unload/reload through retain=FILE.
 
 Usage: hal_test.py MODE LADDERJIT MODULE REPO"""
@@ -259,6 +260,25 @@ def test_bad(rig, repo):
         for line in out.splitlines():
             if "ladderjit:" in line:
                 print("   ", line.strip())
+        if not ok:
+            print(out)
+            failures += 1
+    # Bad module parameters are refused naming the parameter, never taken as the default
+    # (issue 28 finding 10; docs/linuxcnc.md).
+    good_so = rig.path("good-params.so")
+    with open(good_so, "wb") as f:
+        f.write(good)
+    os.chmod(good_so, 0o644)
+    params = {"trust-empty": ("trust=,", "trust: an empty key file name"),
+              "trust-trailing-comma": (f"trust={rig.trust_key()},", "trust: an empty key file name"),
+              "nvalue-negative": (f"trust={rig.trust_key()} plc2_nvalue=-5",
+                                  "plc2_nvalue: expected 0..2147483647, got -5")}
+    for name, (args, want) in params.items():
+        line = f"loadrt ladderjit program={good_so} source={rig.path('hal_panel.stl')} {args}"
+        r = rig.halfile(f"bad-{name}.hal", line + "\nshow comp\n", timeout=60, check=False)
+        out = r.stdout + r.stderr
+        ok = r.returncode != 0 and want in out and "the component is not started" in out
+        print(f"bad {name}: {'refused' if ok else 'NOT REFUSED AS EXPECTED'}")
         if not ok:
             print(out)
             failures += 1

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <arpa/inet.h>
 #include <atomic>
 #include <modbus/modbus.h>
@@ -189,6 +191,15 @@ TEST_F(ModbusServerTest, MalformedFramesAndManyClients) {
   ASSERT_EQ(::recv(fd, rsp, sizeof rsp, 0), 9);
   EXPECT_EQ(rsp[7], 0xC1);
   EXPECT_EQ(rsp[8], kMbIllegalFunction);
+  // Issue 28 finding 10: a function code >= 0x80 gets exception 01 with fc | 0x80 (itself), not
+  // libmodbus's 8-bit fc + 0x80 (0x83 -> "03 01", which reads as an FC3 reply).
+  for (uint8_t fc : {uint8_t{0x83}, uint8_t{0x80}, uint8_t{0xFF}}) {
+    const uint8_t highFc[] = {0x12, 0x34, 0, 0, 0, 6, 7, fc, 0, 0, 0, 1};
+    ASSERT_EQ(::send(fd, highFc, sizeof highFc, 0), (ssize_t)sizeof highFc);
+    ASSERT_EQ(::recv(fd, rsp, sizeof rsp, 0), 9) << int(fc);
+    const uint8_t want[] = {0x12, 0x34, 0, 0, 0, 3, 7, fc, kMbIllegalFunction};
+    EXPECT_EQ(std::memcmp(rsp, want, sizeof want), 0) << int(fc) << ": fc " << int(rsp[7]);
+  }
   const uint8_t tooMany[] = {0, 3, 0, 0, 0, 6, 1, 3, 0, 0, 0, 126}; // > 125 registers
   ASSERT_EQ(::send(fd, tooMany, sizeof tooMany, 0), (ssize_t)sizeof tooMany);
   ASSERT_EQ(::recv(fd, rsp, sizeof rsp, 0), 9);

@@ -214,6 +214,21 @@ TEST_F(RetainTest, BothBadStartsWithZerosAndSaysSo) {
   EXPECT_NE(rep.message.find("no usable retain file"), std::string::npos) << rep.message;
   EXPECT_NE(rep.message.find("bad magic"), std::string::npos) << rep.message;
   EXPECT_NE(rep.message.find("starting with zeros"), std::string::npos);
+  // Both damaged files are moved aside before any save (issue 28 finding 7), and the log says
+  // where.
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_FALSE(fs::exists(path + ".prev"));
+  EXPECT_NE(rep.message.find("damaged file kept as " + path + ".damaged-"), std::string::npos)
+      << rep.message;
+  EXPECT_NE(rep.message.find(", " + path + ".prev.damaged-"), std::string::npos) << rep.message;
+  int kept = 0;
+  for (const auto &e : fs::directory_iterator(fs::path(path).parent_path()))
+    if (e.path().filename().string().find(".damaged-") != std::string::npos) {
+      ++kept;
+      EXPECT_EQ(fs::file_size(e.path()),
+                e.path().string().find(".prev.damaged-") != std::string::npos ? 4500u : 300u);
+    }
+  EXPECT_EQ(kept, 2);
 }
 
 /// A valid file of another layout: the digest matches, the ABI version does not.

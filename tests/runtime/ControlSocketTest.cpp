@@ -56,6 +56,25 @@ TEST(ControlAnswer, HandlerExceptionsAndBadLinesAreErrorAnswers) {
         << line.substr(0, 20);
 }
 
+// Issue 28 finding 10: a key given twice in one object is refused, at any depth; which copy would
+// win is a guess (nlohmann keeps the last, other readers the first).
+TEST(ControlAnswer, DuplicateKeysAreRefused) {
+  ControlSocket::Handler never = [](const json &) -> json {
+    ADD_FAILURE() << "a request with a duplicate key reached the handler";
+    return {};
+  };
+  for (const char *line :
+       {R"({"cmd":"read","cmd":"write"})", R"({"cmd":"write","items":{"D0":1,"D0":2}})",
+        R"({"cmd":"write","items":[{"a":1,"a":1}]})"}) {
+    json j = parsed(ControlSocket::answer(never, line));
+    EXPECT_EQ(j["ok"], false) << line;
+    EXPECT_NE(j["error"].get<std::string>().find("more than once"), std::string::npos) << j;
+  }
+  ControlSocket::Handler ok = [](const json &) -> json { return {{"ok", true}}; };
+  // The same key in two different objects is fine.
+  EXPECT_EQ(parsed(ControlSocket::answer(ok, R"({"a":{"k":1},"b":{"k":2}})"))["ok"], true);
+}
+
 TEST(Utf8, WellFormedOnly) {
   EXPECT_TRUE(lj::io::isUtf8(""));
   EXPECT_TRUE(lj::io::isUtf8("plain ascii"));

@@ -98,6 +98,7 @@ struct CompileArgs {
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line (beats a plc.dit)
   std::string signKey;          ///< --sign-key private key, empty = the default key pair
+  std::string ccTimeout;        ///< --cc-timeout SECONDS, empty = $LADDERJIT_CC_TIMEOUT or 120
 };
 /// `ladderjit compile`: build PROGRAM into a shared object with the C ABI (docs/aot.md).
 int runCompile(const CompileArgs &a);

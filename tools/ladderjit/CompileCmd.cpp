@@ -6,6 +6,7 @@
 #include "engines/AotLoader.h"
 #include "engines/AotTrust.h"
 #include "engines/LlvmBackend.h"
+#include "formats/OutputFile.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -26,38 +27,27 @@ std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSo
   return io::loadAot(soPath, io::aotExpectOf(src, plc2Nvalue), trust, error);
 }
 
-namespace {
-
-// `-o OUT` may name a new file or a regular file it replaces; never a device, FIFO, directory
-// or symlink (`compile -o /dev/full` as root once replaced the device node).
-bool outputReplaceable(const std::string &out, std::string &error) {
-  struct stat st;
-  if (::lstat(out.c_str(), &st) != 0) {
-    if (errno == ENOENT) return true;
-    error = "cannot write '" + out + "': " + std::strerror(errno);
-    return false;
-  }
-  if (S_ISREG(st.st_mode)) return true;
-  error = "-o: '" + out + "' exists and is not a regular file (" +
-          (S_ISLNK(st.st_mode)   ? "a symbolic link"
-           : S_ISDIR(st.st_mode) ? "a directory"
-                                 : "a device, FIFO or socket") +
-          "); refusing to replace it";
-  return false;
-}
-
-} // namespace
-
 int runCompile(const CompileArgs &a) {
+  // Before any thread starts: SIGINT/SIGTERM/SIGHUP remove the temporary directory beside OUT
+  // and kill the C compiler's process group (docs/aot.md "Time bound").
+  io::installSignalCleanup();
   if (a.cpu != "host" && a.cpu != "generic")
     return usageError("--cpu: expected host or generic, got '" + a.cpu + "'");
+  unsigned ccTimeoutS = jit::kDefaultCcTimeoutS;
+  std::string error;
+  if (!a.ccTimeout.empty()) {
+    if (!jit::parseCcTimeout(a.ccTimeout, ccTimeoutS, error))
+      return usageError("--cc-timeout: " + error);
+  } else if (const char *env = std::getenv("LADDERJIT_CC_TIMEOUT"); env && *env) {
+    if (!jit::parseCcTimeout(env, ccTimeoutS, error))
+      return usageError("LADDERJIT_CC_TIMEOUT: " + error);
+  }
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code, a.dialect)) return code;
   int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
-  std::string error;
   const engines::LlvmBackend *llvm = engines::llvmBackend(error);
   if (!llvm) return usageError("compile: " + error);
   io::SigningKey key;
@@ -74,32 +64,27 @@ int runCompile(const CompileArgs &a) {
   } else if (!key.loadFile(a.signKey, error)) {
     return usageError("--sign-key: " + error);
   }
-  if (!outputReplaceable(a.output, error)) return usageError("compile: " + error);
-  // Built into a new file of a random name beside OUT (mkostemp: O_CREAT | O_EXCL), then
-  // renamed over OUT: nothing planted under a predictable name is written or followed.
-  std::string tmp = a.output + ".XXXXXX";
-  int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
-  if (fd < 0)
-    return usageError("compile: cannot write '" + a.output + "': " + std::strerror(errno));
-  ::close(fd);
+  // Built in a private directory OUT.XXXXXX beside OUT (the C compiler's files too), then
+  // renamed over OUT; the one output-file function of every command (formats/OutputFile.h).
+  io::OutputFile out;
+  if (!out.open(a.output, error)) return usageError("compile: -o: " + error);
   io::AotExpect id = io::aotExpectOf(src, nvalue);
+  std::atomic<int> ccGroup{0};
+  io::registerProcessGroup(&ccGroup);
   jit::AotOptions o;
-  o.output = tmp;
+  o.output = out.tempPath();
+  o.tempDir = o.output.substr(0, o.output.rfind('/'));
+  o.ccTimeoutS = ccTimeoutS;
+  o.ccProcessGroup = &ccGroup;
   o.programHash = id.program;
   o.sourceHash = id.source;
   o.plc2Nvalue = nvalue;
   o.signingKey = &key;
   o.genericCpu = a.cpu == "generic";
   bool ok = llvm->compileSharedObject(*prog, o, error);
-  if (ok && !outputReplaceable(a.output, error)) ok = false;
-  if (ok && std::rename(tmp.c_str(), a.output.c_str()) != 0) {
-    error = "cannot write '" + a.output + "': " + std::strerror(errno);
-    ok = false;
-  }
-  if (!ok) {
-    ::unlink(tmp.c_str());
-    return usageError("compile: " + error);
-  }
+  io::unregisterProcessGroup(&ccGroup);
+  if (ok) ok = out.commit(error);
+  if (!ok) return usageError("compile: " + error); // `out` removes the temporary directory
   return kOk;
 }
 

@@ -3,6 +3,7 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "formats/InputFiles.h"
+#include "formats/OutputFile.h"
 #include "frontends/hnc8/FrontEnd.h"
 
 #include <cstdio>
@@ -29,17 +30,7 @@ std::vector<io::Assignment> collapseParams(const std::vector<io::Assignment> &in
 }
 
 bool writeOutput(const std::string &path, const std::string &text, std::string &error) {
-  if (path == "-") {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
-    return true;
-  }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out || !(out << text) || !out.flush()) {
-    error = "cannot write '" + path + "'";
-    return false;
-  }
-  return true;
+  return io::writeOutputFile(path, text, error); // formats/OutputFile.h
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 
 #include "engines/LlvmBackend.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "ir/Diagnostics.h"
 
 #include "fuzz/Fuzz.h"
 
@@ -14,7 +15,9 @@
 namespace lj::cli {
 
 int usageError(const std::string &msg) {
-  std::fprintf(stderr, "ladderjit: error: %s\n", msg.c_str());
+  // A value quoted from input (--set, --stimulus, --params, --watch, --modbus-map, a monitor
+  // reply) may hold any byte: control bytes are written as \xNN, as in diagnostics.
+  std::fprintf(stderr, "ladderjit: error: %s\n", printable(msg).c_str());
   return kUsage;
 }
 

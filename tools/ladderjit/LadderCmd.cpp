@@ -2,6 +2,7 @@
 // network JSON that every command accepts back as PROGRAM.
 #include "tools/ladderjit/Commands.h"
 
+#include "formats/OutputFile.h"
 #include "ladder/Json.h"
 #include "ladder/Layout.h"
 #include "ladder/Text.h"
@@ -40,10 +41,8 @@ int runLadder(const LadderArgs &a) {
     std::cout << out << std::flush;
     return kOk;
   }
-  std::ofstream f(a.output, std::ios::binary | std::ios::trunc);
-  f << out;
-  f.close();
-  if (!f) return usageError("cannot write '" + a.output + "'");
+  std::string error; // one output-file function for every command (formats/OutputFile.h)
+  if (!io::writeOutputFile(a.output, out, error)) return usageError("-o: " + error);
   return kOk;
 }
 

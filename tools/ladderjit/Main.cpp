@@ -2,6 +2,8 @@
 // the command functions (Commands.h). Usage errors exit 2, never a crash or an exception.
 #include "tools/ladderjit/Commands.h"
 
+#include "ir/Diagnostics.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
@@ -35,6 +37,19 @@ const CLI::Validator kUnsigned(
     },
     "UINT");
 
+// --plc2-nvalue (an int32 count): digits up to 2^31 - 1, so an over-large value is named
+// instead of CLI11's bare "Could not convert".
+const CLI::Validator kNvalue(
+    [](std::string &text) -> std::string {
+      uint64_t v = 0;
+      auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+      if (text.empty() || ec != std::errc() || end != text.data() + text.size() ||
+          v > uint64_t{INT32_MAX})
+        return "expected an integer 0..2147483647, got '" + text + "'";
+      return {};
+    },
+    "UINT");
+
 // A single-valued option given twice: the last one wins, as in most command-line tools.
 CLI::Option *lastWins(CLI::Option *o) {
   return o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
@@ -50,6 +65,12 @@ int mainImpl(int argc, char **argv) {
                "JIT",
                "ladderjit"};
   app.require_subcommand(1);
+  // A value quoted in a parse error may hold any byte: control bytes as \xNN (ir/Diagnostics.h).
+  app.failure_message([](const CLI::App *a, const CLI::Error &e) {
+    std::string s = CLI::FailureMessage::simple(a, e);
+    size_t nl = s.find('\n');
+    return lj::printable(s.substr(0, nl)) + (nl == std::string::npos ? "" : s.substr(nl));
+  });
   app.set_version_flag("--version", "ladderjit 0.1.0");
 
   CheckArgs check;
@@ -59,7 +80,7 @@ int mainImpl(int argc, char **argv) {
   cCheck->add_flag("--print", check.print, "print the verified program");
   CLI::Option *checkNvalue = lastWins(
       cCheck->add_option("--plc2-nvalue", check.plc2Nvalue, "PLC2 statements per tick (0 = all)")
-          ->check(kUnsigned));
+          ->check(kNvalue));
 
   RunArgs run;
   CLI::App *cRun = app.add_subcommand("run", "simulate ticks and print the watch table");
@@ -74,7 +95,7 @@ int mainImpl(int argc, char **argv) {
   CLI::Option *runNvalue =
       lastWins(cRun->add_option("--plc2-nvalue", run.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
-                   ->check(kUnsigned));
+                   ->check(kNvalue));
   lastWins(cRun->add_option("--max-backward-steps", run.maxBackwardSteps,
                             "watchdog limit per tick (default 1000000)")
                ->check(kUnsigned));
@@ -106,7 +127,7 @@ int mainImpl(int argc, char **argv) {
       lastWins(cEmit
                    ->add_option("--plc2-nvalue", emit.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
-                   ->check(kUnsigned));
+                   ->check(kNvalue));
 
   DitArgs dit;
   CLI::App *cDit = app.add_subcommand("dit", "write a plc.dit container from an STL file");
@@ -116,7 +137,7 @@ int mainImpl(int argc, char **argv) {
   lastWins(cDit->add_option("--params", dit.params, "P values, 'P12=345' per line"));
   lastWins(
       cDit->add_option("--plc2-nvalue", dit.plc2Nvalue, "PLC2 statements per tick (default 200)")
-          ->check(kUnsigned));
+          ->check(kNvalue));
   lastWins(cDit->add_option("--period-ms", dit.periodMs, "PLC1 period in ms (default 1)")
                ->check(kUnsigned));
   lastWins(cDit->add_option("-o,--output", dit.output, "container to write ('-' = stdout)"))
@@ -169,7 +190,7 @@ int mainImpl(int argc, char **argv) {
       lastWins(cBench
                    ->add_option("--plc2-nvalue", bn.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
-                   ->check(kUnsigned));
+                   ->check(kNvalue));
 
   LadderArgs lad;
   CLI::App *cLadder = app.add_subcommand(
@@ -181,7 +202,7 @@ int mainImpl(int argc, char **argv) {
   lastWins(cLadder->add_option("-o,--output", lad.output, "file to write (default stdout)"));
   CLI::Option *ladNvalue = lastWins(
       cLadder->add_option("--plc2-nvalue", lad.plc2Nvalue, "PLC2 statements per tick (0 = all)")
-          ->check(kUnsigned));
+          ->check(kNvalue));
 
   CompileArgs comp;
   CLI::App *cCompile =
@@ -194,10 +215,13 @@ int mainImpl(int argc, char **argv) {
       lastWins(cCompile
                    ->add_option("--plc2-nvalue", comp.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
-                   ->check(kUnsigned));
+                   ->check(kNvalue));
   lastWins(cCompile->add_option("--sign-key", comp.signKey,
                                 "private key to sign with (default: the default key pair, created "
                                 "on first use; docs/aot.md)"));
+  lastWins(cCompile->add_option("--cc-timeout", comp.ccTimeout,
+                                "seconds the C compiler may take before it is killed (default "
+                                "120, or $LADDERJIT_CC_TIMEOUT; docs/aot.md)"));
 
   KeygenArgs keygen;
   CLI::App *cKeygen = app.add_subcommand("keygen", "new key pair to sign AOT shared objects");
@@ -221,7 +245,7 @@ int mainImpl(int argc, char **argv) {
       lastWins(cServe
                    ->add_option("--plc2-nvalue", serve.plc2Nvalue,
                                 "PLC2 statements per tick (default: the plc.dit's, else 200)")
-                   ->check(kUnsigned));
+                   ->check(kNvalue));
   lastWins(cServe
                ->add_option("--max-backward-steps", serve.maxBackwardSteps,
                             "watchdog limit per tick (default 1000000)")

@@ -4,6 +4,7 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "engines/EngineSpec.h"
+#include "formats/OutputFile.h"
 #include "formats/StateJson.h"
 #include "hosts/Simulation.h"
 #include "ir/Engine.h"
@@ -127,9 +128,9 @@ public:
   bool open(const std::string &path, std::string &error) {
     path_ = path;
     if (path.empty() || path == "-") return true;
-    file_.open(path, std::ios::binary | std::ios::trunc);
-    if (!file_) error = "--dump: cannot write '" + path + "'";
-    return static_cast<bool>(file_);
+    if (io::checkOutputPath(path, error)) return true;
+    error = "--dump: " + error;
+    return false;
   }
   bool write(const lj_state &s, const io::SimNc &nc, const TargetProfile &tp, std::string &error) {
     if (path_.empty()) return true;
@@ -140,16 +141,13 @@ public:
       std::fwrite(text.data(), 1, text.size(), stdout);
       return true;
     }
-    if (!(file_ << text) || !file_.flush()) {
-      error = "--dump: cannot write '" + path_ + "'";
-      return false;
-    }
-    return true;
+    if (io::writeOutputFile(path_, text, error)) return true;
+    error = "--dump: " + error;
+    return false;
   }
 
 private:
   std::string path_;
-  std::ofstream file_;
 };
 
 // TIER: the JIT tiers of `run --tier` (docs/serve.md "Tiering"), built one after another on a
@@ -255,8 +253,9 @@ int runRun(const RunArgs &a) {
     return usageError("--format: expected csv or jsonl, got '" + a.format + "'");
   Result<engines::EngineSpec> spec = engines::parseEngineSpec(a.engine);
   if (!spec) return usageError(spec.status().message());
-  if (a.periodMs > (uint64_t{1} << 40))
-    return usageError("--period-ms: too large (at most 2^40 ms)");
+  // 0 would stop time (now_ms = tick * period): no timer would ever run out.
+  if (a.periodMs < 1 || a.periodMs > (uint64_t{1} << 40))
+    return usageError("--period-ms: expected 1..2^40, got " + std::to_string(a.periodMs));
   std::string tierError;
   std::optional<rt::TierPlan> plan = rt::parseTierPlan(a.tier, tierError);
   if (!plan) return usageError(tierError);

@@ -3,6 +3,8 @@
 // shared memory), starts the cyclic executive and the control socket, then waits for SIGINT /
 // SIGTERM, `monitor stop` or --duration (with --watch-file, watching PROGRAM for online change).
 #include "tools/ladderjit/Commands.h"
+
+#include "formats/OutputFile.h"
 #include "tools/ladderjit/ServeHttp.h"
 
 #include "engines/EngineSpec.h"
@@ -164,12 +166,10 @@ private:
 };
 
 bool writeStats(const std::string &path, const nlohmann::json &j, std::string &error) {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!(f << io::dumpJson(j, 2) << "\n") || !f.flush()) { // a non-UTF-8 path is not fatal
-    error = "--stats: cannot write '" + path + "'";
-    return false;
-  }
-  return true;
+  // One output-file function for every command (formats/OutputFile.h, docs/security.md).
+  if (io::writeOutputFile(path, io::dumpJson(j, 2) + "\n", error)) return true;
+  error = "--stats: " + error;
+  return false;
 }
 
 // TIER: --tier (docs/serve.md "Tiering"): interp-fast-opt is the default of --engine jit; the
@@ -273,8 +273,7 @@ int runServe(const ServeArgs &a) {
     powerUp.push_back(*as);
   }
   if (!a.stats.empty()) { // unwritable --stats is a usage error up front, not after an hour
-    std::ofstream probe(a.stats, std::ios::app);
-    if (!probe) return usageError("--stats: cannot write '" + a.stats + "'");
+    if (!io::checkOutputPath(a.stats, error)) return usageError("--stats: " + error);
   }
   // `monitor load` reads only below these (docs/serve.md "Online change"): --load-dir, else the
   // directory of PROGRAM (and of the served .so).
@@ -385,6 +384,9 @@ int runServe(const ServeArgs &a) {
     io::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
     if (rep.status == io::RestoreStatus::LayoutMismatch)
       return usageError("--retain: " + a.retain + " belongs to another layout (see above)");
+    if (rep.status == io::RestoreStatus::DamagedNotKept)
+      return usageError("--retain: " + a.retain +
+                        " is damaged and cannot be moved aside (see above)");
     exec.addStartHook(
         [r = restored.get(), st = retain.get()](lj_state &s) { st->copyRetained(*r, s); });
     exec.addAfterTickHook(
