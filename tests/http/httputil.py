@@ -130,7 +130,10 @@ def get(srv, path, token=None, host=None, extra=(), timeout=5.0):
     if token:
         lines.append("Authorization: Bearer " + token)
     lines += list(extra)
-    return request(srv.port, "\r\n".join(lines), timeout=timeout)
+    try:
+        return request(srv.port, "\r\n".join(lines), timeout=timeout)
+    except OSError as e:  # refused or reset: no answer (the check that reads it fails)
+        return None, {}, str(e).encode()
 
 
 def timed_state(srv, timeout=5.0):
