@@ -32,11 +32,14 @@ while url is None:
     line = serve.stdout.readline()
     if not line:
         sys.exit("serve ended before printing the live view")
-    m = re.search(r"live view (http://\S+) ", line)
+    m = re.search(r"live view (http://\S+) \(token in (\S+)\)", line)
+    if m:  # every request needs the token (issue 28): Bearer here, ?token= for a browser
+        TOKEN = open(m.group(2)).read().strip()
+        AUTH = {"Authorization": "Bearer " + TOKEN}
     url = m.group(1) if m else None
 # The first page of the run: opened as soon as serve prints its URL; from serve's start to the
 # first frame with power flow (trace words) painted. Its traced build is requested by this page.
-driver.get(url)
+driver.get(url + "?token=" + TOKEN)
 first = 0
 while not first and time.time() - t_start < 120:
     first = driver.execute_script(
@@ -48,13 +51,13 @@ print("first page: serve start -> first live frame with power flow %.2f s" % (ti
 # keep that watcher open: between two page loads no page watches, and serve would put the
 # untraced build back 10 s after the last one left (the next page would wait for a rebuild).
 t0 = time.time()
-es = urllib.request.urlopen(url + "api/events", timeout=120)
+es = urllib.request.urlopen(urllib.request.Request(url + "api/events", headers=AUTH), timeout=120)
 for raw in es:
     if raw.startswith(b"data:") and b'"w":' in raw:
         break
 print("traced build in after %.1f s (first watcher)" % (time.time() - t0))
 threading.Thread(target=lambda: [None for _ in es], daemon=True).start()
-page_bytes = len(urllib.request.urlopen(url).read())
+page_bytes = len(urllib.request.urlopen(urllib.request.Request(url, headers=AUTH)).read())
 print("live page %d bytes, static page %d bytes" % (page_bytes, os.path.getsize(static)))
 
 
@@ -76,7 +79,7 @@ def measure(target, live):
 
 
 try:
-    for name, target, live in [("live page (lazy)", url, True), ("static page (every rung)", "file://" + static, False)]:
+    for name, target, live in [("live page (lazy)", url + "?token=" + TOKEN, True), ("static page (every rung)", "file://" + static, False)]:
         rows = [measure(target, live) for _ in range(runs)]
         for d, l, e in rows:
             print("%-26s DOMContentLoaded %6.0f ms  load %6.0f ms  %s %6.0f ms" %

@@ -60,7 +60,10 @@ while url is None:
     if not line:
         sys.exit("serve ended before printing the live view")
     lines.append(line.rstrip())
-    m = re.search(r"live view (http://\S+) ", line)
+    m = re.search(r"live view (http://\S+) \(token in (\S+)\)", line)
+    if m:  # every request needs the token (issue 28): Bearer here, ?token= for a browser
+        TOKEN = open(m.group(2)).read().strip()
+        AUTH = {"Authorization": "Bearer " + TOKEN}
     url = m.group(1) if m else None
 end = start + secs
 frames = [0] * pages
@@ -70,7 +73,7 @@ errors = []
 
 def watch(i):
     try:
-        with urllib.request.urlopen(url + "api/events", timeout=30) as es:
+        with urllib.request.urlopen(urllib.request.Request(url + "api/events", headers=AUTH), timeout=30) as es:
             for raw in es:
                 if raw.startswith(b"data:"):
                     m = json.loads(raw[5:])
@@ -91,7 +94,7 @@ if mode == "sse":
 elif pages:
     for d, h in tabs:
         d.switch_to.window(h)
-        d.get(url)
+        d.get(url + "?token=" + TOKEN)
     probe = ("var L=window.ladder,m=L&&L.live&&L.live.last;return [document.visibilityState,"
              "m?m.tick:-1,!!(m&&m.w),L&&L.drawn?L.drawn():0]")
     for at in (secs / 3.0, secs - 4.0):

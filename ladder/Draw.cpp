@@ -19,7 +19,15 @@ constexpr int kCW = 90, kRH = 60, kLM = 56, kRM = 16, kCommentH = 16, kGap = 18,
 
 std::string esc(const std::string &s) {
   std::string o;
-  for (char c : s) {
+  for (size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    // U+2028 / U+2029 as references: program text never holds a raw JavaScript line end.
+    if (c == '\xE2' && i + 2 < s.size() && s[i + 1] == '\x80' &&
+        (s[i + 2] == '\xA8' || s[i + 2] == '\xA9')) {
+      o += s[i + 2] == '\xA8' ? "&#x2028;" : "&#x2029;";
+      i += 2;
+      continue;
+    }
     switch (c) {
     case '&':
       o += "&amp;";
@@ -250,11 +258,28 @@ std::string renderSvg(const Layout &l) {
 
 namespace {
 
-/// JSON text inside a <script> element: "</" cannot end the element early (JSON allows "<\/").
-std::string scriptSafe(std::string data) {
-  for (size_t k = 0; (k = data.find("</", k)) != std::string::npos; k += 3)
-    data.replace(k, 2, "<\\/");
-  return data;
+/// JSON text inside a <script> element: no '<' at all (as \u003c, which JSON reads back as '<'),
+/// so program data (a comment "<!--<script>", "</script>", a symbol, a file name) can neither end
+/// the element nor put the HTML parser into its (double-)escaped script states, which only a
+/// '<' enters; U+2028 and U+2029 as \u2028 and \u2029 (line ends to JavaScript). '<' occurs in
+/// JSON only inside strings, so the text stays the same JSON. '>' and '&' are inert in a script
+/// element and stay (the rungs' SVG text is most of a large page).
+std::string scriptSafe(const std::string &data) {
+  std::string out;
+  out.reserve(data.size() + data.size() / 8);
+  for (size_t i = 0; i < data.size(); ++i) {
+    const char c = data[i];
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '\xE2' && i + 2 < data.size() && data[i + 1] == '\x80' &&
+               (data[i + 2] == '\xA8' || data[i + 2] == '\xA9')) {
+      out += data[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 std::string tabOf(const PartLayout &p, size_t i) {

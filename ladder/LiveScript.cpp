@@ -45,14 +45,16 @@ var rgs=document.querySelectorAll('div.rg');
 var io=new IntersectionObserver(function(es){es.forEach(function(e){if(e.isIntersecting)draw(e.target);else undraw(e.target)})},{rootMargin:'800px 400px'});
 rgs.forEach(function(d){io.observe(d)});
 function rungDiv(p,k){return document.querySelector('div.rg[data-p="'+p+'"][data-r="'+k+'"]')}
-var q=new URLSearchParams(location.search);if(q.get('token'))try{localStorage.setItem('ljtoken',q.get('token'))}catch(e){}
-function token(){var t=document.getElementById('tok').value;try{localStorage.setItem('ljtoken',t)}catch(e){}return t}
+// The token is in an HttpOnly cookie (set when the page was opened with ?token=); the API also
+// wants the page's key, which only a reader of this page has (no cross-site request can send it).
+var KEY=window.LJ_KEY||'',HK={'X-Ladderjit-Key':KEY};
+// Program text (addresses, symbols, part names) into markup only through h().
+function h(s){return String(s).replace(/[&<>"']/g,function(c){return '&#'+c.charCodeAt(0)+';'})}
 var bar=document.createElement('div');bar.id='live';
 bar.innerHTML='<span class="st" id="conn">connecting</span><span id="ver"></span><span id="tick"></span>'+
  '<label>search <input id="q" size="14" placeholder="address or symbol"></label><span id="qres"></span>'+
- '<label>token <input id="tok" size="20" type="password"></label><span id="msg"></span>';
+ '<span id="msg"></span>';
 document.body.insertBefore(bar,document.querySelector('nav'));document.body.classList.add('live');
-try{document.getElementById('tok').value=q.get('token')||localStorage.getItem('ljtoken')||''}catch(e){}
 var side=document.createElement('div');side.id='side';
 side.innerHTML='<h3>Statistics</h3><div id="counters"></div><div>scan time (us)</div><canvas id="hscan" width="310" height="90"></canvas>'+
  '<div>jitter (us)</div><canvas id="hjit" width="310" height="90"></canvas><div>overruns + missed deadlines over time</div><canvas id="tser" width="310" height="70"></canvas>'+
@@ -72,7 +74,7 @@ L.layout.parts.forEach(function(p,pi){p.rungs.forEach(function(r,ri){r.cells.for
  else if(c.kind==='box')(c.operands||[]).forEach(function(o){use(o,'operand of '+c.text)});
 })})});
 var dbl=Object.keys(uses).filter(function(a){return uses[a].filter(function(u){return u.role==='write (coil)'}).length>1});
-document.getElementById('dbl').innerHTML=dbl.length?dbl.map(function(a){return '<div class="warn">'+a+': '+uses[a].filter(function(u){return u.role==='write (coil)'}).length+' coils <a data-x="'+a+'">where</a></div>'}).join(''):'none';
+document.getElementById('dbl').innerHTML=dbl.length?dbl.map(function(a){return '<div class="warn">'+h(a)+': '+uses[a].filter(function(u){return u.role==='write (coil)'}).length+' coils <a data-x="'+h(a)+'">where</a></div>'}).join(''):'none';
 function goTo(stmt){var c=cellOf[stmt];if(!c)return;var b=document.querySelectorAll('.tab')[c.part];if(b)b.click();
  var d=rungDiv(c.part,c.index);if(d)draw(d);var g=(byId[stmt]||[])[0];if(g){mark([g]);g.scrollIntoView({block:'center',inline:'center'})}}
 L.goTo=goTo;L.drawn=function(){return nDrawn};
@@ -81,8 +83,8 @@ function mark(gs){document.querySelectorAll('g.hit').forEach(function(g){g.class
  r.setAttribute('x',bb.x-3);r.setAttribute('y',bb.y-3);r.setAttribute('width',bb.width+6);r.setAttribute('height',bb.height+6);g.insertBefore(r,g.firstChild)})}
 function xref(a){var u=uses[a]||[],d=document.getElementById('xref');
  var w=u.filter(function(x){return x.role==='write (coil)'}).length;
- d.innerHTML='<b>'+a+'</b>: '+u.length+' use(s)'+(w>1?' <span class="warn">double coil ('+w+')</span>':'')+
- u.map(function(x){return '<div><a data-s="'+x.stmt+'">'+x.name+' rung '+x.rung+'</a> '+x.role+' (id '+x.stmt+')</div>'}).join('')}
+ d.innerHTML='<b>'+h(a)+'</b>: '+u.length+' use(s)'+(w>1?' <span class="warn">double coil ('+w+')</span>':'')+
+ u.map(function(x){return '<div><a data-s="'+h(x.stmt)+'">'+h(x.name)+' rung '+h(x.rung)+'</a> '+h(x.role)+' (id '+h(x.stmt)+')</div>'}).join('')}
 side.addEventListener('click',function(e){var t=e.target;if(t.dataset.s)goTo(t.dataset.s);if(t.dataset.x)xref(t.dataset.x)});
 document.getElementById('q').addEventListener('keydown',function(e){if(e.key!=='Enter')return;var v=this.value.trim().toLowerCase();if(!v)return;
  hits=[];L.layout.parts.forEach(function(p){p.rungs.forEach(function(r){r.cells.forEach(function(c){
@@ -99,10 +101,10 @@ document.addEventListener('contextmenu',function(e){var g=e.target.closest&&e.ta
  menu.innerHTML='<div data-m="on">force on (允许)</div><div data-m="off">force off (禁止)</div><div data-m="restore">restore (恢复)</div>';
  menu.style.left=e.clientX+'px';menu.style.top=e.clientY+'px';menu.style.display='block';
  menu.onclick=function(ev){var m=ev.target.dataset.m;if(m)L.force(id,m);menu.style.display='none'}});
-L.force=function(id,mode){return fetch('api/force',{method:'POST',headers:{'Content-Type':'application/json','Authorization':'Bearer '+token()},
+L.force=function(id,mode){return fetch('api/force',{method:'POST',headers:{'Content-Type':'application/json','X-Ladderjit-Key':KEY},
  body:JSON.stringify({id:+id,mode:mode})}).then(function(r){return r.json().then(function(j){say(r.ok?'force '+mode+' on id '+id+': ok':'force refused ('+r.status+'): '+j.error,!r.ok);return {status:r.status,body:j}})})};
 // ---- live state -----------------------------------------------------------------------------
-function loadModel(){return fetch('api/model').then(function(r){return r.json()}).then(function(m){model=m;prev=[]})}
+function loadModel(){return fetch('api/model',{headers:HK}).then(function(r){return r.json()}).then(function(m){model=m;prev=[]})}
 function boxVal(g,vals){var t=g.querySelector('text.val');if(!t){var r=g.querySelector('rect.box');if(!r)return;t=document.createElementNS('http://www.w3.org/2000/svg','text');
  t.setAttribute('class','val');t.setAttribute('text-anchor','middle');t.setAttribute('x',+r.getAttribute('x')+ +r.getAttribute('width')/2);
  var by=+r.getAttribute('y'),vy=by+ +r.getAttribute('height')-4,ts=g.querySelectorAll('text.mn,text.op');
@@ -118,8 +120,8 @@ function paint(m){if(!model||!m.w)return;var w=m.w;for(var id in byId){var d=mod
 function forced(m){document.querySelectorAll('g.forced-on,g.forced-off').forEach(function(g){g.classList.remove('forced-on','forced-off');var t=g.querySelector('text.fmark');if(t)t.remove()});
  var f=m.forced||{},ids=Object.keys(f);ids.forEach(function(id){(byId[id]||[]).forEach(function(g){g.classList.add(f[id]?'forced-on':'forced-off');var s=g.querySelectorAll('line.sym')[0],t=document.createElementNS('http://www.w3.org/2000/svg','text');if(!s)return;
  t.setAttribute('class','fmark');t.setAttribute('x',+s.getAttribute('x1')-4);t.setAttribute('y',+s.getAttribute('y1')+8);t.setAttribute('text-anchor','end');t.setAttribute('fill',f[id]?'#00c853':'#d50000');t.textContent=f[id]?'F-ON':'F-OFF';g.appendChild(t)})});
- document.getElementById('forces').innerHTML=ids.length?ids.map(function(id){var c=cellOf[id];return '<div><a data-s="'+id+'">'+(c?c.cell.text+' ('+c.name+' rung '+c.rung+')':'id '+id)+'</a> '+(f[id]?'on':'off')+'</div>'}).join(''):'none';
- var lk=m.locks||[];document.getElementById('locks').innerHTML=lk.length?lk.map(function(x){return '<div>'+x+'</div>'}).join(''):'none'}
+ document.getElementById('forces').innerHTML=ids.length?ids.map(function(id){var c=cellOf[id];return '<div><a data-s="'+h(id)+'">'+h(c?c.cell.text+' ('+c.name+' rung '+c.rung+')':'id '+id)+'</a> '+(f[id]?'on':'off')+'</div>'}).join(''):'none';
+ var lk=m.locks||[];document.getElementById('locks').innerHTML=lk.length?lk.map(function(x){return '<div>'+h(x)+'</div>'}).join(''):'none'}
 var series=[];
 function bars(id,h){var c=document.getElementById(id),x=c.getContext('2d');x.clearRect(0,0,c.width,c.height);if(!h||!h.bins)return;
  var mx=Math.max.apply(null,h.bins.concat([1])),bw=(c.width-2)/h.bins.length;x.fillStyle='#1565c0';
@@ -135,7 +137,7 @@ function apply(m){lastMsg=m;L.live.last=m;if(hash&&m.hash!==hash){setConn('new p
  document.getElementById('tick').textContent='tick '+m.tick+(m.w?'':' (no trace)');L.live.tick=m.tick;
  var go=function(){paint(m);forced(m);if(m.stats)stats(m.stats)};if(!model||model.version!==m.v||model.traced!==m.traced)loadModel().then(go);else go()}
 L.live={tick:-1,last:null};
-function connect(){var es=new EventSource('api/events');es.addEventListener('state',function(e){setConn('live',true);apply(JSON.parse(e.data))});
+function connect(){var es=new EventSource('api/events?k='+encodeURIComponent(KEY));es.addEventListener('state',function(e){setConn('live',true);apply(JSON.parse(e.data))});
  es.onerror=function(){setConn('disconnected: retrying',false)}}
 connect();
 })();

@@ -1,7 +1,9 @@
-// The live ladder view's HTTP server for `ladderjit serve --http` (docs/serve.md "Live view"):
-// cpp-httplib (Debian libcpp-httplib-dev) with the page, the model, a Server-Sent Events stream
-// of trace snapshots, and POST commands (force, lock, unlock) behind a token. It only calls the
-// backend's functions; it never touches the scan thread.
+// The live ladder view's HTTP server for `ladderjit serve --http` (docs/serve.md "Live view",
+// docs/security.md "The live view's HTTP port"): libmicrohttpd (Debian libmicrohttpd-dev) with
+// the page, the model, a Server-Sent Events stream of trace snapshots, and POST commands (force,
+// lock, unlock). Every request needs the token and a Host of this server; what a client may make
+// the server hold (header bytes, body bytes, connections, streams, time) is bounded before it is
+// read. It only calls the backend's functions; it never touches the scan thread.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -13,6 +15,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace lj::io {
 
@@ -31,12 +34,29 @@ struct HttpBackend {
 
 struct HttpConfig {
   std::string host = "127.0.0.1";
-  int port = 0;      ///< 0 = any free port (port() tells which)
-  std::string token; ///< required on every POST (Authorization: Bearer TOKEN)
+  int port = 0; ///< 0 = any free port (port() tells which)
+  /// Required on every request: `Authorization: Bearer TOKEN`, or the cookie the page sets when
+  /// opened with `?token=TOKEN` together with `key` (header X-Ladderjit-Key or query `k`).
+  std::string token;
+  /// The page's own key (embedded in the page it serves): a cookie alone is not enough.
+  std::string key;
+  /// Host names (NAME or NAME:PORT) accepted besides the bound address and the loopback ones.
+  std::vector<std::string> hosts;
+  std::string tokenFile; ///< named in the 401 answer (where the token is)
   bool readOnly = false;
-  int maxStreams = 32; ///< SSE streams at once; more get 503
+  int maxStreams = 32;                 ///< SSE streams at once; more get 503 (and are closed)
+  int maxStreamsPerClient = 20;        ///< SSE streams of one client address at once
+  int maxConnections = 256;            ///< open TCP connections; more are closed at once
+  size_t connectionMemory = 32 * 1024; ///< request line + headers + read buffer, per connection
+  size_t maxBody = 64 * 1024;          ///< POST body bytes, chunked included
+  int requestSeconds = 10; ///< headers and body complete within this after the connection
+  int idleSeconds = 10;    ///< no byte either way for this long: closed
   std::function<void(const std::string &)> log;
 };
+
+/// A client's string for a log line: at most `max` bytes, control and non-ASCII bytes and the
+/// backslash as \xNN, "..." when cut.
+std::string clientText(const std::string &s, size_t max = 80);
 
 class HttpServer {
 public:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The live view's HTTP API against a running `serve --http` (docs/serve.md "Live view"): a
-change without the token is 403 with a reason (and logged with its origin), a wrong token 403,
+request without the token is 401 with a reason (and logged with its origin), a wrong token 403,
 bad bodies and unknown fields 400, GET on a POST route 405, an unknown path 404, malformed HTTP
 never crashes the server, the SSE stream sends state events; with --http-read-only even the right
 token is refused. Usage: http_api.py LADDERJIT OUTDIR"""
@@ -27,9 +27,9 @@ def start(extra, name):
         line = p.stdout.readline()
         if not line:
             raise SystemExit("serve ended before printing the live view line")
-        m = re.search(r"live view (http://\S+)/ \((?:token (\w+))?", line)
+        m = re.search(r"live view (http://\S+)/ \(token in (\S+)\)", line)
         if m:
-            return p, err, m.group(1), m.group(2)
+            return p, err, m.group(1), open(m.group(2)).read().strip()
 
 
 def call(url, method="GET", body=None, token=None):
@@ -52,10 +52,10 @@ def error_of(text):
 
 serve, err, base, token = start([], "rw")
 try:
-    st, body = call(base + "/")
+    st, body = call(base + "/", token=token)
     check(st == 200 and "ladder-layout" in body and "EventSource" in body, "GET / serves the live page")
     st, body = call(base + "/api/force", "POST", '{"id":2,"mode":"on"}')
-    check(st == 403 and "missing token" in error_of(body), "force without a token: %d %s" % (st, error_of(body)))
+    check(st == 401 and "missing token" in error_of(body), "force without a token: %d %s" % (st, error_of(body)))
     st, body = call(base + "/api/force", "POST", '{"id":2,"mode":"on"}', token="x" * len(token))
     check(st == 403 and error_of(body) == "wrong token", "force with a wrong token: %d %s" % (st, error_of(body)))
     st, body = call(base + "/api/force", "POST", "{not json", token=token)
@@ -66,7 +66,7 @@ try:
     check(st == 400 and "mode must be" in error_of(body), "a bad mode: %d %s" % (st, error_of(body)))
     st, body = call(base + "/api/force", "POST", '{"id":99999,"mode":"on"}', token=token)
     check(st == 400 and "does not exist" in error_of(body), "an id that does not exist: %d" % st)
-    st, body = call(base + "/api/force")
+    st, body = call(base + "/api/force", token=token)
     check(st == 405, "GET on a POST route: %d" % st)
     st, body = call(base + "/nothing/here")
     check(st == 404 and "no such page" in error_of(body), "unknown path: %d" % st)
@@ -80,11 +80,12 @@ try:
                 s.recv(200)
             except socket.timeout:
                 pass
-    st, body = call(base + "/api/model")
+    st, body = call(base + "/api/model", token=token)
     check(st == 200 and json.loads(body).get("version", 0) >= 1, "still serving after malformed requests")
     # SSE: state events with the version and, once the traced build is in, the trace words.
     events, traced = 0, False
-    with urllib.request.urlopen(base + "/api/events", timeout=10) as r:
+    req = urllib.request.Request(base + "/api/events", headers={"Authorization": "Bearer " + token})
+    with urllib.request.urlopen(req, timeout=10) as r:
         t0 = time.time()
         while time.time() - t0 < 8 and not (events >= 3 and traced):
             line = r.readline().decode()
@@ -109,13 +110,14 @@ check(serve.returncode == 0, "serve ended cleanly (exit %s)" % serve.returncode)
 tokfile = os.path.join(out, "token")
 with open(tokfile, "w") as f:
     f.write("s3cret-token-0123\n")
+os.chmod(tokfile, 0o600)
 serve, err, base, _ = start(["--http-read-only", "--http-token-file", tokfile], "ro")
 try:
     st, body = call(base + "/api/force", "POST", '{"id":2,"mode":"on"}', token="s3cret-token-0123")
     check(st == 403 and "read-only" in error_of(body), "read-only: force refused even with the token: %d" % st)
     st, body = call(base + "/api/lock", "POST", '{"item":"D5=3"}', token="s3cret-token-0123")
     check(st == 403, "read-only: lock refused: %d" % st)
-    st, body = call(base + "/api/locks")
+    st, body = call(base + "/api/locks", token="s3cret-token-0123")
     check(st == 200 and json.loads(body)["locks"] == [], "read-only: the lock list reads")
 finally:
     serve.terminate()

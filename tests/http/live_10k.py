@@ -38,7 +38,7 @@ driver.set_script_timeout(20)
 driver.set_page_load_timeout(30)
 try:
     t0 = time.time()
-    driver.get(url)
+    driver.get(url + "?token=" + token)
     live, _ = wait_for(lambda: driver.execute_script(
         "var L=window.ladder;return L&&L.live&&L.live.last&&L.live.last.w&&L.drawn()>0"), 30)
     print("page loaded and live after %.2f s (not asserted; see bench/live_page_load.py)" %

@@ -1,6 +1,7 @@
 """Shared by the live-view browser tests (live_page.py, live_10k.py): checks, a Modbus coil
 write written out by hand (no client library), `serve` started with its live view and Modbus
-server and their addresses read from its output, and headless Chromium through selenium."""
+server and their addresses read from its output (the token from the file serve names), and
+headless Chromium through selenium."""
 import re, socket, struct, subprocess, sys
 
 from selenium import webdriver
@@ -23,6 +24,12 @@ def modbus_write_coil(port, addr, on):
         assert len(ans) >= 12 and ans[7] == 5, "modbus answer %r" % ans
 
 
+def read_token(path):
+    """The token of the file serve names (`live view URL (token in FILE)`)."""
+    with open(path) as f:
+        return f.read().strip()
+
+
 def start_serve(exe, program, sock, errfile, duration, wait=20, modbus=True):
     """serve PROGRAM --http 127.0.0.1:0 --modbus 0 --modbus-write-inputs (without the Modbus
     options when `modbus` is false); (proc, url, token, modbus port or None), or exit 1 when it
@@ -38,7 +45,10 @@ def start_serve(exe, program, sock, errfile, duration, wait=20, modbus=True):
         line = serve.stdout.readline()
         if not line:
             break
-        m = re.search(r"live view (http://\S+) \(token (\w+)\)", line)
+        m = re.search(r"live view (http://\S+) \(token in (\S+)\)", line)
+        if m:
+            url, token = m.group(1), read_token(m.group(2))
+        m = re.search(r"live view (http://\S+) \(token (\w+)\)", line)  # before issue 28
         if m:
             url, token = m.group(1), m.group(2)
         m = re.search(r"modbus TCP on [\d.]+:(\d+)", line)

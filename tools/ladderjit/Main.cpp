@@ -257,8 +257,12 @@ int mainImpl(int argc, char **argv) {
   lastWins(cServe->add_option("--http", serve.http,
                               "the live ladder view on [HOST:]PORT (HOST defaults to 127.0.0.1)"));
   lastWins(cServe->add_option("--http-token-file", serve.httpTokenFile,
-                              "the token the live view's changes need (default: a fresh one, "
-                              "printed at start)"));
+                              "the file of the token every live view request needs, 0600 (a "
+                              "fresh token is written there when it does not exist; default: "
+                              "next to the control socket)"));
+  cServe->add_option("--http-host", serve.httpHosts,
+                     "a Host name (NAME or NAME:PORT) the live view answers besides its "
+                     "address and localhost (repeatable)");
   cServe->add_flag("--http-read-only", serve.httpReadOnly,
                    "the live view only shows: force, lock and unlock are refused (403)");
   lastWins(cServe->add_option("--retain", serve.retain, "retentive store file"));

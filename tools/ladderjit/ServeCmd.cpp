@@ -217,28 +217,18 @@ int runServe(const ServeArgs &a) {
     return usageError(error);
   if (!a.modbusMap.empty() && a.modbus.empty())
     return usageError("--modbus-map needs --modbus [HOST:]PORT");
-  // --http (docs/serve.md "Live view"): loopback unless HOST is given; the token of every
-  // change from the page is --http-token-file's, else a fresh one printed below.
+  // --http (docs/serve.md "Live view"): loopback unless HOST is given; the token every request
+  // needs is read from --http-token-file, else a fresh one written next to the control socket
+  // (below, once its path is known). It is never printed: logs keep what serve prints.
   LiveViewConfig live;
   if (!a.http.empty()) {
     if (!splitHostPort(a.http, live.host, live.port, error, "--http")) return usageError(error);
-    if (!a.httpTokenFile.empty()) {
-      std::string text;
-      if (!io::readFile(a.httpTokenFile, text, error))
-        return usageError("--http-token-file: " + error);
-      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.pop_back();
-      if (text.size() < 8 || text.find_first_of(" \t\r\n") != std::string::npos)
-        return usageError("--http-token-file: '" + a.httpTokenFile +
-                          "' must hold one token of at least 8 characters on one line");
-      live.token = text;
-    } else {
-      live.token = newHttpToken();
-    }
     live.readOnly = a.httpReadOnly;
     live.engine = a.engine;
-  } else if (!a.httpTokenFile.empty() || a.httpReadOnly) {
-    return usageError("--http-token-file and --http-read-only need --http [HOST:]PORT");
+    live.hosts = a.httpHosts;
+  } else if (!a.httpTokenFile.empty() || a.httpReadOnly || !a.httpHosts.empty()) {
+    return usageError(
+        "--http-token-file, --http-host and --http-read-only need --http [HOST:]PORT");
   }
   // --set addresses and --params in the program's dialect (CLI.md): --dialect, else the
   // extension.
@@ -292,6 +282,19 @@ int runServe(const ServeArgs &a) {
   // at a predictable /tmp path another user could plant.
   std::string control = a.control;
   if (control.empty() && !rt::defaultControlPath(control, error)) return usageError(error);
+  bool tokenCreated = false;
+  if (!a.http.empty()) {
+    live.tokenFile = a.httpTokenFile;
+    if (live.tokenFile.empty()) {
+      live.tokenFile = control;
+      if (live.tokenFile.size() > 5 &&
+          live.tokenFile.compare(live.tokenFile.size() - 5, 5, ".sock") == 0)
+        live.tokenFile.resize(live.tokenFile.size() - 5);
+      live.tokenFile += ".http-token";
+    }
+    if (!httpToken(live.tokenFile, live.token, tokenCreated, error))
+      return usageError("--http-token-file: " + error);
+  }
 
   // ---- the program ----
   if (!a.dialect.empty() && !io::dialectForOption(a.dialect, error)) return usageError(error);
@@ -436,10 +439,9 @@ int runServe(const ServeArgs &a) {
       exec.join();
       return usageError(error);
     }
-    std::printf("ladderjit serve: live view http://%s:%d/%s%s\n", live.host.c_str(),
-                liveView->port(),
-                a.httpTokenFile.empty() ? (" (token " + live.token + ")").c_str()
-                                        : " (token from --http-token-file)",
+    const bool v6 = live.host.find(':') != std::string::npos;
+    std::printf("ladderjit serve: live view http://%s%s%s:%d/ (token in %s)%s\n", v6 ? "[" : "",
+                live.host.c_str(), v6 ? "]" : "", liveView->port(), live.tokenFile.c_str(),
                 a.httpReadOnly ? " read-only" : "");
     std::fflush(stdout);
   }
@@ -557,6 +559,7 @@ int runServe(const ServeArgs &a) {
             std::to_string(rs.lastSaveSeq) + "), " + std::to_string(rs.failures) + " failed");
   }
   if (!a.shm.empty()) shmMap.unlinkName();
+  if (tokenCreated && a.httpTokenFile.empty()) ::unlink(live.tokenFile.c_str());
 
   rt::TickStats st = exec.stats();
   rt::ChangeStats cs = controller.changeStats();

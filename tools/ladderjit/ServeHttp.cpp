@@ -9,12 +9,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <random>
@@ -93,12 +100,66 @@ std::string newHttpToken() {
   return t;
 }
 
+bool httpToken(const std::string &file, std::string &token, bool &created, std::string &error) {
+  created = false;
+  int fd = ::open(file.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0 && errno == ENOENT) {
+    // A fresh token, 0600 whatever the umask; O_EXCL: never through someone else's file.
+    fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0) {
+      error = "'" + file + "': cannot create: " + std::strerror(errno);
+      return false;
+    }
+    token = newHttpToken();
+    const std::string text = token + "\n";
+    const bool ok = ::fchmod(fd, 0600) == 0 &&
+                    ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+    ::close(fd);
+    if (!ok) {
+      error = "'" + file + "': cannot write: " + std::strerror(errno);
+      ::unlink(file.c_str());
+      return false;
+    }
+    created = true;
+    return true;
+  }
+  if (fd < 0) {
+    error = "'" + file + "': cannot open: " + std::strerror(errno);
+    return false;
+  }
+  struct stat st {};
+  std::string why;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+    why = "not a regular file";
+  else if (st.st_uid != ::geteuid())
+    why = "owned by uid " + std::to_string(st.st_uid) + ", not by this user (uid " +
+          std::to_string(::geteuid()) + ")";
+  else if ((st.st_mode & 077) != 0)
+    why = "token file is accessible by group or others (chmod 600 it)";
+  else if (st.st_size > 4096)
+    why = "too large for a token file";
+  std::string text(static_cast<size_t>(why.empty() ? st.st_size : 0), '\0');
+  if (why.empty() && ::read(fd, text.data(), text.size()) != static_cast<ssize_t>(text.size()))
+    why = std::string("cannot read: ") + std::strerror(errno);
+  ::close(fd);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  if (why.empty() && (text.size() < 8 || text.find_first_of(" \t\r\n") != std::string::npos))
+    why = "must hold one token of at least 8 characters on one line";
+  if (!why.empty()) {
+    error = "'" + file + "': " + why;
+    return false;
+  }
+  token = text;
+  return true;
+}
+
 struct LiveView::Impl {
   rt::Executive &exec;
   rt::Exchange &ex;
   rt::Controller &ctl;
   std::function<void(const std::string &)> log;
   LiveViewConfig cfg;
+  std::string key = newHttpToken(); // the page's key (services/HttpServer.h HttpConfig::key)
   std::unique_ptr<io::HttpServer> http;
 
   uint64_t publishEvery = 1; // ticks between trace copies (~40 per second)
@@ -131,8 +192,10 @@ struct LiveView::Impl {
     if (pageHash != v.hash) {
       ladder::Layout l = ladder::layout(ladder::fromProgram(*v.prog));
       json h = v.hash;
+      json k = key;
       page = ladder::renderLazyHtml(l, ladder::liveCss(),
-                                    "window.LJ_HASH=" + h.dump() + ";" + ladder::liveScript());
+                                    "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() +
+                                        ";" + ladder::liveScript());
       pageHash = v.hash;
     }
     return page;
@@ -319,6 +382,9 @@ bool LiveView::start(std::string &error) {
   hc.host = im->cfg.host;
   hc.port = im->cfg.port;
   hc.token = im->cfg.token;
+  hc.key = im->key;
+  hc.hosts = im->cfg.hosts;
+  hc.tokenFile = im->cfg.tokenFile;
   hc.readOnly = im->cfg.readOnly;
   hc.log = im->log;
   im->http = std::make_unique<io::HttpServer>(hc, std::move(be));

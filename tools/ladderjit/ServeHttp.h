@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lj::cli {
 
@@ -19,6 +20,8 @@ struct LiveViewConfig {
   std::string host = "127.0.0.1";
   int port = 0;
   std::string token;
+  std::string tokenFile;          ///< where the token is (named in the page's 401 answer)
+  std::vector<std::string> hosts; ///< --http-host: Host names answered besides the address
   bool readOnly = false;
   uint64_t periodNs = 1000000;
   std::string engine; ///< for the page's header
@@ -46,5 +49,10 @@ private:
 
 /// A fresh random token (32 hex digits) for --http.
 std::string newHttpToken();
+
+/// --http's token: read from `file` when it exists (refused when it is not a regular file of
+/// this user or is accessible by group or others, like a private key), else a fresh one written
+/// there with mode 0600. False with `error`.
+bool httpToken(const std::string &file, std::string &token, bool &created, std::string &error);
 
 } // namespace lj::cli
