@@ -6,6 +6,7 @@
 #include "tools/ladderjit/BenchCmd.h"
 #include "tools/ladderjit/Commands.h"
 
+#include "gen/CTranslate.h"
 #include "gen/ShapeCorpus.h"
 
 #include <unistd.h>
@@ -188,6 +189,10 @@ int runCorpus(const BenchArgs &a) {
     }
     for (const std::string &n : m.notes)
       if (n.rfind("scan times:", 0) != 0) std::fprintf(stderr, "  note: %s\n", n.c_str());
+    if (!temp) { // --keep-programs: the C baseline's translation beside the program
+      std::ofstream c(dir + "/" + shape.name + ".c", std::ios::trunc);
+      c << gen::translateToC(*m.prog);
+    }
     ShapeResult r;
     r.name = shape.name;
     r.statements = static_cast<int32_t>(m.prog->stmts.size());
