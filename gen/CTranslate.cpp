@@ -56,6 +56,14 @@ bool supported(Op op) {
   case Op::CompareLt:
   case Op::CompareEq:
   case Op::CompareRange:
+  case Op::Label: // no jumps in the subset: a label (IEC IL's closing one) does nothing
+  case Op::OnDelayTimer:
+  case Op::RegisterCounter:
+  case Op::RingCounter:
+  case Op::UpDownCounter:
+  case Op::RisePulse:
+  case Op::FallPulse:
+  case Op::Toggle:
     return true;
   default:
     return false;
@@ -94,19 +102,30 @@ std::string bitWrite(const TargetProfile &tp, const Operand &o, const std::strin
          "));";
 }
 
+/// Width and signedness of a register operand as the interpreter's decode() has them.
+void regKind(const TargetProfile &tp, const Operand &o, uint32_t &bytes, bool &isSigned) {
+  const AreaInfo &ai = tp.area(o.area);
+  bytes = o.width ? o.width : ai.bytes;
+  isSigned = ai.isSigned;
+}
+
 std::string valueRead(const TargetProfile &tp, const Operand &o) {
   if (o.kind == Operand::Kind::Const)
     return o.value == INT32_MIN ? "(-2147483647 - 1)" : "(" + std::to_string(o.value) + ")";
   if (o.kind == Operand::Kind::Bit) return "(int32_t)" + bitRead(tp, o);
-  uint32_t bytes = tp.area(o.area).bytes;
+  uint32_t bytes;
+  bool sgn;
+  regKind(tp, o, bytes, sgn);
   std::string off = std::to_string(tp.elementOffset(o.area, o.index));
-  if (bytes == 1) return "(int32_t)B(" + off + ")";
-  if (bytes == 2) return "(int32_t)I16(" + off + ")";
+  if (bytes == 1) return sgn ? "(int32_t)(int8_t)B(" + off + ")" : "(int32_t)B(" + off + ")";
+  if (bytes == 2) return sgn ? "(int32_t)I16(" + off + ")" : "(int32_t)(uint16_t)I16(" + off + ")";
   return "I32(" + off + ")";
 }
 
 std::string valueWrite(const TargetProfile &tp, const Operand &o, const std::string &v) {
-  uint32_t bytes = tp.area(o.area).bytes;
+  uint32_t bytes;
+  bool sgn;
+  regKind(tp, o, bytes, sgn);
   std::string off = std::to_string(tp.elementOffset(o.area, o.index));
   if (bytes == 1) return "B(" + off + ") = (unsigned char)(uint32_t)(" + v + ");";
   if (bytes == 2) return "I16(" + off + ") = (int16_t)(uint16_t)(uint32_t)(" + v + ");";
@@ -115,8 +134,23 @@ std::string valueWrite(const TargetProfile &tp, const Operand &o, const std::str
 
 std::string edgeSample(const TargetProfile &tp, int32_t slot, const Operand &o, bool rising) {
   std::string e = "B(" + std::to_string(offsetof(lj_state, edge) + static_cast<size_t>(slot)) + ")";
-  return "{ unsigned char c = " + bitRead(tp, o) + ", m = " + e + "; " + e +
-         " = c; ev = " + (rising ? "c && !m" : "!c && m") + "; }";
+  // EdgePolicy::PerObject: the edge memory is the object's previous-scan image, sampled at the
+  // end of the cyclic part (emitPart), never written by the contact.
+  const bool perInstance = tp.edgePolicy == EdgePolicy::PerInstance;
+  return "{ unsigned char c = " + bitRead(tp, o) + ", m = " + e + " != 0; " +
+         (perInstance ? e + " = c; " : std::string()) + "ev = " + (rising ? "c && !m" : "!c && m") +
+         "; }";
+}
+
+/// `countStep` of interp/InterpBlocks.cpp (hnc8-functions-1.md 3.3) on C lvalues.
+std::string countStep(const std::string &cnt, const std::string &s1, const std::string &dn,
+                      const std::string &rst, const std::string &pv, const std::string &cv,
+                      const std::string &prev, const std::string &out) {
+  return "{ int32_t init = " + s1 + " ? 1 : 0, pv = " + pv + "; if (" + rst + ") { " + cv + " = " +
+         dn + " ? pv : init; " + out + " = 0; } else { if (" + cnt + " && !" + prev + ") { if (!" +
+         dn + ") " + cv + " = (" + cv + " >= pv) ? init : " + cv + " + 1; else " + cv + " = (" +
+         cv + " <= init) ? pv : " + cv + " - 1; } " + out + " = " + dn + " ? (" + cv +
+         " <= init) : (" + cv + " >= pv); } " + prev + " = " + cnt + "; }";
 }
 
 void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
@@ -189,6 +223,7 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
   case Op::Reset:
     c << "if (" << S(d - 1) << ") " << bitWrite(tp, a, "0");
     break;
+  case Op::Label:
   case Op::EndInit:
   case Op::EndCyclic:
   case Op::EndSliced:
@@ -243,6 +278,64 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
     c << "{ int32_t lo = " << valueRead(tp, a) << ", hi = " << valueRead(tp, b)
       << ", v = " << valueRead(tp, x) << "; " << out(en + " && lo < v && v < hi") << " }";
     break;
+  case Op::OnDelayTimer: { // dialect-notes "Timers": state in the profile's timer slot
+    const std::string t = std::to_string(tp.timerOffset(in.slot));
+    auto F = [&](const char *ty, size_t off) {
+      return std::string("(*(") + ty + " *)((unsigned char *)s + " + t + " + " +
+             std::to_string(off) + "))";
+    };
+    const std::string run = F("uint8_t", offsetof(lj_timer, running)),
+                      tout = F("uint8_t", offsetof(lj_timer, out)),
+                      start = F("int64_t", offsetof(lj_timer, start_ms)),
+                      el = F("int64_t", offsetof(lj_timer, elapsed_ms));
+    c << "{ int32_t unit = " << valueRead(tp, b) << " & 3; int64_t preset = (int64_t)"
+      << valueRead(tp, x) << " * (unit == 0 ? " << tp.timerUnitMs[0] << " : unit == 1 ? "
+      << tp.timerUnitMs[1] << " : unit == 2 ? " << tp.timerUnitMs[2] << " : " << tp.timerUnitMs[3]
+      << "); (void)unit; if (preset < 0) preset = 0; if (" << en
+      << ") { int64_t now = (int64_t)NOW; if (!" << run << ") { " << run << " = 1; " << start
+      << " = now; } int64_t e = now > " << start << " ? now - " << start << " : 0; " << tout
+      << " = e >= preset; " << el << " = e < preset ? e : preset; } else { " << run << " = 0; "
+      << tout << " = 0; " << el << " = 0; } " << out(tout + " != 0") << " }";
+    break;
+  }
+  case Op::RegisterCounter: {
+    const std::string cv = "cv",
+                      prev = "B(" + std::to_string(offsetof(lj_state, edge) + in.slot) + ")";
+    c << "{ int32_t cv = " << valueRead(tp, a) << "; unsigned char o, pr = " << prev << " != 0; "
+      << countStep(S(d - 4), S(d - 3), S(d - 2), S(d - 1), valueRead(tp, b), cv, "pr", "o") << " "
+      << valueWrite(tp, a, "cv") << " " << prev << " = pr; " << S(d - 4) << " = o; }";
+    break;
+  }
+  case Op::RingCounter:
+  case Op::UpDownCounter: {
+    const size_t base = offsetof(lj_state, C) + static_cast<size_t>(in.slot) * sizeof(lj_counter);
+    const std::string cv = "I32(" + std::to_string(base + offsetof(lj_counter, value)) + ")",
+                      out = "B(" + std::to_string(base + offsetof(lj_counter, out)) + ")";
+    const std::string prev = "B(" + std::to_string(base + offsetof(lj_counter, prev)) + ")";
+    const bool ud = st.op == Op::UpDownCounter;
+    const int k = ud ? 4 : 2;
+    c << "{ int32_t cv = " << cv << "; unsigned char o, pr = " << prev << " != 0; "
+      << countStep(S(d - k), ud ? S(d - 3) : "0", ud ? S(d - 2) : "0", S(d - 1), valueRead(tp, b),
+                   "cv", "pr", "o")
+      << " " << cv << " = cv; " << prev << " = pr; " << out << " = o; " << S(d - k) << " = o; }";
+    break;
+  }
+  case Op::RisePulse:
+  case Op::FallPulse: {
+    const std::string pr =
+        "B(" + std::to_string(tp.pulseOffset(st.op == Op::RisePulse, in.slot)) + ")";
+    c << "{ unsigned char e = " << en
+      << ", o = " << (st.op == Op::RisePulse ? "e && !" + pr : "!e && " + pr) << "; " << pr
+      << " = e; " << out("o") << " }";
+    break;
+  }
+  case Op::Toggle: {
+    const std::string pr = "B(" + std::to_string(offsetof(lj_state, alt_prev) + in.slot) + ")",
+                      sv = "B(" + std::to_string(offsetof(lj_state, alt_state) + in.slot) + ")";
+    c << "{ unsigned char e = " << en << "; if (e && !" << pr << ") " << sv << " = !" << sv << "; "
+      << pr << " = e; " << out(sv + " != 0") << " }";
+    break;
+  }
   default:
     c << "#error unsupported statement";
     break;
@@ -250,11 +343,17 @@ void emitStmt(std::ostringstream &c, const VerifiedProgram &p, int32_t pc) {
   c << "\n";
 }
 
-void emitPart(std::ostringstream &c, const VerifiedProgram &p, const std::string &name,
-              StmtRange r) {
+void emitPart(std::ostringstream &c, const VerifiedProgram &p, const std::string &name, StmtRange r,
+              bool edgeImage = false) {
   c << "static uint32_t " << name << "(lj_state *s) {\n  unsigned char st[" << p.maxDepth + 2
     << "] = {0}, ms[" << p.maxMsDepth + 2 << "] = {0}, ev = 0;\n  (void)ms; (void)ev;\n";
   for (int32_t pc = r.begin; pc < r.end; ++pc) emitStmt(c, p, pc);
+  // EdgePolicy::PerObject: the previous-scan image of every edge object (interp runPlc1).
+  if (edgeImage)
+    for (size_t k = 0; k < p.edgeObjects.size(); ++k)
+      if (p.edgeObjects[k].kind == Operand::Kind::Bit)
+        c << "  B(" << offsetof(lj_state, edge) + k
+          << ") = " << bitRead(*p.profile, p.edgeObjects[k]) << ";\n";
   c << "  return 0;\n}\n\n";
 }
 
@@ -270,7 +369,8 @@ bool cTranslatable(const VerifiedProgram &prog, std::string &error) {
     const Stmt &s = prog.stmts[i];
     if (supported(s.op)) continue;
     error = prog.file + ":" + std::to_string(s.loc.line) + ": '" + spelling(prog.dialect, s.op) +
-            "' is outside the C baseline's subset (bit logic, MOV, math, compares)";
+            "' is outside the C baseline's subset (bit logic, MOV, math, compares, TMRB, counters, "
+            "PLS/PLF/ALT)";
     return false;
   }
   return true;
@@ -284,9 +384,10 @@ std::string translateToC(const VerifiedProgram &p) {
     << "#define B(o) (((unsigned char *)s)[o])\n"
     << "#define I16(o) (*(int16_t *)((unsigned char *)s + (o)))\n"
     << "#define I32(o) (*(int32_t *)((unsigned char *)s + (o)))\n"
-    << "#define U32(o) (*(uint32_t *)((unsigned char *)s + (o)))\n\n";
+    << "#define U32(o) (*(uint32_t *)((unsigned char *)s + (o)))\n"
+    << "#define NOW (*(uint64_t *)((unsigned char *)s + " << offsetof(lj_state, now_ms) << "))\n\n";
   emitPart(c, p, "part_init", p.init);
-  emitPart(c, p, "part_plc1", p.plc1);
+  emitPart(c, p, "part_plc1", p.plc1, p.profile->edgePolicy == EdgePolicy::PerObject);
   std::vector<StmtRange> slices = p.slices;
   if (slices.empty()) slices.push_back(p.plc2);
   for (size_t k = 0; k < slices.size(); ++k)

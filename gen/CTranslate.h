@@ -10,10 +10,12 @@
 
 namespace lj::gen {
 
-/// Whether every statement of `prog` is in the subset: contacts (edges included), ANB/ORB,
-/// MPS/MRD/MPP, OUT/OOUT/SET/RST, the part markers, ADD/SUB/MUL/DIV/AND/OR/XOR, INC/DEC/NEG, MOV,
-/// the compares (LE/LT/EQ/range). No jumps, calls, loops, timers, counters or forces. On false,
-/// `error` names the first statement that is not.
+/// Whether every statement of `prog` is in the subset: contacts (edges included, per instance
+/// or per object), ANB/ORB, MPS/MRD/MPP, OUT/OOUT/SET/RST, the part markers, ADD/SUB/MUL/DIV/AND/
+/// OR/XOR, INC/DEC/NEG, MOV, the compares (LE/LT/EQ/range), the on-delay timer (TMRB), the
+/// counters (CTR, CTRC, CTUD), PLS/PLF (FANUC DIFU/DIFD), ALT and labels. Operands of any dialect
+/// (HNC-8, FANUC, IEC) at their profile offsets and widths. No jumps, calls, loops or forces. On
+/// false, `error` names the first statement that is not.
 bool cTranslatable(const VerifiedProgram &prog, std::string &error);
 
 /// The C translation: exports `ljc_init`, `ljc_plc1` (lj_part_fn) and `ljc_plc2_slice`

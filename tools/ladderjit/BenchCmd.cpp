@@ -213,7 +213,7 @@ double clockOverheadNs() {
 
 /// The lanes' scans, interleaved in blocks of 64 so machine noise hits every engine alike.
 void runScans(std::vector<Lane> &lanes, const BenchArgs &a, const ScanInputs &in,
-              Progress &progress, double overheadNs) {
+              Progress &progress, double overheadNs, uint64_t base = 0, size_t rotate = 0) {
   constexpr uint64_t kBlock = 64;
   std::vector<std::vector<const io::StimulusEvent *>> events(kBlock);
   size_t nextEvent = 0;
@@ -231,11 +231,12 @@ void runScans(std::vector<Lane> &lanes, const BenchArgs &a, const ScanInputs &in
              in.stimulus->events[nextEvent].tick < b + k)
         ++nextEvent; // not reachable: ticks are sorted
     }
-    for (Lane &l : lanes) {
+    for (size_t li = 0; li < lanes.size(); ++li) {
+      Lane &l = lanes[(li + rotate) % lanes.size()];
       lj_state *s = l.state.get();
       for (uint64_t k = 0; k < n; ++k) {
-        applyInputs(*s, in, b + k, events[k]);
-        s->now_ms = b + k + 1;
+        applyInputs(*s, in, base + b + k, events[k]);
+        s->now_ms = base + b + k + 1;
         double t = monoNs();
         uint32_t f = fullScan(l.entries, s);
         l.scanNs.push_back(std::max(0.0, monoNs() - t - overheadNs));
@@ -258,7 +259,9 @@ void runScans(std::vector<Lane> &lanes, const BenchArgs &a, const ScanInputs &in
 
 } // namespace
 
-int runBench(const BenchArgs &a) {
+namespace bench {
+
+int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
   const bool wantInterp = a.engine == "interp" || a.engine == "all";
   const bool wantJit = a.engine == "jit" || a.engine == "all";
   const bool wantAot = a.engine == "aot" || a.engine == "all";
@@ -295,10 +298,11 @@ int runBench(const BenchArgs &a) {
     in.random = false;
     in.stimulus = &stim;
   }
-  FrontTimes ft;
+  FrontTimes &ft = m.ft;
   ft.readUs = usSince(tr);
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
-  std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
+  std::optional<VerifiedProgram> &prog = m.prog;
+  prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
   if (const AreaInfo &x = prog->profile->area(Area::Input); x.offset >= offsetof(lj_state, mem)) {
     in.memInputOffset = x.offset;
@@ -320,8 +324,8 @@ int runBench(const BenchArgs &a) {
     ft.verifyUs = usSince(t1);
   }
 
-  std::vector<std::string> notes;
-  std::vector<Lane> lanes;
+  std::vector<std::string> &notes = m.notes;
+  std::vector<Lane> &lanes = m.lanes;
   {
     Lane l;
     l.name = "interp";
@@ -415,7 +419,15 @@ int runBench(const BenchArgs &a) {
     lj_run_init(l.state.get(), &l.entries);
   }
   const double overheadNs = clockOverheadNs();
-  runScans(lanes, a, in, progress, overheadNs);
+  m.overheadNs = overheadNs;
+  // Rounds (--corpus): the same scans again, lanes started in turn; each round's median kept.
+  m.roundMedians.assign(lanes.size(), {});
+  for (unsigned r = 0; r < std::max(rounds, 1u); ++r) {
+    for (Lane &l : lanes) l.scanNs.clear();
+    runScans(lanes, a, in, progress, overheadNs, static_cast<uint64_t>(r) * a.scans, r);
+    for (size_t i = 0; i < lanes.size(); ++i)
+      m.roundMedians[i].push_back(statsOf(lanes[i].scanNs).medianNs);
+  }
   progress.clear();
 
   for (size_t i = 1; i < lanes.size(); ++i)
@@ -428,19 +440,29 @@ int runBench(const BenchArgs &a) {
       return kProgramErrors;
     }
 
-  std::vector<Stats> st;
+  std::vector<Stats> &st = m.st;
   for (const Lane &l : lanes) st.push_back(bench::statsOf(l.scanNs));
-  std::vector<Ratio> ratios = bench::ratiosOf(lanes, st);
+  m.ratios = bench::ratiosOf(lanes, st);
   char ov[160];
   std::snprintf(ov, sizeof ov,
                 "scan times: CLOCK_MONOTONIC around each scan, its own cost (%.0f ns, median) "
                 "subtracted",
                 overheadNs);
   notes.push_back(ov);
+  return kOk;
+}
+
+} // namespace bench
+
+int runBench(const BenchArgs &a) {
+  if (a.corpus) return bench::runCorpus(a);
+  if (a.program.empty()) return usageError("bench: PROGRAM is required (or --corpus)");
+  bench::Measured m;
+  if (int code = bench::measure(a, m, 1); code != kOk) return code;
   if (a.format == "json")
-    bench::printJson(a, overheadNs, *prog, ft, lanes, st, ratios, notes);
+    bench::printJson(a, m.overheadNs, *m.prog, m.ft, m.lanes, m.st, m.ratios, m.notes);
   else
-    bench::printText(a, *prog, ft, lanes, st, ratios, notes);
+    bench::printText(a, *m.prog, m.ft, m.lanes, m.st, m.ratios, m.notes);
   return kOk;
 }
 

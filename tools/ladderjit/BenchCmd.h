@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,5 +76,31 @@ bool buildCBaseline(const VerifiedProgram &prog, const CBuild &b, const std::str
 /// Whether `prog` can be translated (every statement in the C baseline's subset); else `error`
 /// names the first statement that cannot.
 bool cBaselineSupports(const VerifiedProgram &prog, std::string &error);
+
+/// What one measured program leaves: its lanes (lanes[0] the interpreter), their statistics
+/// over all scans and, per lane, the median of every round. Not movable (the lanes' engines
+/// refer to `prog`).
+struct Measured {
+  Measured() = default;
+  Measured(const Measured &) = delete;
+  Measured &operator=(const Measured &) = delete;
+  std::optional<VerifiedProgram> prog;
+  FrontTimes ft;
+  std::vector<Lane> lanes;
+  std::vector<Stats> st;
+  std::vector<Ratio> ratios;
+  std::vector<std::string> notes;
+  std::vector<std::vector<double>> roundMedians; ///< parallel to lanes
+  double overheadNs = 0;
+};
+
+/// Compile `a.program` on the lanes `a` asks for, run `rounds` rounds of `a.scans` scans and
+/// check every final state against the interpreter's. kOk or the command's exit code (the
+/// error already printed).
+int measure(const BenchArgs &a, Measured &m, unsigned rounds);
+
+/// `bench --corpus` (BenchCorpus.cpp): every shape of gen/ShapeCorpus.h on jit-opt, aot and
+/// the C baseline, with the ratio to the best C setting per shape.
+int runCorpus(const BenchArgs &a);
 
 } // namespace lj::cli::bench

@@ -142,6 +142,11 @@ struct BenchArgs {
   uint32_t cTimeoutS = 300;    ///< time bound of one C compile
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;
+  bool corpus = false;        ///< the shape corpus instead of PROGRAM (gen/ShapeCorpus.h)
+  uint32_t rounds = 9;        ///< --corpus: rounds of --scans scans, median of round medians
+  std::string shapes;         ///< --corpus: comma-separated shape names (empty: all)
+  int32_t statements = 10000; ///< --corpus: statements per shape
+  std::string keepPrograms;   ///< --corpus: directory to write the generated programs to
 };
 /// `ladderjit bench`: compile phases and scan times of PROGRAM per engine and tier
 /// (docs/bench.md).

@@ -166,7 +166,22 @@ int mainImpl(int argc, char **argv) {
   CLI::App *cBench = app.add_subcommand(
       "bench", "compile phases and scan times of PROGRAM per engine and tier (docs/bench.md)");
   lastWins(cBench->add_option("--dialect", bn.dialect, kDialectHelp));
-  cBench->add_option("PROGRAM", bn.program, kProgramHelp)->required();
+  cBench->add_option("PROGRAM", bn.program, kProgramHelp);
+  cBench->add_flag("--corpus", bn.corpus,
+                   "instead of PROGRAM: every shape of the benchmark shape corpus on jit-opt, aot, "
+                   "gcc and clang -O1/-O2, with the ratio to the best C per shape");
+  lastWins(cBench
+               ->add_option("--rounds", bn.rounds,
+                            "--corpus: rounds of --scans scans per shape (default 9)")
+               ->check(kUnsigned));
+  lastWins(cBench->add_option("--shapes", bn.shapes,
+                              "--corpus: comma-separated shape names (default: all)"));
+  lastWins(cBench
+               ->add_option("--statements", bn.statements,
+                            "--corpus: statements per shape (default 10000)")
+               ->check(kUnsigned));
+  lastWins(cBench->add_option("--keep-programs", bn.keepPrograms,
+                              "--corpus: also write the generated programs into this directory"));
   lastWins(cBench->add_option("--engine", bn.engine, "interp | jit | aot | all (default all)"));
   lastWins(cBench->add_option("--tier", bn.tier, "fast | opt | both (default both)"));
   lastWins(cBench->add_option("--scans", bn.scans, "timed full scans per engine (default 2000)")
