@@ -19,7 +19,7 @@ set -euo pipefail
 # link only the shared libLLVM (configuring without them works), but Debian's LLVM packaging has
 # failed on a missing zstd target before (llvm19-orc-notes.md 1), so they are installed too.
 PACKAGES=(
-  cmake make g++ ccache python3
+  cmake make g++ ccache python3 pkg-config
   llvm-19-dev llvm-19-tools clang-19 libclang-rt-19-dev
   libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev libssl-dev
   zlib1g-dev libzstd-dev
