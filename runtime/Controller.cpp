@@ -360,10 +360,7 @@ bool Controller::rebuildRunning(const ContactForces &forces, bool traced, bool i
     aotBase_->baseVariant = cur->variant;
     next = aotBase_;
   } else {
-    if (loader_.aot() && traced) {
-      error = "an AOT .so is never traced; serve with --engine jit or interp for the live view";
-      return false;
-    }
+    // (An AOT server is never traced: setTraced refuses it, so `traced` is false here.)
     const bool interp = interpreted || loader_.engine() == "interp";
     next = loader_.rebuild(*cur, forces, traced,
                            interp ? engines::EngineKind::Interp : engines::EngineKind::Jit, error);

@@ -62,6 +62,27 @@ int64_t monoNs() {
              std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
+
+// Another build of `v`'s program: the same file, hash, VerifiedProgram and version id (a tier or
+// a rebuild switches code only).
+std::shared_ptr<ProgramVersion> buildOf(const ProgramVersion &v) {
+  auto out = std::make_shared<ProgramVersion>();
+  out->path = v.path;
+  out->hash = v.hash;
+  out->prog = v.prog;
+  out->id = v.id;
+  return out;
+}
+
+// What a JIT build's compile times tell the statistics; a build that compiled groups at the fast
+// tier (EngineOptions::quickLeaves) runs as JitQuick until its optimized build replaces it.
+void noteJitBuild(ProgramVersion &v, const jit::CompileTimes &times) {
+  v.buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
+  v.groups = times.leaves;
+  v.groupsCompiled = times.leavesCompiled;
+  v.groupsQuick = times.leavesQuick;
+  if (times.leavesQuick) v.tier = EngineTier::JitQuick;
+}
 } // namespace
 
 std::shared_ptr<ProgramVersion>
@@ -100,12 +121,8 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
     return nullptr;
   }
   const int64_t t0 = monoNs();
-  auto out = std::make_shared<ProgramVersion>();
-  out->path = v.path;
-  out->hash = v.hash;
-  out->prog = v.prog; // the same verified program: the switch is of code only
+  std::shared_ptr<ProgramVersion> out = buildOf(v);
   out->forces = v.forces;
-  out->id = v.id;
   out->variant = out->baseVariant = v.variant; // a tier of the same build (forces, tracing)
   out->tier = tier;
   engines::EngineOptions eo;
@@ -127,9 +144,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::buildTier(const ProgramVersion &v
   }
   out->engine = std::move(made).value();
   out->buildNs = monoNs() - t0;
-  out->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
-  out->groups = times.leaves;
-  out->groupsCompiled = times.leavesCompiled;
+  noteJitBuild(*out, times); // no quick groups here: the tier stays `tier`
   if (tier == EngineTier::JitOpt) optimizingWarm_.store(true);
   return out;
 }
@@ -143,11 +158,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::rebuild(const ProgramVersion &v,
     return nullptr;
   }
   const int64_t t0 = monoNs();
-  auto out = std::make_shared<ProgramVersion>();
-  out->path = v.path;
-  out->hash = v.hash;
-  out->prog = v.prog; // the same verified program: nothing is read, nothing renumbered
-  out->id = v.id;
+  std::shared_ptr<ProgramVersion> out = buildOf(v); // nothing is read, nothing renumbered
   out->baseVariant = v.variant;
   out->variant = nextVariant_.fetch_add(1);
   out->forces = forces;
@@ -181,11 +192,7 @@ std::shared_ptr<ProgramVersion> ProgramLoader::rebuild(const ProgramVersion &v,
   out->engine = std::move(made).value();
   out->buildNs = monoNs() - t0;
   if (kind == engines::EngineKind::Jit) {
-    out->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
-    out->groups = times.leaves;
-    out->groupsCompiled = times.leavesCompiled;
-    out->groupsQuick = times.leavesQuick;
-    if (times.leavesQuick) out->tier = EngineTier::JitQuick;
+    noteJitBuild(*out, times);
     if (!eo.trace) optimizingWarm_.store(true);
   }
   return out;
@@ -274,11 +281,7 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
   if (jitLock.owns_lock()) jitLock.unlock();
   v->buildNs = monoNs() - t0;
   if (spec.kind == engines::EngineKind::Jit) {
-    v->buildCpuNs = static_cast<int64_t>(times.cpuUs * 1000);
-    v->groups = times.leaves;
-    v->groupsCompiled = times.leavesCompiled;
-    v->groupsQuick = times.leavesQuick;
-    if (times.leavesQuick) v->tier = EngineTier::JitQuick;
+    noteJitBuild(*v, times);
     if (!eo.trace) optimizingWarm_.store(true);
   }
   {
