@@ -61,8 +61,12 @@ const char *const kDialectHelp = "dialect of PROGRAM: hnc8 | fanuc | iec (defaul
                                  "other names hnc8); this build has hnc8, fanuc and iec";
 
 int mainImpl(int argc, char **argv) {
-  CLI::App app{"ladderjit: run HNC-8 PLC programs (STL) in a reference interpreter or an LLVM "
-               "JIT",
+  CLI::App app{"ladderjit: CNC PLC programs in HNC-8 STL (.stl, plc.dit), FANUC 0i-D PMC "
+               "mnemonics (.pmc) and IEC 61131-3 IL of the Modicon Neza (.il), or their ladder "
+               "network JSON, checked, drawn as ladder and run in a reference interpreter, an LLVM "
+               "JIT or an AOT shared object; `serve` is the real-time runtime with a live ladder "
+               "view, and the HAL component ladderjit.so runs a compiled program in LinuxCNC "
+               "(docs/linuxcnc.md)",
                "ladderjit"};
   app.require_subcommand(1);
   // A value quoted in a parse error may hold any byte: control bytes as \xNN (ir/Diagnostics.h).
