@@ -22,7 +22,7 @@
 #define MFD_EXEC 0x0010U /* Linux 6.3: executable memfd even under vm.memfd_noexec=1 */
 #endif
 
-namespace lj::io {
+namespace lj::engines {
 
 namespace {
 
@@ -167,7 +167,7 @@ template <typename Fn> Fn symbol(void *handle, const char *name, std::string &mi
 
 } // namespace
 
-std::string sourceHash(std::string_view stl, const DitFile *dit) {
+std::string sourceHash(std::string_view stl, const formats::DitFile *dit) {
   if (dit) return dit->hash;
   std::string canon = "ladderjit-source 1\n[program]\n";
   for (size_t i = 0; i < stl.size(); ++i) {
@@ -175,12 +175,12 @@ std::string sourceHash(std::string_view stl, const DitFile *dit) {
     canon += stl[i];
   }
   if (!stl.empty() && canon.back() != '\n') canon += '\n';
-  return sha256Hash(canon);
+  return formats::sha256Hash(canon);
 }
 
-AotExpect aotExpectOf(const ProgramSource &src, int32_t plc2Nvalue) {
-  const DitFile *dit = src.dit ? &*src.dit : nullptr;
-  return {programHash(src.text, dit, plc2Nvalue), sourceHash(src.text, dit), plc2Nvalue};
+AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue) {
+  const formats::DitFile *dit = src.dit ? &*src.dit : nullptr;
+  return {formats::programHash(src.text, dit, plc2Nvalue), sourceHash(src.text, dit), plc2Nvalue};
 }
 
 std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,
@@ -247,4 +247,4 @@ std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect
   return std::make_unique<AotEngine>(handle, fd, e);
 }
 
-} // namespace lj::io
+} // namespace lj::engines

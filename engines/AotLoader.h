@@ -13,14 +13,14 @@
 #include <string_view>
 #include <utility>
 
-namespace lj::io {
+namespace lj::engines {
 
 /// The program hash a .so carries: formats/ProgramFile.h programHash.
 
 /// The program's identity without the nvalue: the container's hash line, or SHA-256 over
 /// `ladderjit-source 1\n[program]\n` and the STL text canonicalized as for programHash. Lets the
 /// loader tell "another program" from "this program with another plc2 nvalue".
-std::string sourceHash(std::string_view stl, const DitFile *dit);
+std::string sourceHash(std::string_view stl, const formats::DitFile *dit);
 
 /// What a caller expects a .so to be: the program hash, optionally the source hash and the
 /// nvalue it plans with (for the message when only the nvalue differs).
@@ -31,7 +31,7 @@ struct AotExpect {
   std::string source;      ///< empty: not known
   int32_t plc2Nvalue = -1; ///< < 0: not known
 };
-AotExpect aotExpectOf(const ProgramSource &src, int32_t plc2Nvalue);
+AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue);
 
 /// Load `path` if it is a ladderjit program signed by a key of `trust`, built for this ABI and
 /// state layout from the expected program. Every check runs on the bytes read once from the
@@ -40,4 +40,4 @@ AotExpect aotExpectOf(const ProgramSource &src, int32_t plc2Nvalue);
 std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,
                                 const TrustedKeys &trust, std::string &error);
 
-} // namespace lj::io
+} // namespace lj::engines

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <map>
 
-namespace lj::io {
+namespace lj::engines {
 
 namespace {
 
@@ -141,4 +141,4 @@ std::string verifySigned(std::string_view file, const TrustedKeys &trust, AotMet
   return {};
 }
 
-} // namespace lj::io
+} // namespace lj::engines

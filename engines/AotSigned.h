@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace lj::io {
+namespace lj::engines {
 
 /// What the trailer states about the image; everything the loader checks comes from here.
 struct AotMeta {
@@ -31,4 +31,4 @@ bool signImage(std::string &file, AotMeta meta, const SigningKey &key, std::stri
 /// are the image); else the reason, one line.
 std::string verifySigned(std::string_view file, const TrustedKeys &trust, AotMeta &meta);
 
-} // namespace lj::io
+} // namespace lj::engines

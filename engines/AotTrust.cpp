@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace lj::io {
+namespace lj::engines {
 
 struct SigningKey::Impl {
   EVP_PKEY *pkey = nullptr;
@@ -345,4 +345,4 @@ bool loadTrustedKeys(const std::vector<std::string> &files, TrustedKeys &keys, s
   return keys.addFile(pub, error);
 }
 
-} // namespace lj::io
+} // namespace lj::engines

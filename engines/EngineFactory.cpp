@@ -30,9 +30,9 @@ Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
   o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-aot-" +
              std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
   o.programHash = "sha256:" + llvm->programDigest(prog);
-  io::SigningKey ownKey;
-  io::TrustedKeys ownTrust;
-  const io::TrustedKeys *trust = opts.aotTrust;
+  engines::SigningKey ownKey;
+  engines::TrustedKeys ownTrust;
+  const engines::TrustedKeys *trust = opts.aotTrust;
   o.signingKey = opts.aotSigningKey;
   if (!o.signingKey || !trust) {
     if (!ownKey.generate(error)) return engineFailed(error);
@@ -41,7 +41,7 @@ Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
     trust = &ownTrust;
   }
   if (!llvm->compileSharedObject(prog, o, error)) return engineFailed(error);
-  std::unique_ptr<Engine> e = io::loadAot(o.output, {o.programHash}, *trust, error);
+  std::unique_ptr<Engine> e = engines::loadAot(o.output, {o.programHash}, *trust, error);
   std::remove(o.output.c_str());
   if (!e) return engineFailed(error);
   return e;
@@ -108,7 +108,7 @@ Result<std::unique_ptr<Engine>> makeEngine(const EngineSpec &spec, const Verifie
     if (!opts.aotExpect || !opts.aotTrust)
       return engineFailed("aot: loading " + spec.soPath +
                           " needs the expected program and the trusted keys");
-    e = io::loadAot(spec.soPath, *opts.aotExpect, *opts.aotTrust, error);
+    e = engines::loadAot(spec.soPath, *opts.aotExpect, *opts.aotTrust, error);
     break;
   }
   if (!e) return engineFailed(error);

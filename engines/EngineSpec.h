@@ -54,13 +54,13 @@ struct EngineOptions {
   jit::Session *session = nullptr;
   /// Aot with a path: the program (and nvalue) the .so must have been built from
   /// (engines/AotLoader.h aotExpectOf). Required.
-  std::optional<io::AotExpect> aotExpect;
+  std::optional<engines::AotExpect> aotExpect;
   /// Aot: the signers whose .so files load (docs/aot.md "Trust"). Required with a path; without
   /// one, the temp .so is signed with aotSigningKey, which this set must trust.
-  const io::TrustedKeys *aotTrust = nullptr;
+  const engines::TrustedKeys *aotTrust = nullptr;
   /// Aot without a path: the key that signs the temp .so. Null (and aotTrust null): a throwaway
   /// key pair made for this one build, trusted for this one load only.
-  const io::SigningKey *aotSigningKey = nullptr;
+  const engines::SigningKey *aotSigningKey = nullptr;
   /// Interp and Jit: contacts built as forced (ir/Forces.h, docs/serve.md "Forcing"). Aot
   /// refuses a non-empty set (a prebuilt .so cannot be changed).
   ContactForces forces{};

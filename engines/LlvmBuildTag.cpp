@@ -23,8 +23,8 @@ const char *llvmBuildTag() {
       std::to_string(kLlvmInterfaceVersion) + " gcc " + __VERSION__ + " sizes " +
       std::to_string(sizeof(VerifiedProgram)) + "/" + std::to_string(sizeof(jit::JitOptions)) +
       "/" + std::to_string(sizeof(jit::AotOptions)) + "/" +
-      std::to_string(sizeof(jit::CompileTimes)) + "/" + std::to_string(sizeof(io::SigningKey)) +
-      "/" + std::to_string(sizeof(Stmt));
+      std::to_string(sizeof(jit::CompileTimes)) + "/" +
+      std::to_string(sizeof(engines::SigningKey)) + "/" + std::to_string(sizeof(Stmt));
   return tag.c_str();
 }
 

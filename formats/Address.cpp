@@ -5,7 +5,7 @@
 #include <cctype>
 #include <cstring>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -287,4 +287,4 @@ std::string formatAddress(const CliAddress &addr) {
   return s;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -11,12 +11,12 @@
 #include <string>
 #include <string_view>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// One command-line address: a bit (`X1.0`, `T5.0`) or a whole element (`D5`, `T5`, `C3`).
 struct CliAddress {
   /// Area::None with a `profile`: the system-parameter byte at lj_state offset `index`
-  /// (TargetProfile::SystemParams; only parameter files name it, io::parseParams).
+  /// (TargetProfile::SystemParams; only parameter files name it, formats::parseParams).
   Area area = Area::None;
   int32_t index = 0; ///< element number (T/C: the timer/counter number, not its slot)
   int8_t bit = -1;   ///< bit number, -1 for the whole element
@@ -72,4 +72,4 @@ std::optional<Assignment> parseAssignment(std::string_view item, std::string &er
 std::optional<Assignment> parseProfileAssignment(const TargetProfile &tp, std::string_view item,
                                                  std::string &error);
 
-} // namespace lj::io
+} // namespace lj::formats

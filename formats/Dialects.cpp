@@ -15,7 +15,7 @@
 #include <array>
 #include <cctype>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -183,4 +183,4 @@ const Dialect *dialectOfJson(std::string_view text, std::string &error) {
   return d;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

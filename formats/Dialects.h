@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// One dialect of this build.
 struct Dialect {
@@ -58,4 +58,4 @@ const Dialect *dialectOfJson(std::string_view text, std::string &error);
 /// All dialect names this build has, "hnc8, ..." (for messages and --help).
 std::string knownDialects();
 
-} // namespace lj::io
+} // namespace lj::formats

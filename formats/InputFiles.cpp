@@ -12,7 +12,7 @@
 #include <cerrno>
 #include <cstring>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -291,4 +291,4 @@ bool readFile(const std::string &path, std::string &out, std::string &error, siz
   return true;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

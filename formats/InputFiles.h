@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// The assignments of one stimulus line, applied before the scan of `tick`, or (a line
 /// `@TICK nc.COMMAND key=value ...`) one command of the simulated NC (docs/simulated-nc.md).
@@ -65,4 +65,4 @@ inline constexpr size_t kMaxInputFileBytes = size_t{16} << 20;
 bool readFile(const std::string &path, std::string &out, std::string &error,
               size_t maxBytes = kMaxInputFileBytes);
 
-} // namespace lj::io
+} // namespace lj::formats

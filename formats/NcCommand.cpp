@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -187,4 +187,4 @@ std::optional<NcCommand> parseNcCommand(const std::vector<std::string_view> &ite
   return c;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

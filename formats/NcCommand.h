@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// What a scripted NC command does (grammar and effects: docs/simulated-nc.md).
 enum class NcCommandKind {
@@ -45,4 +45,4 @@ const char *ncCommandName(NcCommandKind kind);
 std::optional<NcCommand> parseNcCommand(const std::vector<std::string_view> &items,
                                         std::string &why);
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -18,7 +18,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace lj::io {
+namespace lj::formats {
 namespace {
 
 namespace fs = std::filesystem;
@@ -212,4 +212,4 @@ void installSignalCleanup() {
   });
 }
 
-} // namespace lj::io
+} // namespace lj::formats

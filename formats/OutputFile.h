@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// Whether `path` may be replaced by an output file: absent, or a regular file (lstat, so a
 /// symbolic link is refused). False with `error` ("'PATH' exists and is not a regular file (a
@@ -63,4 +63,4 @@ void unregisterTempPath(const std::string &path);
 void registerProcessGroup(const std::atomic<int> *pgid);
 void unregisterProcessGroup(const std::atomic<int> *pgid);
 
-} // namespace lj::io
+} // namespace lj::formats

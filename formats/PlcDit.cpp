@@ -6,7 +6,7 @@
 
 #include <array>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -373,4 +373,4 @@ bool parseSymbols(std::string_view text, const std::string &file, SymbolTable &t
   return true;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// First word of every container; the version follows it on the first line.
 inline constexpr std::string_view kDitMagic = "ladderjit-plc-dit";
@@ -65,4 +65,4 @@ std::string programForParser(const DitFile &dit);
 bool parseSymbols(std::string_view text, const std::string &file, SymbolTable &table,
                   std::string &error);
 
-} // namespace lj::io
+} // namespace lj::formats

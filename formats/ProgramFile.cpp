@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -183,4 +183,4 @@ std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {
   return programHash(src.text, src.dit ? &*src.dit : nullptr, plc2Nvalue);
 }
 
-} // namespace lj::io
+} // namespace lj::formats

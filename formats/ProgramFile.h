@@ -18,7 +18,7 @@ struct StlFromJson;
 struct Networks;
 } // namespace lj::ladder
 
-namespace lj::io {
+namespace lj::formats {
 
 /// PROGRAM as read.
 struct ProgramSource {
@@ -63,4 +63,4 @@ std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nv
 /// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (programHash).
 std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue);
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <iterator>
 
-namespace lj::io {
+namespace lj::formats {
 
 namespace {
 
@@ -136,4 +136,4 @@ nlohmann::ordered_json stateToJson(const lj_state &s, const TargetProfile &tp) {
   return j;
 }
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace lj::io {
+namespace lj::formats {
 
 /// The one way the project writes JSON text that may hold user bytes (paths, diagnostics
 /// quoting a file, plc.dit fields): a string that is not valid UTF-8 is written with U+FFFD
@@ -37,4 +37,4 @@ nlohmann::ordered_json stateToJson(const lj_state &s);
 /// upper range such as "T@9000"), and "mem_nonzero" the count of non-zero bytes of lj_state.mem.
 nlohmann::ordered_json stateToJson(const lj_state &s, const TargetProfile &tp);
 
-} // namespace lj::io
+} // namespace lj::formats

@@ -96,11 +96,11 @@ std::string firstDifference(const lj_state &a, const lj_state &b, const char *ca
   return d.o.str();
 }
 
-std::string firstCallDifference(const std::vector<test::HostCall> &a,
-                                const std::vector<test::HostCall> &b, const char *candName) {
+std::string firstCallDifference(const std::vector<hosts::HostCall> &a,
+                                const std::vector<hosts::HostCall> &b, const char *candName) {
   size_t i = 0;
   while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
-  auto show = [](const std::vector<test::HostCall> &v, size_t k) {
+  auto show = [](const std::vector<hosts::HostCall> &v, size_t k) {
     return k < v.size() ? v[k].str() : std::string("(no call)");
   };
   return "host call " + std::to_string(i) + ": interp=" + show(a, i) + ' ' + candName + '=' +
@@ -204,7 +204,7 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   // Two full states on the heap (each is ~40 KB), each with its own NC host of equal content.
   auto sa = std::make_unique<lj_state>();
   auto sb = std::make_unique<lj_state>();
-  test::TestHost ha(c.hostSeed), hb(c.hostSeed);
+  hosts::TestHost ha(c.hostSeed), hb(c.hostSeed);
   for (lj_state *s : {sa.get(), sb.get()}) {
     lj_state_reset(s);
     (s == sa.get() ? ha : hb).attach(*s);
@@ -254,7 +254,7 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
       else
         gen::applyWrites(*s, c.stim.writes[t]);
       s->now_ms = c.stim.nowMs[t];
-      io::writeSystemBits(*prog->profile, *s, t);
+      hosts::writeSystemBits(*prog->profile, *s, t);
     }
     fa = lj_tick(sa.get(), &ea);
     fb = lj_tick(sb.get(), &eb(t));

@@ -89,8 +89,8 @@ std::string firstTraceDifference(const VerifiedProgram &prog, const TraceLayout 
 
 /// The first host call where two call logs differ, as `host call 3: interp=event(5) -> 0
 /// jit=(no call)`.
-std::string firstCallDifference(const std::vector<test::HostCall> &ref,
-                                const std::vector<test::HostCall> &cand, const char *candName);
+std::string firstCallDifference(const std::vector<hosts::HostCall> &ref,
+                                const std::vector<hosts::HostCall> &cand, const char *candName);
 
 /// Delta-debug a failing case: drop chunks of lines (ddmin) while the program still verifies and
 /// the engines still disagree, then single lines, then cut ticks after the first difference,

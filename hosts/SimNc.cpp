@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-namespace lj::io {
+namespace lj::hosts {
 
 SimNcConfig::SimNcConfig() {
   for (auto &row : channelAxes) row.fill(-1);
@@ -262,17 +262,17 @@ void SimNc::afterTick(lj_state &s, uint64_t tick) {
   }
 }
 
-void SimNc::apply(const NcCommand &c) {
+void SimNc::apply(const formats::NcCommand &c) {
   int64_t saved = tick_;
   tick_ = tick_ + 1; // a command belongs to the tick about to run
   auto chanOk = [&] {
     if (c.ch >= 0 && c.ch < cfg_.channels) return true;
-    log(std::string("ignored nc.") + ncCommandName(c.kind) + ": no channel " +
+    log(std::string("ignored nc.") + formats::ncCommandName(c.kind) + ": no channel " +
         std::to_string(c.ch));
     return false;
   };
   switch (c.kind) {
-  case NcCommandKind::MCode:
+  case formats::NcCommandKind::MCode:
     if (chanOk()) {
       NcChannel &ch = m_->ch[c.ch];
       auto code = static_cast<int16_t>(c.code);
@@ -287,7 +287,7 @@ void SimNc::apply(const NcCommand &c) {
         ch.mqueue.push_back(code);
     }
     break;
-  case NcCommandKind::TCode:
+  case formats::NcCommandKind::TCode:
     if (chanOk()) {
       NcChannel &ch = m_->ch[c.ch];
       log("tcode " + chName(c.ch) + " t" + std::to_string(c.code) + " requested");
@@ -298,7 +298,7 @@ void SimNc::apply(const NcCommand &c) {
         ch.tqueue.push_back(static_cast<int16_t>(c.code));
     }
     break;
-  case NcCommandKind::SCode:
+  case formats::NcCommandKind::SCode:
     if (c.code < 0 || c.code > 3)
       log("ignored nc.scode: no spindle " + std::to_string(c.code));
     else if (chanOk()) {
@@ -308,10 +308,10 @@ void SimNc::apply(const NcCommand &c) {
           std::to_string(c.ivalue) + " requested");
     }
     break;
-  case NcCommandKind::Reset:
+  case formats::NcCommandKind::Reset:
     if (chanOk()) resetChannel(c.ch, "panel");
     break;
-  case NcCommandKind::End:
+  case formats::NcCommandKind::End:
     if (chanOk()) {
       NcChannel &ch = m_->ch[c.ch];
       ch.running = ch.held = false;
@@ -319,7 +319,7 @@ void SimNc::apply(const NcCommand &c) {
       log("program " + chName(c.ch) + " end");
     }
     break;
-  case NcCommandKind::Var: {
+  case formats::NcCommandKind::Var: {
     NcVar v;
     v.isFloat = varIsFloat(c.index);
     v.i = c.ivalue;
@@ -331,7 +331,7 @@ void SimNc::apply(const NcCommand &c) {
           std::to_string(c.offset));
     break;
   }
-  case NcCommandKind::Temp:
+  case formats::NcCommandKind::Temp:
     if (c.index < 0 || c.index >= ncw::kSensors) {
       log("ignored nc.temp: no sensor " + std::to_string(c.index));
       break;
@@ -339,19 +339,19 @@ void SimNc::apply(const NcCommand &c) {
     m_->tempSet[c.index] = true;
     m_->temp[c.index] = static_cast<int32_t>(c.ivalue);
     break;
-  case NcCommandKind::Tool:
+  case formats::NcCommandKind::Tool:
     if (c.index >= 1 && c.index <= cfg_.pockets)
       m_->pocket[c.index] = static_cast<int32_t>(c.ivalue);
     else
       log("ignored nc.tool: no pocket " + std::to_string(c.index));
     break;
-  case NcCommandKind::Mpg:
+  case formats::NcCommandKind::Mpg:
     if (c.index >= 0 && c.index < ncw::kMpgs)
       m_->mpgPending[c.index] += c.ivalue;
     else
       log("ignored nc.mpg: no handwheel " + std::to_string(c.index));
     break;
-  case NcCommandKind::ZPulse:
+  case formats::NcCommandKind::ZPulse:
     if (c.index >= 0 && c.index < cfg_.axes)
       m_->ax[c.index].zpulse = true;
     else
@@ -371,4 +371,4 @@ int32_t SimNc::temperature(int sensor) const {
   return sensor >= 0 && sensor < ncw::kSensors ? m_->temp[sensor] : 0;
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

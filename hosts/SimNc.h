@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace lj::io {
+namespace lj::hosts {
 
 /// Sizes, timing (in ticks) and the fixed machine layout of the simulated NC.
 struct SimNcConfig {
@@ -139,7 +139,7 @@ public:
   const lj_host *host() const { return &host_; }
   /// Apply a scripted command (before beforeTick of the tick it belongs to). Commands outside
   /// the configured sizes are ignored and logged as "ignored ..." events.
-  void apply(const NcCommand &c);
+  void apply(const formats::NcCommand &c);
   /// Leave F or G word `word` to the host: the NC never writes it (a stimulus file or --set
   /// drives it, so older stimulus files that play the NC keep working). Survives powerUp.
   void leaveWord(bool isF, int word);
@@ -206,4 +206,4 @@ public:
   ~SimNc();
 };
 
-} // namespace lj::io
+} // namespace lj::hosts

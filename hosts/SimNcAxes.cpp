@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-namespace lj::io {
+namespace lj::hosts {
 
 namespace {
 
@@ -247,4 +247,4 @@ void axesPublish(SimNc::Model &m, const SimNcConfig &cfg, lj_state &s) {
   }
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -7,7 +7,7 @@
 #include <initializer_list>
 #include <limits>
 
-namespace lj::io {
+namespace lj::hosts {
 
 /// The C trampolines: ctx is the SimNc. Every one appends to the call log.
 struct SimNcHost {
@@ -251,4 +251,4 @@ int32_t SimNc::daValue(int32_t rpm, int32_t gear, int32_t pbase) const {
   return static_cast<int32_t>(std::clamp<int64_t>(motor * 10000 / p[0], -10000, 10000));
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace lj::io {
+namespace lj::hosts {
 
 namespace {
 
@@ -134,4 +134,4 @@ bool SimNc::operator==(const SimNc &o) const {
   return *m_ == *o.m_ && vars_ == o.vars_ && events_ == o.events_ && calls_ == o.calls_;
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-namespace lj::io {
+namespace lj::hosts {
 
 /// F/G word numbers (hnc8-cnc-interface.md 1.1-1.5).
 namespace ncw {
@@ -121,4 +121,4 @@ bool channelZSearch(const SimNc::Model &m, const SimNcConfig &cfg, int c);
 /// Channel owning axis a, or -1.
 int axisChannel(const SimNcConfig &cfg, int a);
 
-} // namespace lj::io
+} // namespace lj::hosts

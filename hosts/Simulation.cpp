@@ -2,25 +2,25 @@
 #include "hosts/Simulation.h"
 #include "hosts/SystemBits.h"
 
-namespace lj::io {
+namespace lj::hosts {
 
 namespace {
 
-void apply(lj_state &s, const std::vector<Assignment> &list) {
-  for (const Assignment &a : list) writeAddress(s, a.addr, a.value);
+void apply(lj_state &s, const std::vector<formats::Assignment> &list) {
+  for (const formats::Assignment &a : list) writeAddress(s, a.addr, a.value);
 }
 
 // F/G words the user drives: the NC leaves them alone, so stimulus files written before the
 // simulated NC existed (they play the NC by writing F) keep their meaning.
 void leaveUserWords(SimNc &nc, const SimOptions &opts) {
-  auto leave = [&](const std::vector<Assignment> &list) {
-    for (const Assignment &a : list)
+  auto leave = [&](const std::vector<formats::Assignment> &list) {
+    for (const formats::Assignment &a : list)
       if (a.addr.area == Area::NcStatus || a.addr.area == Area::NcControl)
         nc.leaveWord(a.addr.area == Area::NcStatus, a.addr.index);
   };
   leave(opts.params);
   leave(opts.sets);
-  for (const StimulusEvent &ev : opts.stimulus.events) leave(ev.sets);
+  for (const formats::StimulusEvent &ev : opts.stimulus.events) leave(ev.sets);
 }
 
 } // namespace
@@ -43,7 +43,7 @@ uint32_t Simulation::powerUp() {
 }
 
 uint32_t Simulation::step(WatchRow &row) {
-  const std::vector<StimulusEvent> &events = opts_.stimulus.events;
+  const std::vector<formats::StimulusEvent> &events = opts_.stimulus.events;
   // Events are sorted by tick (parseStimulus enforces it); all of this tick's, in file order:
   // first every assignment, then every NC command.
   size_t first = nextEvent_;
@@ -51,7 +51,7 @@ uint32_t Simulation::step(WatchRow &row) {
     apply(s_, events[nextEvent_++].sets);
   if (nc_) {
     for (size_t i = first; i < nextEvent_; ++i)
-      for (const NcCommand &c : events[i].nc) nc_->apply(c);
+      for (const formats::NcCommand &c : events[i].nc) nc_->apply(c);
     nc_->beforeTick(s_, tick_);
   }
   s_.now_ms = tick_ * opts_.periodMs;
@@ -61,7 +61,8 @@ uint32_t Simulation::step(WatchRow &row) {
   row.tick = tick_;
   row.fault = fault;
   row.values.resize(opts_.watch.size());
-  for (size_t i = 0; i < opts_.watch.size(); ++i) row.values[i] = readAddress(s_, opts_.watch[i]);
+  for (size_t i = 0; i < opts_.watch.size(); ++i)
+    row.values[i] = formats::readAddress(s_, opts_.watch[i]);
   ++tick_;
   return fault;
 }
@@ -90,4 +91,4 @@ const char *faultName(uint32_t fault) {
   }
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -13,18 +13,18 @@
 #include <string>
 #include <vector>
 
-namespace lj::io {
+namespace lj::hosts {
 
 /// What to simulate.
 struct SimOptions {
-  uint64_t ticks = 1;                     ///< ticks to run, numbered 0..ticks-1
-  uint64_t periodMs = 1;                  ///< PLC1 period; now_ms = tick * periodMs
-  uint64_t maxBackwardSteps = 1000000;    ///< watchdog limit per tick (DIALECT.md 4)
-  std::vector<Assignment> params;         ///< `--params` file, applied first (P is configuration)
-  std::vector<Assignment> sets;           ///< `--set`, applied after params, before init
-  Stimulus stimulus;                      ///< applied before the scan of each event's tick
-  std::vector<CliAddress> watch;          ///< read after every tick
-  const TargetProfile *profile = nullptr; ///< whose system bits are written before each tick
+  uint64_t ticks = 1;                      ///< ticks to run, numbered 0..ticks-1
+  uint64_t periodMs = 1;                   ///< PLC1 period; now_ms = tick * periodMs
+  uint64_t maxBackwardSteps = 1000000;     ///< watchdog limit per tick (DIALECT.md 4)
+  std::vector<formats::Assignment> params; ///< `--params` file, applied first (P is configuration)
+  std::vector<formats::Assignment> sets;   ///< `--set`, applied after params, before init
+  formats::Stimulus stimulus;              ///< applied before the scan of each event's tick
+  std::vector<formats::CliAddress> watch;  ///< read after every tick
+  const TargetProfile *profile = nullptr;  ///< whose system bits are written before each tick
 };
 
 /// One watch row: the tick number, the fault of that tick and the watched values in order.
@@ -83,4 +83,4 @@ SimResult simulate(const lj_entries &entries, lj_state &s, const SimOptions &opt
 /// Name of a fault code for messages ("watchdog").
 const char *faultName(uint32_t fault);
 
-} // namespace lj::io
+} // namespace lj::hosts

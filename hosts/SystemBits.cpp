@@ -1,7 +1,7 @@
 // writeSystemBits (SystemBits.h).
 #include "hosts/SystemBits.h"
 
-namespace lj::io {
+namespace lj::hosts {
 
 void writeSystemBits(const TargetProfile &tp, lj_state &s, uint64_t tick) {
   auto *bytes = reinterpret_cast<unsigned char *>(&s);
@@ -27,4 +27,4 @@ void writeSystemBits(const TargetProfile &tp, lj_state &s, uint64_t tick) {
   }
 }
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -8,9 +8,9 @@
 
 #include <cstdint>
 
-namespace lj::io {
+namespace lj::hosts {
 
 /// Write `tp`'s system bits into `s` for tick number `tick` at s.now_ms (set now_ms first).
 void writeSystemBits(const TargetProfile &tp, lj_state &s, uint64_t tick);
 
-} // namespace lj::io
+} // namespace lj::hosts

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace lj::test {
+namespace lj::hosts {
 
 namespace {
 
@@ -211,4 +211,4 @@ double TestHost::varValue(int32_t type, int32_t offset) const {
                            : static_cast<double>(static_cast<int64_t>(r % 2000001) - 1000000);
 }
 
-} // namespace lj::test
+} // namespace lj::hosts

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace lj::test {
+namespace lj::hosts {
 
 /// One callback invocation as the host saw it: the callback name (the lj_host member), its
 /// value arguments, the values it returned through pointers and its return value (0 for void).
@@ -96,4 +96,4 @@ private:
   std::vector<HostCall> calls_;
 };
 
-} // namespace lj::test
+} // namespace lj::hosts

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace lj::io {
+namespace lj::engines {
 class SigningKey;
 }
 
@@ -21,10 +21,11 @@ struct CompileTimes; // jit/Jit.h
 struct AotOptions {
   std::string output;      ///< path of the .so to write (replaced atomically)
   std::string programHash; ///< what ljprog_hash() returns: "sha256:" + 64 lowercase hex digits
-  std::string sourceHash;  ///< the program without the nvalue (io::sourceHash); empty = programHash
-  int32_t plc2Nvalue = 0;  ///< recorded in the signed trailer (the slicing is in `prog`)
+  std::string
+      sourceHash; ///< the program without the nvalue (engines::sourceHash); empty = programHash
+  int32_t plc2Nvalue = 0; ///< recorded in the signed trailer (the slicing is in `prog`)
   /// Signs the trailer (docs/aot.md "Trust"); required. Not owned.
-  const io::SigningKey *signingKey = nullptr;
+  const engines::SigningKey *signingKey = nullptr;
   /// false: the host CPU and its features (fastest, may not run elsewhere); true: the portable
   /// baseline of the architecture (x86-64 without extensions).
   bool genericCpu = false;

@@ -102,8 +102,8 @@ std::string ControlSocket::answer(const Handler &h, std::string_view line) {
     resp = failure("internal error");
   }
   try {
-    return io::dumpJson(resp) + "\n"; // user bytes that are not UTF-8 become U+FFFD
-  } catch (...) {                     // bad_alloc: still an answer, never an abort
+    return formats::dumpJson(resp) + "\n"; // user bytes that are not UTF-8 become U+FFFD
+  } catch (...) {                          // bad_alloc: still an answer, never an abort
     return R"({"ok":false,"error":"internal error"})"
            "\n";
   }
@@ -203,7 +203,7 @@ void ControlSocket::acceptLoop() {
                         (::geteuid() == 0 ? std::string("root")
                                           : "uid " + std::to_string(::geteuid()) + " and root") +
                         ")";
-      writeAll(fd, io::dumpJson(failure(msg)) + "\n");
+      writeAll(fd, formats::dumpJson(failure(msg)) + "\n");
       ::close(fd);
       logLine("control: connection refused: " + msg);
       continue;
@@ -271,7 +271,7 @@ void ControlSocket::serveClient(Client *c) {
       if (partial) {
         std::string msg = "request not complete within " +
                           std::to_string(opt_.requestTimeout.count()) + " ms of its first byte";
-        writeAll(fd, io::dumpJson(failure(msg)) + "\n");
+        writeAll(fd, formats::dumpJson(failure(msg)) + "\n");
         logLine("control: connection closed: " + msg);
       }
       break; // idle: closed quietly (a client reconnects per request)
@@ -336,7 +336,7 @@ bool controlRequest(const std::string &path, const nlohmann::json &request,
     ::close(fd);
     return false;
   }
-  if (!writeAll(fd, io::dumpJson(request) + "\n")) {
+  if (!writeAll(fd, formats::dumpJson(request) + "\n")) {
     error = "cannot send to '" + path + "': " + std::strerror(errno);
     ::close(fd);
     return false;

@@ -79,7 +79,7 @@ FileMark markOf(const std::string &path) {
   FileMark m;
   struct stat st;
   std::string text, err;
-  if (::stat(path.c_str(), &st) != 0 || !io::readFile(path, text, err)) return m;
+  if (::stat(path.c_str(), &st) != 0 || !formats::readFile(path, text, err)) return m;
   m.ok = true;
   m.size = st.st_size;
   m.ino = st.st_ino;
@@ -89,7 +89,7 @@ FileMark markOf(const std::string &path) {
   int64_t ms = (int64_t{now.tv_sec} - st.st_mtim.tv_sec) * 1000 +
                (int64_t{now.tv_nsec} - st.st_mtim.tv_nsec) / 1000000;
   m.age = std::chrono::milliseconds(ms < 0 ? 0 : ms);
-  m.hash = io::sha256Hash(text);
+  m.hash = formats::sha256Hash(text);
   return m;
 }
 
@@ -139,26 +139,27 @@ bool strings(const json &req, const char *key, std::vector<std::string> &out, st
   return true;
 }
 
-std::string formatAssignment(const io::Assignment &a) {
+std::string formatAssignment(const formats::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
 // A write or lock item in the running program's dialect: parsed and checked for writability
 // (formats/Address.h, formats/Dialects.h).
-std::optional<io::Assignment> writable(const io::Dialect &d, const std::string &item,
-                                       std::string &err) {
-  std::optional<io::Assignment> a = d.parseAssignment(item, err);
-  if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;
+std::optional<formats::Assignment> writable(const formats::Dialect &d, const std::string &item,
+                                            std::string &err) {
+  std::optional<formats::Assignment> a = d.parseAssignment(item, err);
+  if (a && !formats::checkWritable(a->addr, a->value, err)) return std::nullopt;
   return a;
 }
 
 } // namespace
 
-const io::Dialect &Controller::dialect() const {
+const formats::Dialect &Controller::dialect() const {
   std::shared_ptr<ProgramVersion> cur = exec_.current();
-  const io::Dialect *d =
-      cur && cur->prog && cur->prog->profile ? io::dialectNamed(cur->prog->profile->name) : nullptr;
-  return d ? *d : io::defaultDialect();
+  const formats::Dialect *d = cur && cur->prog && cur->prog->profile
+                                  ? formats::dialectNamed(cur->prog->profile->name)
+                                  : nullptr;
+  return d ? *d : formats::defaultDialect();
 }
 
 Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,
@@ -458,9 +459,9 @@ json Controller::doRead(const json &req) {
   std::vector<std::string> items;
   std::string err;
   if (!strings(req, "addrs", items, err)) return fail(err);
-  std::vector<io::CliAddress> addrs;
+  std::vector<formats::CliAddress> addrs;
   for (const std::string &t : items) {
-    std::optional<io::CliAddress> a = dialect().parseAddress(t, err);
+    std::optional<formats::CliAddress> a = dialect().parseAddress(t, err);
     if (!a) return fail(err);
     addrs.push_back(*a);
   }
@@ -468,7 +469,7 @@ json Controller::doRead(const json &req) {
   uint64_t tick = 0;
   if (!ex_.snapshot(*s, &tick)) return fail("no state published yet");
   json values = json::array();
-  for (const io::CliAddress &a : addrs) values.push_back(io::readAddress(*s, a));
+  for (const formats::CliAddress &a : addrs) values.push_back(formats::readAddress(*s, a));
   return {{"ok", true}, {"tick", tick}, {"values", values}};
 }
 
@@ -476,9 +477,9 @@ json Controller::doWrite(const json &req) {
   std::vector<std::string> items;
   std::string err;
   if (!strings(req, "writes", items, err)) return fail(err);
-  std::vector<io::Assignment> writes;
+  std::vector<formats::Assignment> writes;
   for (const std::string &t : items) {
-    std::optional<io::Assignment> a = writable(dialect(), t, err);
+    std::optional<formats::Assignment> a = writable(dialect(), t, err);
     if (!a) return fail(err);
     writes.push_back(*a);
   }
@@ -557,17 +558,18 @@ json Controller::doLock(const json &req) {
   if (cmd == "lock") {
     if (!req.contains("item") || !req["item"].is_string())
       return fail("lock needs \"item\" ADDR=VALUE");
-    std::optional<io::Assignment> a = writable(dialect(), req["item"].get<std::string>(), err);
+    std::optional<formats::Assignment> a = writable(dialect(), req["item"].get<std::string>(), err);
     if (!a) return fail(err);
     ex_.lock(*a);
   } else if (cmd == "unlock") {
     if (!req.contains("addr") || !req["addr"].is_string()) return fail("unlock needs \"addr\"");
-    std::optional<io::CliAddress> a = dialect().parseAddress(req["addr"].get<std::string>(), err);
+    std::optional<formats::CliAddress> a =
+        dialect().parseAddress(req["addr"].get<std::string>(), err);
     if (!a) return fail(err);
     if (!ex_.unlock(*a)) return fail("'" + a->text + "' is not locked");
   }
   json list = json::array();
-  for (const io::Assignment &a : ex_.locks()) list.push_back(formatAssignment(a));
+  for (const formats::Assignment &a : ex_.locks()) list.push_back(formatAssignment(a));
   return {{"ok", true}, {"locks", list}};
 }
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace lj::io {
+namespace lj::formats {
 struct Dialect;
 }
 
@@ -95,7 +95,7 @@ public:
 
 private:
   /// The running program's dialect: the syntax of read / write / force / lock addresses.
-  const io::Dialect &dialect() const;
+  const formats::Dialect &dialect() const;
   nlohmann::json doRead(const nlohmann::json &req);
   nlohmann::json doWrite(const nlohmann::json &req);
   nlohmann::json doForce(const nlohmann::json &req);

@@ -26,7 +26,7 @@ void Exchange::applyPending(lj_state &s) {
   if (g.owns_lock() && !pending_.empty()) {
     uint64_t last = 0;
     for (const auto &[seq, writes] : pending_) {
-      for (const io::Assignment &w : writes) io::writeAddress(s, w.addr, w.value);
+      for (const formats::Assignment &w : writes) formats::writeAddress(s, w.addr, w.value);
       last = seq;
     }
     pending_.clear();      // keeps its capacity: no allocation on the scan thread next time
@@ -45,7 +45,7 @@ void Exchange::applyLocks(lj_state &s) {
       scanLocksVersion_ = locksVersion_.load(std::memory_order_relaxed);
     }
   }
-  for (const io::Assignment &a : scanLocks_) io::writeAddress(s, a.addr, a.value);
+  for (const formats::Assignment &a : scanLocks_) formats::writeAddress(s, a.addr, a.value);
 }
 
 void Exchange::publish(const lj_state &s, uint64_t tick) {
@@ -89,7 +89,7 @@ uint64_t Exchange::lastTick() const {
   return t;
 }
 
-uint64_t Exchange::post(std::vector<io::Assignment> writes) {
+uint64_t Exchange::post(std::vector<formats::Assignment> writes) {
   std::lock_guard<std::mutex> g(postMu_);
   uint64_t seq = nextSeq_++;
   pending_.emplace_back(seq, std::move(writes));
@@ -107,15 +107,15 @@ bool Exchange::waitApplied(uint64_t seq, std::chrono::milliseconds timeout) cons
 }
 
 namespace {
-bool sameAddress(const io::CliAddress &a, const io::CliAddress &b) {
+bool sameAddress(const formats::CliAddress &a, const formats::CliAddress &b) {
   return a.area == b.area && a.index == b.index && a.bit == b.bit;
 }
 } // namespace
 
-void Exchange::lock(const io::Assignment &a) {
+void Exchange::lock(const formats::Assignment &a) {
   std::lock_guard<std::mutex> g(lockMu_);
   bool replaced = false;
-  for (io::Assignment &l : locks_)
+  for (formats::Assignment &l : locks_)
     if (sameAddress(l.addr, a.addr)) {
       l = a;
       replaced = true;
@@ -124,16 +124,16 @@ void Exchange::lock(const io::Assignment &a) {
   locksVersion_.fetch_add(1, std::memory_order_release);
 }
 
-bool Exchange::unlock(const io::CliAddress &addr) {
+bool Exchange::unlock(const formats::CliAddress &addr) {
   std::lock_guard<std::mutex> g(lockMu_);
   size_t before = locks_.size();
-  std::erase_if(locks_, [&](const io::Assignment &l) { return sameAddress(l.addr, addr); });
+  std::erase_if(locks_, [&](const formats::Assignment &l) { return sameAddress(l.addr, addr); });
   if (locks_.size() == before) return false;
   locksVersion_.fetch_add(1, std::memory_order_release);
   return true;
 }
 
-std::vector<io::Assignment> Exchange::locks() const {
+std::vector<formats::Assignment> Exchange::locks() const {
   std::lock_guard<std::mutex> g(lockMu_);
   return locks_;
 }

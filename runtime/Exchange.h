@@ -40,8 +40,8 @@ public:
   /// while nothing has been published yet. `tick`, when given, receives its tick number.
   bool snapshot(lj_state &out, uint64_t *tick = nullptr) const;
   /// Queue writes to be applied together at the start of the next tick; returns their sequence
-  /// number (> 0) for waitApplied. Callers check the addresses (io::checkWritable) first.
-  uint64_t post(std::vector<io::Assignment> writes);
+  /// number (> 0) for waitApplied. Callers check the addresses (formats::checkWritable) first.
+  uint64_t post(std::vector<formats::Assignment> writes);
   /// Wait until the writes of `seq` have been applied and the tick that applied them has been
   /// published (a snapshot() now shows them), true; false when `timeout` passed first.
   bool waitApplied(uint64_t seq, std::chrono::milliseconds timeout) const;
@@ -53,11 +53,11 @@ public:
 
   /// Lock `a.addr` at `a.value` (replaces an existing lock on the same address). The lock is
   /// in force from the next tick on.
-  void lock(const io::Assignment &a);
+  void lock(const formats::Assignment &a);
   /// Remove the lock on `addr`; false when there was none.
-  bool unlock(const io::CliAddress &addr);
+  bool unlock(const formats::CliAddress &addr);
   /// The current lock list, in the order the locks were set.
-  std::vector<io::Assignment> locks() const;
+  std::vector<formats::Assignment> locks() const;
 
 private:
   struct Buffer; // one seqlocked copy of the state
@@ -67,15 +67,15 @@ private:
   std::atomic<uint64_t> version_{0};
 
   mutable std::mutex postMu_; // clients only; the scan thread try_locks
-  std::vector<std::pair<uint64_t, std::vector<io::Assignment>>> pending_;
+  std::vector<std::pair<uint64_t, std::vector<formats::Assignment>>> pending_;
   uint64_t nextSeq_ = 1;
   std::atomic<uint64_t> applied_{0};
   uint64_t appliedInTick_ = 0; // scan thread: last seq applied, not yet published
 
   mutable std::mutex lockMu_; // clients only; the scan thread try_locks
-  std::vector<io::Assignment> locks_;
+  std::vector<formats::Assignment> locks_;
   std::atomic<uint64_t> locksVersion_{0};
-  std::vector<io::Assignment> scanLocks_; // the scan thread's copy
+  std::vector<formats::Assignment> scanLocks_; // the scan thread's copy
   uint64_t scanLocksVersion_ = 0;
 };
 

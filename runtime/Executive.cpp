@@ -121,7 +121,7 @@ bool Executive::start(std::shared_ptr<ProgramVersion> initial, std::string &erro
     lj_state &s = *state_;
     lj_state_reset(&s);
     s.max_backward_steps = opts_.maxBackwardSteps;
-    for (const io::Assignment &a : opts_.powerUp) io::writeAddress(s, a.addr, a.value);
+    for (const formats::Assignment &a : opts_.powerUp) formats::writeAddress(s, a.addr, a.value);
     for (StateHook &h : startHooks_) h(s);
     ex_.applyPending(s);
     s.now_ms = 0;
@@ -273,7 +273,7 @@ void Executive::tickOnce(uint64_t tick) {
   takeSwap(tick); // init of a new version sees this tick's inputs and now_ms
   takeTierUp(tick);
   // The target's system bits (FANUC R9091 clocks, R9015 first scan), as `run` writes them.
-  if (cur_->prog && cur_->prog->profile) io::writeSystemBits(*cur_->prog->profile, s, tick);
+  if (cur_->prog && cur_->prog->profile) hosts::writeSystemBits(*cur_->prog->profile, s, tick);
   if (lj_tick(&s, &cur_->engine->entries()) != LJ_FAULT_NONE) scanStats_.faultTicks++;
   for (IoBinding *io : io_) io->afterTick(s, tick);
   ex_.applyLocks(s);

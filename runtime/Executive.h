@@ -33,7 +33,7 @@ namespace lj::rt {
 /// engines (ProgramLoader::buildTier, Executive::tierUp).
 struct ProgramVersion {
   std::string path; ///< PROGRAM file it came from
-  std::string hash; ///< io::sha256Hash of the file's bytes (`sha256:...`)
+  std::string hash; ///< formats::sha256Hash of the file's bytes (`sha256:...`)
   std::string so;   ///< the AOT .so the engine came from; empty for jit / interp
   std::shared_ptr<VerifiedProgram> prog;
   /// A traced build's power-flow trace (ir/Trace.h), null when untraced; outlives `engine`.
@@ -66,12 +66,12 @@ public:
 };
 
 struct ExecutiveOptions {
-  uint64_t periodNs = 1000000;         ///< PLC1 period
-  uint64_t maxBackwardSteps = 1000000; ///< watchdog limit per tick (DIALECT.md 4)
-  int rtPriority = -1;                 ///< SCHED_FIFO priority, -1 = leave the policy alone
-  int cpu = -1;                        ///< pin the scan thread to this CPU, -1 = no pinning
-  uint64_t maxTicks = 0;               ///< stop after this many ticks, 0 = until requestStop
-  std::vector<io::Assignment> powerUp; ///< written after the reset, before the start hooks
+  uint64_t periodNs = 1000000;              ///< PLC1 period
+  uint64_t maxBackwardSteps = 1000000;      ///< watchdog limit per tick (DIALECT.md 4)
+  int rtPriority = -1;                      ///< SCHED_FIFO priority, -1 = leave the policy alone
+  int cpu = -1;                             ///< pin the scan thread to this CPU, -1 = no pinning
+  uint64_t maxTicks = 0;                    ///< stop after this many ticks, 0 = until requestStop
+  std::vector<formats::Assignment> powerUp; ///< written after the reset, before the start hooks
   /// For the statistics only (TickStats): CLOCK_MONOTONIC ns of what serve calls its start (the
   /// start of main) and of the program being ready (read and verified); 0 = start() / unknown.
   int64_t startNs = 0, readyNs = 0;

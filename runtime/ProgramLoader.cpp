@@ -87,15 +87,14 @@ void noteJitBuild(ProgramVersion &v, const jit::CompileTimes &times) {
 
 std::shared_ptr<ProgramVersion>
 ProgramLoader::load(const std::string &path, const ContactForces &forces, std::string &error,
-                    std::optional<io::DitFile> *ditOut, const std::string &so,
+                    std::optional<formats::DitFile> *ditOut, const std::string &so,
                     std::vector<std::string> *dropped, int64_t *readyNs, bool interpreted) {
   return loadAs(interpreted, path, forces, error, ditOut, so, dropped, readyNs);
 }
 
-std::shared_ptr<ProgramVersion> ProgramLoader::loadInterpreted(const std::string &path,
-                                                               std::string &error,
-                                                               std::optional<io::DitFile> *ditOut,
-                                                               int64_t *readyNs) {
+std::shared_ptr<ProgramVersion>
+ProgramLoader::loadInterpreted(const std::string &path, std::string &error,
+                               std::optional<formats::DitFile> *ditOut, int64_t *readyNs) {
   return loadAs(true, path, {}, error, ditOut, {}, nullptr, readyNs);
 }
 
@@ -200,8 +199,8 @@ std::shared_ptr<ProgramVersion> ProgramLoader::rebuild(const ProgramVersion &v,
 
 std::shared_ptr<ProgramVersion>
 ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactForces &forces,
-                      std::string &error, std::optional<io::DitFile> *ditOut, const std::string &so,
-                      std::vector<std::string> *dropped, int64_t *readyNs) {
+                      std::string &error, std::optional<formats::DitFile> *ditOut,
+                      const std::string &so, std::vector<std::string> *dropped, int64_t *readyNs) {
   const int64_t t0 = monoNs();
   if (interpreted && aot()) {
     error = "an AOT server runs its .so from the first tick (no interpreter-first tiering)";
@@ -215,15 +214,16 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     error = "the AOT engine needs a .so built from '" + path + "'";
     return nullptr;
   }
-  io::ProgramSource src;
-  if (!io::readProgramFile(path, src, error, dialect_)) return nullptr;
+  formats::ProgramSource src;
+  if (!formats::readProgramFile(path, src, error, dialect_)) return nullptr;
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
   v->hash = src.fileHash;
   const bool nvalueGiven = plc2Nvalue_ >= 0;
-  const int32_t nvalue = io::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
+  const int32_t nvalue =
+      formats::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
   std::string diagnostics;
-  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diagnostics);
+  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diagnostics);
   if (!prog) {
     error = diagnostics;
     while (!error.empty() && error.back() == '\n') error.pop_back();
@@ -267,7 +267,7 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
   // AOT: the loader checks the signer, ABI, state size, ELF and that `so` was built from this
   // program with this nvalue; a mismatch leaves the running version alone (the caller reports it).
   if (aot()) {
-    eo.aotExpect = io::aotExpectOf(src, nvalue);
+    eo.aotExpect = engines::aotExpectOf(src, nvalue);
     eo.aotTrust = &aotTrust_;
   }
   Result<std::unique_ptr<Engine>> made = engines::makeEngine(spec, *v->prog, eo);

@@ -52,7 +52,7 @@ public:
   /// force whose id is not a contact refuses the load). `readyNs`: see loadInterpreted.
   std::shared_ptr<ProgramVersion> load(const std::string &path, const ContactForces &forces,
                                        std::string &error,
-                                       std::optional<io::DitFile> *dit = nullptr,
+                                       std::optional<formats::DitFile> *dit = nullptr,
                                        const std::string &so = {},
                                        std::vector<std::string> *dropped = nullptr,
                                        int64_t *readyNs = nullptr, bool interpreted = false);
@@ -60,7 +60,7 @@ public:
   /// the first version of interpreter-first tiering (docs/serve.md "Tiering"), ready as soon as
   /// the program is verified. `readyNs`, when given, receives CLOCK_MONOTONIC at that moment.
   std::shared_ptr<ProgramVersion> loadInterpreted(const std::string &path, std::string &error,
-                                                  std::optional<io::DitFile> *dit = nullptr,
+                                                  std::optional<formats::DitFile> *dit = nullptr,
                                                   int64_t *readyNs = nullptr);
   /// Another build of `v`'s program (the same VerifiedProgram, forces and id) on the JIT tier
   /// `tier` (JitFast or JitOpt), in the loader's session of that tier. For the background
@@ -85,17 +85,18 @@ public:
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }
   /// The keys whose .so files engine "aot" accepts (docs/aot.md "Trust"); none = refuse all.
-  void setAotTrust(io::TrustedKeys keys) { aotTrust_ = std::move(keys); }
+  void setAotTrust(engines::TrustedKeys keys) { aotTrust_ = std::move(keys); }
 
 private:
   std::shared_ptr<ProgramVersion> loadAs(bool interpreted, const std::string &path,
                                          const ContactForces &forces, std::string &error,
-                                         std::optional<io::DitFile> *dit, const std::string &so,
-                                         std::vector<std::string> *dropped, int64_t *readyNs);
+                                         std::optional<formats::DitFile> *dit,
+                                         const std::string &so, std::vector<std::string> *dropped,
+                                         int64_t *readyNs);
   /// The session of `tier`, created on first use; call with mu_ held.
   jit::Session *session(bool fast, std::string &error);
 
-  io::TrustedKeys aotTrust_;
+  engines::TrustedKeys aotTrust_;
   std::string engine_;
   int32_t plc2Nvalue_;
   std::string dialect_;

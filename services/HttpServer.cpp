@@ -22,7 +22,7 @@
 #include <mutex>
 #include <set>
 
-namespace lj::io {
+namespace lj::services {
 
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
@@ -828,4 +828,4 @@ void HttpServer::stop() {
   im.daemon = nullptr;
 }
 
-} // namespace lj::io
+} // namespace lj::services

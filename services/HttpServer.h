@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 
 /// What the server serves, supplied by `serve` (tools/ladderjit/ServeHttp.cpp).
 struct HttpBackend {
@@ -77,4 +77,4 @@ private:
   int port_ = -1;
 };
 
-} // namespace lj::io
+} // namespace lj::services

@@ -8,13 +8,13 @@
 #include <cctype>
 #include <cstdlib>
 
-namespace lj::io {
+namespace lj::services {
 namespace {
 
 using Kind = MbBlock::Kind;
 using Access = MbBlock::Access;
 
-std::string hnc8Text(const CliAddress &a) {
+std::string hnc8Text(const formats::CliAddress &a) {
   static const char letters[] = "XYFGRWDBPTC";
   std::string t(1, letters[static_cast<int>(a.area)]);
   t += std::to_string(a.index);
@@ -120,14 +120,14 @@ std::vector<std::string_view> words(std::string_view line) {
   return out;
 }
 
-const TargetProfile &profileOf(const CliAddress &a) {
+const TargetProfile &profileOf(const formats::CliAddress &a) {
   return a.profile ? *a.profile : *profileNamed("hnc8");
 }
 
 } // namespace
 
-CliAddress MbBlock::element(uint32_t k) const {
-  CliAddress a = first;
+formats::CliAddress MbBlock::element(uint32_t k) const {
+  formats::CliAddress a = first;
   if (kind == Kind::Bit) {
     const uint32_t pos = static_cast<uint32_t>(first.bit) + k;
     a.index = first.index + static_cast<int32_t>(pos / static_cast<uint32_t>(bitsPerElem)) * stride;
@@ -165,7 +165,7 @@ const MbBlock *ModbusMap::resolve(MbTable table, uint32_t addr, uint32_t &elemen
 }
 
 std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::string &file,
-                                          const Dialect &dialect, std::string &error) {
+                                          const formats::Dialect &dialect, std::string &error) {
   ModbusMap m;
   int lineNo = 0;
   size_t pos = 0;
@@ -199,7 +199,7 @@ std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::stri
       return std::nullopt;
     }
     std::string why;
-    std::optional<CliAddress> first = dialect.parseAddress(w[2], why);
+    std::optional<formats::CliAddress> first = dialect.parseAddress(w[2], why);
     if (!first) {
       error = at + why;
       return std::nullopt;
@@ -250,9 +250,9 @@ std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::stri
     b.retained = (tp.retentiveAreas & bit(first->area)) != 0;
     // Every element must exist, in the first address's area (FANUC X127 -> X200 is a gap).
     for (uint32_t k = 0; k < b.elements; ++k) {
-      CliAddress e = b.element(k);
+      formats::CliAddress e = b.element(k);
       std::string shown = e.text, why2;
-      std::optional<CliAddress> back = dialect.parseAddress(shown, why2);
+      std::optional<formats::CliAddress> back = dialect.parseAddress(shown, why2);
       if (!back || back->area != e.area || back->index != e.index || back->bit != e.bit) {
         error = at + std::to_string(*count) + " elements from '" + first->text +
                 "' run out of its area: element " + std::to_string(k + 1) + " would be '" + shown +
@@ -277,4 +277,4 @@ std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::stri
   return m;
 }
 
-} // namespace lj::io
+} // namespace lj::services

@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 
 /// The four Modbus data tables.
 enum class MbTable { Coils, DiscreteInputs, HoldingRegisters, InputRegisters };
@@ -27,20 +27,21 @@ struct MbBlock {
   uint32_t elements = 0; ///< elements (Bit: bits) it covers
   Kind kind = Kind::Bit;
   Access access = Access::ReadOnly;
-  bool retained = false;   ///< a write waits for a durable retain save
-  CliAddress first;        ///< the element (Bit: the bit) at `base`
-  int32_t stride = 1;      ///< element numbers between consecutive elements (FANUC D100:2: 2)
-  int32_t bitsPerElem = 8; ///< Bit: bits of one element before the next element starts
-  bool hnc8Slots = false;  ///< the built-in T/C blocks: element k is slot k (T0..T127, T300..)
-  int line = 0;            ///< map file line (0: built in)
-  std::string (*format)(const CliAddress &) = nullptr; ///< the dialect's spelling (null: HNC-8)
+  bool retained = false;     ///< a write waits for a durable retain save
+  formats::CliAddress first; ///< the element (Bit: the bit) at `base`
+  int32_t stride = 1;        ///< element numbers between consecutive elements (FANUC D100:2: 2)
+  int32_t bitsPerElem = 8;   ///< Bit: bits of one element before the next element starts
+  bool hnc8Slots = false;    ///< the built-in T/C blocks: element k is slot k (T0..T127, T300..)
+  int line = 0;              ///< map file line (0: built in)
+  std::string (*format)(const formats::CliAddress &) =
+      nullptr; ///< the dialect's spelling (null: HNC-8)
 
   /// Registers (Bit: bits) one element takes.
   uint32_t width() const { return kind == Kind::Word32 ? 2 : 1; }
   /// Modbus addresses the block spans.
   uint32_t span() const { return elements * width(); }
   /// The address of element `k` (Bit: bit `k`).
-  CliAddress element(uint32_t k) const;
+  formats::CliAddress element(uint32_t k) const;
 };
 
 /// A whole map: the blocks of the four tables.
@@ -53,7 +54,7 @@ public:
   /// Read a map file (docs/modbus-map.md "Map files") of `dialect`'s addresses. Nothing with
   /// `error` = "FILE:LINE: problem" for the first bad line.
   static std::optional<ModbusMap> parse(std::string_view text, const std::string &file,
-                                        const Dialect &dialect, std::string &error);
+                                        const formats::Dialect &dialect, std::string &error);
 
   /// The block holding Modbus address `addr` of `table`, with the element's index in it and,
   /// for Word32, the register half (0 low, 1 high); nullptr when unmapped.
@@ -64,4 +65,4 @@ private:
   std::vector<MbBlock> blocks_;
 };
 
-} // namespace lj::io
+} // namespace lj::services

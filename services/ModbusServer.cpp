@@ -14,7 +14,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-namespace lj::io {
+namespace lj::services {
 namespace {
 
 using Kind = MbBlock::Kind;
@@ -38,7 +38,7 @@ uint8_t readBits(const ModbusMap &map, MbTable table, uint16_t addr, uint16_t co
     int part = 0;
     const MbBlock *b = map.resolve(table, uint32_t{addr} + i, el, part);
     if (!b) return kMbIllegalDataAddress;
-    out.push_back(static_cast<uint8_t>(readAddress(s, b->element(el)) ? 1 : 0));
+    out.push_back(static_cast<uint8_t>(formats::readAddress(s, b->element(el)) ? 1 : 0));
   }
   return 0;
 }
@@ -51,7 +51,7 @@ uint8_t readRegisters(const ModbusMap &map, MbTable table, uint16_t addr, uint16
     int part = 0;
     const MbBlock *b = map.resolve(table, uint32_t{addr} + i, el, part);
     if (!b) return kMbIllegalDataAddress;
-    uint32_t v = static_cast<uint32_t>(readAddress(s, b->element(el)));
+    uint32_t v = static_cast<uint32_t>(formats::readAddress(s, b->element(el)));
     if (b->kind == Kind::Byte) v &= 0xFF; // bytes read 0..255, whatever their signedness
     // 32-bit elements: low word at the lower address (docs/modbus-map.md "Word order").
     out.push_back(static_cast<uint16_t>(part == 1 ? v >> 16 : v & 0xFFFF));
@@ -60,7 +60,7 @@ uint8_t readRegisters(const ModbusMap &map, MbTable table, uint16_t addr, uint16
 }
 
 uint8_t planCoilWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint8_t> &bits,
-                      bool writeInputs, std::vector<Assignment> &out, bool &retained) {
+                      bool writeInputs, std::vector<formats::Assignment> &out, bool &retained) {
   out.clear();
   retained = false;
   for (size_t i = 0; i < bits.size(); ++i) {
@@ -76,7 +76,7 @@ uint8_t planCoilWrite(const ModbusMap &map, uint16_t addr, const std::vector<uin
 }
 
 uint8_t planRegisterWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint16_t> &regs,
-                          bool writeInputs, std::vector<Assignment> &out, bool &retained) {
+                          bool writeInputs, std::vector<formats::Assignment> &out, bool &retained) {
   out.clear();
   retained = false;
   for (size_t i = 0; i < regs.size(); ++i) {
@@ -109,12 +109,12 @@ uint8_t readRegisters(MbTable table, uint16_t addr, uint16_t count, const lj_sta
   return readRegisters(ModbusMap::hnc8(), table, addr, count, s, out);
 }
 uint8_t planCoilWrite(uint16_t addr, const std::vector<uint8_t> &bits, bool writeInputs,
-                      std::vector<Assignment> &out) {
+                      std::vector<formats::Assignment> &out) {
   bool retained = false;
   return planCoilWrite(ModbusMap::hnc8(), addr, bits, writeInputs, out, retained);
 }
 uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool writeInputs,
-                          std::vector<Assignment> &out, bool &retained) {
+                          std::vector<formats::Assignment> &out, bool &retained) {
   return planRegisterWrite(ModbusMap::hnc8(), addr, regs, writeInputs, out, retained);
 }
 
@@ -412,7 +412,7 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   case 16: {
     if (dlen < 4 || (fc <= 6 && dlen != 4)) return fail(kMbIllegalDataValue);
     uint16_t addr = be16(d);
-    std::vector<Assignment> writes;
+    std::vector<formats::Assignment> writes;
     bool retained = false;
     uint16_t count = 1;
     if (fc == 5) {
@@ -461,4 +461,4 @@ bool ModbusServer::handle(void *vctx, const uint8_t *req, int len) {
   }
 }
 
-} // namespace lj::io
+} // namespace lj::services

@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 
 /// Modbus exception codes (Modbus Application Protocol V1.1b3, 7).
 enum : uint8_t {
@@ -38,9 +38,9 @@ uint8_t readRegisters(const ModbusMap &map, MbTable table, uint16_t addr, uint16
 /// `retained` is set when an element of a retentive area is written (the write then waits
 /// for a durable retain save).
 uint8_t planCoilWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint8_t> &bits,
-                      bool writeInputs, std::vector<Assignment> &out, bool &retained);
+                      bool writeInputs, std::vector<formats::Assignment> &out, bool &retained);
 uint8_t planRegisterWrite(const ModbusMap &map, uint16_t addr, const std::vector<uint16_t> &regs,
-                          bool writeInputs, std::vector<Assignment> &out, bool &retained);
+                          bool writeInputs, std::vector<formats::Assignment> &out, bool &retained);
 /// Read `count` bits of `table` (Coils or DiscreteInputs) starting at `addr` into `out` (0/1).
 uint8_t readBits(MbTable table, uint16_t addr, uint16_t count, const lj_state &s,
                  std::vector<uint8_t> &out);
@@ -49,12 +49,12 @@ uint8_t readRegisters(MbTable table, uint16_t addr, uint16_t count, const lj_sta
                       std::vector<uint16_t> &out);
 /// Turn a coil write into state assignments; `writeInputs` also allows the X coils.
 uint8_t planCoilWrite(uint16_t addr, const std::vector<uint8_t> &bits, bool writeInputs,
-                      std::vector<Assignment> &out);
+                      std::vector<formats::Assignment> &out);
 /// Turn a holding-register write into state assignments. 32-bit elements (D, B) must be
 /// written whole (both registers in one request). `retained` is set when a B element is
 /// written (the write then waits for a durable retain save).
 uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool writeInputs,
-                          std::vector<Assignment> &out, bool &retained);
+                          std::vector<formats::Assignment> &out, bool &retained);
 } // namespace mbmap
 
 /// What the server reads and writes: in serve, runtime::Exchange and the retain store.
@@ -62,7 +62,7 @@ struct ModbusBackend {
   /// A consistent copy of the last published state; false while none is published.
   std::function<bool(lj_state &)> snapshot;
   /// Queue writes for the next tick boundary; returns their sequence number.
-  std::function<uint64_t(std::vector<Assignment>)> post;
+  std::function<uint64_t(std::vector<formats::Assignment>)> post;
   /// Wait until a posted sequence is applied and its tick published.
   std::function<bool(uint64_t, std::chrono::milliseconds)> waitVisible;
   /// Optional: wait until a retain save containing everything applied so far is durable.
@@ -136,4 +136,4 @@ private:
   ModbusStats stats_;         // guarded by mu_
 };
 
-} // namespace lj::io
+} // namespace lj::services

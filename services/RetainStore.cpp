@@ -19,7 +19,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 namespace {
 
 // The file stores integers in host order; the format is defined little-endian (docs/retain.md).
@@ -810,4 +810,4 @@ RetainStats RetainStore::stats() const {
   return s;
 }
 
-} // namespace lj::io
+} // namespace lj::services

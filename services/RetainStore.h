@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 
 /// Number of retained timer / counter slots: T300..T427 and C300..C427 (slots 128..255).
 inline constexpr int kRetainedTcFirstSlot = 128;
@@ -134,7 +134,7 @@ public:
   const RetainLayout &layout() const { return layout_; }
   /// Copy the retained fields of this store's layout from `from` into `to`.
   void copyRetained(const lj_state &from, lj_state &to) const {
-    io::copyRetained(layout_, from, to);
+    services::copyRetained(layout_, from, to);
   }
 
   /// Outcome of reading one file.
@@ -181,4 +181,4 @@ private:
   int lockFd_ = -1; // FILE.lock, flocked by prepare()
 };
 
-} // namespace lj::io
+} // namespace lj::services

@@ -92,16 +92,16 @@ void refresh(void *arg, long period) {
     if (p.out) continue;
     switch (p.type) {
     case lj::hal::PinType::Bit:
-      lj::io::writeAddress(s, p.addr, *halPins[i].b ? 1 : 0);
+      lj::formats::writeAddress(s, p.addr, *halPins[i].b ? 1 : 0);
       break;
     case lj::hal::PinType::S32:
-      lj::io::writeAddress(s, p.addr, *halPins[i].s);
+      lj::formats::writeAddress(s, p.addr, *halPins[i].s);
       break;
     case lj::hal::PinType::U32:
-      lj::io::writeAddress(s, p.addr, *halPins[i].u);
+      lj::formats::writeAddress(s, p.addr, *halPins[i].u);
       break;
     case lj::hal::PinType::Float:
-      lj::io::writeAddress(s, p.addr, inst->fromFloat(i, *halPins[i].f));
+      lj::formats::writeAddress(s, p.addr, inst->fromFloat(i, *halPins[i].f));
       break;
     }
   }
@@ -111,7 +111,7 @@ void refresh(void *arg, long period) {
   for (size_t i = 0; i < pins.size(); ++i) {
     const lj::hal::PinSpec &p = pins[i];
     if (!p.out) continue;
-    int64_t v = lj::io::readAddress(s, p.addr);
+    int64_t v = lj::formats::readAddress(s, p.addr);
     switch (p.type) {
     case lj::hal::PinType::Bit:
       *halPins[i].b = v != 0;

@@ -57,31 +57,31 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
             "' (expected KEY.pub[,KEY.pub...])";
     return false;
   }
-  io::ProgramSource src;
-  if (!io::readProgramFile(sourcePath, src, error)) return false;
-  int32_t nvalue = io::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
+  formats::ProgramSource src;
+  if (!formats::readProgramFile(sourcePath, src, error)) return false;
+  int32_t nvalue = formats::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
   std::string diags;
-  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diags);
+  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diags);
   if (!prog) {
     size_t nl = diags.find('\n');
     error = "'" + sourcePath + "' has errors: " + diags.substr(0, nl);
     return false;
   }
-  io::TrustedKeys keys;
-  if (!io::loadTrustedKeys(trustFiles, keys, error)) {
+  engines::TrustedKeys keys;
+  if (!engines::loadTrustedKeys(trustFiles, keys, error)) {
     error = "trusted keys: " + error;
     return false;
   }
-  io::AotExpect expect = io::aotExpectOf(src, nvalue);
+  engines::AotExpect expect = engines::aotExpectOf(src, nvalue);
   out.hash = expect.program;
-  out.engine = io::loadAot(opt.program, expect, keys, error);
+  out.engine = engines::loadAot(opt.program, expect, keys, error);
   if (!out.engine) return false;
   out.entries = out.engine->entries();
   out.profile = prog->profile;
   out.pins = defaultPins(*prog, *src.dialect);
   if (!opt.map.empty()) {
     std::string text;
-    if (!io::readFile(opt.map, text, error)) return false;
+    if (!formats::readFile(opt.map, text, error)) return false;
     if (!applyMap(text, opt.map, out.pins, error, *src.dialect)) return false;
   }
   return checkPins(out.pins, prefix, error);
@@ -128,25 +128,26 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   inst->state_->host = nullptr; // no NC services in HAL: map F/G words to pins instead
   if (!opt.params.empty()) {
     std::string text;
-    if (!io::readFile(opt.params, text, error)) return nullptr;
-    auto list = io::parseParams(text, opt.params, error, inst->profile_);
+    if (!formats::readFile(opt.params, text, error)) return nullptr;
+    auto list = formats::parseParams(text, opt.params, error, inst->profile_);
     if (!list) return nullptr;
-    for (const io::Assignment &a : *list) io::writeAddress(*inst->state_, a.addr, a.value);
+    for (const formats::Assignment &a : *list)
+      formats::writeAddress(*inst->state_, a.addr, a.value);
   }
   if (!opt.retain.empty()) {
-    io::RetainConfig cfg;
+    services::RetainConfig cfg;
     cfg.path = opt.retain;
     cfg.programHash = inst->programHash_;
     cfg.profile = inst->profile_; // what the target retains (docs/retain.md)
     cfg.log = opt.log;
-    inst->retain_ = std::make_unique<io::RetainStore>(cfg);
+    inst->retain_ = std::make_unique<services::RetainStore>(cfg);
     if (!inst->retain_->prepare(error)) {
       error = "retain store '" + opt.retain + "': " + error;
       return nullptr;
     }
-    io::RestoreReport rep = inst->retain_->restore(*inst->state_, 0);
-    if (rep.status == io::RestoreStatus::LayoutMismatch ||
-        rep.status == io::RestoreStatus::DamagedNotKept) {
+    services::RestoreReport rep = inst->retain_->restore(*inst->state_, 0);
+    if (rep.status == services::RestoreStatus::LayoutMismatch ||
+        rep.status == services::RestoreStatus::DamagedNotKept) {
       error = "retain store '" + opt.retain + "': " + rep.message;
       return nullptr;
     }
@@ -188,7 +189,7 @@ uint32_t Instance::tick(uint64_t periodNs) {
   }
   // The target's system bits (FANUC R9091 constants and clocks, R9015 first scan) before every
   // tick, after init, as `run` and `serve` write them (hosts/SystemBits.h).
-  if (profile_) io::writeSystemBits(*profile_, *state_, ticks_);
+  if (profile_) hosts::writeSystemBits(*profile_, *state_, ticks_);
   uint32_t fault = lj_tick(state_, &entries_);
   if (retain_) retain_->afterTick(*state_, ticks_);
   elapsedNs_ += periodNs;

@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-namespace lj::io {
+namespace lj::services {
 class RetainStore;
 }
 
@@ -107,7 +107,7 @@ private:
   lj_state *state_ = nullptr;
   std::vector<PinSpec> pins_;
   const TargetProfile *profile_ = nullptr; ///< the program's target (system bits)
-  std::unique_ptr<io::RetainStore> retain_;
+  std::unique_ptr<services::RetainStore> retain_;
   std::string soPath_, sourcePath_, programHash_;
   uint64_t ticks_ = 0;
   uint64_t elapsedNs_ = 0;

@@ -34,9 +34,9 @@ bool halFriendly(std::string_view name) {
   });
 }
 
-io::CliAddress bitAddress(const io::Dialect &d, const TargetProfile *tp, Area area, int32_t index,
-                          int bit) {
-  io::CliAddress a;
+formats::CliAddress bitAddress(const formats::Dialect &d, const TargetProfile *tp, Area area,
+                               int32_t index, int bit) {
+  formats::CliAddress a;
   a.area = area;
   a.index = index;
   a.bit = static_cast<int8_t>(bit);
@@ -73,7 +73,7 @@ bool parseType(std::string_view t, PinType &type) {
 
 } // namespace
 
-std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const io::Dialect &dialect) {
+std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const formats::Dialect &dialect) {
   std::set<BitKey> reads, writes;
   for (const Stmt &st : prog.stmts) {
     const InstrInfo &info = instrInfo(st.op);
@@ -110,7 +110,7 @@ std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const io::Dialect 
 }
 
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
-              std::string &error, const io::Dialect &dialect) {
+              std::string &error, const formats::Dialect &dialect) {
   std::vector<PinSpec> mapped;
   bool noDefaults = false;
   std::istringstream in{std::string(text)};
@@ -142,7 +142,7 @@ bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpe
       return fail("direction '" + w[0] + "' is not `in` or `out`");
     if (!parseType(w[1], p.type)) return fail("type '" + w[1] + "' is not bit, s32, u32 or float");
     std::string why;
-    std::optional<io::CliAddress> addr = dialect.parseAddress(w[2], why);
+    std::optional<formats::CliAddress> addr = dialect.parseAddress(w[2], why);
     if (!addr) return fail(why);
     if (addr->area == Area::Timer || addr->area == Area::Counter)
       return fail("'" + w[2] +

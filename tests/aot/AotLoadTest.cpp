@@ -34,21 +34,21 @@ VerifiedProgram program() {
 /// ELF or the exports can be wrong); `abi` = the ABI version it states.
 std::string signedAs(std::string image, const VerifiedProgram &prog,
                      uint32_t abi = LJPROG_ABI_VERSION) {
-  io::AotMeta m;
+  engines::AotMeta m;
   m.abi = abi;
   m.program = m.source = testHash(prog);
   m.plc2Nvalue = prog.plc2Nvalue;
   m.slices = static_cast<uint32_t>(prog.slices.size());
   m.stateSize = sizeof(lj_state);
   std::string error;
-  EXPECT_TRUE(io::signImage(image, m, testSigningKey(), error)) << error;
+  EXPECT_TRUE(engines::signImage(image, m, testSigningKey(), error)) << error;
   return image;
 }
 
 /// The ELF image of a built .so (the bytes before its trailer).
 std::string imageOf(const std::string &so) {
-  io::AotMeta m;
-  EXPECT_EQ(io::verifySigned(so, testTrust(), m), "");
+  engines::AotMeta m;
+  EXPECT_EQ(engines::verifySigned(so, testTrust(), m), "");
   return so.substr(0, m.imageSize);
 }
 
@@ -67,7 +67,7 @@ protected:
     std::string path = dir_.path("bad.so");
     writeBytes(path, bytes);
     std::string error;
-    std::unique_ptr<Engine> e = io::loadAot(path, {testHash(prog_)}, testTrust(), error);
+    std::unique_ptr<Engine> e = engines::loadAot(path, {testHash(prog_)}, testTrust(), error);
     EXPECT_EQ(e, nullptr) << what;
     EXPECT_NE(error.find(want), std::string::npos) << what << ": " << error;
     EXPECT_NE(error.find(path), std::string::npos) << "the message names the file: " << error;
@@ -148,9 +148,9 @@ TEST_F(AotLoad, HostFunctionsTickLikeTheInterpreter) {
 
 TEST_F(AotLoad, LoadsWithItsOwnHashOnly) {
   std::string error;
-  EXPECT_NE(io::loadAot(so_, {testHash(prog_)}, testTrust(), error), nullptr) << error;
+  EXPECT_NE(engines::loadAot(so_, {testHash(prog_)}, testTrust(), error), nullptr) << error;
   std::string other = "sha256:" + std::string(64, '0');
-  EXPECT_EQ(io::loadAot(so_, {other}, testTrust(), error), nullptr);
+  EXPECT_EQ(engines::loadAot(so_, {other}, testTrust(), error), nullptr);
   EXPECT_NE(error.find("built from another program"), std::string::npos) << error;
 }
 
@@ -158,8 +158,8 @@ TEST_F(AotLoad, AnotherNvalueOfTheSameProgramIsNamed) {
   // Issue 11 finding 9: the same source with another plc2 nvalue is not "another program"; the
   // message states the .so's nvalue (2, program()) and the one asked for.
   std::string error;
-  io::AotExpect want{"sha256:" + std::string(64, '1'), testHash(prog_), 200};
-  EXPECT_EQ(io::loadAot(so_, want, testTrust(), error), nullptr);
+  engines::AotExpect want{"sha256:" + std::string(64, '1'), testHash(prog_), 200};
+  EXPECT_EQ(engines::loadAot(so_, want, testTrust(), error), nullptr);
   EXPECT_NE(error.find("built from this program with plc2 nvalue 2, but plc2 nvalue 200 was "
                        "asked for"),
             std::string::npos)
@@ -171,12 +171,12 @@ TEST_F(AotLoad, RebuiltAtTheSamePathWhileTheOldOneIsLoaded) {
   // Hot reload: v2 written over v1's path while v1 still runs. Each load gets its own program
   // (2 PLC2 slices at nvalue 2, 1 at the default 200), not the object already loaded.
   std::string error;
-  std::unique_ptr<Engine> first = io::loadAot(so_, {testHash(prog_)}, testTrust(), error);
+  std::unique_ptr<Engine> first = engines::loadAot(so_, {testHash(prog_)}, testTrust(), error);
   ASSERT_NE(first, nullptr) << error;
   std::optional<VerifiedProgram> v2 = compileOrFail(kProgram);
   ASSERT_TRUE(v2);
   ASSERT_TRUE(buildSo(*v2, so_));
-  std::unique_ptr<Engine> second = io::loadAot(so_, {testHash(*v2)}, testTrust(), error);
+  std::unique_ptr<Engine> second = engines::loadAot(so_, {testHash(*v2)}, testTrust(), error);
   ASSERT_NE(second, nullptr) << error;
   EXPECT_EQ(first->entries().plc2_slice_count, 2u);
   EXPECT_EQ(second->entries().plc2_slice_count, 1u);

@@ -21,7 +21,7 @@ TEST(AotFuzz, BatchMatchesTheInterpreter) {
   fuzz::EngineFactory aot = [&](const VerifiedProgram &p, bool, std::string &error) {
     std::string so = dir.path("p" + std::to_string(built++) + ".so");
     std::unique_ptr<Engine> e;
-    if (buildSo(p, so)) e = io::loadAot(so, {testHash(p)}, testTrust(), error);
+    if (buildSo(p, so)) e = engines::loadAot(so, {testHash(p)}, testTrust(), error);
     std::remove(so.c_str());
     return e;
   };

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-namespace lj::io {
+namespace lj::formats {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
@@ -136,4 +136,4 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
 }
 
 } // namespace
-} // namespace lj::io
+} // namespace lj::formats

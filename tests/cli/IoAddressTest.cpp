@@ -6,7 +6,7 @@
 
 #include <memory>
 
-namespace lj::io {
+namespace lj::formats {
 namespace {
 
 CliAddress addr(const char *text) {
@@ -180,4 +180,4 @@ TEST(CliAssignment, ParsesAndChecks) {
 }
 
 } // namespace
-} // namespace lj::io
+} // namespace lj::formats

@@ -8,7 +8,7 @@
 
 #include <memory>
 
-namespace lj::io {
+namespace lj::formats {
 namespace {
 
 TEST(Stimulus, LinesCommentsAndBlanks) {
@@ -172,4 +172,4 @@ TEST(StateJson, CompleteState) {
 }
 
 } // namespace
-} // namespace lj::io
+} // namespace lj::formats

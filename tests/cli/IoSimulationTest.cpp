@@ -7,7 +7,7 @@
 
 #include <memory>
 
-namespace lj::io {
+namespace lj::hosts {
 namespace {
 
 // init records what it saw at power-up; PLC1 copies X0 to Y0, records now_ms and counts ticks,
@@ -30,16 +30,16 @@ uint32_t fakeSlice(void *, lj_state *s, uint32_t k) {
 }
 const lj_entries kFake = {nullptr, fakeInit, fakePlc1, fakeSlice, 3};
 
-Assignment assign(const char *text) {
+formats::Assignment assign(const char *text) {
   std::string e;
-  std::optional<Assignment> a = parseAssignment(text, e);
+  std::optional<formats::Assignment> a = formats::parseAssignment(text, e);
   EXPECT_TRUE(a) << e;
-  return a.value_or(Assignment{});
+  return a.value_or(formats::Assignment{});
 }
 
-CliAddress watchOf(const char *text) {
+formats::CliAddress watchOf(const char *text) {
   std::string e;
-  return parseAddress(text, e).value();
+  return formats::parseAddress(text, e).value();
 }
 
 TEST(Simulation, PowerUpOrderAndTicks) {
@@ -49,7 +49,8 @@ TEST(Simulation, PowerUpOrderAndTicks) {
   o.params = {assign("P3=77"), assign("X1=5")}; // params first ...
   o.sets = {assign("X1=9")};                    // ... --set after them wins
   std::string e;
-  o.stimulus = *parseStimulus("@2 X0=1\n@2 X0=3\n@4 X0=0 X5=1\n@5 X5=0\n@9 X0=7\n", "t", e);
+  o.stimulus =
+      *formats::parseStimulus("@2 X0=1\n@2 X0=3\n@4 X0=0 X5=1\n@5 X5=0\n@9 X0=7\n", "t", e);
   o.watch = {watchOf("Y0"), watchOf("D1"), watchOf("D2"), watchOf("W0")};
   auto s = std::make_unique<lj_state>();
   std::vector<WatchRow> rows;
@@ -115,4 +116,4 @@ TEST(Simulation, StepwiseEqualsWhole) {
 }
 
 } // namespace
-} // namespace lj::io
+} // namespace lj::hosts

@@ -173,7 +173,8 @@ TEST(DitCli, DamagedContainersExit2) {
 TEST(DitCli, ProgramErrorsInAContainerExit1) {
   std::string body = "ladderjit-plc-dit 1\n[params]\nplc2_nvalue = 200\nperiod_ms = 1\n"
                      "[symbols]\nSTART X1.0\n[program]\nLD START\nOUT LAMP\n[end]\n";
-  std::string text = body.substr(0, 20) + "hash = " + io::sha256Hash(body) + "\n" + body.substr(20);
+  std::string text =
+      body.substr(0, 20) + "hash = " + formats::sha256Hash(body) + "\n" + body.substr(20);
   std::string path = writeScratch("bad_program.dit", text);
   CliResult r = runCli({"check", path});
   EXPECT_EQ(r.exitCode, 1);

@@ -15,34 +15,35 @@ using dittest::withHash;
 
 // FIPS 180-2 appendix B.1 test vector: SHA-256("abc").
 TEST(DitHash, KnownVector) {
-  EXPECT_EQ(io::sha256Hash("abc"),
+  EXPECT_EQ(formats::sha256Hash("abc"),
             "sha256:ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
 }
 
-io::DitFile sample() {
-  io::DitFile d;
+formats::DitFile sample() {
+  formats::DitFile d;
   d.plc2Nvalue = 0;
   d.periodMs = 10;
   std::string err;
   // CRLF and a missing final newline in the STL are normalized (docs "Writing").
-  EXPECT_TRUE(io::normalizeProgram("; demo\r\nLD START\r\nOUT 主轴\nMOV 0x10 COUNT", "p.stl",
-                                   d.program, err))
+  EXPECT_TRUE(formats::normalizeProgram("; demo\r\nLD START\r\nOUT 主轴\nMOV 0x10 COUNT", "p.stl",
+                                        d.program, err))
       << err;
   EXPECT_TRUE(d.symbols.add("START", "x0010.3", "  start key  ", err)) << err;
   EXPECT_TRUE(d.symbols.add("主轴", "Y0.0", "# not a marker here", err)) << err;
   EXPECT_TRUE(d.symbols.add("COUNT", "d5", "", err)) << err;
-  std::optional<std::vector<io::Assignment>> ps = io::parseParams("P3=0x10\nP12 = -4\n", "p", err);
+  std::optional<std::vector<formats::Assignment>> ps =
+      formats::parseParams("P3=0x10\nP12 = -4\n", "p", err);
   EXPECT_TRUE(ps.has_value()) << err;
   if (ps) d.params = *ps;
   return d;
 }
 
 TEST(DitFormat, RoundTrip) {
-  io::DitFile d = sample();
+  formats::DitFile d = sample();
   EXPECT_EQ(d.program, "; demo\nLD START\nOUT 主轴\nMOV 0x10 COUNT\n");
-  std::string text = io::writeDit(d);
+  std::string text = formats::writeDit(d);
   std::string err;
-  std::optional<io::DitFile> back = io::parseDit(text, "r.dit", err);
+  std::optional<formats::DitFile> back = formats::parseDit(text, "r.dit", err);
   ASSERT_TRUE(back) << err << "\n" << text;
   EXPECT_EQ(back->program, d.program);
   EXPECT_EQ(back->plc2Nvalue, 0);
@@ -61,32 +62,32 @@ TEST(DitFormat, RoundTrip) {
   EXPECT_EQ(s[1].comment, "# not a marker here"); // the writer's own " # " marker is dropped
   EXPECT_EQ(s[2].address, "D5");
   EXPECT_EQ(s[2].comment, "");
-  EXPECT_EQ(back->hash, io::sha256Hash(io::ditCanonical(d)));
+  EXPECT_EQ(back->hash, formats::sha256Hash(formats::ditCanonical(d)));
   // The program starts after 13 lines: magic, hash, comment, [params] + 4, [symbols] + 3 and
   // [program].
   EXPECT_EQ(back->programLine, 14);
   // Writing what was read gives the same bytes.
-  EXPECT_EQ(io::writeDit(*back), text);
+  EXPECT_EQ(formats::writeDit(*back), text);
 }
 
 TEST(DitFormat, CanonicalSerialization) {
-  io::DitFile d = sample();
-  EXPECT_EQ(io::ditCanonical(d), "ladderjit-plc-dit 1\n"
-                                 "[params]\n"
-                                 "plc2_nvalue = 0\n"
-                                 "period_ms = 10\n"
-                                 "P3 = 16\n"
-                                 "P12 = -4\n"
-                                 "[symbols]\n"
-                                 "START X10.3 # start key\n"
-                                 "主轴 Y0.0 # # not a marker here\n"
-                                 "COUNT D5\n"
-                                 "[program]\n"
-                                 "; demo\n"
-                                 "LD START\n"
-                                 "OUT 主轴\n"
-                                 "MOV 0x10 COUNT\n"
-                                 "[end]\n");
+  formats::DitFile d = sample();
+  EXPECT_EQ(formats::ditCanonical(d), "ladderjit-plc-dit 1\n"
+                                      "[params]\n"
+                                      "plc2_nvalue = 0\n"
+                                      "period_ms = 10\n"
+                                      "P3 = 16\n"
+                                      "P12 = -4\n"
+                                      "[symbols]\n"
+                                      "START X10.3 # start key\n"
+                                      "主轴 Y0.0 # # not a marker here\n"
+                                      "COUNT D5\n"
+                                      "[program]\n"
+                                      "; demo\n"
+                                      "LD START\n"
+                                      "OUT 主轴\n"
+                                      "MOV 0x10 COUNT\n"
+                                      "[end]\n");
 }
 
 // docs "Layout": comments, blank lines, CRLF, blanks around '=' and hex spelling are not content.
@@ -113,24 +114,25 @@ TEST(DitFormat, ProgramIsVerbatim) {
   std::string body = "ladderjit-plc-dit 1\n[params]\nplc2_nvalue = 1\nperiod_ms = 1\n[symbols]\n"
                      "[program]\n# not a comment\n  [not a header]\n\n[end]\n";
   std::string err;
-  std::optional<io::DitFile> d = io::parseDit(withHash(body), "v.dit", err);
+  std::optional<formats::DitFile> d = formats::parseDit(withHash(body), "v.dit", err);
   ASSERT_TRUE(d) << err;
   EXPECT_EQ(d->program, "# not a comment\n  [not a header]\n\n");
 }
 
 TEST(DitFormat, NormalizeRejectsBracketLines) {
   std::string out, err;
-  EXPECT_FALSE(io::normalizeProgram("LD X1.0\n[end]\nOUT Y0.0\n", "p.stl", out, err));
+  EXPECT_FALSE(formats::normalizeProgram("LD X1.0\n[end]\nOUT Y0.0\n", "p.stl", out, err));
   EXPECT_EQ(err.rfind("p.stl:2: a line starting with '['", 0), 0u) << err;
 }
 
 TEST(DitFormat, ProgramForParserKeepsContainerLines) {
   std::string err;
-  std::optional<io::DitFile> d = io::parseDit(withHash(smallBody()), "s.dit", err);
+  std::optional<formats::DitFile> d = formats::parseDit(withHash(smallBody()), "s.dit", err);
   ASSERT_TRUE(d) << err;
   // Magic, hash, [params] + 3, [symbols] + 2, [program]: the program starts on line 11.
   EXPECT_EQ(d->programLine, 11);
-  EXPECT_EQ(io::programForParser(*d), std::string(10, '\n') + "LD START\nOUT Y0.0\nMOV 7 COUNT\n");
+  EXPECT_EQ(formats::programForParser(*d),
+            std::string(10, '\n') + "LD START\nOUT Y0.0\nMOV 7 COUNT\n");
 }
 
 // ---- one test per error class (docs "Errors") ----

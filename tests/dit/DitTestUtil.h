@@ -11,7 +11,7 @@ namespace lj::dittest {
 /// "Content hash": a body written canonically is its own canonical serialization).
 inline std::string withHash(const std::string &canonicalBody) {
   size_t nl = canonicalBody.find('\n') + 1;
-  return canonicalBody.substr(0, nl) + "hash = " + io::sha256Hash(canonicalBody) + "\n" +
+  return canonicalBody.substr(0, nl) + "hash = " + formats::sha256Hash(canonicalBody) + "\n" +
          canonicalBody.substr(nl);
 }
 
@@ -35,7 +35,7 @@ inline std::string smallBody() {
 /// parseDit's error for `text`, or "" when it parses.
 inline std::string errorOf(const std::string &text) {
   std::string error;
-  return io::parseDit(text, "t.dit", error) ? std::string() : error;
+  return formats::parseDit(text, "t.dit", error) ? std::string() : error;
 }
 
 } // namespace lj::dittest

@@ -25,15 +25,17 @@ protected:
     }
     return m;
   }
-  static io::CliAddress addr(std::string_view a) {
+  static formats::CliAddress addr(std::string_view a) {
     std::string err;
-    std::optional<io::CliAddress> x = io::parseProfileAddress(fanuc::profile(), a, err);
+    std::optional<formats::CliAddress> x = formats::parseProfileAddress(fanuc::profile(), a, err);
     EXPECT_TRUE(x) << err;
-    return x ? *x : io::CliAddress{};
+    return x ? *x : formats::CliAddress{};
   }
-  static int64_t get(Machine &m, std::string_view a) { return io::readAddress(m.state(), addr(a)); }
+  static int64_t get(Machine &m, std::string_view a) {
+    return formats::readAddress(m.state(), addr(a));
+  }
   static void set(Machine &m, std::string_view a, int64_t v) {
-    io::writeAddress(m.state(), addr(a), v);
+    formats::writeAddress(m.state(), addr(a), v);
   }
 };
 

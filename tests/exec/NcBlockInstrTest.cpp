@@ -6,6 +6,8 @@
 
 namespace lj::test {
 namespace {
+using hosts::HostCall;
+using hosts::TestHost;
 
 class NcBlockExec : public ExecTest {
 protected:

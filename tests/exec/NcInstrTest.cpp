@@ -7,6 +7,8 @@
 
 namespace lj::test {
 namespace {
+using hosts::HostCall;
+using hosts::TestHost;
 
 class NcExec : public ExecTest {
 protected:

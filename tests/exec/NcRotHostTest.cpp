@@ -9,6 +9,8 @@
 
 namespace lj::test {
 namespace {
+using hosts::HostCall;
+using hosts::TestHost;
 
 class NcRotHostExec : public ExecTest {};
 LJ_EXEC_SUITE(NcRotHostExec);

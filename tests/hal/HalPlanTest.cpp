@@ -14,11 +14,11 @@ using lj::hal::PinSpec;
 using lj::hal::PinType;
 
 lj::VerifiedProgram verify(const std::string &text) {
-  lj::io::ProgramSource src;
+  lj::formats::ProgramSource src;
   src.path = "t.stl";
   src.text = text;
   std::string diags;
-  auto prog = lj::io::verifyProgram(src, 200, diags);
+  auto prog = lj::formats::verifyProgram(src, 200, diags);
   EXPECT_TRUE(prog.has_value()) << diags;
   return *prog;
 }
@@ -114,12 +114,12 @@ TEST(HalPlan, SymbolsNameDefaultPinsWhenHalFriendly) {
 namespace {
 
 lj::VerifiedProgram verifyIn(const char *dialect, const char *path, const std::string &text) {
-  lj::io::ProgramSource src;
+  lj::formats::ProgramSource src;
   src.path = path;
   src.text = text;
-  src.dialect = lj::io::dialectNamed(dialect);
+  src.dialect = lj::formats::dialectNamed(dialect);
   std::string diags;
-  auto prog = lj::io::verifyProgram(src, 200, diags);
+  auto prog = lj::formats::verifyProgram(src, 200, diags);
   EXPECT_TRUE(prog.has_value()) << diags;
   return *prog;
 }
@@ -128,17 +128,17 @@ TEST(HalPlan, FanucPinsAndMapUseFanucAddresses) {
   // Reads X0.0 and X200.3 (the second X range), writes Y0.1; R only internal: no pin.
   auto prog =
       verifyIn("fanuc", "t.pmc", "RD X0.0\nAND X200.3\nWRT Y0.1\nWRT R5.0\nEND1\nEND2\nEND\n");
-  const lj::io::Dialect &d = *lj::io::dialectNamed("fanuc");
+  const lj::formats::Dialect &d = *lj::formats::dialectNamed("fanuc");
   std::vector<PinSpec> pins = lj::hal::defaultPins(prog, d);
   EXPECT_EQ(names(pins), (std::vector<std::string>{"in x0.0", "in x200.3", "out y0.1"}));
   // The pin writes the FANUC byte X200 in lj_state.mem, not HNC-8's X200 in lj_image.
   auto s = std::make_unique<lj_state>();
   lj_state_reset(s.get());
-  lj::io::writeAddress(*s, pins[1].addr, 1);
+  lj::formats::writeAddress(*s, pins[1].addr, 1);
   std::string err;
   auto x200 = d.parseAddress("X200.3", err);
   ASSERT_TRUE(x200) << err;
-  EXPECT_EQ(lj::io::readAddress(*s, *x200), 1);
+  EXPECT_EQ(lj::formats::readAddress(*s, *x200), 1);
   EXPECT_EQ(s->img.X[200], 0);
   std::string error;
   ASSERT_TRUE(lj::hal::applyMap("in s32 D100:2 preset\nout bit K0.1\n", "m.map", pins, error, d))
@@ -152,7 +152,7 @@ TEST(HalPlan, FanucPinsAndMapUseFanucAddresses) {
 
 TEST(HalPlan, IecPinsDropThePercentSign) {
   auto prog = verifyIn("iec", "t.il", "000 LD %I0.2\n001 ST %Q0.1\n");
-  EXPECT_EQ(names(lj::hal::defaultPins(prog, *lj::io::dialectNamed("iec"))),
+  EXPECT_EQ(names(lj::hal::defaultPins(prog, *lj::formats::dialectNamed("iec"))),
             (std::vector<std::string>{"in i0.2", "out q0.1"}));
 }
 

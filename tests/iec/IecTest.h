@@ -32,11 +32,11 @@ inline std::string ilErrors(std::string_view text) {
   return diags.render();
 }
 
-inline io::CliAddress ilAddress(std::string_view text) {
+inline formats::CliAddress ilAddress(std::string_view text) {
   std::string err;
-  std::optional<io::CliAddress> a = io::dialectNamed("iec")->parseAddress(text, err);
+  std::optional<formats::CliAddress> a = formats::dialectNamed("iec")->parseAddress(text, err);
   EXPECT_TRUE(a.has_value()) << err;
-  return a.value_or(io::CliAddress{});
+  return a.value_or(formats::CliAddress{});
 }
 
 class IecExec : public ::testing::TestWithParam<EngineFactory> {
@@ -51,10 +51,10 @@ protected:
     return m;
   }
   static void set(Machine &m, std::string_view addr, int64_t v) {
-    io::writeAddress(m.state(), ilAddress(addr), v);
+    formats::writeAddress(m.state(), ilAddress(addr), v);
   }
   static int64_t get(const Machine &m, std::string_view addr) {
-    return io::readAddress(m.state(), ilAddress(addr));
+    return formats::readAddress(m.state(), ilAddress(addr));
   }
   /// Every combination of `names`: write them, one tick, check(bit of name).
   template <typename Check>

@@ -9,7 +9,8 @@
 #include <memory>
 
 using namespace lj;
-using namespace lj::io;
+using namespace lj::services;
+namespace formats = lj::formats;
 
 namespace {
 
@@ -21,30 +22,30 @@ std::unique_ptr<lj_state> fresh() {
 
 ModbusMap parseOk(const char *dialect, const char *text) {
   std::string err;
-  auto m = ModbusMap::parse(text, "m.map", *dialectNamed(dialect), err);
+  auto m = ModbusMap::parse(text, "m.map", *formats::dialectNamed(dialect), err);
   EXPECT_TRUE(m) << err;
   return m ? *m : ModbusMap{};
 }
 
 std::string parseErr(const char *dialect, const char *text) {
   std::string err;
-  auto m = ModbusMap::parse(text, "m.map", *dialectNamed(dialect), err);
+  auto m = ModbusMap::parse(text, "m.map", *formats::dialectNamed(dialect), err);
   EXPECT_FALSE(m) << text;
   return err;
 }
 
 int64_t get(const lj_state &s, const char *dialect, const char *addr) {
   std::string err;
-  auto a = dialectNamed(dialect)->parseAddress(addr, err);
+  auto a = formats::dialectNamed(dialect)->parseAddress(addr, err);
   EXPECT_TRUE(a) << err;
-  return a ? readAddress(s, *a) : -999;
+  return a ? formats::readAddress(s, *a) : -999;
 }
 
 void set(lj_state &s, const char *dialect, const char *item) {
   std::string err;
-  auto a = dialectNamed(dialect)->parseAssignment(item, err);
+  auto a = formats::dialectNamed(dialect)->parseAssignment(item, err);
   ASSERT_TRUE(a) << err;
-  writeAddress(s, a->addr, a->value);
+  formats::writeAddress(s, a->addr, a->value);
 }
 
 TEST(ModbusMapFile, FanucBitsBytesAndWords) {
@@ -78,14 +79,14 @@ TEST(ModbusMapFile, FanucBitsBytesAndWords) {
             kMbIllegalDataAddress);
 
   // Writes: D is retained (fanuc-pmc.md 1.3), R is not; X and F only with writeInputs.
-  std::vector<Assignment> w;
+  std::vector<formats::Assignment> w;
   bool retained = true;
   ASSERT_EQ(mbmap::planRegisterWrite(m, 0, {7}, false, w, retained), 0);
   EXPECT_FALSE(retained);
   ASSERT_EQ(mbmap::planRegisterWrite(m, 11, {0x8000}, false, w, retained), 0);
   EXPECT_TRUE(retained);
   ASSERT_EQ(w.size(), 1u);
-  writeAddress(*s, w[0].addr, w[0].value);
+  formats::writeAddress(*s, w[0].addr, w[0].value);
   EXPECT_EQ(get(*s, "fanuc", "D102:2"), -32768);
   EXPECT_EQ(mbmap::planRegisterWrite(m, 21, {1, 2}, false, w, retained), kMbIllegalDataAddress);
   EXPECT_EQ(mbmap::planRegisterWrite(m, 0, {256}, false, w, retained), kMbIllegalDataValue);
@@ -116,7 +117,7 @@ TEST(ModbusMapFile, IecObjects) {
   std::vector<uint16_t> regs;
   ASSERT_EQ(mbmap::readRegisters(m2, MbTable::HoldingRegisters, 0, 2, *s, regs), 0);
   EXPECT_EQ(regs, (std::vector<uint16_t>{0, 0xFFFD}));
-  std::vector<Assignment> w;
+  std::vector<formats::Assignment> w;
   bool retained = false;
   ASSERT_EQ(mbmap::planCoilWrite(m2, 5, {1}, false, w, retained), 0);
   EXPECT_TRUE(retained); // %M0..%M63 survive a power failure (modicon-neza.md L542)
@@ -126,7 +127,7 @@ TEST(ModbusMapFile, IecObjects) {
 
 TEST(ModbusMapFile, ConstantsAndInputsAreReadOnly) {
   ModbusMap m = parseOk("iec", "holding 0 %KW0 2\ncoils 0 %I0.0 8\n");
-  std::vector<Assignment> w;
+  std::vector<formats::Assignment> w;
   bool retained = false;
   EXPECT_EQ(mbmap::planRegisterWrite(m, 0, {1}, false, w, retained), kMbIllegalDataAddress);
   EXPECT_EQ(mbmap::planCoilWrite(m, 0, {1}, false, w, retained), kMbIllegalDataAddress);
@@ -175,7 +176,7 @@ TEST(ModbusMapFile, Hnc8BuiltInUnchanged) {
   ModbusMap m = parseOk("hnc8", "holding 0 B0 50\ncoils 0 Y0.0 16\n");
   ASSERT_EQ(mbmap::readRegisters(m, MbTable::HoldingRegisters, 4, 2, *s, regs), 0); // B2
   EXPECT_EQ(static_cast<int32_t>(uint32_t{regs[0]} | uint32_t{regs[1]} << 16), -100000);
-  std::vector<Assignment> w;
+  std::vector<formats::Assignment> w;
   bool retained = false;
   ASSERT_EQ(mbmap::planRegisterWrite(m, 0, {1, 0}, false, w, retained), 0);
   EXPECT_TRUE(retained);

@@ -15,7 +15,8 @@
 #include <thread>
 #include <unistd.h>
 
-using namespace lj::io;
+using namespace lj::services;
+namespace formats = lj::formats;
 
 namespace {
 
@@ -70,7 +71,7 @@ TEST(ModbusMap, RegistersWidthsAndWordOrder) {
 }
 
 TEST(ModbusMap, WritesOnlyWherePermitted) {
-  std::vector<Assignment> w;
+  std::vector<formats::Assignment> w;
   bool retained = false;
   ASSERT_EQ(mbmap::planRegisterWrite(2006, {0x5678, 0x1234}, false, w, retained), 0);
   ASSERT_EQ(w.size(), 1u);
@@ -111,9 +112,9 @@ struct FakeBackend {
       out = s;
       return true;
     };
-    b.post = [this](std::vector<Assignment> w) {
+    b.post = [this](std::vector<formats::Assignment> w) {
       std::lock_guard lk(mu);
-      for (auto &a : w) writeAddress(s, a.addr, a.value);
+      for (auto &a : w) formats::writeAddress(s, a.addr, a.value);
       return ++seq;
     };
     b.waitVisible = [](uint64_t, std::chrono::milliseconds) { return true; };

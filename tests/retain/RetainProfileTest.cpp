@@ -16,9 +16,9 @@
 
 namespace fs = std::filesystem;
 using namespace lj;
-using lj::io::RestoreStatus;
-using lj::io::RetainConfig;
-using lj::io::RetainStore;
+using lj::services::RestoreStatus;
+using lj::services::RetainConfig;
+using lj::services::RetainStore;
 
 namespace {
 
@@ -48,15 +48,15 @@ protected:
   }
   static void set(lj_state &s, const char *profile, const char *item) {
     std::string err;
-    auto a = io::dialectNamed(profile)->parseAssignment(item, err);
+    auto a = formats::dialectNamed(profile)->parseAssignment(item, err);
     ASSERT_TRUE(a) << err;
-    io::writeAddress(s, a->addr, a->value);
+    formats::writeAddress(s, a->addr, a->value);
   }
   static int64_t get(const lj_state &s, const char *profile, const char *addr) {
     std::string err;
-    auto a = io::dialectNamed(profile)->parseAddress(addr, err);
+    auto a = formats::dialectNamed(profile)->parseAddress(addr, err);
     EXPECT_TRUE(a) << err;
-    return a ? io::readAddress(s, *a) : -999;
+    return a ? formats::readAddress(s, *a) : -999;
   }
   /// Save `s` with `profile`'s store, then restore into a fresh state with a new store.
   std::unique_ptr<lj_state> roundTrip(const char *profile, const lj_state &s,
@@ -123,13 +123,13 @@ TEST_F(RetainProfileTest, IecKeepsTheFirst64InternalBits) {
 TEST_F(RetainProfileTest, LayoutsOfTheTargets) {
   // FANUC: C, K, T, D are adjacent in lj_state.mem (profiles/fanuc/Areas.cpp): one span of
   // 600 + 200 + 1000 + 10000 bytes. IEC: the 8 bytes of %M0..%M63. HNC-8: format 1.
-  auto f = io::retainLayoutOf(*profileNamed("fanuc"));
+  auto f = services::retainLayoutOf(*profileNamed("fanuc"));
   EXPECT_FALSE(f.format1);
   EXPECT_EQ(f.payloadBytes(), 600u + 200u + 1000u + 10000u);
   EXPECT_EQ(f.timerSpan, -1);
-  auto i = io::retainLayoutOf(*profileNamed("iec"));
+  auto i = services::retainLayoutOf(*profileNamed("iec"));
   EXPECT_EQ(i.payloadBytes(), 8u);
-  auto h = io::retainLayoutOf(*profileNamed("hnc8"));
+  auto h = services::retainLayoutOf(*profileNamed("hnc8"));
   EXPECT_TRUE(h.format1);
   EXPECT_EQ(h.payloadBytes(), 4296u);
 }

@@ -19,15 +19,16 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-using lj::io::RestoreStatus;
-using lj::io::RetainConfig;
-using lj::io::RetainImage;
-using lj::io::RetainStore;
+using lj::services::RestoreStatus;
+using lj::services::RetainConfig;
+using lj::services::RetainImage;
+using lj::services::RetainStore;
 
 namespace {
 
-const lj::io::RetainLayout &hnc8Layout() {
-  static const lj::io::RetainLayout l = lj::io::retainLayoutOf(*lj::profileNamed("hnc8"));
+const lj::services::RetainLayout &hnc8Layout() {
+  static const lj::services::RetainLayout l =
+      lj::services::retainLayoutOf(*lj::profileNamed("hnc8"));
   return l;
 }
 

@@ -1,5 +1,5 @@
-// ControlSocket::answer and io::dumpJson / isUtf8: every answer is one valid JSON line, whatever
-// the request bytes, the handler or the strings in the result (issue 11 finding 3).
+// ControlSocket::answer and formats::dumpJson / isUtf8: every answer is one valid JSON line,
+// whatever the request bytes, the handler or the strings in the result (issue 11 finding 3).
 #include "runtime/ControlSocket.h"
 #include "formats/StateJson.h"
 
@@ -76,19 +76,19 @@ TEST(ControlAnswer, DuplicateKeysAreRefused) {
 }
 
 TEST(Utf8, WellFormedOnly) {
-  EXPECT_TRUE(lj::io::isUtf8(""));
-  EXPECT_TRUE(lj::io::isUtf8("plain ascii"));
-  EXPECT_TRUE(lj::io::isUtf8("\xE4\xB8\xBB\xE8\xBD\xB4"));         // 主轴
-  EXPECT_TRUE(lj::io::isUtf8("\xF0\x9F\x94\xA7"));                 // U+1F527
-  EXPECT_TRUE(lj::io::isUtf8("\xF4\x8F\xBF\xBF"));                 // U+10FFFF
-  EXPECT_FALSE(lj::io::isUtf8("\xff"));                            // never in UTF-8
-  EXPECT_FALSE(lj::io::isUtf8("\xC0\xAF"));                        // overlong '/'
-  EXPECT_FALSE(lj::io::isUtf8("\xE0\x80\xAF"));                    // overlong, 3 bytes
-  EXPECT_FALSE(lj::io::isUtf8("\xED\xA0\x80"));                    // surrogate U+D800
-  EXPECT_FALSE(lj::io::isUtf8("\xF4\x90\x80\x80"));                // above U+10FFFF
-  EXPECT_FALSE(lj::io::isUtf8("\xE4\xB8"));                        // truncated
-  EXPECT_FALSE(lj::io::isUtf8("a\x80z"));                          // lone continuation byte
-  EXPECT_EQ(lj::io::dumpJson(json("a\xff")), "\"a\xEF\xBF\xBD\""); // replaced, not thrown
+  EXPECT_TRUE(lj::formats::isUtf8(""));
+  EXPECT_TRUE(lj::formats::isUtf8("plain ascii"));
+  EXPECT_TRUE(lj::formats::isUtf8("\xE4\xB8\xBB\xE8\xBD\xB4"));         // 主轴
+  EXPECT_TRUE(lj::formats::isUtf8("\xF0\x9F\x94\xA7"));                 // U+1F527
+  EXPECT_TRUE(lj::formats::isUtf8("\xF4\x8F\xBF\xBF"));                 // U+10FFFF
+  EXPECT_FALSE(lj::formats::isUtf8("\xff"));                            // never in UTF-8
+  EXPECT_FALSE(lj::formats::isUtf8("\xC0\xAF"));                        // overlong '/'
+  EXPECT_FALSE(lj::formats::isUtf8("\xE0\x80\xAF"));                    // overlong, 3 bytes
+  EXPECT_FALSE(lj::formats::isUtf8("\xED\xA0\x80"));                    // surrogate U+D800
+  EXPECT_FALSE(lj::formats::isUtf8("\xF4\x90\x80\x80"));                // above U+10FFFF
+  EXPECT_FALSE(lj::formats::isUtf8("\xE4\xB8"));                        // truncated
+  EXPECT_FALSE(lj::formats::isUtf8("a\x80z"));                          // lone continuation byte
+  EXPECT_EQ(lj::formats::dumpJson(json("a\xff")), "\"a\xEF\xBF\xBD\""); // replaced, not thrown
 }
 
 TEST(ControlPeers, OwnUidAndRootOnly) {

@@ -54,11 +54,11 @@ OUT Y1.0
 2END
 )";
 
-io::Assignment assign(const std::string &text) {
+formats::Assignment assign(const std::string &text) {
   std::string err;
-  std::optional<io::Assignment> a = io::parseAssignment(text, err);
+  std::optional<formats::Assignment> a = formats::parseAssignment(text, err);
   EXPECT_TRUE(a) << err;
-  return a.value_or(io::Assignment{});
+  return a.value_or(formats::Assignment{});
 }
 
 // Post a no-op write and wait until a tick has applied and published it: a tick boundary
@@ -477,8 +477,8 @@ TEST(Exchange, LocksWinOverPostedWritesAndProgramWrites) {
   EXPECT_TRUE(ex.waitApplied(seq, std::chrono::milliseconds(0)));
   std::string err;
   ASSERT_EQ(ex.locks().size(), 1u);
-  EXPECT_TRUE(ex.unlock(io::parseAddress("D3", err).value()));
-  EXPECT_FALSE(ex.unlock(io::parseAddress("D3", err).value()));
+  EXPECT_TRUE(ex.unlock(formats::parseAddress("D3", err).value()));
+  EXPECT_FALSE(ex.unlock(formats::parseAddress("D3", err).value()));
   auto snap = std::make_unique<lj_state>();
   uint64_t tick = 99;
   ASSERT_TRUE(ex.snapshot(*snap, &tick));

@@ -68,23 +68,24 @@ uint64_t digest(const lj_state &s, lj_state &scratch) {
 // number the executive skipped, a missed deadline, come with the next tick it runs).
 class StimulusBinding : public IoBinding {
 public:
-  explicit StimulusBinding(const io::Stimulus &st) : st_(st) {}
+  explicit StimulusBinding(const formats::Stimulus &st) : st_(st) {}
   void beforeTick(lj_state &s, uint64_t tick) override {
     while (next_ < st_.events.size() && st_.events[next_].tick <= tick) {
-      for (const io::Assignment &a : st_.events[next_].sets) io::writeAddress(s, a.addr, a.value);
+      for (const formats::Assignment &a : st_.events[next_].sets)
+        formats::writeAddress(s, a.addr, a.value);
       ++next_;
     }
   }
   void afterTick(lj_state &, uint64_t) override {}
 
 private:
-  const io::Stimulus &st_;
+  const formats::Stimulus &st_;
   size_t next_ = 0;
 };
 
 class NcBinding : public IoBinding {
 public:
-  io::SimNc nc;
+  hosts::SimNc nc;
   void beforeTick(lj_state &s, uint64_t tick) override { nc.beforeTick(s, tick); }
   void afterTick(lj_state &s, uint64_t tick) override { nc.afterTick(s, tick); }
 };
@@ -124,11 +125,11 @@ const char *servedName(Served s) {
 // The build of lathe_panel.stl that an AOT server serves: `ladderjit compile`'s path (the JIT
 // library's shared object, signed with the test key) into a temporary file.
 std::string compileAot(const std::string &program, std::string &error) {
-  io::ProgramSource src;
-  if (!io::readProgramFile(program, src, error, "")) return {};
-  const int32_t nvalue = io::effectiveNvalue(src, 200, false);
+  formats::ProgramSource src;
+  if (!formats::readProgramFile(program, src, error, "")) return {};
+  const int32_t nvalue = formats::effectiveNvalue(src, 200, false);
   std::string diags;
-  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diags);
+  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diags);
   if (!prog) {
     error = diags;
     return {};
@@ -138,7 +139,7 @@ std::string compileAot(const std::string &program, std::string &error) {
   std::string out =
       (std::filesystem::temp_directory_path() / ("ljobserve-" + std::to_string(::getpid()) + ".so"))
           .string();
-  io::AotExpect id = io::aotExpectOf(src, nvalue);
+  engines::AotExpect id = engines::aotExpectOf(src, nvalue);
   jit::AotOptions o;
   o.output = out;
   o.programHash = id.program;
@@ -163,8 +164,8 @@ TEST_P(ObserveForce, ServedRunEqualsInterpreterWithTheSameForces) {
   const uint64_t ticks = seconds * 1000;
   const std::string program = examplePath("lathe_panel.stl");
   std::string err;
-  std::optional<io::Stimulus> stim = io::parseStimulus(sessionStimulus(ticks), "session.stim", err,
-                                                       io::defaultDialect().parseAssignment);
+  std::optional<formats::Stimulus> stim = formats::parseStimulus(
+      sessionStimulus(ticks), "session.stim", err, formats::defaultDialect().parseAssignment);
   ASSERT_TRUE(stim) << err;
 
   std::string so;
@@ -324,7 +325,7 @@ TEST_P(ObserveForce, ServedRunEqualsInterpreterWithTheSameForces) {
     stim2.beforeTick(*s, r.tick);
     nc2.beforeTick(*s, r.tick);
     s->now_ms = r.tick * eo.periodNs / 1000000;
-    if (prog->profile) io::writeSystemBits(*prog->profile, *s, r.tick);
+    if (prog->profile) hosts::writeSystemBits(*prog->profile, *s, r.tick);
     lj_tick(s.get(), &it->second->entries());
     nc2.afterTick(*s, r.tick);
     ASSERT_EQ(digest(*s, *scratch), r.digest)
@@ -379,7 +380,8 @@ OUT Y1.0
     ASSERT_TRUE(exec.start(v, err)) << err;
     Controller ctl(ex, exec, loader, path, nullptr);
     auto tickOnce = [&] { ASSERT_TRUE(ex.waitApplied(ex.post({}), std::chrono::seconds(30))); };
-    std::optional<io::Assignment> press = io::defaultDialect().parseAssignment("X1.0=1", err);
+    std::optional<formats::Assignment> press =
+        formats::defaultDialect().parseAssignment("X1.0=1", err);
     ASSERT_TRUE(press) << err;
     ex.post({*press});
     tickOnce();

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace lj::io::testing {
+namespace lj::hosts::testing {
 namespace {
 
 TEST(Axis, EnableAndServoAfterTheDelay) {
@@ -69,7 +69,7 @@ TEST(Axis, ZPulseEndsPhaseTwoEarly) {
   r.setG(FA(0, 0), 5, true); // start on the dog: phase 2 after this tick
   r.after();
   r.idle();
-  NcCommand z = simple(NcCommandKind::ZPulse, 0);
+  formats::NcCommand z = simple(formats::NcCommandKind::ZPulse, 0);
   r.nc.apply(z);
   r.idle();
   r.before();
@@ -188,4 +188,4 @@ TEST(Axis, OrientationAfterTheDelay) {
 }
 
 } // namespace
-} // namespace lj::io::testing
+} // namespace lj::hosts::testing

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace lj::io::testing {
+namespace lj::hosts::testing {
 namespace {
 
 TEST(Channel, PowerUpIdleValues) {
@@ -124,8 +124,8 @@ TEST(Channel, TCodeHandshakeAndQueue) {
 
 TEST(Channel, SCodeFlagValueAndAck) {
   Rig r;
-  NcCommand c;
-  c.kind = NcCommandKind::SCode;
+  formats::NcCommand c;
+  c.kind = formats::NcCommandKind::SCode;
   c.ch = 0;
   c.code = 1;         // spindle 2 of the manual's 1..4 numbering
   c.ivalue = 1500000; // 1500 rpm in 0.001 rpm (1.3 F2572/73)
@@ -144,7 +144,7 @@ TEST(Channel, SCodeFlagValueAndAck) {
 
 TEST(Channel, ResetHandshake) {
   Rig r;
-  r.nc.apply(simple(NcCommandKind::Reset, 0)); // panel Reset key
+  r.nc.apply(simple(formats::NcCommandKind::Reset, 0)); // panel Reset key
   r.before();
   EXPECT_TRUE(r.Fbit(2560, 12)); // 1.6: FC[0].12 until the PLC's ack
   r.after();
@@ -167,7 +167,7 @@ TEST(Channel, ResetClearsPendingCodes) {
   r.nc.apply(mcode(0, 3));
   r.nc.apply(tcode(0, 4));
   r.idle();
-  r.nc.apply(simple(NcCommandKind::Reset, 0));
+  r.nc.apply(simple(formats::NcCommandKind::Reset, 0));
   r.before();
   EXPECT_EQ(r.F(2608), -1);
   EXPECT_EQ(r.F(2616), -1);
@@ -231,7 +231,7 @@ TEST(Channel, CycleStartOnlyInAutoAndFeedHold) {
 
 TEST(Channel, ProgramEndAndPartCount) {
   Rig r;
-  r.nc.apply(simple(NcCommandKind::End, 0));
+  r.nc.apply(simple(formats::NcCommandKind::End, 0));
   r.before();
   EXPECT_TRUE(r.Fbit(2561, 2)); // FC[1].2 program finished
   r.G(2579) = 6;                // PARTCNT (hnc8-functions-2.md 2.19)
@@ -272,4 +272,4 @@ TEST(Channel, WordsLeftToTheHostAreNeverWritten) {
 }
 
 } // namespace
-} // namespace lj::io::testing
+} // namespace lj::hosts::testing

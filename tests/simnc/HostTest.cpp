@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-namespace lj::io::testing {
+namespace lj::hosts::testing {
 namespace {
 
 NcVar flt(double f) {
@@ -92,7 +92,7 @@ TEST(Vars, VarSetStoresIntegersAndDividesFloats) {
 
 TEST(Host, ToolSelectFromTheMagazine) {
   Rig r;
-  NcCommand c = simple(NcCommandKind::Tool, 3, 12); // pocket 3 holds T12
+  formats::NcCommand c = simple(formats::NcCommandKind::Tool, 3, 12); // pocket 3 holds T12
   r.nc.apply(c);
   const lj_host *h = r.nc.host();
   int32_t pocket = -7, error = -7;
@@ -108,7 +108,7 @@ TEST(Host, ToolSelectFromTheMagazine) {
 
 TEST(Host, TemperaturesArePublishedInG3080) {
   Rig r;
-  r.nc.apply(simple(NcCommandKind::Temp, 2, 25));
+  r.nc.apply(simple(formats::NcCommandKind::Temp, 2, 25));
   const lj_host *h = r.nc.host();
   h->temp_input(h->ctx, 4, 32767, 1, 10, 50, 0, 0); // type 1: p0 at 0, p1 at full scale
   r.before();
@@ -120,7 +120,7 @@ TEST(Host, TemperaturesArePublishedInG3080) {
 
 TEST(Host, HandwheelDeltas) {
   Rig r;
-  r.nc.apply(simple(NcCommandKind::Mpg, 1, 5));
+  r.nc.apply(simple(formats::NcCommandKind::Mpg, 1, 5));
   const lj_host *h = r.nc.host();
   h->mpg_input(h->ctx, 1, 100); // first raw value: the baseline
   h->mpg_input(h->ctx, 1, 103);
@@ -189,4 +189,4 @@ TEST(Host, TwoNcsFedIdenticallyAreEqual) {
 }
 
 } // namespace
-} // namespace lj::io::testing
+} // namespace lj::hosts::testing

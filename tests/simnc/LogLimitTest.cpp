@@ -29,7 +29,7 @@ void *operator new(std::size_t n) {
 void operator delete(void *p) noexcept { std::free(p); }
 void operator delete(void *p, std::size_t) noexcept { std::free(p); }
 
-namespace lj::io::testing {
+namespace lj::hosts::testing {
 namespace {
 
 SimNcConfig limited(size_t n) {
@@ -132,4 +132,4 @@ TEST(LogLimit, UnlimitedLogAllocatesAsItGrows) {
 }
 
 } // namespace
-} // namespace lj::io::testing
+} // namespace lj::hosts::testing

@@ -6,7 +6,7 @@
 
 #include <memory>
 
-namespace lj::io::testing {
+namespace lj::hosts::testing {
 
 /// F/G word numbers of the map (hnc8-cnc-interface.md 1.1-1.4).
 constexpr int FA(int a, int k) { return a * 80 + k; }
@@ -51,20 +51,20 @@ struct Rig {
   uint64_t tick = 0;
 };
 
-inline NcCommand mcode(int ch, int m) {
-  NcCommand c;
-  c.kind = NcCommandKind::MCode;
+inline formats::NcCommand mcode(int ch, int m) {
+  formats::NcCommand c;
+  c.kind = formats::NcCommandKind::MCode;
   c.ch = ch;
   c.code = m;
   return c;
 }
-inline NcCommand tcode(int ch, int t) {
-  NcCommand c = mcode(ch, t);
-  c.kind = NcCommandKind::TCode;
+inline formats::NcCommand tcode(int ch, int t) {
+  formats::NcCommand c = mcode(ch, t);
+  c.kind = formats::NcCommandKind::TCode;
   return c;
 }
-inline NcCommand simple(NcCommandKind k, int index = 0, int64_t value = 0) {
-  NcCommand c;
+inline formats::NcCommand simple(formats::NcCommandKind k, int index = 0, int64_t value = 0) {
+  formats::NcCommand c;
   c.kind = k;
   c.index = index;
   c.ch = index;
@@ -72,4 +72,4 @@ inline NcCommand simple(NcCommandKind k, int index = 0, int64_t value = 0) {
   return c;
 }
 
-} // namespace lj::io::testing
+} // namespace lj::hosts::testing

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-namespace lj::io {
+namespace lj::formats {
 namespace {
 
 std::string stimError(const std::string &text) {
@@ -105,16 +105,16 @@ uint32_t noSlice(void *, lj_state *, uint32_t) { return LJ_FAULT_NONE; }
 TEST(NcStimulus, SimulationAppliesCommandsBeforeTheScan) {
   lj_entries e{nullptr, &copyInit, &copyPlc1, &noSlice, 1};
   std::string error;
-  SimOptions opts;
+  hosts::SimOptions opts;
   opts.ticks = 3;
   opts.stimulus = *parseStimulus("@1 nc.mcode ch=0 m=7\n", "s.stim", error);
   std::optional<CliAddress> d1 = parseAddress("D1", error);
   opts.watch.push_back(*d1);
   auto s = std::make_unique<lj_state>();
-  SimNc nc;
+  hosts::SimNc nc;
   std::vector<int64_t> seen;
   simulate(
-      e, *s, opts, [&](const WatchRow &r) { seen.push_back(r.values[0]); }, &nc);
+      e, *s, opts, [&](const hosts::WatchRow &r) { seen.push_back(r.values[0]); }, &nc);
   EXPECT_EQ(s->img.D[0], -1); // init saw the idle slot
   EXPECT_EQ(seen, (std::vector<int64_t>{-1, 7, 7}));
   EXPECT_EQ(s->host, nc.host());
@@ -123,15 +123,15 @@ TEST(NcStimulus, SimulationAppliesCommandsBeforeTheScan) {
 TEST(NcStimulus, StimulusWordsAreLeftToTheStimulus) {
   lj_entries e{nullptr, &copyInit, &copyPlc1, &noSlice, 1};
   std::string error;
-  SimOptions opts;
+  hosts::SimOptions opts;
   opts.ticks = 2;
   opts.stimulus = *parseStimulus("@1 F2608=4\n@1 nc.mcode ch=0 m=7\n", "s.stim", error);
   auto s = std::make_unique<lj_state>();
-  SimNc nc;
-  simulate(e, *s, opts, nullptr, &nc);
+  hosts::SimNc nc;
+  hosts::simulate(e, *s, opts, nullptr, &nc);
   EXPECT_EQ(s->img.D[0], 0); // F2608 is the stimulus's: not even the idle -1 is written
   EXPECT_EQ(s->img.D[1], 4);
 }
 
 } // namespace
-} // namespace lj::io
+} // namespace lj::formats

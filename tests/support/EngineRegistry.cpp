@@ -30,9 +30,9 @@ MakeEngineFn fromFactory(engines::EngineSpec spec, bool signWithTestKey = false)
 
 } // namespace
 
-const io::SigningKey &testSigningKey() {
-  static const io::SigningKey key = [] {
-    io::SigningKey k;
+const engines::SigningKey &testSigningKey() {
+  static const engines::SigningKey key = [] {
+    engines::SigningKey k;
     std::string error;
     if (!k.generate(error)) std::abort(); // OpenSSL without Ed25519: nothing can be signed
     return k;
@@ -40,9 +40,9 @@ const io::SigningKey &testSigningKey() {
   return key;
 }
 
-const io::TrustedKeys &testTrust() {
-  static const io::TrustedKeys trust = [] {
-    io::TrustedKeys t;
+const engines::TrustedKeys &testTrust() {
+  static const engines::TrustedKeys trust = [] {
+    engines::TrustedKeys t;
     t.addRaw(testSigningKey().publicRaw());
     return t;
   }();

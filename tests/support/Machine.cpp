@@ -53,7 +53,7 @@ uint32_t Machine::init() {
 
 uint32_t Machine::tick() {
   state_->now_ms = static_cast<uint64_t>(tick_) * periodMs_;
-  io::writeSystemBits(*prog_->profile, *state_, tick_); // FANUC R9091/R9015 (none for HNC-8)
+  hosts::writeSystemBits(*prog_->profile, *state_, tick_); // FANUC R9091/R9015 (none for HNC-8)
   ++tick_;
   return lj_tick(state_.get(), &engine_->entries());
 }

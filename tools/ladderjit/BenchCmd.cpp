@@ -53,7 +53,7 @@ inline double monoNs() {
 struct ScanInputs {
   bool random = true;
   uint64_t seed = 1;
-  const io::Stimulus *stimulus = nullptr;
+  const formats::Stimulus *stimulus = nullptr;
   size_t nextEvent = 0;
   /// Random mode for a target laid out in lj_state.mem (FANUC): where its input bytes are.
   uint32_t memInputOffset = 0, memInputBytes = 0;
@@ -62,7 +62,7 @@ struct ScanInputs {
 /// Random mode: X (all 513 bytes) and 16 F words get new values each scan, from the seed and the
 /// scan number, so every lane sees the same inputs.
 void applyInputs(lj_state &s, const ScanInputs &in, uint64_t scan,
-                 const std::vector<const io::StimulusEvent *> &events) {
+                 const std::vector<const formats::StimulusEvent *> &events) {
   if (in.random) {
     gen::Rng rng(in.seed * 0x9E3779B97F4A7C15ull + scan);
     for (size_t i = 0; i < LJ_X_COUNT; i += 8) {
@@ -81,8 +81,8 @@ void applyInputs(lj_state &s, const ScanInputs &in, uint64_t scan,
     }
     return;
   }
-  for (const io::StimulusEvent *ev : events)
-    for (const io::Assignment &a : ev->sets) io::writeAddress(s, a.addr, a.value);
+  for (const formats::StimulusEvent *ev : events)
+    for (const formats::Assignment &a : ev->sets) formats::writeAddress(s, a.addr, a.value);
 }
 
 /// One full scan as docs/BENCHMARKS.md defines it: PLC1, then every PLC2 slice (a PLC1 fault
@@ -162,14 +162,14 @@ bool addJitLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog, b
 bool addAotLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog,
                 const ProgramSource &src, int32_t nvalue, const std::string &dir,
                 std::vector<Lane> &lanes, std::string &error) {
-  io::SigningKey key;
+  engines::SigningKey key;
   if (!key.generate(error)) {
     error = "signing key: " + error;
     return false;
   }
-  io::TrustedKeys trust;
+  engines::TrustedKeys trust;
   trust.addRaw(key.publicRaw());
-  io::AotExpect id = io::aotExpectOf(src, nvalue);
+  engines::AotExpect id = engines::aotExpectOf(src, nvalue);
   jit::AotOptions o;
   o.output = dir + "/program.so";
   o.programHash = id.program;
@@ -183,7 +183,7 @@ bool addAotLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog,
   struct stat st {};
   uint64_t soBytes = ::stat(o.output.c_str(), &st) == 0 ? static_cast<uint64_t>(st.st_size) : 0;
   auto tl = Clock::now();
-  std::unique_ptr<Engine> e = io::loadAot(o.output, id, trust, error);
+  std::unique_ptr<Engine> e = engines::loadAot(o.output, id, trust, error);
   if (!e) return false;
   Lane l;
   l.name = "aot";
@@ -215,7 +215,7 @@ double clockOverheadNs() {
 void runScans(std::vector<Lane> &lanes, const BenchArgs &a, const ScanInputs &in,
               Progress &progress, double overheadNs, uint64_t base = 0, size_t rotate = 0) {
   constexpr uint64_t kBlock = 64;
-  std::vector<std::vector<const io::StimulusEvent *>> events(kBlock);
+  std::vector<std::vector<const formats::StimulusEvent *>> events(kBlock);
   size_t nextEvent = 0;
   auto t0 = Clock::now();
   auto lastShow = t0;
@@ -279,7 +279,7 @@ int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
     return usageError("--c-timeout: expected 1..3600 seconds");
 
   std::string error;
-  io::Stimulus stim;
+  formats::Stimulus stim;
   ScanInputs in;
   in.seed = a.seed;
 
@@ -290,9 +290,9 @@ int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
   if (!readProgram(a.program, src, code, a.dialect)) return code;
   if (!a.stimulus.empty()) { // addresses in the program's dialect
     std::string text;
-    if (!io::readFile(a.stimulus, text, error)) return usageError(error);
-    std::optional<io::Stimulus> st =
-        io::parseStimulus(text, a.stimulus, error, src.dialect->parseAssignment);
+    if (!formats::readFile(a.stimulus, text, error)) return usageError(error);
+    std::optional<formats::Stimulus> st =
+        formats::parseStimulus(text, a.stimulus, error, src.dialect->parseAssignment);
     if (!st) return usageError(error);
     stim = std::move(*st);
     in.random = false;
@@ -415,7 +415,8 @@ int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
     l.state = std::make_unique<lj_state>();
     lj_state_reset(l.state.get());
     if (src.dit)
-      for (const io::Assignment &p : src.dit->params) io::writeAddress(*l.state, p.addr, p.value);
+      for (const formats::Assignment &p : src.dit->params)
+        formats::writeAddress(*l.state, p.addr, p.value);
     lj_run_init(l.state.get(), &l.entries);
   }
   const double overheadNs = clockOverheadNs();

@@ -22,15 +22,15 @@ namespace lj::cli {
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
                                       int32_t plc2Nvalue, const std::vector<std::string> &trustKeys,
                                       std::string &error) {
-  io::TrustedKeys trust;
-  if (!io::loadTrustedKeys(trustKeys, trust, error)) return nullptr;
-  return io::loadAot(soPath, io::aotExpectOf(src, plc2Nvalue), trust, error);
+  engines::TrustedKeys trust;
+  if (!engines::loadTrustedKeys(trustKeys, trust, error)) return nullptr;
+  return engines::loadAot(soPath, engines::aotExpectOf(src, plc2Nvalue), trust, error);
 }
 
 int runCompile(const CompileArgs &a) {
   // Before any thread starts: SIGINT/SIGTERM/SIGHUP remove the temporary directory beside OUT
   // and kill the C compiler's process group (docs/aot.md "Time bound").
-  io::installSignalCleanup();
+  formats::installSignalCleanup();
   if (a.cpu != "host" && a.cpu != "generic")
     return usageError("--cpu: expected host or generic, got '" + a.cpu + "'");
   unsigned ccTimeoutS = jit::kDefaultCcTimeoutS;
@@ -50,11 +50,11 @@ int runCompile(const CompileArgs &a) {
   if (!prog) return code;
   const engines::LlvmBackend *llvm = engines::llvmBackend(error);
   if (!llvm) return usageError("compile: " + error);
-  io::SigningKey key;
+  engines::SigningKey key;
   if (a.signKey.empty()) {
     std::string keyPath;
     bool created = false;
-    if (!io::defaultSigningKey(key, keyPath, created, error))
+    if (!engines::defaultSigningKey(key, keyPath, created, error))
       return usageError("compile: signing key: " + error);
     if (created)
       std::fprintf(stderr,
@@ -66,11 +66,11 @@ int runCompile(const CompileArgs &a) {
   }
   // Built in a private directory OUT.XXXXXX beside OUT (the C compiler's files too), then
   // renamed over OUT; the one output-file function of every command (formats/OutputFile.h).
-  io::OutputFile out;
+  formats::OutputFile out;
   if (!out.open(a.output, error)) return usageError("compile: -o: " + error);
-  io::AotExpect id = io::aotExpectOf(src, nvalue);
+  engines::AotExpect id = engines::aotExpectOf(src, nvalue);
   std::atomic<int> ccGroup{0};
-  io::registerProcessGroup(&ccGroup);
+  formats::registerProcessGroup(&ccGroup);
   jit::AotOptions o;
   o.output = out.tempPath();
   o.tempDir = o.output.substr(0, o.output.rfind('/'));
@@ -82,7 +82,7 @@ int runCompile(const CompileArgs &a) {
   o.signingKey = &key;
   o.genericCpu = a.cpu == "generic";
   bool ok = llvm->compileSharedObject(*prog, o, error);
-  io::unregisterProcessGroup(&ccGroup);
+  formats::unregisterProcessGroup(&ccGroup);
   if (ok) ok = out.commit(error);
   if (!ok) return usageError("compile: " + error); // `out` removes the temporary directory
   return kOk;

@@ -15,11 +15,11 @@ namespace {
 
 // P values from a params file: one entry per element, first position, last value (a params
 // file lets later lines win, a container lists each P once).
-std::vector<io::Assignment> collapseParams(const std::vector<io::Assignment> &in) {
-  std::vector<io::Assignment> out;
-  for (const io::Assignment &a : in) {
+std::vector<formats::Assignment> collapseParams(const std::vector<formats::Assignment> &in) {
+  std::vector<formats::Assignment> out;
+  for (const formats::Assignment &a : in) {
     bool merged = false;
-    for (io::Assignment &o : out)
+    for (formats::Assignment &o : out)
       if (o.addr.index == a.addr.index) {
         o.value = a.value;
         merged = true;
@@ -30,7 +30,7 @@ std::vector<io::Assignment> collapseParams(const std::vector<io::Assignment> &in
 }
 
 bool writeOutput(const std::string &path, const std::string &text, std::string &error) {
-  return io::writeOutputFile(path, text, error); // formats/OutputFile.h
+  return formats::writeOutputFile(path, text, error); // formats/OutputFile.h
 }
 
 } // namespace
@@ -41,28 +41,29 @@ int runDit(const DitArgs &a) {
                       std::to_string(a.periodMs));
   std::string stl, error;
   // A plc.dit holds an HNC-8 program (docs/plc-dit.md): --dialect and the name must say hnc8.
-  const io::Dialect *d = a.dialect.empty() ? io::dialectForPath(a.program, error)
-                                           : io::dialectForOption(a.dialect, error);
+  const formats::Dialect *d = a.dialect.empty() ? formats::dialectForPath(a.program, error)
+                                                : formats::dialectForOption(a.dialect, error);
   if (!d) return usageError(error);
-  if (d != &io::defaultDialect())
+  if (d != &formats::defaultDialect())
     return usageError(std::string("a plc.dit holds an hnc8 program, not dialect '") + d->name +
                       "'");
-  if (!io::readFile(a.program, stl, error)) return usageError(error);
-  if (io::looksLikeDit(stl))
+  if (!formats::readFile(a.program, stl, error)) return usageError(error);
+  if (formats::looksLikeDit(stl))
     return usageError("'" + a.program + "' is already a plc.dit container; give the STL file");
 
-  io::DitFile dit;
+  formats::DitFile dit;
   dit.plc2Nvalue = a.plc2Nvalue;
   dit.periodMs = a.periodMs;
-  if (!io::normalizeProgram(stl, a.program, dit.program, error)) return usageError(error);
+  if (!formats::normalizeProgram(stl, a.program, dit.program, error)) return usageError(error);
   std::string text;
   if (!a.symbols.empty()) {
-    if (!io::readFile(a.symbols, text, error)) return usageError(error);
-    if (!io::parseSymbols(text, a.symbols, dit.symbols, error)) return usageError(error);
+    if (!formats::readFile(a.symbols, text, error)) return usageError(error);
+    if (!formats::parseSymbols(text, a.symbols, dit.symbols, error)) return usageError(error);
   }
   if (!a.params.empty()) {
-    if (!io::readFile(a.params, text, error)) return usageError(error);
-    std::optional<std::vector<io::Assignment>> ps = io::parseParams(text, a.params, error);
+    if (!formats::readFile(a.params, text, error)) return usageError(error);
+    std::optional<std::vector<formats::Assignment>> ps =
+        formats::parseParams(text, a.params, error);
     if (!ps) return usageError(error);
     dit.params = collapseParams(*ps);
   }
@@ -80,7 +81,7 @@ int runDit(const DitArgs &a) {
                  a.program.c_str());
     return kProgramErrors;
   }
-  if (!writeOutput(a.output, io::writeDit(dit), error)) return usageError(error);
+  if (!writeOutput(a.output, formats::writeDit(dit), error)) return usageError(error);
   return kOk;
 }
 

@@ -10,13 +10,13 @@ namespace lj::cli {
 
 int runKeygen(const KeygenArgs &a) {
   if (a.output.empty()) return usageError("keygen: -o DIR/NAME is empty");
-  io::SigningKey key;
+  engines::SigningKey key;
   std::string error;
-  if (!key.generate(error) || !io::writeKeyPair(key, a.output, error))
+  if (!key.generate(error) || !engines::writeKeyPair(key, a.output, error))
     return usageError("keygen: " + error);
   std::printf("%s.key: private key (keep it secret; `ladderjit compile --sign-key`)\n"
               "%s.pub: public key %s (`run`/`serve --trust-key`)\n",
-              a.output.c_str(), a.output.c_str(), io::keyId(key.publicRaw()).c_str());
+              a.output.c_str(), a.output.c_str(), engines::keyId(key.publicRaw()).c_str());
   return std::fflush(stdout) == 0 && !std::ferror(stdout) ? kOk : kUsage;
 }
 

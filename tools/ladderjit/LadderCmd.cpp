@@ -28,7 +28,7 @@ int runLadder(const LadderArgs &a) {
   std::string out;
   if (a.format == "json")
     // Another dialect's JSON carries its program text: it is read back through it.
-    out = ladder::writeJson(nets, src.dialect == &io::defaultDialect() ? "" : src.text);
+    out = ladder::writeJson(nets, src.dialect == &formats::defaultDialect() ? "" : src.text);
   else if (a.format == "text")
     out = ladder::renderText(nets);
   else {
@@ -42,7 +42,7 @@ int runLadder(const LadderArgs &a) {
     return kOk;
   }
   std::string error; // one output-file function for every command (formats/OutputFile.h)
-  if (!io::writeOutputFile(a.output, out, error)) return usageError("-o: " + error);
+  if (!formats::writeOutputFile(a.output, out, error)) return usageError("-o: " + error);
   return kOk;
 }
 

@@ -35,11 +35,11 @@ bool checkItems(const std::vector<std::string> &items, bool assignments, std::st
   for (const std::string &it : items) {
     std::string first;
     bool ok = false;
-    for (const io::Dialect *d : io::allDialects()) {
+    for (const formats::Dialect *d : formats::allDialects()) {
       std::string why;
       if (assignments) {
-        std::optional<io::Assignment> as = d->parseAssignment(it, why);
-        ok = as && io::checkWritable(as->addr, as->value, why);
+        std::optional<formats::Assignment> as = d->parseAssignment(it, why);
+        ok = as && formats::checkWritable(as->addr, as->value, why);
       } else {
         ok = d->parseAddress(it, why).has_value();
       }
@@ -132,7 +132,7 @@ bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &
         error = "load: cannot read '" + rest[i] + "'";
         return false;
       }
-      if (!io::isUtf8(p.string())) { // the control protocol is JSON: UTF-8 text only
+      if (!formats::isUtf8(p.string())) { // the control protocol is JSON: UTF-8 text only
         error = "load: the path '" + rest[i] +
                 "' is not valid UTF-8; rename the file (the control protocol carries UTF-8)";
         return false;
@@ -187,7 +187,7 @@ static int monitorOnce(const MonitorArgs &a) {
   } else if (cmd == "load") {
     std::printf("running version %llu\n", resp["version"].get<unsigned long long>());
   } else if (cmd == "stats") {
-    std::printf("%s\n", io::dumpJson(resp["stats"], 2).c_str());
+    std::printf("%s\n", formats::dumpJson(resp["stats"], 2).c_str());
   }
   return kOk;
 }

@@ -26,11 +26,12 @@ namespace {
 constexpr size_t kRunNcLogLimit = 10000;
 
 // Every user input of `run`, parsed and checked.
-bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, std::string &error) {
+bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim,
+                 std::string &error) {
   sim.ticks = a.ticks;
   sim.periodMs = a.periodMs;
   for (const std::string &item : a.sets) {
-    std::optional<io::Assignment> as = d.parseAssignment(item, error);
+    std::optional<formats::Assignment> as = d.parseAssignment(item, error);
     if (!as) {
       error = "--set: " + error;
       return false;
@@ -46,7 +47,7 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
         error = "--watch: empty address in '" + list + "'";
         return false;
       }
-      std::optional<io::CliAddress> addr = d.parseAddress(item, error);
+      std::optional<formats::CliAddress> addr = d.parseAddress(item, error);
       if (!addr) {
         error = "--watch: " + error;
         return false;
@@ -58,15 +59,16 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
   }
   std::string text;
   if (!a.stimulus.empty()) {
-    if (!io::readFile(a.stimulus, text, error)) return false;
-    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error, d.parseAssignment);
+    if (!formats::readFile(a.stimulus, text, error)) return false;
+    std::optional<formats::Stimulus> st =
+        formats::parseStimulus(text, a.stimulus, error, d.parseAssignment);
     if (!st) return false;
     sim.stimulus = std::move(*st);
   }
   if (!a.params.empty()) {
-    if (!io::readFile(a.params, text, error)) return false;
-    std::optional<std::vector<io::Assignment>> ps =
-        io::parseParams(text, a.params, error, d.profile);
+    if (!formats::readFile(a.params, text, error)) return false;
+    std::optional<std::vector<formats::Assignment>> ps =
+        formats::parseParams(text, a.params, error, d.profile);
     if (!ps) return false;
     sim.params = std::move(*ps);
   }
@@ -76,18 +78,18 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
 // Buffered writer of the watch table: rows can number in the millions.
 class TableWriter {
 public:
-  TableWriter(const std::vector<io::CliAddress> &watch, bool jsonl) : jsonl_(jsonl) {
+  TableWriter(const std::vector<formats::CliAddress> &watch, bool jsonl) : jsonl_(jsonl) {
     if (jsonl_) {
-      for (const io::CliAddress &a : watch) keys_.push_back(nlohmann::json(a.text).dump());
+      for (const formats::CliAddress &a : watch) keys_.push_back(nlohmann::json(a.text).dump());
     } else {
       buf_ += "tick";
-      for (const io::CliAddress &a : watch) buf_ += "," + a.text;
+      for (const formats::CliAddress &a : watch) buf_ += "," + a.text;
       buf_ += '\n';
     }
   }
   ~TableWriter() { flush(); }
 
-  void row(const io::WatchRow &r) {
+  void row(const hosts::WatchRow &r) {
     if (jsonl_) buf_ += "{\"tick\":";
     number(static_cast<int64_t>(r.tick));
     for (size_t i = 0; i < r.values.size(); ++i) {
@@ -128,20 +130,21 @@ public:
   bool open(const std::string &path, std::string &error) {
     path_ = path;
     if (path.empty() || path == "-") return true;
-    if (io::checkOutputPath(path, error)) return true;
+    if (formats::checkOutputPath(path, error)) return true;
     error = "--dump: " + error;
     return false;
   }
-  bool write(const lj_state &s, const io::SimNc &nc, const TargetProfile &tp, std::string &error) {
+  bool write(const lj_state &s, const hosts::SimNc &nc, const TargetProfile &tp,
+             std::string &error) {
     if (path_.empty()) return true;
-    nlohmann::ordered_json j = io::stateToJson(s, tp);
+    nlohmann::ordered_json j = formats::stateToJson(s, tp);
     j["nc"] = nc.toJson(); // the simulated NC (docs/simulated-nc.md "Dump")
     std::string text = j.dump() + "\n";
     if (path_ == "-") {
       std::fwrite(text.data(), 1, text.size(), stdout);
       return true;
     }
-    if (io::writeOutputFile(path_, text, error)) return true;
+    if (formats::writeOutputFile(path_, text, error)) return true;
     error = "--dump: " + error;
     return false;
   }
@@ -272,7 +275,7 @@ int runRun(const RunArgs &a) {
       return usageError(tierError);
   }
 
-  io::SimOptions sim;
+  hosts::SimOptions sim;
   std::string error;
   int code = kOk;
   ProgramSource src;
@@ -291,14 +294,14 @@ int runRun(const RunArgs &a) {
   sim.profile = prog->profile;
 
   engines::EngineOptions eo;
-  io::TrustedKeys trust;
+  engines::TrustedKeys trust;
   if (spec->kind == engines::EngineKind::Jit)
     eo.cacheFromEnvironment = true; // docs/aot.md "Object cache"
   if (spec->kind == engines::EngineKind::Aot) {
     // The signers `--trust-key` names (none: the default public key), docs/aot.md "Trust".
-    if (!io::loadTrustedKeys(a.trustKeys, trust, error))
+    if (!engines::loadTrustedKeys(a.trustKeys, trust, error))
       return usageError("--engine aot: " + error);
-    eo.aotExpect = io::aotExpectOf(src, nvalue);
+    eo.aotExpect = engines::aotExpectOf(src, nvalue);
     eo.aotTrust = &trust;
   }
   // TIER: interpreter-first, the interpreter runs at once, the JIT is built in the background.
@@ -314,7 +317,7 @@ int runRun(const RunArgs &a) {
   DumpTarget dump; // opened only once the program is known to run
   if (!dump.open(a.dump, error)) return usageError(error);
 
-  for (const io::StimulusEvent &ev : sim.stimulus.events) {
+  for (const formats::StimulusEvent &ev : sim.stimulus.events) {
     if (ev.tick >= a.ticks) {
       std::fprintf(stderr, "ladderjit: warning: %s:%d: tick %llu is never reached (--ticks %llu)\n",
                    a.stimulus.c_str(), ev.line, static_cast<unsigned long long>(ev.tick),
@@ -328,10 +331,10 @@ int runRun(const RunArgs &a) {
   // Every engine runs against the simulated NC (docs/simulated-nc.md). Its log keeps the last
   // kRunNcLogLimit host calls and events (the --dump says how many were dropped): a run of
   // millions of ticks of a SAVEDATA / EVENT-heavy program must not keep them all.
-  io::SimNcConfig ncConfig;
+  hosts::SimNcConfig ncConfig;
   ncConfig.logLimit = kRunNcLogLimit;
-  auto nc = std::make_unique<io::SimNc>(ncConfig);
-  io::Simulation run(engine->entries(), *state, sim, nc.get());
+  auto nc = std::make_unique<hosts::SimNc>(ncConfig);
+  hosts::Simulation run(engine->entries(), *state, sim, nc.get());
   std::unique_ptr<BackgroundJit> background;
   if (!tiers.empty()) background = std::make_unique<BackgroundJit>(*prog, tiers);
   size_t nextTier = 0;
@@ -360,16 +363,16 @@ int runRun(const RunArgs &a) {
   };
   if (uint32_t f = run.powerUp(); f != LJ_FAULT_NONE)
     std::fprintf(stderr, "ladderjit: init: fault: %s (the init part was aborted)\n",
-                 io::faultName(f));
+                 hosts::faultName(f));
   std::optional<TableWriter> table;
   if (!sim.watch.empty()) table.emplace(sim.watch, a.format == "jsonl");
-  io::WatchRow row;
+  hosts::WatchRow row;
   while (!run.done()) {
     tierUp();
     if (uint32_t f = run.step(row); f != LJ_FAULT_NONE) {
       if (table) table->flush(); // keep stdout and stderr in tick order on a terminal
       std::fprintf(stderr, "ladderjit: tick %llu: fault: %s (the tick was aborted)\n",
-                   static_cast<unsigned long long>(row.tick), io::faultName(f));
+                   static_cast<unsigned long long>(row.tick), hosts::faultName(f));
     }
     if (table) table->row(row);
   }

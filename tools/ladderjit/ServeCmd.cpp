@@ -54,8 +54,8 @@ void logLine(const std::string &msg) {
 // The simulated NC's log in serve: the last kNcLogLimit host calls and events (a ring filled in
 // place, so the scan thread stops allocating once it is warm), not the whole run's history.
 constexpr size_t kNcLogLimit = 256;
-io::SimNcConfig servedNcConfig() {
-  io::SimNcConfig c;
+hosts::SimNcConfig servedNcConfig() {
+  hosts::SimNcConfig c;
   c.logLimit = kNcLogLimit;
   return c;
 }
@@ -63,7 +63,7 @@ io::SimNcConfig servedNcConfig() {
 // The simulated NC as the executive's default I/O binding (hnc8-cnc-interface.md).
 class SimNcBinding : public rt::IoBinding {
 public:
-  io::SimNc nc{servedNcConfig()};
+  hosts::SimNc nc{servedNcConfig()};
   void beforeTick(lj_state &s, uint64_t tick) override { nc.beforeTick(s, tick); }
   void afterTick(lj_state &s, uint64_t tick) override { nc.afterTick(s, tick); }
 };
@@ -87,7 +87,7 @@ bool splitHostPort(const std::string &text, std::string &host, int &port, std::s
 // NC's binding and layers over the table it installed (whose own save_data still runs first).
 class RetainSaveBinding : public rt::IoBinding {
 public:
-  io::RetainStore *store = nullptr;
+  services::RetainStore *store = nullptr;
   void beforeTick(lj_state &s, uint64_t) override { chain_.bindOver(s); }
   void afterTick(lj_state &, uint64_t) override {}
 
@@ -99,10 +99,10 @@ private:
 
 // HOOK(modbus): the Modbus server's view of the exchange. A write is acknowledged once the tick
 // that applied it is published (a following read sees it) and, for B, durably saved.
-io::ModbusBackend modbusBackend(rt::Exchange &ex, io::RetainStore *retain) {
-  io::ModbusBackend b;
+services::ModbusBackend modbusBackend(rt::Exchange &ex, services::RetainStore *retain) {
+  services::ModbusBackend b;
   b.snapshot = [&ex](lj_state &s) { return ex.snapshot(s); };
-  b.post = [&ex](std::vector<io::Assignment> w) { return ex.post(std::move(w)); };
+  b.post = [&ex](std::vector<formats::Assignment> w) { return ex.post(std::move(w)); };
   // waitApplied returns once the tick that applied the writes is published (runtime/Exchange.h).
   b.waitVisible = [&ex](uint64_t seq, std::chrono::milliseconds timeout) {
     return ex.waitApplied(seq, timeout);
@@ -167,7 +167,7 @@ private:
 
 bool writeStats(const std::string &path, const nlohmann::json &j, std::string &error) {
   // One output-file function for every command (formats/OutputFile.h, docs/security.md).
-  if (io::writeOutputFile(path, io::dumpJson(j, 2) + "\n", error)) return true;
+  if (formats::writeOutputFile(path, formats::dumpJson(j, 2) + "\n", error)) return true;
   error = "--stats: " + error;
   return false;
 }
@@ -232,38 +232,41 @@ int runServe(const ServeArgs &a) {
   }
   // --set addresses and --params in the program's dialect (CLI.md): --dialect, else the
   // extension.
-  const io::Dialect *setDialect = a.dialect.empty() ? io::dialectForPath(a.program, error)
-                                                    : io::dialectForOption(a.dialect, error);
+  const formats::Dialect *setDialect = a.dialect.empty()
+                                           ? formats::dialectForPath(a.program, error)
+                                           : formats::dialectForOption(a.dialect, error);
   if (!setDialect) return usageError(error);
-  std::vector<io::Assignment> powerUp;
+  std::vector<formats::Assignment> powerUp;
   if (!a.params.empty()) {
     std::string text;
-    if (!io::readFile(a.params, text, error)) return usageError(error);
-    std::optional<std::vector<io::Assignment>> ps =
-        io::parseParams(text, a.params, error, setDialect->profile);
+    if (!formats::readFile(a.params, text, error)) return usageError(error);
+    std::optional<std::vector<formats::Assignment>> ps =
+        formats::parseParams(text, a.params, error, setDialect->profile);
     if (!ps) return usageError(error);
     powerUp = std::move(*ps);
   }
   // The Modbus map (docs/modbus-map.md "Map files"): the program's dialect's addresses.
-  std::shared_ptr<const io::ModbusMap> modbusMap;
+  std::shared_ptr<const services::ModbusMap> modbusMap;
   if (!a.modbusMap.empty()) {
     std::string text;
-    if (!io::readFile(a.modbusMap, text, error)) return usageError("--modbus-map: " + error);
-    std::optional<io::ModbusMap> m = io::ModbusMap::parse(text, a.modbusMap, *setDialect, error);
+    if (!formats::readFile(a.modbusMap, text, error)) return usageError("--modbus-map: " + error);
+    std::optional<services::ModbusMap> m =
+        services::ModbusMap::parse(text, a.modbusMap, *setDialect, error);
     if (!m) return usageError("--modbus-map: " + error);
-    modbusMap = std::make_shared<const io::ModbusMap>(std::move(*m));
+    modbusMap = std::make_shared<const services::ModbusMap>(std::move(*m));
   } else if (!a.modbus.empty() && std::string_view(setDialect->name) != "hnc8") {
     return usageError(std::string("--modbus: a ") + setDialect->name +
                       " program needs --modbus-map FILE (the built-in map is HNC-8's; "
                       "docs/modbus-map.md \"Map files\")");
   }
   for (const std::string &item : a.sets) {
-    std::optional<io::Assignment> as = setDialect->parseAssignment(item, error);
-    if (!as || !io::checkWritable(as->addr, as->value, error)) return usageError("--set: " + error);
+    std::optional<formats::Assignment> as = setDialect->parseAssignment(item, error);
+    if (!as || !formats::checkWritable(as->addr, as->value, error))
+      return usageError("--set: " + error);
     powerUp.push_back(*as);
   }
   if (!a.stats.empty()) { // unwritable --stats is a usage error up front, not after an hour
-    if (!io::checkOutputPath(a.stats, error)) return usageError("--stats: " + error);
+    if (!formats::checkOutputPath(a.stats, error)) return usageError("--stats: " + error);
   }
   // `monitor load` reads only below these (docs/serve.md "Online change"): --load-dir, else the
   // directory of PROGRAM (and of the served .so).
@@ -297,15 +300,16 @@ int runServe(const ServeArgs &a) {
   }
 
   // ---- the program ----
-  if (!a.dialect.empty() && !io::dialectForOption(a.dialect, error)) return usageError(error);
+  if (!a.dialect.empty() && !formats::dialectForOption(a.dialect, error)) return usageError(error);
   rt::ProgramLoader loader(aot ? "aot" : a.engine, a.plc2NvalueGiven ? a.plc2Nvalue : -1,
                            a.dialect);
   if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)
-    io::TrustedKeys trust;
-    if (!io::loadTrustedKeys(a.trustKeys, trust, error)) return usageError("--trust-key: " + error);
+    engines::TrustedKeys trust;
+    if (!engines::loadTrustedKeys(a.trustKeys, trust, error))
+      return usageError("--trust-key: " + error);
     loader.setAotTrust(std::move(trust));
   }
-  std::optional<io::DitFile> dit;
+  std::optional<formats::DitFile> dit;
   int64_t readyNs = 0;
   // TIER: interpreter-first, the first version is the interpreter, ready once verified.
   std::shared_ptr<rt::ProgramVersion> first =
@@ -366,28 +370,28 @@ int runServe(const ServeArgs &a) {
   // HOOK(retain): create the retentive store for a.retain (when not empty), restore it in a
   // start hook (exec.addStartHook, runs before init), capture in an after-tick hook and save
   // in a stop hook (exec.addStopHook).
-  std::unique_ptr<io::RetainStore> retain;
+  std::unique_ptr<services::RetainStore> retain;
   auto restored = std::make_unique<lj_state>();
   RetainSaveBinding saveBinding;
   if (!a.retain.empty()) {
-    io::RetainConfig rc;
+    services::RetainConfig rc;
     rc.path = a.retain;
     rc.period = std::chrono::milliseconds(a.retainPeriodMs);
     rc.force = a.retainForce;
     rc.programHash = first->hash;
     rc.profile = first->prog->profile; // what the target retains (docs/retain.md)
     rc.log = logLine;
-    retain = std::make_unique<io::RetainStore>(rc);
+    retain = std::make_unique<services::RetainStore>(rc);
     // Checked at start, once: a missing directory, a FIFO or symlink in the file's place, a
     // second server on the same file (docs/retain.md "Location").
     if (!retain->prepare(error)) return usageError("--retain: " + error);
     // Read the file here, on the main thread, so a file of another layout stops serve before
     // anything runs; the start hook only copies the result (docs/retain.md "Restore").
     lj_state_reset(restored.get());
-    io::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
-    if (rep.status == io::RestoreStatus::LayoutMismatch)
+    services::RestoreReport rep = retain->restore(*restored, 0); // the executive starts at now_ms 0
+    if (rep.status == services::RestoreStatus::LayoutMismatch)
       return usageError("--retain: " + a.retain + " belongs to another layout (see above)");
-    if (rep.status == io::RestoreStatus::DamagedNotKept)
+    if (rep.status == services::RestoreStatus::DamagedNotKept)
       return usageError("--retain: " + a.retain +
                         " is damaged and cannot be moved aside (see above)");
     exec.addStartHook(
@@ -448,9 +452,9 @@ int runServe(const ServeArgs &a) {
 
   // HOOK(modbus): start the Modbus TCP server on modbusHost:modbusPort (when modbusPort >= 0)
   // over exchange.snapshot / exchange.post / exchange.waitApplied.
-  std::unique_ptr<io::ModbusServer> modbus;
+  std::unique_ptr<services::ModbusServer> modbus;
   if (modbusPort >= 0) {
-    io::ModbusConfig mc;
+    services::ModbusConfig mc;
     mc.host = modbusHost;
     mc.port = modbusPort;
     mc.writeInputs = a.modbusWriteInputs;
@@ -458,7 +462,7 @@ int runServe(const ServeArgs &a) {
     mc.requestTimeout = std::chrono::milliseconds(a.requestTimeoutMs);
     mc.log = logLine;
     mc.map = modbusMap;
-    modbus = std::make_unique<io::ModbusServer>(mc, modbusBackend(exchange, retain.get()));
+    modbus = std::make_unique<services::ModbusServer>(mc, modbusBackend(exchange, retain.get()));
     if (!modbus->start(error)) {
       exec.requestStop();
       exec.join();
@@ -554,7 +558,7 @@ int runServe(const ServeArgs &a) {
   }
   // HOOK(retain): stop the store's writer after its final save.
   if (retain) {
-    io::RetainStats rs = retain->stats();
+    services::RetainStats rs = retain->stats();
     logLine("retain: " + std::to_string(rs.saves) + " saves (last #" +
             std::to_string(rs.lastSaveSeq) + "), " + std::to_string(rs.failures) + " failed");
   }

@@ -160,7 +160,7 @@ struct LiveView::Impl {
   std::function<void(const std::string &)> log;
   LiveViewConfig cfg;
   std::string key = newHttpToken(); // the page's key (services/HttpServer.h HttpConfig::key)
-  std::unique_ptr<io::HttpServer> http;
+  std::unique_ptr<services::HttpServer> http;
 
   uint64_t publishEvery = 1; // ticks between trace copies (~40 per second)
   uint64_t lastPublished = 0;
@@ -303,7 +303,7 @@ struct LiveView::Impl {
         for (const auto &[id, val] : cur->forces) f[std::to_string(id)] = val;
         m["forced"] = f;
         json locks = json::array();
-        for (const io::Assignment &a : ex.locks())
+        for (const formats::Assignment &a : ex.locks())
           locks.push_back(a.addr.text + "=" + std::to_string(a.value));
         m["locks"] = locks;
         // Every frame while watched (the header's tick and the panel's agree), else 2 Hz.
@@ -356,7 +356,7 @@ rt::Executive::AfterTickHook LiveView::hook() {
 
 bool LiveView::start(std::string &error) {
   Impl *im = impl_.get();
-  io::HttpBackend be;
+  services::HttpBackend be;
   be.page = [im] {
     std::shared_ptr<rt::ProgramVersion> cur = im->exec.current();
     return cur ? im->pageOf(*cur) : std::string("no program is running\n");
@@ -378,7 +378,7 @@ bool LiveView::start(std::string &error) {
   };
   be.watchers = [im](int d) { im->watchers.fetch_add(d); };
   be.command = [im](const json &r) { return im->ctl.handle(r); };
-  io::HttpConfig hc;
+  services::HttpConfig hc;
   hc.host = im->cfg.host;
   hc.port = im->cfg.port;
   hc.token = im->cfg.token;
@@ -387,7 +387,7 @@ bool LiveView::start(std::string &error) {
   hc.tokenFile = im->cfg.tokenFile;
   hc.readOnly = im->cfg.readOnly;
   hc.log = im->log;
-  im->http = std::make_unique<io::HttpServer>(hc, std::move(be));
+  im->http = std::make_unique<services::HttpServer>(hc, std::move(be));
   if (!im->http->start(error)) return false;
   im->hub = std::thread([im] { im->hubLoop(); });
   return true;
