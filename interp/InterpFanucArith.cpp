@@ -1,5 +1,5 @@
 // Interpreter semantics of the FANUC arithmetic (fanuc-c rows of ir/OpTable.h: BinaryArith,
-// BcdArith, BcdConstant; ../shared/reference/fanuc-pmc.md 6.10 [EXT], 6.2, 3.1, 3.2; the
+// BcdArith, BcdConstant; FANUC PMC manual ref 6.10 [EXT], 6.2, 3.1, 3.2; the
 // readings are rows of docs/fanuc-pmc.md). Twin of lowering/EmitFanucArith.cpp; the operation
 // codes, flag bits and ranges are ir/PmcArith.h's.
 //

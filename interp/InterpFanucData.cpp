@@ -1,5 +1,5 @@
 // Interpreter semantics of the FANUC transfer, search, conversion and flow operations (fanuc-b
-// rows of ir/OpTable.h; ../shared/reference/fanuc-pmc.md 4.2, 6.5, 6.7-6.9; the [EXT]/[INF]
+// rows of ir/OpTable.h; FANUC PMC manual ref 4.2, 6.5, 6.7-6.9; the [EXT]/[INF]
 // readings are rows of docs/fanuc-pmc.md). Twin of lowering/EmitFanucData.cpp.
 //
 // Control inputs are ST entries: ACT = ST0, the next input ST1, ... (reference 5). An instruction

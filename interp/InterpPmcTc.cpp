@@ -1,6 +1,6 @@
 // Interpreter semantics of family PmcTc: the FANUC PMC timers TMR/TMRC, the counters
 // CTR/CTRB/CTRC, COMPB (R9000 flags), COMP/COIN (BCD), NEx and RNGx
-// (../shared/reference/fanuc-pmc.md 6.3, 6.4, 6.6; choices in docs/fanuc-pmc.md). The lowering
+// (FANUC PMC manual ref 6.3, 6.4, 6.6; choices in docs/fanuc-pmc.md). The lowering
 // is lowering/EmitPmcTc.cpp; both share ir/PmcTc.h for the unit tables and the BCD reading.
 #include "interp/InterpreterInternal.h"
 #include "ir/PmcTc.h"

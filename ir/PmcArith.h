@@ -1,7 +1,7 @@
 // Facts of the FANUC PMC arithmetic (ADDB..DIVB, ADD..DIV, NUME; ops BinaryArith, BcdArith,
 // BcdConstant) that the front end (frontends/fanuc/ArithFunctional.cpp), the interpreter
 // (interp/InterpFanucArith.cpp) and the lowering (lowering/EmitFanucArith.cpp) share: the
-// operation codes, the R9000 flag bits and the value ranges (../shared/reference/fanuc-pmc.md 2,
+// operation codes, the R9000 flag bits and the value ranges (FANUC PMC manual ref 2,
 // 3.1, 3.2, 6.10; the [EXT] readings are rows of docs/fanuc-pmc.md).
 #pragma once
 

@@ -1,6 +1,6 @@
 // Facts of the FANUC PMC timers, counters and compares (family PmcTc) that the interpreter
 // (interp/InterpPmcTc.cpp) and the lowering (lowering/EmitPmcTc.cpp) share: time units, the
-// preset reading, the BCD reading and the R9000 flag bits (../shared/reference/fanuc-pmc.md 2,
+// preset reading, the BCD reading and the R9000 flag bits (FANUC PMC manual ref 2,
 // 3.2, 6.3, 6.6; choices in docs/fanuc-pmc.md).
 #pragma once
 

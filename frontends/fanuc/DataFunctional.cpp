@@ -180,7 +180,7 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   const SourceLoc at = f.head.loc;
   if (const char *svc = cncService(name)) {
     e.error(at, what + " is not supported by this build: it needs " + svc +
-                    ", a CNC service ../shared/reference/fanuc-pmc.md 6.10 names but does not "
+                    ", a CNC service the FANUC 0i-D PMC manual (6.10) names but does not "
                     "describe (docs/fanuc-pmc.md \"Not supported\")");
     return true;
   }

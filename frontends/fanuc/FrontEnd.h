@@ -1,4 +1,4 @@
-// The FANUC 0i-D PMC mnemonic front end (../shared/reference/fanuc-pmc.md 5, 6; docs/fanuc-pmc.md):
+// The FANUC 0i-D PMC mnemonic front end (FANUC PMC manual ref 5, 6; docs/fanuc-pmc.md):
 // text -> ParsedProgram on the FANUC profile, with located diagnostics in FANUC wording.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The FANUC 0i-D PMC profile (../shared/reference/fanuc-pmc.md 1.1, 2, 4): every area is bytes,
+// The FANUC 0i-D PMC profile (FANUC PMC manual ref 1.1, 2, 4): every area is bytes,
 // little-endian, in lj_state.mem (abi.h ABI v3), the second range of T/C/K/A/R/X/Y right after
 // the first (TargetProfile::elementOffset). Ranges the seed lacks are [EXT] rows of
 // docs/fanuc-pmc.md.

@@ -1,4 +1,4 @@
-// The FANUC 0i-D PMC target profile (profiles/fanuc/Areas.cpp; ../shared/reference/fanuc-pmc.md
+// The FANUC 0i-D PMC target profile (profiles/fanuc/Areas.cpp; FANUC PMC manual ref
 // sections 1, 2, 4; the [EXT] choices are rows of docs/fanuc-pmc.md). Only the FANUC front end,
 // the FANUC generator and the profile registry name it.
 #pragma once
