@@ -153,11 +153,13 @@ void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm) {
     // peephole work on the bit logic. Measured on the 10,000-statement benchmark program:
     // default<O2> costs ~1.1 s of CPU and this ~0.14 s, for object code within 1% of O2's
     // size and the same scan time. No fixpoint iteration: a second round changes ~0.1%.
+    // CoilDiamonds first, so that SimplifyCFG leaves each coil's write as a select (what that
+    // bought per program shape: docs/BENCHMARKS.md "Shape corpus").
     llvm::FunctionPassManager fpm;
     fpm.addPass(CoilDiamonds());
     fpm.addPass(llvm::InstCombinePass(
         llvm::InstCombineOptions().setMaxIterations(1).setVerifyFixpoint(false)));
-    fpm.addPass(llvm::SimplifyCFGPass()); // the few JMP / CALL / RETN diamonds, the coils'
+    fpm.addPass(llvm::SimplifyCFGPass()); // the JMP / CALL / RETN diamonds; the coils' to selects
     mpm.addPass(llvm::createModuleToFunctionPassAdaptor(std::move(fpm)));
   } else if (level <= 0) {
     mpm = pb.buildO0DefaultPipeline(llvm::OptimizationLevel::O0);
