@@ -7,8 +7,8 @@ loaded by `classicladder --nogui`) period by period in one HAL thread, determini
     streamer.N -> bitslice.K -> classicladder.0.refresh -> wsum (process_wsums) -> sampler.N
 
 `streamer` plays a seeded random stimulus prepared in full before the thread starts (every
-`in-NN` bit, 16 to a u32 unpacked by `bitslice`; every `s32in-NN`; every `floatin-NN`), one row
-per period; `sampler` records every `out-NN` (16 to an s32 packed by `weighted_sum`), every
+`in-NN` bit, 32 to a u32 unpacked by `bitslice`; every `s32in-NN`; every `floatin-NN`), one row
+per period; `sampler` records every `out-NN` (31 to an s32 packed by `weighted_sum`), every
 `s32out-NN` and `floatout-NN` in the same period. A 1 ms thread gives exactly one scan per call
 (classicladder.md 4.1), so row k of the trace is the outputs after the k-th scan, whatever the
 machine's load. The traces are CSV (`period,out-00,...,s32out-00,...,floatout-00,...`).
@@ -43,7 +43,8 @@ from halrig import RigError  # noqa: E402
 
 PERIOD_NS = 1000000  # 1 ms: one scan per call (classicladder.md 4.1)
 ITEMS = 20           # items per streamer/sampler channel (the components take at most 21)
-BITS = 16            # bits packed into one u32/s32 item
+IN_BITS = 32         # input bits a u32 item carries (bitslice: 32 outputs)
+OUT_BITS = 31        # output bits an s32 item carries (weighted_sum; 2^31 would not fit)
 
 
 class Hal:
@@ -136,8 +137,8 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
     """The HAL commands of one oracle run, and the channel layouts."""
     nbits_in = sum(p.startswith("in-") for p in ins)
     nbits_out = sum(p.startswith("out-") for p in outs)
-    in_words = (nbits_in + BITS - 1) // BITS
-    out_words = (nbits_out + BITS - 1) // BITS
+    in_words = (nbits_in + IN_BITS - 1) // IN_BITS
+    out_words = (nbits_out + OUT_BITS - 1) // OUT_BITS
     # streamer items: packed input words, then s32in, then floatin
     # the period number travels from the streamer to the sampler beside the pins: the sampled
     # index of row k must be k, which proves no row was lost, repeated (an underrun) or shifted
@@ -150,8 +151,9 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
     s_ch = chunks(s_items)
     # every sampler channel records the period number too
     o_ch = [[("u", "idx")] + c for c in chunks(o_items)]
-    if len(s_ch) > 8 or len(o_ch) > 8:
-        raise RigError("more pins than 8 streamer/sampler channels carry")
+    if len(s_ch) > 8 or len(o_ch) > 8 or in_words > 8 or out_words > 8:
+        raise RigError("more pins than 8 streamer/sampler channels, bitslices or weighted sums "
+                       "carry")
     depth = periods + 64
     args = " ".join(f"{k}={v}" for k, v in loadrt.items())
     lines = [f"loadrt classicladder_rt {args}",
@@ -160,9 +162,10 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
              f"loadrt sampler depth={','.join([str(depth)] * len(o_ch))} "
              f"cfg={','.join(''.join(t for t, _ in c) for c in o_ch)}"]
     if in_words:
-        lines.append(f"loadrt bitslice count={in_words} personality={','.join(['16'] * in_words)}")
+        lines.append(f"loadrt bitslice count={in_words} "
+                     f"personality={','.join([str(IN_BITS)] * in_words)}")
     if out_words:
-        lines.append(f"loadrt weighted_sum wsum_sizes={','.join(['16'] * out_words)}")
+        lines.append(f"loadrt weighted_sum wsum_sizes={','.join([str(OUT_BITS)] * out_words)}")
     lines.append(f"loadrt threads name1=plc period1={PERIOD_NS} fp1=1")
     lines += [f"addf streamer.{c} plc" for c in range(len(s_ch))]
     lines += [f"addf bitslice.{k} plc" for k in range(in_words)]
@@ -180,11 +183,11 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
             else:
                 lines.append(f"net s-{name} {src} classicladder.0.{name}")
     for b in range(nbits_in):
-        lines.append(f"net s-in-{b:02d} bitslice.{b // BITS}.out-{b % BITS:02d} "
+        lines.append(f"net s-in-{b:02d} bitslice.{b // IN_BITS}.out-{b % IN_BITS:02d} "
                      f"classicladder.0.in-{b:02d}")
     for b in range(nbits_out):
         lines.append(f"net s-out-{b:02d} classicladder.0.out-{b:02d} "
-                     f"wsum.{b // BITS}.bit.{b % BITS}.in")
+                     f"wsum.{b // OUT_BITS}.bit.{b % OUT_BITS}.in")
     for c, chan in enumerate(o_ch):
         for i, (_, name) in enumerate(chan):
             dst = f"sampler.{c}.pin.{i}"
@@ -250,8 +253,8 @@ def record(clp_tool, project, outdir, periods, seed, hal=None):
                 elif name.startswith("w"):
                     k = int(name[1:])
                     word = 0
-                    for b in range(BITS):
-                        p = f"in-{k * BITS + b:02d}"
+                    for b in range(IN_BITS):
+                        p = f"in-{k * IN_BITS + b:02d}"
                         if p in col and row[col[p]]:
                             word |= 1 << b
                     vals.append(str(word))
@@ -298,8 +301,8 @@ def record(clp_tool, project, outdir, periods, seed, hal=None):
                                                      f"{v}: the run was not in step")
                 elif name.startswith("w"):
                     w = int(v)
-                    for b in range(BITS):
-                        named[f"out-{int(name[1:]) * BITS + b:02d}"] = (w >> b) & 1
+                    for b in range(OUT_BITS):
+                        named[f"out-{int(name[1:]) * OUT_BITS + b:02d}"] = (w >> b) & 1
                 else:
                     named[name] = float(v) if t == "f" else int(v)
         trace.append([fmt(named[p]) for p in outs])
