@@ -23,6 +23,9 @@ Usage:
   clharness.py compare CLP_TOOL PROJECT OUTDIR --other 'CMD {project} {stimulus} {trace}'
   clharness.py real    CLP_TOOL ROOT OUTDIR [--periods N]     every .clp under ROOT, a table
   clharness.py gen     CLP_TOOL OUTDIR [--count N] [--periods N] [--seed S] [--rungs R]
+  clharness.py suite   CLP_TOOL ROOT OUTDIR --real REL... --gen N [--other CMD]
+                       ClassicLadder against the other side (default: `clp_tool ref`, the
+                       reference scan of oracle/classicladder) on real and generated projects
 CLP_TOOL is build/tests/classicladder/clp_tool (project sizes, the generator)."""
 import argparse
 import csv
@@ -359,6 +362,53 @@ def cmd_compare(a):
     return 0 if n == 0 else 1
 
 
+def compare_one(clp_tool, project, outdir, periods, seed, other, hal):
+    """ClassicLadder against `other` on one project: the number of differences (None: not run)."""
+    rec = record(clp_tool, project, outdir, periods, seed, hal)
+    if not rec["ok"]:
+        print(f"{project}: ClassicLadder did not run it: {rec['reason']}")
+        return None
+    trace = os.path.join(outdir, "other.csv")
+    cmd = other.format(project=shlex.quote(project), stimulus=shlex.quote(rec["stimulus"]),
+                       trace=shlex.quote(trace), periods=periods)
+    r = subprocess.run(cmd, shell=True, capture_output=True, text=True, timeout=3600)
+    if r.returncode != 0:
+        print(f"{project}: the other side failed ({r.returncode}): {r.stdout}{r.stderr}")
+        return -1
+    diffs, n = diff(rec["trace"], trace)
+    changed, changes = activity(rec["trace"])
+    print(f"{project}: {periods} periods x {len(rec['outs'])} output pins ({changed} changing, "
+          f"{changes} changes): {n} differences", flush=True)
+    for d in diffs:
+        print("  period {} {}: ClassicLadder {} other {}".format(*d))
+    return n
+
+
+def cmd_suite(a):
+    """The CI-sized check: the listed real projects and `--gen` generated ones, ClassicLadder
+    against the other side (default: clp_tool's reference scan); fails on any difference."""
+    other = a.other or f"{shlex.quote(a.clp_tool)} ref {{project}} {{stimulus}} {{trace}}"
+    hal = Hal(tempfile.mkdtemp(prefix="clharness-"))
+    bad = 0
+    try:
+        for i, rel in enumerate(a.real):
+            out = os.path.join(a.outdir, rel.replace("/", "__"))
+            n = compare_one(a.clp_tool, os.path.join(a.root, rel), out, a.periods, 1 + i, other, hal)
+            bad += n != 0
+        for k in range(a.gen):
+            seed = a.seed + k
+            clp = os.path.join(a.outdir, f"gen{seed}.clp")
+            os.makedirs(a.outdir, exist_ok=True)
+            subprocess.run([a.clp_tool, "gen", str(seed), clp, "8"], check=True, timeout=60)
+            n = compare_one(a.clp_tool, clp, os.path.join(a.outdir, f"gen{seed}"), a.periods,
+                            seed, other, hal)
+            bad += n != 0
+    finally:
+        shutil.rmtree(hal.dir, ignore_errors=True)
+    print(f"{len(a.real) + a.gen} projects, {bad} with differences or not run")
+    return 1 if bad else 0
+
+
 def cmd_record(a):
     rec = record(a.clp_tool, a.project, a.outdir, a.periods, a.seed)
     if not rec["ok"]:
@@ -447,6 +497,15 @@ def main():
     s.add_argument("--periods", type=int, default=10000)
     s.add_argument("--seed", type=int, default=1)
     s.add_argument("--allow-failures", action="store_true")
+    s = sub.add_parser("suite")
+    s.add_argument("clp_tool")
+    s.add_argument("root")
+    s.add_argument("outdir")
+    s.add_argument("--real", nargs="*", default=[], help="projects relative to ROOT")
+    s.add_argument("--gen", type=int, default=0)
+    s.add_argument("--periods", type=int, default=2000)
+    s.add_argument("--seed", type=int, default=1)
+    s.add_argument("--other", default="")
     s = sub.add_parser("gen")
     s.add_argument("clp_tool")
     s.add_argument("outdir")
@@ -457,7 +516,7 @@ def main():
     a = ap.parse_args()
     try:
         return {"record": cmd_record, "compare": cmd_compare, "real": cmd_real,
-                "gen": cmd_gen}[a.cmd](a)
+                "gen": cmd_gen, "suite": cmd_suite}[a.cmd](a)
     except RigError as e:
         print(f"error: {e}")
         return 1
