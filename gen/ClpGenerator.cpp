@@ -79,7 +79,7 @@ private:
 
   /// A boolean operand for a contact: mostly I/Q/B, sometimes a block output.
   void boolVar(Cell &c) {
-    switch (rng_.weighted(std::array<int, 8>{8, 3, 4, 1, 1, 1, 1, 1})) {
+    switch (rng_.weighted(std::array<int, 8>{14, 3, 3, 1, 1, 1, 1, 1})) {
     case 0:
       c.vt = 50, c.vn = idx(sz_.inputs);
       break;
@@ -108,7 +108,7 @@ private:
   }
 
   void contact(Cell &c) {
-    c.type = std::array<int, 4>{1, 2, 3, 4}[rng_.weighted(std::array<int, 4>{6, 4, 1, 1})];
+    c.type = std::array<int, 4>{1, 2, 3, 4}[rng_.weighted(std::array<int, 4>{7, 3, 1, 1})];
     boolVar(c);
   }
 
@@ -130,7 +130,7 @@ private:
   void logicRung(Grid &g) {
     int rows = static_cast<int>(rng_.range(1, 3));
     for (int y = 0; y < rows; ++y) {
-      series(g, y, static_cast<int>(rng_.range(1, 4)), 9);
+      series(g, y, static_cast<int>(rng_.weighted(std::array<int, 4>{0, 5, 3, 1})), 9);
       if (y > 0 && rng_.chance(35)) g[rng_.range(1, 8)][y].top = 1; // an inner OR
       if (y == 0 || rng_.chance(50))
         coil(g[9][y]);
@@ -327,7 +327,7 @@ private:
       if (compare)
         t = expr(1) + ops[rng_.below(6)] + expr(1);
       else {
-        int k = rng_.weighted(std::array<int, 3>{4, 3, 1});
+        int k = rng_.weighted(std::array<int, 3>{3, 4, 1});
         std::string target = k == 0   ? "@200/" + std::to_string(idx(sz_.words)) + "@"
                              : k == 1 ? "@280/" + std::to_string(idx(sz_.s32out)) + "@"
                                       : "@310/" + std::to_string(idx(sz_.floatOut)) + "@";
@@ -373,8 +373,8 @@ private:
   std::string iecFile() {
     std::string s;
     for (int i = 0; i < sz_.timersIec; ++i) {
-      std::string base = rng_.chance(80) ? "2," + std::to_string(rng_.range(0, 25))
-                                         : "1," + std::to_string(rng_.range(1, 3));
+      std::string base = rng_.chance(85) ? "2," + std::to_string(rng_.range(0, 12))
+                                         : "1," + std::to_string(rng_.range(1, 2));
       s += base + "," + std::to_string(rng_.below(3)) + "\n";
     }
     return s;
