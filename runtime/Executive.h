@@ -54,6 +54,7 @@ struct ProgramVersion {
   // (front end, build) and the controller (request, settle wait); requestedNs 0 = not a change.
   int64_t frontendNs = 0, buildCpuNs = 0, requestedNs = 0, settleNs = 0;
   uint32_t groups = 0, groupsCompiled = 0, groupsQuick = 0;
+  size_t warnings = 0; ///< the verifier's warnings (serve prints their count, not each one)
 };
 
 /// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory

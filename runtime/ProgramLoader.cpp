@@ -223,7 +223,7 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
   const bool nvalueGiven = plc2Nvalue_ >= 0;
   const int32_t nvalue = io::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
   std::string diagnostics;
-  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diagnostics);
+  std::optional<VerifiedProgram> prog = io::verifyProgram(src, nvalue, diagnostics, &v->warnings);
   if (!prog) {
     error = diagnostics;
     while (!error.empty() && error.back() == '\n') error.pop_back();

@@ -6,6 +6,7 @@
 
 #include "formats/Dialects.h"
 #include "profiles/Profiles.h"
+#include "runtime/Controller.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 
@@ -16,6 +17,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <thread>
 
 namespace lj::rt {
@@ -329,6 +331,48 @@ TEST(SignalTrace, InARunningExecutive) {
   if (exec.stats().missedDeadlines == 0) {
     EXPECT_EQ(c.ticks.back() - c.ticks.front(), 299u) << "contiguous tick numbers";
   }
+}
+
+} // namespace
+} // namespace lj::rt
+
+namespace lj::rt {
+namespace {
+
+// Issue 32 item 6: a user's force and a view switch are logged as what they are, naming the
+// element forced, never as "online change: now running version N".
+TEST(ServeLog, ForceAndViewSwitchSayWhatHappened) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("ljforce-" + std::to_string(::getpid()) + ".stl"))
+          .string();
+  std::ofstream(path) << "LDT\nADD D1 1 D1\nLD X483.0\nOUT Y1.0\n1END\n2END\n";
+  ProgramLoader loader("interp", -1);
+  std::string err;
+  auto v = loader.load(path, {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  std::vector<std::string> logs;
+  std::mutex mu;
+  Controller ctl(ex, exec, loader, path, [&](const std::string &l) {
+    std::lock_guard<std::mutex> g(mu);
+    logs.push_back(l);
+  });
+  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"line", 3}, {"mode", "off"}});
+  ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+  ASSERT_TRUE(ctl.setTraced(true, err)) << err;
+  std::remove(path.c_str());
+  std::lock_guard<std::mutex> g(mu);
+  bool forced = false, switched = false;
+  for (const std::string &l : logs) {
+    EXPECT_EQ(l.find("online change"), std::string::npos) << l;
+    forced |= l.find("force: LD X483.0 (line 3, id ") != std::string::npos &&
+              l.find("forced off") != std::string::npos;
+    switched |= l.find("live view: switching to the traced code") != std::string::npos;
+  }
+  EXPECT_TRUE(forced) << "no force line naming LD X483.0";
+  EXPECT_TRUE(switched);
 }
 
 } // namespace

@@ -320,6 +320,7 @@ int runServe(const ServeArgs &a) {
     }
     return usageError(aot ? "--engine " + error : error);
   }
+  if (!a.quiet) std::fputs(warningSummary(a.program, first->warnings, a.dialect).c_str(), stderr);
   uint64_t periodMs = a.periodMs;
   if (dit) {
     // A container's parameters are defaults (docs/plc-dit.md "run"): --params/--set win.
