@@ -327,7 +327,7 @@ void SignalTrace::sample(const lj_state &s, uint64_t tick) {
       break;
     }
   }
-  samples_.fetch_add(1, std::memory_order_relaxed);
+  samples_.store(++sampled_, std::memory_order_relaxed); // a plain store: one writer
   if (phase_ == Waiting) {
     bool fire = manual_.load(std::memory_order_relaxed) &&
                 manual_.exchange(false, std::memory_order_acq_rel);

@@ -139,6 +139,7 @@ private:
   bool havePrev_ = false;
   int64_t prev_ = 0;
   uint64_t sequence_ = 0;
+  uint64_t sampled_ = 0;
 
   // Triple buffer (runtime/TraceBuffer.h's scheme): back_ the scan thread's, front_ readers'.
   Slot slots_[3];
