@@ -154,6 +154,19 @@ std::optional<io::Assignment> writable(const io::Dialect &d, const std::string &
 
 } // namespace
 
+namespace {
+// The trace's addresses in the running program's syntax (formats/Dialects.h).
+AddressParser traceParser(const io::Dialect &d) {
+  return [&d](std::string_view text, std::string &error) { return d.parseAddress(text, error); };
+}
+} // namespace
+
+bool Controller::armTraceFile(const std::string &file, std::string &error) {
+  std::string text;
+  if (!io::readFile(file, text, error)) return false;
+  return trace_.defineAndArm(text, file, traceParser(dialect()), exec_.periodNs(), error);
+}
+
 const io::Dialect &Controller::dialect() const {
   std::shared_ptr<ProgramVersion> cur = exec_.current();
   const io::Dialect *d =
@@ -430,6 +443,7 @@ json Controller::handle(const json &req) {
     if (cmd == "force") return doForce(req);
     if (cmd == "lock" || cmd == "unlock" || cmd == "locks") return doLock(req);
     if (cmd == "load") return doLoad(req);
+    if (cmd == "trace") return trace_.handle(req, traceParser(dialect()), exec_.periodNs());
     if (cmd == "stats") {
       json j = exec_.stats().toJson();
       ChangeStats cs = changeStats();

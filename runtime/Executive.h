@@ -141,6 +141,7 @@ public:
   /// Wait for the scan thread to end (after requestStop or maxTicks).
   void join();
   bool running() const { return running_.load(std::memory_order_acquire); }
+  uint64_t periodNs() const { return opts_.periodNs; }
 
   /// The running program version.
   std::shared_ptr<ProgramVersion> current() const;

@@ -2,6 +2,7 @@
 #include "runtime/SignalTrace.h"
 
 #include "profiles/Profiles.h"
+#include "runtime/Executive.h"
 
 #include <charconv>
 #include <cstddef>
@@ -445,6 +446,117 @@ std::string TraceCapture::csv() const {
     io::csvRow(ticks[r], periodNs, values.data() + r * signals.size(), signals.size(),
                static_cast<int64_t>(triggerTick), out);
   return out;
+}
+
+TraceControl::~TraceControl() {
+  std::string error;
+  if (armed_) exec_.setSignalTrace(nullptr, std::chrono::seconds(5), error);
+}
+
+bool TraceControl::define(const std::string &text, const std::string &file,
+                          const AddressParser &parse, uint64_t periodNs, std::string &error) {
+  std::optional<TraceDefinition> d = parseTraceDefinition(text, file, error);
+  if (!d) return false;
+  // Resolved now, so a bad address is refused before anything changes.
+  if (!SignalTrace::make(*d, parse, periodNs, error)) return false;
+  if (!disarm(error)) return false;
+  collect();
+  trace_.reset();
+  def_ = std::move(d);
+  parse_ = parse;
+  periodNs_ = periodNs;
+  return true;
+}
+
+bool TraceControl::arm(std::string &error) {
+  if (!def_) {
+    error = "no trace defined (monitor trace define FILE)";
+    return false;
+  }
+  if (!disarm(error)) return false;
+  collect();
+  std::unique_ptr<SignalTrace> fresh = SignalTrace::make(*def_, parse_, periodNs_, error);
+  if (!fresh) return false;
+  if (!exec_.setSignalTrace(fresh.get(), std::chrono::seconds(5), error)) {
+    std::string again;
+    exec_.setSignalTrace(nullptr, std::chrono::seconds(5), again);
+    return false;
+  }
+  trace_ = std::move(fresh);
+  armed_ = true;
+  return true;
+}
+
+bool TraceControl::disarm(std::string &error) {
+  if (!armed_) return true;
+  if (!exec_.setSignalTrace(nullptr, std::chrono::seconds(5), error)) return false;
+  armed_ = false;
+  return true;
+}
+
+void TraceControl::collect() {
+  TraceCapture c;
+  if (trace_ && trace_->take(c)) last_ = std::move(c);
+}
+
+bool TraceControl::defineAndArm(const std::string &text, const std::string &file,
+                                const AddressParser &parse, uint64_t periodNs, std::string &error) {
+  std::lock_guard<std::mutex> g(mu_);
+  return define(text, file, parse, periodNs, error) && arm(error);
+}
+
+nlohmann::json TraceControl::handle(const nlohmann::json &req, const AddressParser &parse,
+                                    uint64_t periodNs) {
+  using nlohmann::json;
+  auto fail = [](const std::string &why) {
+    return json{{"ok", false}, {"error", "trace: " + why}};
+  };
+  auto it = req.find("action");
+  if (it == req.end() || !it->is_string())
+    return fail("needs \"action\": define, arm, trigger, stop, status or save");
+  const std::string action = it->get<std::string>();
+  std::lock_guard<std::mutex> g(mu_);
+  std::string error;
+  if (action == "define") {
+    if (!req.contains("text") || !req["text"].is_string())
+      return fail("define needs \"text\", the definition");
+    const std::string file = req.value("file", std::string("definition"));
+    if (!define(req["text"].get<std::string>(), file, parse, periodNs, error)) return fail(error);
+  } else if (action == "arm") {
+    if (!arm(error)) return fail(error);
+  } else if (action == "trigger") {
+    if (!armed_) return fail("not armed");
+    trace_->triggerNow();
+  } else if (action == "stop") {
+    if (!disarm(error)) return fail(error);
+    collect();
+  } else if (action == "save") {
+    collect();
+    if (!last_)
+      return fail(std::string("no capture yet (") + (trace_ ? trace_->status().state : "idle") +
+                  ")");
+    const std::string format = req.value("format", std::string("vcd"));
+    if (format != "vcd" && format != "csv")
+      return fail("save: format must be vcd or csv, got '" + format + "'");
+    const bool bits = req.value("bits", false);
+    return {{"ok", true},
+            {"data", format == "vcd" ? last_->vcd(bits) : last_->csv()},
+            {"trigger_tick", last_->triggerTick},
+            {"ticks", last_->ticks.size()},
+            {"capture", last_->sequence}};
+  } else if (action != "status") {
+    return fail("unknown action '" + action + "' (define, arm, trigger, stop, status, save)");
+  }
+  json st = {{"ok", true}, {"armed", armed_}};
+  if (def_) st["definition"] = formatTraceDefinition(*def_);
+  TraceStatus ts = trace_ ? trace_->status() : TraceStatus{};
+  st["state"] = armed_ ? ts.state : (def_ ? "stopped" : "idle");
+  st["samples"] = ts.samples;
+  st["captures"] = ts.captures;
+  st["dropped"] = ts.dropped;
+  if (last_)
+    st["last_capture"] = {{"capture", last_->sequence}, {"trigger_tick", last_->triggerTick}};
+  return st;
 }
 
 } // namespace lj::rt

@@ -9,6 +9,8 @@
 #include "formats/Vcd.h"
 #include "ladderjit/abi.h"
 
+#include <nlohmann/json.hpp>
+
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -151,6 +153,49 @@ private:
   std::atomic<bool> manual_{false};
   std::atomic<uint8_t> state_{Waiting};
   std::atomic<uint64_t> samples_{0}, captures_{0}, dropped_{0};
+};
+
+class Executive;
+
+/// The trace of a running serve, as the control socket's `trace` command drives it (docs/trace.md
+/// "monitor trace"): one definition, armed into the executive, stopped, its last capture saved.
+/// Traces live in memory only: nothing survives a restart unless saved.
+class TraceControl {
+public:
+  explicit TraceControl(Executive &exec) : exec_(exec) {}
+  ~TraceControl(); ///< disarms (the executive must outlive it)
+  TraceControl(const TraceControl &) = delete;
+  TraceControl &operator=(const TraceControl &) = delete;
+
+  /// `{"cmd":"trace","action":A,...}` with A one of
+  ///   define  "text": a definition (parseTraceDefinition), "file": its name for messages;
+  ///           replaces the trace (disarming the old one)
+  ///   arm     start sampling (a fresh capture; the last capture stays until a new one completes)
+  ///   trigger fire a waiting trace at the next tick
+  ///   stop    stop sampling
+  ///   status  state, definition, samples, captures, dropped
+  ///   save    "format": "vcd" | "csv", "bits": true for --vcd-bits: the last capture's text
+  /// `parse`: the running program's address syntax; `periodNs`: the tick.
+  nlohmann::json handle(const nlohmann::json &req, const AddressParser &parse, uint64_t periodNs);
+  /// serve --trace FILE: define from `text` and arm. False with `error`.
+  bool defineAndArm(const std::string &text, const std::string &file, const AddressParser &parse,
+                    uint64_t periodNs, std::string &error);
+
+private:
+  bool define(const std::string &text, const std::string &file, const AddressParser &parse,
+              uint64_t periodNs, std::string &error);
+  bool arm(std::string &error);
+  bool disarm(std::string &error);
+  void collect(); ///< the newest completed capture of the trace into last_
+
+  Executive &exec_;
+  std::mutex mu_; // one command at a time
+  std::optional<TraceDefinition> def_;
+  AddressParser parse_;
+  uint64_t periodNs_ = 1000000;
+  std::unique_ptr<SignalTrace> trace_; ///< the current trace (armed_: in the executive)
+  bool armed_ = false;
+  std::optional<TraceCapture> last_;
 };
 
 } // namespace lj::rt

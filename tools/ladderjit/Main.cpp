@@ -339,12 +339,16 @@ int mainImpl(int argc, char **argv) {
   MonitorArgs mon;
   CLI::App *cMonitor = app.add_subcommand("monitor", "talk to a running serve: read, write, "
                                                      "force, lock, unlock, locks, load, stats, "
-                                                     "stop");
+                                                     "trace, stop");
   lastWins(cMonitor->add_option("--control", mon.control,
                                 "control socket (default: the only server in the runtime dir)"));
   cMonitor->add_flag("--allow-shrink", mon.allowShrink,
                      "load: accept an empty program or one without a part the running one has");
   cMonitor->add_option("COMMAND", mon.args, "command and its arguments")->required();
+  bool traceVcd = false, traceCsv = false, traceBits = false;
+  cMonitor->add_flag("--vcd", traceVcd, "trace save: as a value change dump (the default)");
+  cMonitor->add_flag("--csv", traceCsv, "trace save: as CSV");
+  cMonitor->add_flag("--bits", traceBits, "trace save --vcd: each byte/word as its bit wires");
 
   try {
     app.parse(argc, argv);
@@ -379,7 +383,13 @@ int mainImpl(int argc, char **argv) {
     serve.plc2NvalueGiven = serveNvalue->count() > 0;
     return runServe(serve);
   }
-  if (cMonitor->parsed()) return runMonitor(mon);
+  if (cMonitor->parsed()) {
+    // `trace save FILE --csv`: the flags go back behind the command (MonitorCmd.cpp reads them).
+    if (traceVcd) mon.args.push_back("--vcd");
+    if (traceCsv) mon.args.push_back("--csv");
+    if (traceBits) mon.args.push_back("--bits");
+    return runMonitor(mon);
+  }
   return usageError("no subcommand");
 }
 

@@ -419,6 +419,8 @@ int runServe(const ServeArgs &a) {
   if (!socket.start(control, error)) return usageError(error);
 
   if (!exec.start(first, error)) return usageError(error);
+  if (!a.trace.empty() && !controller.armTraceFile(a.trace, error))
+    return usageError("--trace: " + error);
   // TIER: the JIT code is compiled in the background and switched in at a tick boundary.
   rt::TierUp tierUp(exec, loader, logLine);
   tierUp.start(first, rt::backgroundTiers(tierPlan));
