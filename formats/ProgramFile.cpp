@@ -119,7 +119,8 @@ bool sameSymbols(const std::vector<Symbol> &json, const std::vector<Symbol> &tex
 } // namespace
 
 std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t plc2Nvalue,
-                                             std::string &diagnostics) {
+                                             std::string &diagnostics, size_t *warnings) {
+  if (warnings) *warnings = 0;
   Diagnostics diags(src.path);
   // Lines end with LF or CRLF. A file whose lines end with a CR alone would reach the front
   // end as one long line ("LD takes 1 operand, got 3"): say what is wrong instead.
@@ -142,6 +143,11 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
                                             : nullptr;
   std::optional<VerifiedProgram> prog =
       src.dialect->compile(src.text, src.path, opts, diags, symbols);
+  if (warnings)
+    *warnings = static_cast<size_t>(
+        std::count_if(diags.all().begin(), diags.all().end(), [](const Diagnostic &d) {
+          return d.severity == Diagnostic::Severity::Warning;
+        }));
   diagnostics =
       capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
                kMaxDiagnosticLines, src.path);

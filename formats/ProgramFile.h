@@ -49,9 +49,10 @@ int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiv
 
 /// Verify a read PROGRAM (with its symbols, for a container). `diagnostics` receives every
 /// rendered diagnostic (warnings too). Nothing is returned when there are errors; then
-/// `diagnostics` is never empty.
+/// `diagnostics` is never empty. `warnings`, when given, receives the number of warnings (all
+/// of them, also those past the cap on rendered lines).
 std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t plc2Nvalue,
-                                             std::string &diagnostics);
+                                             std::string &diagnostics, size_t *warnings = nullptr);
 
 /// The program hash a .so carries (docs/aot.md "Program hash"). For a plc.dit built with its
 /// own plc2_nvalue: the container's hash line. Otherwise SHA-256 over

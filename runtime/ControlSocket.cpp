@@ -342,8 +342,10 @@ bool controlRequest(const std::string &path, const nlohmann::json &request,
     return false;
   }
   std::string buf;
-  char chunk[4096];
-  while (buf.find('\n') == std::string::npos) {
+  char chunk[65536];
+  size_t scanned = 0; // bytes known to hold no '\n': an answer may be megabytes (a trace)
+  while (buf.find('\n', scanned) == std::string::npos) {
+    scanned = buf.size();
     pollfd p{fd, POLLIN, 0};
     int r = ::poll(&p, 1, timeoutMs);
     if (r < 0 && errno == EINTR) continue;

@@ -154,6 +154,19 @@ std::optional<formats::Assignment> writable(const formats::Dialect &d, const std
 
 } // namespace
 
+namespace {
+// The trace's addresses in the running program's syntax (formats/Dialects.h).
+AddressParser traceParser(const formats::Dialect &d) {
+  return [&d](std::string_view text, std::string &error) { return d.parseAddress(text, error); };
+}
+} // namespace
+
+bool Controller::armTraceFile(const std::string &file, std::string &error) {
+  std::string text;
+  if (!formats::readFile(file, text, error)) return false;
+  return trace_.defineAndArm(text, file, traceParser(dialect()), exec_.periodNs(), error);
+}
+
 const formats::Dialect &Controller::dialect() const {
   std::shared_ptr<ProgramVersion> cur = exec_.current();
   const formats::Dialect *d = cur && cur->prog && cur->prog->profile
@@ -431,6 +444,7 @@ json Controller::handle(const json &req) {
     if (cmd == "force") return doForce(req);
     if (cmd == "lock" || cmd == "unlock" || cmd == "locks") return doLock(req);
     if (cmd == "load") return doLoad(req);
+    if (cmd == "trace") return trace_.handle(req, traceParser(dialect()), exec_.periodNs());
     if (cmd == "stats") {
       json j = exec_.stats().toJson();
       ChangeStats cs = changeStats();
@@ -537,10 +551,23 @@ json Controller::doForce(const json &req) {
   if (!rebuildRunning(forces, cur->trace != nullptr, false, err)) return fail("force: " + err);
   std::shared_ptr<ProgramVersion> now = exec_.current();
   if (log_) {
+    // What was forced, as the program writes it: `LD X483.0 (line 10, id 57)`.
     std::string list;
-    for (StmtId id : ids) list += (list.empty() ? "" : ", ") + std::to_string(id);
-    log_("force: statement id(s) " + list + " " +
-         (mode == "restore" ? std::string("restored") : "forced " + mode) +
+    for (StmtId id : ids) {
+      const Stmt *st = stmtById(*now->prog, id);
+      std::string what;
+      if (st && now->prog->dialect) {
+        what = spelling(now->prog->dialect, st->op);
+        const DialectText &d = *now->prog->dialect;
+        for (uint8_t k = 0; k < st->operandCount; ++k)
+          if (!d.implied || !d.implied(st->op, k)) what += " " + d.formatOperand(st->ops[k]);
+        what += " (line " + std::to_string(st->loc.line) + ", id " + std::to_string(id) + ")";
+      } else {
+        what = "statement id " + std::to_string(id);
+      }
+      list += (list.empty() ? "" : ", ") + what;
+    }
+    log_("force: " + list + " " + (mode == "restore" ? std::string("restored") : "forced " + mode) +
          " from the next tick (no init, nothing cleared); " + std::to_string(now->forces.size()) +
          " force(s) set");
   }

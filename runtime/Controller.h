@@ -7,6 +7,7 @@
 #include "runtime/Exchange.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
+#include "runtime/SignalTrace.h"
 
 #include <nlohmann/json.hpp>
 
@@ -54,6 +55,8 @@ public:
 
   /// Answer one control request (docs/serve.md lists them). Never throws.
   nlohmann::json handle(const nlohmann::json &req);
+  /// serve --trace FILE: define the signal trace from FILE and arm it (docs/trace.md).
+  bool armTraceFile(const std::string &file, std::string &error);
 
   /// Compile `path` with `forces` (an AOT server: load `so`, checked against `path`) and swap
   /// it in. `forces` empty (nullopt, `{}`): carry the running version's forces over, by
@@ -134,6 +137,7 @@ private:
   /// of the same program runs, to switch back to once the last force is restored. Guarded by
   /// changeMu_.
   std::shared_ptr<ProgramVersion> aotBase_;
+  TraceControl trace_{exec_}; // the signal trace (`trace` requests, docs/trace.md)
   ChangeOptimizer optimizer_; // last: stopped and joined before the rest goes
 };
 

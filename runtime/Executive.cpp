@@ -1,6 +1,7 @@
 // The scan thread: absolute-deadline sleeping, the per-tick order of docs/serve.md, the
 // catch-up policy for late wake-ups, statistics and the program handoff of online change.
 #include "runtime/Executive.h"
+#include "runtime/SignalTrace.h"
 
 #include "hosts/SystemBits.h"
 #include "ir/Profile.h"
@@ -279,6 +280,37 @@ void Executive::tickOnce(uint64_t tick) {
   ex_.applyLocks(s);
   ex_.publish(s, tick);
   for (AfterTickHook &h : after_) h(s, tick);
+  if (traceWanted_.load(std::memory_order_acquire)) [[unlikely]]
+    traceTick(s, tick);
+}
+
+void Executive::traceTick(const lj_state &s, uint64_t tick) {
+  const uint64_t seq = traceSeq_.load(std::memory_order_acquire);
+  if (seq != traceAck_.load(std::memory_order_relaxed)) {
+    trace_ = tracePending_.load(std::memory_order_acquire);
+    traceAck_.store(seq, std::memory_order_release);
+  }
+  if (trace_) trace_->sample(s, tick);
+}
+
+bool Executive::setSignalTrace(SignalTrace *t, std::chrono::milliseconds timeout,
+                               std::string &error) {
+  std::lock_guard<std::mutex> one(traceMu_);
+  tracePending_.store(t, std::memory_order_release);
+  const uint64_t seq = traceSeq_.fetch_add(1, std::memory_order_acq_rel) + 1;
+  traceWanted_.store(true, std::memory_order_release);
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  while (running() && traceAck_.load(std::memory_order_acquire) < seq) {
+    if (std::chrono::steady_clock::now() >= until) {
+      error = "the scan thread did not take the trace in time";
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  // Nothing armed: back to the one branch per tick. (Not running: the next start takes the
+  // pending value, which is null.)
+  if (!t) traceWanted_.store(false, std::memory_order_release);
+  return true;
 }
 
 bool Executive::waitTaken(std::atomic<ProgramVersion *> &pending, ProgramVersion *offered,

@@ -26,6 +26,8 @@
 
 namespace lj::rt {
 
+class SignalTrace;
+
 /// One loaded program version: the verified program, its engine and the contact forces it was
 /// built with (runtime state, kept here and never in `prog`: ir/Forces.h). Immutable once built;
 /// the engine refers to `prog` (declared first, so it is destroyed last). Interpreter-first
@@ -52,6 +54,7 @@ struct ProgramVersion {
   // (front end, build) and the controller (request, settle wait); requestedNs 0 = not a change.
   int64_t frontendNs = 0, buildCpuNs = 0, requestedNs = 0, settleNs = 0;
   uint32_t groups = 0, groupsCompiled = 0, groupsQuick = 0;
+  size_t warnings = 0; ///< the verifier's warnings (serve prints their count, not each one)
 };
 
 /// I/O binding called on the scan thread around lj_tick (the simulated NC, a shared-memory
@@ -127,12 +130,18 @@ public:
   /// running or `timeout` passed. Logs nothing: the caller says why it switched.
   bool switchCode(std::shared_ptr<ProgramVersion> next, std::chrono::milliseconds timeout,
                   std::string &error);
+  /// The signal trace (runtime/SignalTrace.h) sampled at the end of every tick, null for none.
+  /// Returns once the scan thread uses `t` and no longer the one before, which may then be
+  /// destroyed (at once when the executive is not running). While none is set the scan thread
+  /// pays one load and one predictable branch per tick. False (with `error`) on `timeout`.
+  bool setSignalTrace(SignalTrace *t, std::chrono::milliseconds timeout, std::string &error);
   /// Ask the scan thread to stop after the current tick (async-signal-unsafe: not from a
   /// signal handler).
   void requestStop() { stop_.store(true, std::memory_order_release); }
   /// Wait for the scan thread to end (after requestStop or maxTicks).
   void join();
   bool running() const { return running_.load(std::memory_order_acquire); }
+  uint64_t periodNs() const { return opts_.periodNs; }
 
   /// The running program version.
   std::shared_ptr<ProgramVersion> current() const;
@@ -177,6 +186,15 @@ private:
   mutable std::mutex ownerMu_;
   std::shared_ptr<ProgramVersion> currentOwner_;
   std::mutex swapMu_; // one swap at a time
+
+  // The signal trace: setSignalTrace parks it in tracePending_ and bumps traceSeq_; the scan
+  // thread takes it into trace_ at the end of a tick and acknowledges with traceAck_.
+  void traceTick(const lj_state &s, uint64_t tick);
+  std::atomic<bool> traceWanted_{false};
+  std::atomic<SignalTrace *> tracePending_{nullptr};
+  std::atomic<uint64_t> traceSeq_{0}, traceAck_{0};
+  SignalTrace *trace_ = nullptr; // scan thread
+  std::mutex traceMu_;           // one setSignalTrace at a time
 
   // Statistics: owned by the scan thread, copied into shared_ on request.
   TickStats scanStats_;

@@ -223,7 +223,8 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
   const int32_t nvalue =
       formats::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
   std::string diagnostics;
-  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diagnostics);
+  std::optional<VerifiedProgram> prog =
+      formats::verifyProgram(src, nvalue, diagnostics, &v->warnings);
   if (!prog) {
     error = diagnostics;
     while (!error.empty() && error.back() == '\n') error.pop_back();

@@ -14,7 +14,9 @@ set -euo pipefail
 #   not write: Debian's mbpoll (CTest modbus.serve_mbpoll) and python3-pymodbus (manual checks).
 # serve --http (the live ladder view): libmicrohttpd (libmicrohttpd-dev), made for embedded
 #   servers: per-connection memory limits, timeouts, connection limits, incremental uploads
-#   (docs/security.md "The live view's HTTP port" says why it replaced cpp-httplib).
+#   (docs/security.md "The live view's HTTP port" says why it replaced cpp-httplib);
+#   libjs-dygraphs, the charting library the live view's signal trace panel will plot with
+#   (docs/trace.md "Page").
 # zlib/zstd headers: LLVMConfig looks for them and its exported static targets name them; we
 # link only the shared libLLVM (configuring without them works), but Debian's LLVM packaging has
 # failed on a missing zstd target before (llvm19-orc-notes.md 1), so they are installed too.
@@ -24,7 +26,7 @@ PACKAGES=(
   libcli11-dev nlohmann-json3-dev libbenchmark-dev libgtest-dev libgmock-dev libssl-dev
   zlib1g-dev libzstd-dev
   libmodbus-dev mbpoll python3-pymodbus
-  libmicrohttpd-dev
+  libmicrohttpd-dev libjs-dygraphs
 )
 
 missing=()

@@ -38,6 +38,22 @@ bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
 std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                            int &exitCode);
 
+/// How a command that is not `check` reports the warnings of a program that verified.
+enum class WarningReport {
+  All,     ///< every diagnostic (check, and any program with errors)
+  Summary, ///< one line: the count and the command that lists them (run, ladder, serve)
+  None,    ///< --quiet: not even that line
+};
+/// loadProgram for run / ladder: errors are printed in full; warnings of a program that
+/// verified as `report` says (warningSummary; `dialect`: the --dialect option given).
+std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
+                                           int &exitCode, WarningReport report,
+                                           std::string_view dialect);
+/// The one line that stands for `count` verifier warnings of PROGRAM `path` outside `check`:
+/// "ladderjit: PATH: N verifier warnings; `ladderjit check PATH` lists them" (with --dialect
+/// NAME when `dialect` is given). Empty for count 0.
+std::string warningSummary(const std::string &path, size_t count, std::string_view dialect = {});
+
 struct CheckArgs {
   std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
   std::string program;
@@ -66,6 +82,9 @@ struct RunArgs {
   std::vector<std::string> trustKeys;  ///< --trust-key public keys, empty = the default key
   std::string tier = "direct";         ///< --tier direct | interp-first | interp-fast-opt
   std::string tierSwitchTicks;         ///< --tier-switch-tick N[,M]: switch exactly there
+  std::string vcd;                     ///< --vcd FILE: the watch addresses as a VCD, empty = none
+  bool vcdBits = false;                ///< --vcd-bits: elements as bit wires (docs/trace.md)
+  bool quiet = false;                  ///< --quiet: no verifier-warning count line
 };
 int runRun(const RunArgs &a);
 
@@ -159,6 +178,7 @@ struct LadderArgs {
   std::string output;          ///< empty or "-": stdout
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false;
+  bool quiet = false; ///< --quiet: no verifier-warning count line
 };
 /// `ladderjit ladder`: the program as networks (docs/ladder-json.md).
 int runLadder(const LadderArgs &a);
@@ -194,7 +214,9 @@ struct ServeArgs {
   std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
   std::vector<std::string> loadDirs;  ///< where `monitor load` may read; empty = PROGRAM's dir
   bool watchFile = false;             ///< reload PROGRAM (and the .so) when it changes on disk
-  std::string tier; ///< --tier direct | interp-first | interp-fast-opt; empty = the default
+  std::string tier;   ///< --tier direct | interp-first | interp-fast-opt; empty = the default
+  bool quiet = false; ///< --quiet: no verifier-warning count line
+  std::string trace;  ///< --trace FILE: a signal trace definition armed at start (docs/trace.md)
 
   // Client deadlines of the control socket and Modbus (docs/serve.md "Control").
   uint32_t clientIdleS = 30;        ///< connections idle this long are closed

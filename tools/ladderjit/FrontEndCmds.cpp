@@ -41,6 +41,32 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
   return prog;
 }
 
+std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
+                                           int &exitCode, WarningReport report,
+                                           std::string_view dialect) {
+  if (report == WarningReport::All) return loadProgram(src, plc2Nvalue, exitCode);
+  std::string diagnostics;
+  size_t warnings = 0;
+  std::optional<VerifiedProgram> prog =
+      formats::verifyProgram(src, plc2Nvalue, diagnostics, &warnings);
+  exitCode = prog ? kOk : kProgramErrors;
+  if (!prog) { // errors: everything, the warnings beside them may explain them
+    std::fputs(diagnostics.c_str(), stderr);
+    return prog;
+  }
+  if (report == WarningReport::Summary && warnings > 0)
+    std::fputs(warningSummary(src.path, warnings, dialect).c_str(), stderr);
+  return prog;
+}
+
+std::string warningSummary(const std::string &path, size_t count, std::string_view dialect) {
+  if (count == 0) return {};
+  std::string cmd = "ladderjit check ";
+  if (!dialect.empty()) cmd += "--dialect " + std::string(dialect) + " ";
+  return "ladderjit: " + printable(path) + ": " + std::to_string(count) + " verifier warning" +
+         (count == 1 ? "" : "s") + "; `" + cmd + printable(path) + "` lists them\n";
+}
+
 int runCheck(const CheckArgs &a) {
   int code = kOk;
   ProgramSource src;

@@ -22,7 +22,8 @@ int runLadder(const LadderArgs &a) {
   ProgramSource src;
   if (!readProgram(a.program, src, code, a.dialect)) return code;
   std::optional<VerifiedProgram> prog =
-      loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
+      loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code,
+                  a.quiet ? WarningReport::None : WarningReport::Summary, a.dialect);
   if (!prog) return code;
   ladder::Networks nets = ladder::fromProgram(*prog);
   std::string out;

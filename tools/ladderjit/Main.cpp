@@ -120,6 +120,13 @@ int mainImpl(int argc, char **argv) {
                             "docs/serve.md \"Tiering\")"));
   lastWins(cRun->add_option("--tier-switch-tick", run.tierSwitchTicks,
                             "N[,M]: take the background JIT code exactly before tick N (and M)"));
+  lastWins(cRun->add_option("--vcd", run.vcd,
+                            "write the --watch addresses of every tick as a value change dump "
+                            "(docs/trace.md)"));
+  cRun->add_flag("--vcd-bits", run.vcdBits,
+                 "--vcd: each byte/word as its bit wires NAME[0].. instead of one vector (for "
+                 "PulseView 0.4 / libsigrok 0.5)");
+  cRun->add_flag("--quiet", run.quiet, "not even the one line that counts verifier warnings");
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
@@ -219,6 +226,7 @@ int mainImpl(int argc, char **argv) {
   lastWins(cLadder->add_option("--format", lad.format,
                                "text | json | svg | html | layout (default text)"));
   lastWins(cLadder->add_option("-o,--output", lad.output, "file to write (default stdout)"));
+  cLadder->add_flag("--quiet", lad.quiet, "not even the one line that counts verifier warnings");
   CLI::Option *ladNvalue = lastWins(
       cLadder->add_option("--plc2-nvalue", lad.plc2Nvalue, "PLC2 statements per tick (0 = all)")
           ->check(kNvalue));
@@ -298,6 +306,9 @@ int mainImpl(int argc, char **argv) {
                               "P values, 'P12=345' per line (FANUC: COUNTER = BCD|BINARY and PMC "
                               "parameters, docs/fanuc-pmc.md)"));
   repeatable(cServe, "--set", serve.sets, "ADDR=VALUE at power-up; repeatable");
+  cServe->add_flag("--quiet", serve.quiet, "not even the one line that counts verifier warnings");
+  lastWins(cServe->add_option("--trace", serve.trace,
+                              "signal trace definition file, armed at start (docs/trace.md)"));
   lastWins(cServe
                ->add_option("--duration", serve.duration,
                             "seconds to run (default: until "
@@ -332,12 +343,16 @@ int mainImpl(int argc, char **argv) {
   MonitorArgs mon;
   CLI::App *cMonitor = app.add_subcommand("monitor", "talk to a running serve: read, write, "
                                                      "force, lock, unlock, locks, load, stats, "
-                                                     "stop");
+                                                     "trace, stop");
   lastWins(cMonitor->add_option("--control", mon.control,
                                 "control socket (default: the only server in the runtime dir)"));
   cMonitor->add_flag("--allow-shrink", mon.allowShrink,
                      "load: accept an empty program or one without a part the running one has");
   cMonitor->add_option("COMMAND", mon.args, "command and its arguments")->required();
+  bool traceVcd = false, traceCsv = false, traceBits = false;
+  cMonitor->add_flag("--vcd", traceVcd, "trace save: as a value change dump (the default)");
+  cMonitor->add_flag("--csv", traceCsv, "trace save: as CSV");
+  cMonitor->add_flag("--bits", traceBits, "trace save --vcd: each byte/word as its bit wires");
 
   try {
     app.parse(argc, argv);
@@ -372,7 +387,13 @@ int mainImpl(int argc, char **argv) {
     serve.plc2NvalueGiven = serveNvalue->count() > 0;
     return runServe(serve);
   }
-  if (cMonitor->parsed()) return runMonitor(mon);
+  if (cMonitor->parsed()) {
+    // `trace save FILE --csv`: the flags go back behind the command (MonitorCmd.cpp reads them).
+    if (traceVcd) mon.args.push_back("--vcd");
+    if (traceCsv) mon.args.push_back("--csv");
+    if (traceBits) mon.args.push_back("--bits");
+    return runMonitor(mon);
+  }
   return usageError("no subcommand");
 }
 

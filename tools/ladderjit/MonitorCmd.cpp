@@ -6,6 +6,8 @@
 #include "formats/Dialects.h"
 
 #include "formats/Address.h"
+#include "formats/InputFiles.h"
+#include "formats/OutputFile.h"
 #include "formats/StateJson.h"
 #include "runtime/ControlPath.h"
 #include "runtime/ControlSocket.h"
@@ -142,13 +144,75 @@ bool buildRequest(const std::vector<std::string> &args, bool allowShrink, json &
     if (allowShrink) req["allow_shrink"] = true;
     return true;
   }
+  if (cmd == "trace") {
+    // trace define FILE | arm | trigger | stop | status | save FILE [--vcd|--csv] [--bits]
+    // (docs/trace.md "monitor trace"): the client reads and writes the files, never the server.
+    const char *usage = "usage: ladderjit monitor trace define FILE | arm | trigger | stop | "
+                        "status | save FILE [--vcd|--csv] [--bits]";
+    if (rest.empty()) {
+      error = usage;
+      return false;
+    }
+    const std::string &action = rest[0];
+    req = {{"cmd", "trace"}, {"action", action}};
+    if (action == "define") {
+      std::string text;
+      if (rest.size() != 2) {
+        error = usage;
+        return false;
+      }
+      if (!formats::readFile(rest[1], text, error)) return false;
+      if (!formats::isUtf8(text)) {
+        error = "trace define: '" + rest[1] + "' is not UTF-8 text";
+        return false;
+      }
+      req["text"] = text;
+      req["file"] = formats::isUtf8(rest[1]) ? rest[1] : std::string("definition");
+      return true;
+    }
+    if (action == "save") {
+      if (rest.size() < 2) {
+        error = usage;
+        return false;
+      }
+      std::string format = "vcd";
+      bool bits = false;
+      for (size_t i = 2; i < rest.size(); ++i) {
+        if (rest[i] == "--vcd" || rest[i] == "--csv") {
+          format = rest[i].substr(2);
+        } else if (rest[i] == "--bits") {
+          bits = true;
+        } else {
+          error = usage;
+          return false;
+        }
+      }
+      if (bits && format != "vcd") {
+        error = "trace save: --bits is for --vcd";
+        return false;
+      }
+      if (!formats::checkOutputPath(rest[1], error)) return false;
+      req["format"] = format;
+      req["bits"] = bits;
+      return true;
+    }
+    if (action == "arm" || action == "trigger" || action == "stop" || action == "status") {
+      if (rest.size() != 1) {
+        error = usage;
+        return false;
+      }
+      return true;
+    }
+    error = "trace: unknown action '" + action + "' (define, arm, trigger, stop, status, save)";
+    return false;
+  }
   if (cmd == "locks" || cmd == "stats" || cmd == "stop") {
     if (!want(0, cmd.c_str())) return false;
     req = {{"cmd", cmd}};
     return true;
   }
   error = "monitor: unknown command '" + cmd +
-          "' (read, write, force, lock, unlock, locks, load, stats, stop)";
+          "' (read, write, force, lock, unlock, locks, load, stats, trace, stop)";
   return false;
 }
 
@@ -188,6 +252,16 @@ static int monitorOnce(const MonitorArgs &a) {
     std::printf("running version %llu\n", resp["version"].get<unsigned long long>());
   } else if (cmd == "stats") {
     std::printf("%s\n", formats::dumpJson(resp["stats"], 2).c_str());
+  } else if (cmd == "trace" && a.args[1] == "save") {
+    if (!formats::writeOutputFile(a.args[2], resp["data"].get<std::string>(), error))
+      return usageError("trace save: " + error);
+    std::printf("capture %llu: %llu ticks, trigger at tick %llu -> %s\n",
+                resp["capture"].get<unsigned long long>(), resp["ticks"].get<unsigned long long>(),
+                resp["trigger_tick"].get<unsigned long long>(), a.args[2].c_str());
+  } else if (cmd == "trace") {
+    json st = resp;
+    st.erase("ok");
+    std::printf("%s\n", formats::dumpJson(st, 2).c_str());
   }
   return kOk;
 }

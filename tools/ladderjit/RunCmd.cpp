@@ -6,6 +6,7 @@
 #include "engines/EngineSpec.h"
 #include "formats/OutputFile.h"
 #include "formats/StateJson.h"
+#include "formats/Vcd.h"
 #include "hosts/Simulation.h"
 #include "ir/Engine.h"
 #include "runtime/TierUp.h"
@@ -153,6 +154,70 @@ private:
   std::string path_;
 };
 
+// Where --vcd goes (docs/trace.md "run --vcd"): the value change dump of the --watch addresses,
+// streamed through a private temporary file and renamed over FILE at the end, so a run that
+// fails leaves no half file.
+class VcdTarget {
+public:
+  ~VcdTarget() {
+    if (f_) std::fclose(f_);
+  }
+  bool open(const std::string &path, const std::vector<formats::CliAddress> &watch,
+            uint64_t periodMs, bool splitBits, const std::string &program, std::string &error) {
+    if (path == "-") {
+      error = "--vcd: standard output carries the watch table; give a file name";
+      return false;
+    }
+    if (watch.empty()) {
+      error = "--vcd: records the --watch addresses; give --watch ADDR[,ADDR...]";
+      return false;
+    }
+    if (!file_.open(path, error) || !(f_ = std::fopen(file_.tempPath().c_str(), "w"))) {
+      if (error.empty()) error = "cannot write '" + path + "'";
+      error = "--vcd: " + error;
+      return false;
+    }
+    std::vector<formats::SignalInfo> sigs;
+    for (const formats::CliAddress &a : watch) sigs.push_back({a.text, formats::signalBits(a)});
+    writer_.emplace(std::move(sigs), periodMs * 1000000, splitBits,
+                    "ladderjit run " + formats::vcdName(program));
+    buf_ = writer_->header();
+    return true;
+  }
+  void row(const hosts::WatchRow &r) {
+    if (!f_) return;
+    writer_->row(r.tick, r.values.data(), buf_);
+    last_ = r.tick;
+    any_ = true;
+    if (buf_.size() > (1u << 16)) flush();
+  }
+  bool close(std::string &error) {
+    if (!f_) return true;
+    if (any_) writer_->finish(last_, buf_);
+    flush();
+    const bool ok = !std::ferror(f_);
+    std::fclose(f_);
+    f_ = nullptr;
+    if (!ok || !file_.commit(error)) {
+      error = "--vcd: " + (error.empty() ? std::string("write failed") : error);
+      return false;
+    }
+    return true;
+  }
+
+private:
+  void flush() {
+    std::fwrite(buf_.data(), 1, buf_.size(), f_);
+    buf_.clear();
+  }
+  formats::OutputFile file_;
+  std::FILE *f_ = nullptr;
+  std::optional<formats::VcdWriter> writer_;
+  std::string buf_;
+  uint64_t last_ = 0;
+  bool any_ = false;
+};
+
 // TIER: the JIT tiers of `run --tier` (docs/serve.md "Tiering"), built one after another on a
 // background thread while the interpreter runs the first ticks.
 class BackgroundJit {
@@ -289,7 +354,8 @@ int runRun(const RunArgs &a) {
     if (!a.periodMsGiven) sim.periodMs = src.dit->periodMs;
   }
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
-  std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
+  std::optional<VerifiedProgram> prog = loadProgram(
+      src, nvalue, code, a.quiet ? WarningReport::None : WarningReport::Summary, a.dialect);
   if (!prog) return code;
   sim.profile = prog->profile;
 
@@ -316,6 +382,10 @@ int runRun(const RunArgs &a) {
 
   DumpTarget dump; // opened only once the program is known to run
   if (!dump.open(a.dump, error)) return usageError(error);
+  VcdTarget vcd;
+  if (!a.vcd.empty() && !vcd.open(a.vcd, sim.watch, sim.periodMs, a.vcdBits, a.program, error))
+    return usageError(error);
+  if (a.vcd.empty() && a.vcdBits) return usageError("--vcd-bits needs --vcd FILE");
 
   for (const formats::StimulusEvent &ev : sim.stimulus.events) {
     if (ev.tick >= a.ticks) {
@@ -375,8 +445,10 @@ int runRun(const RunArgs &a) {
                    static_cast<unsigned long long>(row.tick), hosts::faultName(f));
     }
     if (table) table->row(row);
+    vcd.row(row);
   }
   if (table) table->flush();
+  if (!vcd.close(error)) return usageError(error);
   if (!dump.write(*state, *nc, *prog->profile, error)) return usageError(error);
   if (background && !background->finished()) {
     // TIER: the result is complete; a compile still running ends with the process.

@@ -324,6 +324,7 @@ int runServe(const ServeArgs &a) {
     }
     return usageError(aot ? "--engine " + error : error);
   }
+  if (!a.quiet) std::fputs(warningSummary(a.program, first->warnings, a.dialect).c_str(), stderr);
   uint64_t periodMs = a.periodMs;
   if (dit) {
     // A container's parameters are defaults (docs/plc-dit.md "run"): --params/--set win.
@@ -422,6 +423,8 @@ int runServe(const ServeArgs &a) {
   if (!socket.start(control, error)) return usageError(error);
 
   if (!exec.start(first, error)) return usageError(error);
+  if (!a.trace.empty() && !controller.armTraceFile(a.trace, error))
+    return usageError("--trace: " + error);
   // TIER: the JIT code is compiled in the background and switched in at a tick boundary.
   rt::TierUp tierUp(exec, loader, logLine);
   tierUp.start(first, rt::backgroundTiers(tierPlan));
