@@ -3,7 +3,7 @@
 #include "runtime/Controller.h"
 
 #include "engines/EngineSpec.h"
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include "formats/InputFiles.h"
 #include "formats/PlcDit.h"
@@ -144,7 +144,7 @@ std::string formatAssignment(const io::Assignment &a) {
 }
 
 // A write or lock item in the running program's dialect: parsed and checked for writability
-// (formats/Address.h, formats/Dialects.h).
+// (formats/Address.h, pipeline/Dialects.h).
 std::optional<io::Assignment> writable(const io::Dialect &d, const std::string &item,
                                        std::string &err) {
   std::optional<io::Assignment> a = d.parseAssignment(item, err);

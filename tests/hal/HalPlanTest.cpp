@@ -2,7 +2,7 @@
 // program, the map file rules of docs/linuxcnc.md "Map file", HAL's name rules.
 #include "hosts/linuxcnc/HalPlan.h"
 
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 
 #include <gtest/gtest.h>
 

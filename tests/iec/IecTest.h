@@ -2,7 +2,7 @@
 // read and write Neza objects (`%I0.1`, `%MW5`) through the dialect's address parser.
 #pragma once
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "frontends/iec/FrontEnd.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"

@@ -2,7 +2,7 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "ir/Engine.h"
 #include "ir/Program.h"
 
@@ -23,7 +23,7 @@ int usageError(const std::string &msg);
 /// Flush stdout; a write that failed turns `code` kOk into kUsage (with a message).
 int checkStdout(int code);
 
-/// PROGRAM as read: an STL file, or a plc.dit container (formats/ProgramFile.h).
+/// PROGRAM as read: an STL file, or a plc.dit container (pipeline/ProgramFile.h).
 using io::effectiveNvalue;
 using io::programHashOf;
 using io::ProgramSource;
@@ -39,7 +39,7 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
                                            int &exitCode);
 
 struct CheckArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line
@@ -48,7 +48,7 @@ struct CheckArgs {
 int runCheck(const CheckArgs &a);
 
 struct RunArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "jit"; ///< interp | jit | aot:PATH
   uint64_t ticks = 1;
@@ -70,7 +70,7 @@ struct RunArgs {
 int runRun(const RunArgs &a);
 
 struct EmitArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   int optLevel = 2;
   int32_t plc2Nvalue = 200;
@@ -79,7 +79,7 @@ struct EmitArgs {
 int runEmitLlvm(const EmitArgs &a);
 
 struct DitArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program; ///< STL file
   std::string symbols; ///< symbols file, empty = none
   std::string params;  ///< P values file, empty = none
@@ -91,7 +91,7 @@ struct DitArgs {
 int runDit(const DitArgs &a);
 
 struct CompileArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string output;       ///< the .so to write
   std::string cpu = "host"; ///< host | generic
@@ -117,7 +117,7 @@ struct KeygenArgs {
 int runKeygen(const KeygenArgs &a);
 
 struct FuzzArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   uint64_t seed = 1;
   uint64_t programs = 1000;
   uint32_t ticks = 50;
@@ -128,7 +128,7 @@ struct FuzzArgs {
 int runFuzz(const FuzzArgs &a);
 
 struct BenchArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "all";  ///< interp | jit | aot | all
   std::string tier = "both";   ///< fast | opt | both (JIT; AOT is always the optimizing tier)
@@ -153,7 +153,7 @@ struct BenchArgs {
 int runBench(const BenchArgs &a);
 
 struct LadderArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string format = "text"; ///< text | json | svg | html | layout
   std::string output;          ///< empty or "-": stdout
@@ -164,7 +164,7 @@ struct LadderArgs {
 int runLadder(const LadderArgs &a);
 
 struct ServeArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "jit"; ///< jit | interp | aot:PATH.so
   uint64_t periodMs = 1;

@@ -1,6 +1,6 @@
-// The dialects of this build (formats/Dialects.h). A new dialect adds its entry to kDialects
+// The dialects of this build (pipeline/Dialects.h). A new dialect adds its entry to kDialects
 // and moves its name from kPlanned.
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
