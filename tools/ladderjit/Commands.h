@@ -2,9 +2,10 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "pipeline/ProgramFile.h"
 #include "ir/Engine.h"
 #include "ir/Program.h"
+#include "pipeline/ProgramFile.h"
+#include "runtime/Server.h"
 
 #include <cstdint>
 #include <memory>
@@ -163,43 +164,8 @@ struct LadderArgs {
 /// `ladderjit ladder`: the program as networks (docs/ladder-json.md).
 int runLadder(const LadderArgs &a);
 
-struct ServeArgs {
-  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
-  std::string program;
-  std::string engine = "jit"; ///< jit | interp | aot:PATH.so
-  uint64_t periodMs = 1;
-  bool periodMsGiven = false; ///< --period-ms was on the command line (beats a plc.dit)
-  int32_t plc2Nvalue = 200;
-  bool plc2NvalueGiven = false;
-  uint64_t maxBackwardSteps = 1000000;
-  std::string modbus;                 ///< [HOST:]PORT, empty = no Modbus server
-  std::string modbusMap;              ///< map file (docs/modbus-map.md), empty = the HNC-8 map
-  std::string http;                   ///< [HOST:]PORT of the live view, empty = none
-  std::string httpTokenFile;          ///< the live view's token, from this file
-  std::vector<std::string> httpHosts; ///< Host names the live view answers besides its address
-  bool httpReadOnly = false;          ///< the live view changes nothing
-  std::string retain;                 ///< retentive store file, empty = none
-  bool retainForce = false;           ///< --retain-force: a file of another layout -> zeros
-  uint32_t retainPeriodMs = 100;      ///< minimum gap between periodic retain saves
-  bool modbusWriteInputs = false;     ///< Modbus may write X and F (simulation only)
-  std::string params;                 ///< P values file
-  std::vector<std::string> sets;      ///< ADDR=VALUE at power-up
-  uint64_t duration = 0;              ///< seconds, 0 = until SIGINT/SIGTERM or `monitor stop`
-  std::string stats;                  ///< JSON statistics file at exit
-  std::string control;      ///< control socket path, empty = <runtime dir>/serve-<pid>.sock
-  std::string shm;          ///< shared-memory image name, empty = none
-  std::string io = "simnc"; ///< simnc | shm: who writes F
-  int rtPriority = -1;      ///< SCHED_FIFO priority, -1 = none
-  int cpu = -1;             ///< CPU to pin the scan thread to, -1 = none
-  std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
-  std::vector<std::string> loadDirs;  ///< where `monitor load` may read; empty = PROGRAM's dir
-  bool watchFile = false;             ///< reload PROGRAM (and the .so) when it changes on disk
-  std::string tier; ///< --tier direct | interp-first | interp-fast-opt; empty = the default
-
-  // Client deadlines of the control socket and Modbus (docs/serve.md "Control").
-  uint32_t clientIdleS = 30;        ///< connections idle this long are closed
-  uint32_t requestTimeoutMs = 2000; ///< a request must be whole this long after its 1st byte
-};
+/// `serve`'s options: the Server's (runtime/Server.h), filled in by Main.cpp.
+using ServeArgs = rt::ServerOptions;
 /// CLOCK_MONOTONIC (steady_clock) ns at the start of main: serve's "start" for the time to the
 /// first tick (docs/serve.md "Time to first tick").
 int64_t mainStartNs();
