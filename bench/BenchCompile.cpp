@@ -7,6 +7,7 @@
 #include "gen/WorstPrograms.h"
 #include "jit/Jit.h"
 #include "jit/ObjectCache.h"
+#include "pipeline/Compile.h"
 
 #include <filesystem>
 #include <unistd.h>
@@ -103,7 +104,7 @@ void BM_CompileWorst(benchmark::State &state, const std::string &name) {
   const int n = static_cast<int>(state.range(0));
   Diagnostics d("worst.stl");
   std::optional<VerifiedProgram> p =
-      compileFrontEnd(gen::generateWorst(name, n).text(), "worst.stl", {}, d);
+      pipeline::compileStl(gen::generateWorst(name, n).text(), "worst.stl", {}, d);
   if (!p) {
     state.SkipWithError(("worst case does not verify: " + d.render()).c_str());
     return;

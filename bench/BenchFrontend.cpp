@@ -1,6 +1,8 @@
 // Front-end latency: parse, verify, and parse+verify of realistic 1k/5k/10k-statement programs
 // (target: parse+verify of 10k statements < 50 ms).
 #include "bench/BenchPrograms.h"
+#include "pipeline/Compile.h"
+#include "pipeline/Dialects.h"
 
 namespace lj::bench {
 namespace {
@@ -11,7 +13,7 @@ void BM_Parse(benchmark::State &state) {
   Stopwatch sw;
   for (auto _ : state) {
     Diagnostics d("bench.stl");
-    ParsedProgram p = parseStl(text, "bench.stl", d);
+    ParsedProgram p = pipeline::parse(formats::defaultDialect(), text, "bench.stl", d);
     benchmark::DoNotOptimize(p.stmts.data());
     benchmark::ClobberMemory();
   }
@@ -21,7 +23,8 @@ void BM_Parse(benchmark::State &state) {
 void BM_Verify(benchmark::State &state) {
   const int n = static_cast<int>(state.range(0));
   Diagnostics pd("bench.stl");
-  const ParsedProgram parsed = parseStl(programText(n), "bench.stl", pd);
+  const ParsedProgram parsed =
+      pipeline::parse(formats::defaultDialect(), programText(n), "bench.stl", pd);
   Stopwatch sw;
   for (auto _ : state) {
     Diagnostics d("bench.stl");
@@ -42,7 +45,7 @@ void BM_ParseVerify(benchmark::State &state) {
   Stopwatch sw;
   for (auto _ : state) {
     Diagnostics d("bench.stl");
-    std::optional<VerifiedProgram> v = compileFrontEnd(text, "bench.stl", {}, d);
+    std::optional<VerifiedProgram> v = pipeline::compileStl(text, "bench.stl", {}, d);
     if (!v) {
       state.SkipWithError("generated program does not verify");
       break;

@@ -2,8 +2,8 @@
 // (fixed seeds, so runs compare), verified once and cached, plus explicit per-statement counters.
 #pragma once
 
-#include "frontends/hnc8/FrontEnd.h"
 #include "gen/ProgramGenerator.h"
+#include "pipeline/Compile.h"
 
 #include <benchmark/benchmark.h>
 
@@ -41,7 +41,7 @@ inline const VerifiedProgram &verifiedProgram(int n) {
   auto it = cache.find(n);
   if (it == cache.end()) {
     Diagnostics d("bench.stl");
-    std::optional<VerifiedProgram> p = compileFrontEnd(programText(n), "bench.stl", {}, d);
+    std::optional<VerifiedProgram> p = pipeline::compileStl(programText(n), "bench.stl", {}, d);
     if (!p) {
       std::fprintf(stderr, "benchmark program of %d statements does not verify:\n%s", n,
                    d.render().c_str());

@@ -10,7 +10,7 @@
 // change does, JitOptions::quickLeaves) and then, as serve's background optimizer does, the
 // same program again without it ("opt" column: that rebuild's wall time). --full compiles
 // every version without the incremental compile, for comparison.
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "jit/Jit.h"
 
 #include <time.h>

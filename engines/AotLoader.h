@@ -4,7 +4,7 @@
 
 #include "engines/AotTrust.h"
 #include "formats/PlcDit.h"
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "ir/Engine.h"
 
 #include <cstdint>
@@ -15,7 +15,7 @@
 
 namespace lj::engines {
 
-/// The program hash a .so carries: formats/ProgramFile.h programHash.
+/// The program hash a .so carries: pipeline/ProgramFile.h programHash.
 
 /// The program's identity without the nvalue: the container's hash line, or SHA-256 over
 /// `ladderjit-source 1\n[program]\n` and the STL text canonicalized as for programHash. Lets the

@@ -2,12 +2,10 @@
 // the first field of lj_state where they part.
 #include "fuzz/Differential.h"
 
-#include "frontends/fanuc/FrontEnd.h"
-#include "frontends/hnc8/FrontEnd.h"
-#include "frontends/iec/FrontEnd.h"
 #include "gen/FanucProgram.h"
 #include "hosts/SystemBits.h"
 #include "hosts/TestHost.h"
+#include "pipeline/Compile.h"
 
 #include <cstring>
 #include <memory>
@@ -178,9 +176,9 @@ Outcome runCase(const Case &c, const EngineFactory &factory) {
   VerifyOptions vo;
   vo.plc2Nvalue = c.plc2Nvalue;
   std::optional<VerifiedProgram> prog =
-      c.fanuc ? fanuc::compilePmc(text, "fuzz.pmc", vo, diags, nullptr)
-      : c.iec ? iec::compileIl(text, "fuzz.il", vo, diags)
-              : compileFrontEnd(text, "fuzz.stl", vo, diags);
+      c.fanuc ? pipeline::compilePmc(text, "fuzz.pmc", vo, diags, nullptr)
+      : c.iec ? pipeline::compileIl(text, "fuzz.il", vo, diags)
+              : pipeline::compileStl(text, "fuzz.stl", vo, diags);
   if (!prog) {
     r.kind = Outcome::Kind::NotVerified;
     r.detail = diags.render();

@@ -4,8 +4,8 @@
 // must give back exactly the program's statements (their JSON is read through its program text).
 #include "fuzz/RoundTrip.h"
 
-#include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Json.h"
+#include "pipeline/Compile.h"
 
 namespace lj::fuzz {
 
@@ -59,7 +59,7 @@ EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
     VerifyOptions vo;
     vo.plc2Nvalue = prog.plc2Nvalue;
     std::optional<VerifiedProgram> twin =
-        compileFrontEnd(src.text, "roundtrip.json", vo, diags, &src.symbols);
+        pipeline::compileStl(src.text, "roundtrip.json", vo, diags, &src.symbols);
     if (!twin) {
       error = "round trip: the regenerated STL does not verify:\n" +
               ladder::renderDiagnostics(diags, src) + "--- regenerated STL ---\n" + src.text;

@@ -5,6 +5,7 @@
 #include "ladder/Network.h"
 
 #include "frontends/hnc8/FrontEnd.h"
+#include "ir/Profile.h"
 
 #include <algorithm>
 

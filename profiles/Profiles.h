@@ -1,5 +1,5 @@
 // The registry of target profiles: every profile this build knows, by name. A dialect
-// (formats/Dialects.h) names its profile; tools and tests that need a profile by name ask here.
+// (pipeline/Dialects.h) names its profile; tools and tests that need a profile by name ask here.
 #pragma once
 
 #include "ir/Profile.h"

@@ -3,7 +3,7 @@
 #include "runtime/Controller.h"
 
 #include "engines/EngineSpec.h"
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include "formats/InputFiles.h"
 #include "formats/PlcDit.h"
@@ -144,7 +144,7 @@ std::string formatAssignment(const formats::Assignment &a) {
 }
 
 // A write or lock item in the running program's dialect: parsed and checked for writability
-// (formats/Address.h, formats/Dialects.h).
+// (formats/Address.h, pipeline/Dialects.h).
 std::optional<formats::Assignment> writable(const formats::Dialect &d, const std::string &item,
                                             std::string &err) {
   std::optional<formats::Assignment> a = d.parseAssignment(item, err);
@@ -155,7 +155,7 @@ std::optional<formats::Assignment> writable(const formats::Dialect &d, const std
 } // namespace
 
 namespace {
-// The trace's addresses in the running program's syntax (formats/Dialects.h).
+// The trace's addresses in the running program's syntax (pipeline/Dialects.h).
 AddressParser traceParser(const formats::Dialect &d) {
   return [&d](std::string_view text, std::string &error) { return d.parseAddress(text, error); };
 }

@@ -4,7 +4,7 @@
 
 #include "engines/EngineSpec.h"
 #include "engines/LlvmBackend.h"
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "ir/Trace.h"
 
 #include <chrono>

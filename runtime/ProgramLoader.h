@@ -41,7 +41,7 @@ class ProgramLoader {
 public:
   /// `engine` is "jit", "interp" or "aot" (the .so is given per load). `plc2Nvalue` < 0 = the
   /// container's, else 200.
-  /// `dialect`: --dialect (formats/Dialects.h), empty = by file name.
+  /// `dialect`: --dialect (pipeline/Dialects.h), empty = by file name.
   ProgramLoader(std::string engine, int32_t plc2Nvalue, std::string dialect = {});
   ~ProgramLoader();
 

@@ -61,7 +61,7 @@ std::optional<TraceDefinition> parseTraceDefinition(std::string_view text, const
 /// The definition written back in that format.
 std::string formatTraceDefinition(const TraceDefinition &d);
 
-/// The address syntax of the running program (formats/Dialects.h parseAddress; symbols where the
+/// The address syntax of the running program (pipeline/Dialects.h parseAddress; symbols where the
 /// dialect resolves them).
 using AddressParser =
     std::function<std::optional<formats::CliAddress>(std::string_view text, std::string &error)>;

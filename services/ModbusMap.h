@@ -4,7 +4,7 @@
 #pragma once
 
 #include "formats/Address.h"
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include <cstdint>
 #include <memory>

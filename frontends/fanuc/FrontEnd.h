@@ -5,7 +5,6 @@
 #include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
-#include "verify/Verify.h"
 
 #include <optional>
 #include <string>
@@ -24,12 +23,6 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
 /// address (Operand::symbol records it); an unknown name is the error "unknown symbol 'NAME'".
 ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &diags,
                        const SymbolTable *symbols);
-
-/// parsePmc (with `symbols`, may be null: e.g. the table a ladder JSON carries, checked again
-/// under symbolRules()) + verify; nothing on any error.
-std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
-                                          const VerifyOptions &opts, Diagnostics &diags,
-                                          const SymbolTable *symbols);
 
 /// The rules of a FANUC symbol table: names of at most 40 bytes (0i-D extended symbols),
 /// comments of at most 255, FANUC bit or byte addresses (not L or P) written canonically

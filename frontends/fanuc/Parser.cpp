@@ -721,14 +721,4 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
   return prog;
 }
 
-std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
-                                          const VerifyOptions &opts, Diagnostics &diags,
-                                          const SymbolTable *symbols) {
-  ParsedProgram parsed = parsePmc(text, std::move(file), diags, symbols);
-  if (diags.hasErrors()) return std::nullopt;
-  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
-  if (diags.hasErrors()) return std::nullopt;
-  return prog;
-}
-
 } // namespace lj::fanuc

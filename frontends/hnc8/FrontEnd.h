@@ -1,11 +1,10 @@
-// The HNC-8 STL front end: text -> ParsedProgram (and, with verify/, -> VerifiedProgram), with
-// located diagnostics in HNC-8 wording.
+// The HNC-8 STL front end: text -> ParsedProgram, with located diagnostics in HNC-8 wording
+// (parse + verify: pipeline/Compile.h).
 #pragma once
 
 #include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
-#include "verify/Verify.h"
 
 #include <climits>
 #include <optional>
@@ -24,15 +23,6 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
 /// first 3 non-empty lines start with no mnemonic (not a program).
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags,
                        const SymbolTable *symbols, int32_t maxStatements = INT32_MAX);
-
-/// parseStl + verify; returns nothing on any error.
-std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
-                                               const VerifyOptions &opts, Diagnostics &diags);
-
-/// parseStl (with symbols, may be null) + verify; returns nothing on any error.
-std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
-                                               const VerifyOptions &opts, Diagnostics &diags,
-                                               const SymbolTable *symbols);
 
 /// Human-readable dump of a verified program (one statement per line with depth, slot, slice),
 /// used by `ladderjit check --print` and golden tests.

@@ -369,25 +369,6 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
   return parseStl(text, std::move(file), diags, nullptr);
 }
 
-std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
-                                               const VerifyOptions &opts, Diagnostics &diags) {
-  return compileFrontEnd(text, std::move(file), opts, diags, nullptr);
-}
-
-std::optional<VerifiedProgram> compileFrontEnd(std::string_view text, std::string file,
-                                               const VerifyOptions &opts, Diagnostics &diags,
-                                               const SymbolTable *symbols) {
-  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols,
-                                  opts.maxStatements.value_or(hnc8::profile().maxStatements));
-  // A program cut short at the statement limit is not verified (its end would look missing).
-  if (parsed.stmts.size() >
-      static_cast<size_t>(std::max(opts.maxStatements.value_or(hnc8::profile().maxStatements), 0)))
-    return std::nullopt;
-  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
-  if (diags.hasErrors()) return std::nullopt;
-  return prog;
-}
-
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags,
                        const SymbolTable *symbols, int32_t maxStatements) {
   // Bounds (issue 11 item 4): parsing stops at the statement limit, after kMaxErrors errors,

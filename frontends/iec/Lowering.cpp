@@ -161,13 +161,4 @@ const DialectText kText{"iec", spell, formatOperand};
 
 const DialectText &dialectText() { return kText; }
 
-std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file,
-                                         const VerifyOptions &opts, Diagnostics &diags) {
-  ParsedProgram parsed = parseIl(text, std::move(file), diags);
-  if (diags.hasErrors()) return std::nullopt;
-  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
-  if (diags.hasErrors()) return std::nullopt;
-  return prog;
-}
-
 } // namespace lj::iec

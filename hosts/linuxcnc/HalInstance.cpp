@@ -4,7 +4,7 @@
 #include "engines/AotLoader.h"
 #include "engines/AotTrust.h"
 #include "formats/InputFiles.h"
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "hosts/SystemBits.h"
 #include "ir/Diagnostics.h"
 #include "services/RetainStore.h"

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "formats/Address.h"
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "ir/Program.h"
 
 #include <cstdint>

@@ -12,6 +12,7 @@
 #include "interp/Interpreter.h"
 #include "ir/OpTable.h"
 #include "jit/Jit.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -73,7 +74,7 @@ Snippet verifiedSnippet(Op op) {
     VerifyOptions vo;
     vo.plc2Nvalue = p.plc2Nvalue;
     s.text = p.text();
-    s.prog = compileFrontEnd(s.text, "snippet.stl", vo, d);
+    s.prog = pipeline::compileStl(s.text, "snippet.stl", vo, d);
     s.diagnostics = d.render();
     if (s.prog) return s;
   }
@@ -215,7 +216,7 @@ TEST(InstructionReference, EveryExamplePassesTheFrontEnd) {
   for (const InstrDoc &d : instrDocs()) {
     Diagnostics diags("example.stl");
     VerifyOptions vo;
-    EXPECT_TRUE(compileFrontEnd(d.example, "example.stl", vo, diags).has_value())
+    EXPECT_TRUE(pipeline::compileStl(d.example, "example.stl", vo, diags).has_value())
         << hnc8::mnemonicOf(d.op) << " example:\n"
         << d.example << "\n"
         << diags.render();

@@ -1,8 +1,8 @@
-// The dialect and profile registries (formats/Dialects.h, profiles/Profiles.h): which dialect a
+// The dialect and profile registries (pipeline/Dialects.h, profiles/Profiles.h): which dialect a
 // PROGRAM is read in (--dialect, else its extension, else HNC-8; a ladder JSON names its own),
 // and the usage errors for an unknown dialect (CLI.md, docs/architecture.md).
-#include "formats/Dialects.h"
-#include "formats/ProgramFile.h"
+#include "pipeline/Dialects.h"
+#include "pipeline/ProgramFile.h"
 #include "profiles/Profiles.h"
 
 #include <gtest/gtest.h>

@@ -5,6 +5,7 @@
 #include "frontends/hnc8/Mnemonics.h"
 #include "gen/ProgramGenerator.h"
 #include "ir/OpTable.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,7 @@ std::optional<VerifiedProgram> frontEnd(const GenProgram &p, Diagnostics &d,
   VerifyOptions vo;
   vo.plc2Nvalue = p.plc2Nvalue;
   vo.maxStatements = maxStatements;
-  return compileFrontEnd(p.text(), "gen.stl", vo, d);
+  return pipeline::compileStl(p.text(), "gen.stl", vo, d);
 }
 
 TEST(RealisticGenerator, EverySizeVerifiesWithTheExactStatementCount) {

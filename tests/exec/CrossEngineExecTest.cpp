@@ -3,6 +3,7 @@
 // on the reference; plus tests of the comparison helper itself.
 #include "tests/exec/ExecTest.h"
 #include "tests/support/StateDiff.h"
+#include "verify/Verify.h"
 
 #include <cstring>
 

@@ -4,6 +4,7 @@
 #include "tests/support/CrossEngine.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
+#include "verify/Verify.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // vectors 8, 10-14 of ../shared/reference/fanuc-pmc.md section 7 and the rules of 6.5, 6.7-6.9,
 // 4.2; expected values are the reference's (cited per test), never what the code printed. The
 // readings the reference leaves open are the [EXT]/[INF] rows of docs/fanuc-pmc.md.
+#include "pipeline/Compile.h"
 #include "tests/exec/FanucExec.h"
 
 namespace lj::test {
@@ -442,7 +443,7 @@ TEST(FanucDataRules, LocatedErrors) {
   };
   for (const Case &c : cases) {
     Diagnostics d("t.pmc");
-    EXPECT_FALSE(fanuc::compilePmc(c.text, "t.pmc", VerifyOptions{}, d, nullptr)) << c.text;
+    EXPECT_FALSE(pipeline::compilePmc(c.text, "t.pmc", VerifyOptions{}, d, nullptr)) << c.text;
     const std::string out = d.render();
     EXPECT_NE(out.find(c.want), std::string::npos) << out;
     const std::string loc = "t.pmc:" + std::to_string(c.line) + ":" + std::to_string(c.col) + ":";

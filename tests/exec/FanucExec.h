@@ -2,6 +2,7 @@
 // test, and FANUC addresses (X0.0, R100, D100:2) read and written through the dialect's profile.
 #pragma once
 
+#include "pipeline/Compile.h"
 #include "tests/exec/ExecTest.h"
 
 #include "formats/Address.h"
@@ -14,7 +15,7 @@ class FanucExecTest : public ExecTest {
 protected:
   std::unique_ptr<Machine> pmc(std::string_view text, const VerifyOptions &opts = {}) {
     Diagnostics d("t.pmc");
-    std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", opts, d, nullptr);
+    std::optional<VerifiedProgram> p = pipeline::compilePmc(text, "t.pmc", opts, d, nullptr);
     if (!p) {
       ADD_FAILURE() << d.render() << text;
       return nullptr;

@@ -4,6 +4,7 @@
 // docs/fanuc-pmc.md "Level 2 and its inputs"). Level 1 reads the live inputs every tick.
 // Expected values follow from that model and the schedule of DIALECT.md 4 (tick t runs level 1,
 // then slice t mod n of level 2), never from what an engine printed.
+#include "pipeline/Compile.h"
 #include "tests/exec/FanucExec.h"
 
 #include "tests/support/Machine.h"
@@ -147,7 +148,7 @@ std::optional<VerifiedProgram> level2(const std::string &body, int32_t nvalue,
   Diagnostics d("t.pmc");
   const std::string text = "END1\n" + body + "END2\n" + subs + "END\n";
   std::optional<VerifiedProgram> p =
-      fanuc::compilePmc(text, "t.pmc", optionsWithNvalue(nvalue), d, nullptr);
+      pipeline::compilePmc(text, "t.pmc", optionsWithNvalue(nvalue), d, nullptr);
   EXPECT_TRUE(p) << d.render();
   return p;
 }

@@ -2,6 +2,7 @@
 // values are worked by hand from ../shared/reference/fanuc-pmc.md 6.2, 6.5 and 6.7 (cited per
 // test), never what the code printed; the readings the reference leaves open are the [EXT]/[INF]
 // rows of docs/fanuc-pmc.md.
+#include "pipeline/Compile.h"
 #include "tests/exec/FanucExec.h"
 
 namespace lj::test {
@@ -260,7 +261,7 @@ TEST(FanucTableRules, LocatedErrors) {
     if (text.empty()) text = std::string(tails[i].rfind("XMOV", 0) == 0 ? in4 : in3) + tails[i];
     text += end;
     Diagnostics d("t.pmc");
-    EXPECT_FALSE(fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr)) << text;
+    EXPECT_FALSE(pipeline::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr)) << text;
     const std::string out = d.render();
     EXPECT_NE(out.find(c.want), std::string::npos) << out;
     const std::string loc = "t.pmc:" + std::to_string(c.line) + ":" + std::to_string(c.col) + ":";

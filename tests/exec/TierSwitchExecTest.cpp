@@ -7,6 +7,7 @@
 #include "engines/EngineSpec.h"
 #include "tests/support/Machine.h"
 #include "tests/support/TestAddress.h"
+#include "verify/Verify.h"
 
 #include <gtest/gtest.h>
 

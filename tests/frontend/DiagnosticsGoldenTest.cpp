@@ -1,6 +1,7 @@
 // Golden diagnostics: one test per error class of DIALECT.md 6 (exact `file:line:col: error:`
 // line), the warnings of DIALECT.md 6 / dialect-notes, rendering order, and the ten-mistakes file.
 #include "FrontEndTestUtil.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -296,7 +297,7 @@ TEST(TenMistakes, TenLocatedErrors) {
   std::stringstream ss;
   ss << f.rdbuf();
   Diagnostics d("ten_mistakes.stl");
-  auto prog = compileFrontEnd(ss.str(), "ten_mistakes.stl", {}, d);
+  auto prog = pipeline::compileStl(ss.str(), "ten_mistakes.stl", {}, d);
   EXPECT_FALSE(prog.has_value());
   EXPECT_EQ(d.errorCount(), 10);
   EXPECT_EQ(d.render(),

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "frontends/fanuc/FrontEnd.h"
+#include "pipeline/Compile.h"
 
 #include <optional>
 #include <string>
@@ -11,7 +12,8 @@ namespace lj::test {
 /// Every diagnostic of compiling `text` as `t.pmc`, rendered (empty when it compiles cleanly).
 inline std::string fanucDiags(const std::string &text) {
   Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr);
   return d.render();
 }
 

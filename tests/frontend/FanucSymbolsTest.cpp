@@ -3,6 +3,7 @@
 // their located messages, and names in operands resolved exactly like the addresses they stand
 // for. One test per rule.
 #include "frontends/fanuc/FrontEnd.h"
+#include "pipeline/Compile.h"
 #include "tests/frontend/FanucDiags.h"
 
 #include <gtest/gtest.h>
@@ -161,7 +162,7 @@ TEST(FanucSymbols, OtherSectionsAreSkippedWithOneWarningEach) {
       "t.pmc:25:1: warning: section %@5 (I/O module data) is not read by ladderjit\n"
       "t.pmc:28:1: warning: section %@9 is not read by ladderjit\n");
   Diagnostics d("t.pmc");
-  EXPECT_TRUE(fanuc::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr)) << d.render();
+  EXPECT_TRUE(pipeline::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr)) << d.render();
 }
 
 // ---- the %@2-E option ----
@@ -352,9 +353,9 @@ TEST(FanucSymbols, NamesInBitByteAndFunctionalOperands) {
                             "END\n";
   Diagnostics dn("t.pmc"), dp("t.pmc");
   std::optional<VerifiedProgram> n =
-      fanuc::compilePmc(file(kSymbols, named), "t.pmc", VerifyOptions{}, dn, nullptr);
+      pipeline::compilePmc(file(kSymbols, named), "t.pmc", VerifyOptions{}, dn, nullptr);
   std::optional<VerifiedProgram> p =
-      fanuc::compilePmc(plain, "t.pmc", VerifyOptions{}, dp, nullptr);
+      pipeline::compilePmc(plain, "t.pmc", VerifyOptions{}, dp, nullptr);
   ASSERT_TRUE(n) << dn.render();
   ASSERT_TRUE(p) << dp.render();
   expectSameStatements(n->stmts, p->stmts);
@@ -448,8 +449,8 @@ TEST(FanucSymbols, GivenSymbolsAreMergedWithTheFilesOwn) {
   ASSERT_TRUE(given.add("PUMP", "Y0.0", "COOLANT PUMP", err)) << err;
   // A plain file reads them.
   Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc("RD X0.0\nWRT PUMP\nEND1\nEND2\nEND\n",
-                                                       "t.pmc", VerifyOptions{}, d, &given);
+  std::optional<VerifiedProgram> p = pipeline::compilePmc("RD X0.0\nWRT PUMP\nEND1\nEND2\nEND\n",
+                                                          "t.pmc", VerifyOptions{}, d, &given);
   ASSERT_TRUE(p) << d.render();
   ASSERT_EQ(p->symbols.size(), 1u);
   EXPECT_EQ(p->stmts[1].ops[0].symbol, 0);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "frontends/hnc8/FrontEnd.h"
+#include "pipeline/Compile.h"
 
 #include <optional>
 #include <string>
@@ -21,7 +22,7 @@ struct Compiled {
 inline Compiled compile(std::string_view text, VerifyOptions opts = {}) {
   Compiled c;
   Diagnostics d("t.stl");
-  c.prog = compileFrontEnd(text, "t.stl", opts, d);
+  c.prog = pipeline::compileStl(text, "t.stl", opts, d);
   c.diags = d.render();
   c.errors = d.errorCount();
   for (const Diagnostic &x : d.all())

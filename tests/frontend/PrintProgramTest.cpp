@@ -1,6 +1,7 @@
 // printProgram: the dump used by `ladderjit check --print` and golden tests shows every fact of
 // the verified program (values from DIALECT.md 3-4 and dialect-notes "PLC2 slicing").
 #include "FrontEndTestUtil.h"
+#include "verify/Verify.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // crash"), and every program it accepts satisfies the invariants of Program.h.
 #include "FrontEndTestUtil.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +50,7 @@ void checkInvariants(const VerifiedProgram &p, const std::string &text) {
 
 void runOne(const std::string &text) {
   Diagnostics d("r.stl");
-  auto prog = compileFrontEnd(text, "r.stl", {}, d);
+  auto prog = pipeline::compileStl(text, "r.stl", {}, d);
   for (const Diagnostic &x : d.all()) {
     EXPECT_GE(x.loc.line, 1);
     EXPECT_GE(x.loc.col, 1);

@@ -2,6 +2,7 @@
 // boundary inside loop bodies or between a JMP and its label, nvalue 0 and empty PLC2.
 #include "FrontEndTestUtil.h"
 #include "frontends/fanuc/FrontEnd.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -136,8 +137,8 @@ Slices pmcSlices(const std::string &level2, const std::string &sub) {
   VerifyOptions o;
   o.plc2Nvalue = 1;
   Diagnostics d("t.pmc");
-  auto p = fanuc::compilePmc("END1\n" + level2 + "END2\nSP P1\n" + sub + "SPE\nEND\n", "t.pmc", o,
-                             d, nullptr);
+  auto p = pipeline::compilePmc("END1\n" + level2 + "END2\nSP P1\n" + sub + "SPE\nEND\n", "t.pmc",
+                                o, d, nullptr);
   EXPECT_TRUE(p.has_value()) << d.render();
   Slices out;
   if (!p) return out;

@@ -1,6 +1,7 @@
 // Verifier facts on valid programs: stack depths on the manual's examples, parts, subroutines,
 // jump/loop/call targets, state slots and input flags (DIALECT.md 2-3, hnc8-core.md 4.9-4.10).
 #include "FrontEndTestUtil.h"
+#include "verify/Verify.h"
 
 #include "ladderjit/abi.h"
 

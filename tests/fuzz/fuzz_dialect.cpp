@@ -6,6 +6,7 @@
 #include "frontends/iec/FrontEnd.h"
 #include "ladder/Json.h"
 #include "ladder/Text.h"
+#include "pipeline/Compile.h"
 #include "tests/fuzz/ProgramInvariants.h"
 
 #include <cstddef>
@@ -23,9 +24,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   lj::VerifyOptions opts;
   opts.plc2Nvalue = size % 7; // small slices: the slice planner runs on every accepted level 2
 #ifdef LJ_FUZZ_FANUC
-  std::optional<lj::VerifiedProgram> prog = lj::fanuc::compilePmc(text, file, opts, diags, nullptr);
+  std::optional<lj::VerifiedProgram> prog =
+      lj::pipeline::compilePmc(text, file, opts, diags, nullptr);
 #else
-  std::optional<lj::VerifiedProgram> prog = lj::iec::compileIl(text, file, opts, diags);
+  std::optional<lj::VerifiedProgram> prog = lj::pipeline::compileIl(text, file, opts, diags);
 #endif
   if (prog) {
     lj::fuzztest::checkProgramInvariants(*prog);

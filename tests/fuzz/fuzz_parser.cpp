@@ -4,6 +4,7 @@
 #include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Json.h"
 #include "ladder/Text.h"
+#include "pipeline/Compile.h"
 #include "tests/fuzz/ProgramInvariants.h"
 
 #include <cstddef>
@@ -16,7 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   lj::VerifyOptions opts;
   // Small slices so the slice planner runs on every accepted PLC2.
   opts.plc2Nvalue = size % 7;
-  std::optional<lj::VerifiedProgram> prog = lj::compileFrontEnd(text, "fuzz.stl", opts, diags);
+  std::optional<lj::VerifiedProgram> prog = lj::pipeline::compileStl(text, "fuzz.stl", opts, diags);
   if (prog) {
     lj::fuzztest::checkProgramInvariants(*prog);
     (void)lj::printProgram(*prog);
@@ -29,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!lj::ladder::stlFromJson(lj::ladder::writeJson(nets), back, error)) __builtin_trap();
     lj::Diagnostics again("fuzz.json");
     std::optional<lj::VerifiedProgram> twin =
-        lj::compileFrontEnd(back.text, "fuzz.json", opts, again, &back.symbols);
+        lj::pipeline::compileStl(back.text, "fuzz.json", opts, again, &back.symbols);
     if (!twin || twin->stmts.size() != prog->stmts.size()) __builtin_trap();
   }
   (void)diags.render();

@@ -1,8 +1,9 @@
 // The pin plan of the HAL component (hosts/linuxcnc/HalPlan.h) without HAL: default pins from a
 // program, the map file rules of docs/linuxcnc.md "Map file", HAL's name rules.
 #include "hosts/linuxcnc/HalPlan.h"
+#include "verify/Verify.h"
 
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 
 #include <gtest/gtest.h>
 

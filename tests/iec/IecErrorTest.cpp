@@ -1,5 +1,6 @@
 // Located errors for every restriction of the seed (modicon-neza.md 2.8, 2.9, 9, 12.2) and
 // for broken IL; plus the warnings of the non-reversible forms (9 rule 3).
+#include "pipeline/Compile.h"
 #include "tests/iec/IecTest.h"
 
 namespace lj::test {
@@ -74,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(Seed, IecErrors, ::testing::ValuesIn(kCases),
 // The non-reversible forms compile, with a warning each (modicon-neza.md 9 rule 3).
 TEST(IecWarnings, NonReversibleForms) {
   Diagnostics diags("test.il");
-  auto p = iec::compileIl("LD %I0.0\nN\nXORN %M1\nJMPCN %L1\nST %Q0.0\n%L1 :\nLD %I0.1\nENDCN\n",
+  auto p =
+      pipeline::compileIl("LD %I0.0\nN\nXORN %M1\nJMPCN %L1\nST %Q0.0\n%L1 :\nLD %I0.1\nENDCN\n",
                           "test.il", VerifyOptions{}, diags);
   ASSERT_TRUE(p.has_value()) << diags.render();
   const std::string out = diags.render();
@@ -87,8 +89,8 @@ TEST(IecWarnings, NonReversibleForms) {
 // Line numbers, comments and case: `003 ld %i0.1 (* start *)` is LD %I0.1.
 TEST(IecSyntax, NumbersCommentsAndCase) {
   Diagnostics diags("test.il");
-  auto p = iec::compileIl("(* title *)\n001 ld %i0.1 (* start *)\n002 st %q0.3\n", "test.il",
-                          VerifyOptions{}, diags);
+  auto p = pipeline::compileIl("(* title *)\n001 ld %i0.1 (* start *)\n002 st %q0.3\n", "test.il",
+                               VerifyOptions{}, diags);
   ASSERT_TRUE(p.has_value()) << diags.render();
   EXPECT_EQ(diags.render(), "");
   ASSERT_EQ(p->comments.size(), 2u);
@@ -100,7 +102,8 @@ TEST(IecSyntax, NumbersCommentsAndCase) {
 // A comment over several lines keeps every line's text (the last one, before `*)`, was lost).
 TEST(IecSyntax, CommentOverSeveralLines) {
   Diagnostics diags("test.il");
-  auto p = iec::compileIl("(* first\n   second\n   third *)\nLD %I0.0\nST %Q0.0 (* t1\nt2 *)\n",
+  auto p =
+      pipeline::compileIl("(* first\n   second\n   third *)\nLD %I0.0\nST %Q0.0 (* t1\nt2 *)\n",
                           "test.il", VerifyOptions{}, diags);
   ASSERT_TRUE(p.has_value()) << diags.render();
   ASSERT_EQ(p->comments.size(), 5u);

@@ -2,8 +2,9 @@
 // read and write Neza objects (`%I0.1`, `%MW5`) through the dialect's address parser.
 #pragma once
 
-#include "formats/Dialects.h"
 #include "frontends/iec/FrontEnd.h"
+#include "pipeline/Compile.h"
+#include "pipeline/Dialects.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
 
@@ -19,7 +20,7 @@ namespace lj::test {
 /// Compile IL; on an error, a test failure with the diagnostics.
 inline std::optional<VerifiedProgram> compileIlOrFail(std::string_view text) {
   Diagnostics diags("test.il");
-  std::optional<VerifiedProgram> p = iec::compileIl(text, "test.il", VerifyOptions{}, diags);
+  std::optional<VerifiedProgram> p = pipeline::compileIl(text, "test.il", VerifyOptions{}, diags);
   if (!p) ADD_FAILURE() << diags.render();
   return p;
 }
@@ -27,7 +28,7 @@ inline std::optional<VerifiedProgram> compileIlOrFail(std::string_view text) {
 /// The diagnostics of compiling `text` (expected to fail).
 inline std::string ilErrors(std::string_view text) {
   Diagnostics diags("test.il");
-  std::optional<VerifiedProgram> p = iec::compileIl(text, "test.il", VerifyOptions{}, diags);
+  std::optional<VerifiedProgram> p = pipeline::compileIl(text, "test.il", VerifyOptions{}, diags);
   EXPECT_FALSE(p.has_value()) << "compiled although it should not:\n" << text;
   return diags.render();
 }

@@ -10,6 +10,7 @@
 // reused with the wrong cuts, or an alias naming the wrong group shows up as a state difference.
 #include "engines/EngineSpec.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "pipeline/Compile.h"
 #include "runtime/Executive.h"
 #include "tests/jit/JitHarness.h"
 #include "tests/support/StateDiff.h"
@@ -160,7 +161,7 @@ TEST(OnlineChangeJit, RandomOneRungEditsMatchInterpreterAndFreshCompile) {
         edited[at] = l;
         Diagnostics d;
         std::optional<VerifiedProgram> v =
-            compileFrontEnd(join(edited), "edit.stl", optionsWithNvalue(prog->plc2Nvalue), d);
+            pipeline::compileStl(join(edited), "edit.stl", optionsWithNvalue(prog->plc2Nvalue), d);
         if (!v) continue;
         next = std::make_unique<VerifiedProgram>(std::move(*v));
         lines = std::move(edited);

@@ -7,6 +7,7 @@
 #include "frontends/iec/FrontEnd.h"
 #include "ladder/Layout.h"
 #include "ladder/Text.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -28,7 +29,8 @@ std::set<std::string> texts(const Layout &l, const std::string &kindPrefix) {
 /// The ladder layout of a FANUC program (none, and a test failure, when it does not compile).
 std::optional<Layout> fanucLayout(const char *pmc) {
   Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
   if (!p) {
     ADD_FAILURE() << d.render();
     return std::nullopt;
@@ -124,7 +126,7 @@ TEST(LadderDialect, FanucRotationBoxes) {
 TEST(LadderDialect, Hnc8TimerKeepsItsTimeUnit) {
   Diagnostics d("t.stl");
   std::optional<VerifiedProgram> p =
-      compileFrontEnd("LD X0.1\nTMRB 0 1 500\nOUT R2.0\n", "t.stl", VerifyOptions{}, d);
+      pipeline::compileStl("LD X0.1\nTMRB 0 1 500\nOUT R2.0\n", "t.stl", VerifyOptions{}, d);
   ASSERT_TRUE(p) << d.render();
   Layout l = layout(fromProgram(*p));
   const Cell *tmrb = boxNamed(l, "TMRB");
@@ -145,7 +147,7 @@ TEST(LadderDialect, IecObjectsAndWords) {
                    "ST %Q0.3\n"
                    "END\n";
   Diagnostics d("t.il");
-  std::optional<VerifiedProgram> p = iec::compileIl(il, "t.il", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileIl(il, "t.il", VerifyOptions{}, d);
   ASSERT_TRUE(p) << d.render();
   Layout l = layout(fromProgram(*p));
   std::set<std::string> contacts = texts(l, "contact");
@@ -163,7 +165,8 @@ TEST(LadderDialect, FanucTextForm) {
                     "RD R9091.0\nRD.STK R9091.1\nRD.STK R9091.1\nRD.STK R9091.0\nRD.STK X0.2\n"
                     "ROTB 2 D0 D2 D4 D6\nWRT R0.0\nSPE\nEND\n";
   Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p = fanuc::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
   ASSERT_TRUE(p) << d.render();
   const std::string t = renderText(fromProgram(*p));
   for (const char *want : {"--- END1 ---", "--- END2 ---", "--- SP P1 ---", "--- SPE ---",

@@ -6,6 +6,7 @@
 // 1.9), line by line as cited. Only elements and links are listed; wires are checked by count.
 #include "ladder/Layout.h"
 #include "frontends/hnc8/FrontEnd.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,7 @@ namespace {
 
 RungLayout one(const std::string &stl) {
   Diagnostics d("t.stl");
-  std::optional<VerifiedProgram> p = compileFrontEnd(stl, "t.stl", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileStl(stl, "t.stl", VerifyOptions{}, d);
   EXPECT_TRUE(p) << d.render();
   if (!p) return {};
   Layout l = layout(fromProgram(*p));
@@ -122,7 +123,7 @@ TEST(LadderLayout, WideRungScrollsAndDropsNothing) {
   EXPECT_EQ(ids.size(), 41u);
   EXPECT_EQ(r.cols, 41); // 40 contacts, then the coil column: the drawing widens (scrolls)
   Diagnostics d("t.stl");
-  std::optional<VerifiedProgram> p = compileFrontEnd(stl, "t.stl", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileStl(stl, "t.stl", VerifyOptions{}, d);
   ASSERT_TRUE(p);
   std::string svg = renderSvg(layout(fromProgram(*p)));
   EXPECT_NE(svg.find("data-stmt=\"40\""), std::string::npos);
@@ -147,7 +148,7 @@ TEST(LadderLayout, StlRungIsAnStlBoxKeepingEveryStatement) {
                               "stl 3 0 OUT Y0.1 3"}));
   Diagnostics d("t.stl");
   std::optional<VerifiedProgram> p =
-      compileFrontEnd("LD X0.0\nOUT Y0.0\nOR X0.1\nOUT Y0.1\n", "t.stl", VerifyOptions{}, d);
+      pipeline::compileStl("LD X0.0\nOUT Y0.0\nOR X0.1\nOUT Y0.1\n", "t.stl", VerifyOptions{}, d);
   ASSERT_TRUE(p);
   std::string html = renderHtml(layout(fromProgram(*p)));
   EXPECT_NE(html.find("class=\"el stl off\" data-stmt=\"2\""), std::string::npos);

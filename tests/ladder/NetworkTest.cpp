@@ -4,6 +4,7 @@
 #include "ladder/Network.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Json.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,7 @@ namespace {
 
 VerifiedProgram verified(const std::string &text) {
   Diagnostics d("t.stl");
-  std::optional<VerifiedProgram> p = compileFrontEnd(text, "t.stl", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileStl(text, "t.stl", VerifyOptions{}, d);
   EXPECT_TRUE(p) << d.render();
   return p ? *p : VerifiedProgram{};
 }
@@ -132,7 +133,7 @@ TEST(LadderNetwork, DiagnosticsPointIntoTheJson) {
   std::string err;
   ASSERT_TRUE(stlFromJson(json, src, err)) << err;
   Diagnostics d("p.json");
-  EXPECT_FALSE(compileFrontEnd(src.text, "p.json", VerifyOptions{}, d, &src.symbols));
+  EXPECT_FALSE(pipeline::compileStl(src.text, "p.json", VerifyOptions{}, d, &src.symbols));
   std::string out = renderDiagnostics(d, src);
   EXPECT_NE(out.find("p.json:12:3: error: PLC1 rung 1 element 2 (id 8): X0.1 is read-only"),
             std::string::npos)

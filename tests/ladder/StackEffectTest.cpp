@@ -3,6 +3,7 @@
 #include "ir/StackEffect.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -74,7 +75,7 @@ TEST(StackEffect, FunctionBlocks) {
 /// The verifier's depth walk (Scopes.cpp) and the table function agree statement by statement.
 void expectWalkAgrees(const std::string &text) {
   Diagnostics d("t.stl");
-  std::optional<VerifiedProgram> p = compileFrontEnd(text, "t.stl", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileStl(text, "t.stl", VerifyOptions{}, d);
   ASSERT_TRUE(p) << d.render();
   for (size_t i = 0; i + 1 < p->stmts.size(); ++i) {
     const InstrInfo &ii = instrInfo(p->stmts[i].op);

@@ -4,6 +4,7 @@
 // and the live page's per-rung SVG, whose place (the scrolling section's child) has that width.
 #include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Layout.h"
+#include "pipeline/Compile.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,7 @@ Layout wide() {
     stl += "AND X" + std::to_string(i / 8) + "." + std::to_string(i % 8) + "\n";
   stl += "OR R5.0\nOUT Y1.0\n"; // the parallel R5.0 spans the whole series
   Diagnostics d("wide.stl");
-  std::optional<VerifiedProgram> p = compileFrontEnd(stl, "wide.stl", VerifyOptions{}, d);
+  std::optional<VerifiedProgram> p = pipeline::compileStl(stl, "wide.stl", VerifyOptions{}, d);
   EXPECT_TRUE(p) << d.render();
   return p ? layout(fromProgram(*p)) : Layout{};
 }

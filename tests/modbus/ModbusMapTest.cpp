@@ -2,7 +2,7 @@
 // each table, what is writable and retained, and a clear error for every bad line.
 #include "services/ModbusServer.h"
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // (modicon-neza.md 1.1 footnote 3, L542). Everything else starts at zero after a restart.
 #include "services/RetainStore.h"
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "profiles/Profiles.h"
 
 #include <gtest/gtest.h>

@@ -10,9 +10,9 @@
 
 #include "engines/EngineSpec.h"
 #include "engines/LlvmBackend.h"
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "formats/InputFiles.h"
-#include "formats/ProgramFile.h"
+#include "pipeline/ProgramFile.h"
 #include "hosts/SimNc.h"
 #include "hosts/SystemBits.h"
 #include "ir/Profile.h"

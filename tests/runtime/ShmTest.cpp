@@ -1,7 +1,7 @@
 // The shared-memory image (docs/serve.md "Shared-memory image"): a host thread with its own
 // mapping writes X through the input seqlock, the executive scans and publishes, the host reads
 // Y back through the output seqlock.
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "runtime/Executive.h"
 #include "runtime/ProgramLoader.h"
 #include "runtime/ShmImage.h"

@@ -4,7 +4,7 @@
 // values against formats::readAddress, and the trace in a running Executive.
 #include "runtime/SignalTrace.h"
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "profiles/Profiles.h"
 #include "runtime/Controller.h"
 #include "runtime/Executive.h"

@@ -1,5 +1,6 @@
 // Lock-step runs of every registered engine with whole-state comparison.
 #include "tests/support/CrossEngine.h"
+#include "verify/Verify.h"
 
 #include "tests/support/StateDiff.h"
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "tests/support/Machine.h"
+#include "verify/Verify.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // Compiling test programs and driving one engine tick by tick.
 #include "tests/support/Machine.h"
+#include "pipeline/Compile.h"
 
 #include "tests/support/TestAddress.h"
 
@@ -17,7 +18,7 @@ VerifyOptions optionsWithNvalue(int32_t plc2Nvalue) {
 
 std::optional<VerifiedProgram> compileOrFail(std::string_view text, const VerifyOptions &opts) {
   Diagnostics diags("test.stl");
-  std::optional<VerifiedProgram> prog = compileFrontEnd(text, "test.stl", opts, diags);
+  std::optional<VerifiedProgram> prog = pipeline::compileStl(text, "test.stl", opts, diags);
   if (!prog || diags.hasErrors()) {
     ADD_FAILURE() << "program does not verify:\n" << diags.render() << "--- program ---\n" << text;
     return std::nullopt;

@@ -7,6 +7,7 @@
 #include "ir/Program.h"
 #include "ladderjit/abi.h"
 #include "tests/support/EngineRegistry.h"
+#include "verify/Verify.h"
 
 #include <cstdint>
 #include <functional>

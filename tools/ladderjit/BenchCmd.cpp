@@ -12,9 +12,9 @@
 #include "engines/LlvmBackend.h"
 #include "formats/Address.h"
 #include "formats/InputFiles.h"
-#include "frontends/hnc8/FrontEnd.h"
 #include "gen/Rng.h"
 #include "ladder/Json.h"
+#include "pipeline/Compile.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -315,7 +315,7 @@ int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
                                               : nullptr;
     Diagnostics d(src.path);
     auto t0 = Clock::now();
-    ParsedProgram parsed = parseStl(src.text, src.path, d, symbols);
+    ParsedProgram parsed = pipeline::parse(*src.dialect, src.text, src.path, d, symbols);
     ft.parseUs = usSince(t0);
     VerifyOptions vo;
     vo.plc2Nvalue = nvalue;

@@ -2,9 +2,10 @@
 // loading they share. Each returns the process exit code.
 #pragma once
 
-#include "formats/ProgramFile.h"
 #include "ir/Engine.h"
 #include "ir/Program.h"
+#include "pipeline/ProgramFile.h"
+#include "runtime/Server.h"
 
 #include <cstdint>
 #include <memory>
@@ -23,7 +24,7 @@ int usageError(const std::string &msg);
 /// Flush stdout; a write that failed turns `code` kOk into kUsage (with a message).
 int checkStdout(int code);
 
-/// PROGRAM as read: an STL file, or a plc.dit container (formats/ProgramFile.h).
+/// PROGRAM as read: an STL file, or a plc.dit container (pipeline/ProgramFile.h).
 using formats::effectiveNvalue;
 using formats::programHashOf;
 using formats::ProgramSource;
@@ -55,7 +56,7 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
 std::string warningSummary(const std::string &path, size_t count, std::string_view dialect = {});
 
 struct CheckArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   int32_t plc2Nvalue = 200;
   bool plc2NvalueGiven = false; ///< --plc2-nvalue was on the command line
@@ -64,7 +65,7 @@ struct CheckArgs {
 int runCheck(const CheckArgs &a);
 
 struct RunArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "jit"; ///< interp | jit | aot:PATH
   uint64_t ticks = 1;
@@ -89,7 +90,7 @@ struct RunArgs {
 int runRun(const RunArgs &a);
 
 struct EmitArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   int optLevel = 2;
   int32_t plc2Nvalue = 200;
@@ -98,7 +99,7 @@ struct EmitArgs {
 int runEmitLlvm(const EmitArgs &a);
 
 struct DitArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program; ///< STL file
   std::string symbols; ///< symbols file, empty = none
   std::string params;  ///< P values file, empty = none
@@ -110,7 +111,7 @@ struct DitArgs {
 int runDit(const DitArgs &a);
 
 struct CompileArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string output;       ///< the .so to write
   std::string cpu = "host"; ///< host | generic
@@ -136,7 +137,7 @@ struct KeygenArgs {
 int runKeygen(const KeygenArgs &a);
 
 struct FuzzArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   uint64_t seed = 1;
   uint64_t programs = 1000;
   uint32_t ticks = 50;
@@ -147,7 +148,7 @@ struct FuzzArgs {
 int runFuzz(const FuzzArgs &a);
 
 struct BenchArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string engine = "all";  ///< interp | jit | aot | all
   std::string tier = "both";   ///< fast | opt | both (JIT; AOT is always the optimizing tier)
@@ -172,7 +173,7 @@ struct BenchArgs {
 int runBench(const BenchArgs &a);
 
 struct LadderArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
+  std::string dialect; ///< --dialect NAME (pipeline/Dialects.h), empty = by file name
   std::string program;
   std::string format = "text"; ///< text | json | svg | html | layout
   std::string output;          ///< empty or "-": stdout
@@ -183,45 +184,8 @@ struct LadderArgs {
 /// `ladderjit ladder`: the program as networks (docs/ladder-json.md).
 int runLadder(const LadderArgs &a);
 
-struct ServeArgs {
-  std::string dialect; ///< --dialect NAME (formats/Dialects.h), empty = by file name
-  std::string program;
-  std::string engine = "jit"; ///< jit | interp | aot:PATH.so
-  uint64_t periodMs = 1;
-  bool periodMsGiven = false; ///< --period-ms was on the command line (beats a plc.dit)
-  int32_t plc2Nvalue = 200;
-  bool plc2NvalueGiven = false;
-  uint64_t maxBackwardSteps = 1000000;
-  std::string modbus;                 ///< [HOST:]PORT, empty = no Modbus server
-  std::string modbusMap;              ///< map file (docs/modbus-map.md), empty = the HNC-8 map
-  std::string http;                   ///< [HOST:]PORT of the live view, empty = none
-  std::string httpTokenFile;          ///< the live view's token, from this file
-  std::vector<std::string> httpHosts; ///< Host names the live view answers besides its address
-  bool httpReadOnly = false;          ///< the live view changes nothing
-  std::string retain;                 ///< retentive store file, empty = none
-  bool retainForce = false;           ///< --retain-force: a file of another layout -> zeros
-  uint32_t retainPeriodMs = 100;      ///< minimum gap between periodic retain saves
-  bool modbusWriteInputs = false;     ///< Modbus may write X and F (simulation only)
-  std::string params;                 ///< P values file
-  std::vector<std::string> sets;      ///< ADDR=VALUE at power-up
-  uint64_t duration = 0;              ///< seconds, 0 = until SIGINT/SIGTERM or `monitor stop`
-  std::string stats;                  ///< JSON statistics file at exit
-  std::string control;      ///< control socket path, empty = <runtime dir>/serve-<pid>.sock
-  std::string shm;          ///< shared-memory image name, empty = none
-  std::string io = "simnc"; ///< simnc | shm: who writes F
-  int rtPriority = -1;      ///< SCHED_FIFO priority, -1 = none
-  int cpu = -1;             ///< CPU to pin the scan thread to, -1 = none
-  std::vector<std::string> trustKeys; ///< --trust-key for aot .so files, empty = the default key
-  std::vector<std::string> loadDirs;  ///< where `monitor load` may read; empty = PROGRAM's dir
-  bool watchFile = false;             ///< reload PROGRAM (and the .so) when it changes on disk
-  std::string tier;   ///< --tier direct | interp-first | interp-fast-opt; empty = the default
-  bool quiet = false; ///< --quiet: no verifier-warning count line
-  std::string trace;  ///< --trace FILE: a signal trace definition armed at start (docs/trace.md)
-
-  // Client deadlines of the control socket and Modbus (docs/serve.md "Control").
-  uint32_t clientIdleS = 30;        ///< connections idle this long are closed
-  uint32_t requestTimeoutMs = 2000; ///< a request must be whole this long after its 1st byte
-};
+/// `serve`'s options: the Server's (runtime/Server.h), filled in by Main.cpp.
+using ServeArgs = rt::ServerOptions;
 /// CLOCK_MONOTONIC (steady_clock) ns at the start of main: serve's "start" for the time to the
 /// first tick (docs/serve.md "Time to first tick").
 int64_t mainStartNs();

@@ -4,7 +4,7 @@
 
 #include "formats/InputFiles.h"
 #include "formats/OutputFile.h"
-#include "frontends/hnc8/FrontEnd.h"
+#include "pipeline/Compile.h"
 
 #include <cstdio>
 #include <fstream>
@@ -73,7 +73,7 @@ int runDit(const DitArgs &a) {
   VerifyOptions opts;
   opts.plc2Nvalue = a.plc2Nvalue;
   std::optional<VerifiedProgram> prog =
-      compileFrontEnd(dit.program, a.program, opts, diags, &dit.symbols);
+      pipeline::compileStl(dit.program, a.program, opts, diags, &dit.symbols);
   std::string rendered = diags.render();
   if (!rendered.empty()) std::fputs(rendered.c_str(), stderr);
   if (!prog || diags.hasErrors()) {

@@ -4,8 +4,8 @@
 #include "tools/ladderjit/Progress.h"
 
 #include "engines/LlvmBackend.h"
-#include "frontends/hnc8/FrontEnd.h"
 #include "ir/Diagnostics.h"
+#include "pipeline/Compile.h"
 
 #include "fuzz/Fuzz.h"
 
@@ -74,7 +74,7 @@ int runCheck(const CheckArgs &a) {
   std::optional<VerifiedProgram> prog =
       loadProgram(src, effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven), code);
   if (!prog) return code;
-  if (a.print) std::cout << printProgram(*prog) << std::flush;
+  if (a.print) std::cout << pipeline::printProgram(*prog) << std::flush;
   return kOk;
 }
 

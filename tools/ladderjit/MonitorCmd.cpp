@@ -3,7 +3,7 @@
 // problem (bad arguments, no server, a refused request) exits 2 with a message.
 #include "tools/ladderjit/Commands.h"
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include "formats/Address.h"
 #include "formats/InputFiles.h"

@@ -21,6 +21,9 @@ struct Dialect {
   const char *name;                        ///< "hnc8", what --dialect and ladder JSON say
   std::span<const char *const> extensions; ///< PROGRAM file names that mean it (".stl")
   const TargetProfile *profile;            ///< the target its programs run on
+  /// The front end alone: program text -> ParsedProgram (never fails as a whole).
+  ParsedProgram (*parse)(std::string_view text, std::string file, Diagnostics &diags,
+                         const SymbolTable *symbols);
   /// Parse and verify program text (symbols: a container's or a ladder JSON's, may be null).
   std::optional<VerifiedProgram> (*compile)(std::string_view text, std::string file,
                                             const VerifyOptions &opts, Diagnostics &diags,

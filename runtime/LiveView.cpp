@@ -1,5 +1,5 @@
-// The live view of `serve --http` (ServeHttp.h).
-#include "tools/ladderjit/ServeHttp.h"
+// The live view of `serve --http` (runtime/LiveView.h).
+#include "runtime/LiveView.h"
 
 #include "formats/Address.h"
 #include "ir/Trace.h"
@@ -27,7 +27,7 @@
 #include <random>
 #include <thread>
 
-namespace lj::cli {
+namespace lj::rt {
 
 using nlohmann::json;
 
@@ -37,14 +37,14 @@ namespace {
 constexpr auto kUntraceAfter = std::chrono::seconds(10);
 constexpr auto kHubPeriod = std::chrono::milliseconds(50); // 20 Hz to every page
 
-json histJson(const rt::Histogram &h) {
+json histJson(const Histogram &h) {
   // ~60 bars up to 1.5 x the p99.9 (at least 10 us), from the 1 us buckets.
   const int64_t hiUs = std::max<int64_t>(10, h.percentileNs(0.999) * 3 / 2 / 1000);
   const int64_t binUs = std::max<int64_t>(1, (hiUs + 59) / 60);
   json bins = json::array();
   for (int64_t b = 0; b < 60; ++b) {
     uint64_t n = 0;
-    for (int64_t k = b * binUs; k < (b + 1) * binUs && k <= rt::Histogram::kBuckets; ++k)
+    for (int64_t k = b * binUs; k < (b + 1) * binUs && k <= Histogram::kBuckets; ++k)
       n += h.bucket(static_cast<uint32_t>(k));
     bins.push_back(n);
   }
@@ -55,7 +55,7 @@ json histJson(const rt::Histogram &h) {
           {"mean_us", std::round(h.meanNs() / 100.0) / 10.0}};
 }
 
-json statsJson(const rt::TickStats &s) {
+json statsJson(const TickStats &s) {
   // `tick`: the number of the last tick run (tick numbers follow real time: ticks run + the
   // deadlines missed), the same numbering as the header's tick of the drawn state.
   const uint64_t last = s.ticks + s.missedDeadlines;
@@ -154,9 +154,9 @@ bool httpToken(const std::string &file, std::string &token, bool &created, std::
 }
 
 struct LiveView::Impl {
-  rt::Executive &exec;
-  rt::Exchange &ex;
-  rt::Controller &ctl;
+  Executive &exec;
+  Exchange &ex;
+  Controller &ctl;
   std::function<void(const std::string &)> log;
   LiveViewConfig cfg;
   std::string key = newHttpToken(); // the page's key (services/HttpServer.h HttpConfig::key)
@@ -181,13 +181,13 @@ struct LiveView::Impl {
   uint64_t modelVariant = 0;  // the build (ProgramVersion::variant) `model` describes
   json model;
 
-  Impl(rt::Executive &e, rt::Exchange &x, rt::Controller &c,
-       std::function<void(const std::string &)> l, LiveViewConfig cf)
+  Impl(Executive &e, Exchange &x, Controller &c, std::function<void(const std::string &)> l,
+       LiveViewConfig cf)
       : exec(e), ex(x), ctl(c), log(std::move(l)), cfg(std::move(cf)) {
     publishEvery = std::max<uint64_t>(1, 25000000 / std::max<uint64_t>(cfg.periodNs, 1));
   }
 
-  std::string pageOf(const rt::ProgramVersion &v) {
+  std::string pageOf(const ProgramVersion &v) {
     std::lock_guard<std::mutex> g(cacheMu);
     if (pageHash != v.hash) {
       ladder::Layout l = ladder::layout(ladder::fromProgram(*v.prog));
@@ -201,7 +201,7 @@ struct LiveView::Impl {
     return page;
   }
 
-  json modelOf(const rt::ProgramVersion &v) {
+  json modelOf(const ProgramVersion &v) {
     std::lock_guard<std::mutex> g(cacheMu);
     if (modelVariant != v.variant) { // a version's traced and untraced builds differ
       json stmts = json::object();
@@ -240,7 +240,7 @@ struct LiveView::Impl {
     std::string wtext;
     // The page of the running program, drawn now (seconds for 10,000 statements on a loaded
     // machine), not when the first browser asks for it.
-    if (std::shared_ptr<rt::ProgramVersion> first = exec.current()) pageOf(*first);
+    if (std::shared_ptr<ProgramVersion> first = exec.current()) pageOf(*first);
     std::unique_lock<std::mutex> g(mu);
     // On a fixed 50 ms grid (the frame's own work does not stretch the period).
     auto due = std::chrono::steady_clock::now() + kHubPeriod;
@@ -269,7 +269,7 @@ struct LiveView::Impl {
           });
         }
       }
-      std::shared_ptr<rt::ProgramVersion> cur = exec.current();
+      std::shared_ptr<ProgramVersion> cur = exec.current();
       // A traced version just swapped in (the traced JIT build after the interpreter one) and not
       // yet published: no frame this round, so pages keep drawing power flow (no frame without it).
       const bool unpublished = cur && cur->trace && cur->trace->published() == 0;
@@ -282,13 +282,13 @@ struct LiveView::Impl {
         wtext.clear();
         if (cur->trace && cur->trace->take(words, tick)) {
           // Written as text, not through json (10k statements: 15k words, 20 times a second).
-          // rt::TraceBuffer::kNotScanned goes as null: a statement whose first word is null
+          // TraceBuffer::kNotScanned goes as null: a statement whose first word is null
           // was not scanned in that tick (the page draws it so); a null value word is INT32_MIN.
           wtext = ",\"w\":[";
           char buf[16];
           for (size_t i = 0; i < words.size(); ++i) {
             if (i) wtext += ',';
-            if (words[i] == rt::TraceBuffer::kNotScanned) {
+            if (words[i] == TraceBuffer::kNotScanned) {
               wtext += "null";
               continue;
             }
@@ -332,17 +332,17 @@ struct LiveView::Impl {
   }
 };
 
-LiveView::LiveView(rt::Executive &exec, rt::Exchange &ex, rt::Controller &ctl,
+LiveView::LiveView(Executive &exec, Exchange &ex, Controller &ctl,
                    std::function<void(const std::string &)> log, LiveViewConfig cfg)
     : impl_(std::make_unique<Impl>(exec, ex, ctl, std::move(log), std::move(cfg))) {}
 
 LiveView::~LiveView() { stop(); }
 
-rt::Executive::AfterTickHook LiveView::hook() {
+Executive::AfterTickHook LiveView::hook() {
   Impl *im = impl_.get();
   return [im](const lj_state &, uint64_t tick) {
     // Scan thread: a traced version's words of this tick into its triple buffer (no lock).
-    const rt::ProgramVersion *v = im->exec.scanVersion();
+    const ProgramVersion *v = im->exec.scanVersion();
     if (!v || !v->trace) return;
     if (tick - im->lastPublished >= im->publishEvery) {
       im->lastPublished = tick;
@@ -358,11 +358,11 @@ bool LiveView::start(std::string &error) {
   Impl *im = impl_.get();
   services::HttpBackend be;
   be.page = [im] {
-    std::shared_ptr<rt::ProgramVersion> cur = im->exec.current();
+    std::shared_ptr<ProgramVersion> cur = im->exec.current();
     return cur ? im->pageOf(*cur) : std::string("no program is running\n");
   };
   be.model = [im] {
-    std::shared_ptr<rt::ProgramVersion> cur = im->exec.current();
+    std::shared_ptr<ProgramVersion> cur = im->exec.current();
     return cur ? im->modelOf(*cur) : json{{"error", "no program is running"}};
   };
   be.state = [im] {
@@ -413,4 +413,4 @@ bool LiveView::stop() {
 
 int LiveView::port() const { return impl_->http ? impl_->http->port() : -1; }
 
-} // namespace lj::cli
+} // namespace lj::rt

@@ -3,7 +3,7 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 #include "formats/PlcDit.h"
 #include "ir/Program.h"
 
@@ -32,7 +32,7 @@ struct ProgramSource {
   /// A `.json` PROGRAM of another dialect (FANUC, IEC): its networks, which must hold the
   /// statements of the program text it carries ("source"); `text` is that program text.
   std::shared_ptr<const ladder::Networks> carried;
-  /// The dialect it is written in (formats/Dialects.h): --dialect, else the extension, else
+  /// The dialect it is written in (pipeline/Dialects.h): --dialect, else the extension, else
   /// the JSON's "dialect" member, else HNC-8.
   const Dialect *dialect = &defaultDialect();
 };

@@ -1,7 +1,6 @@
-// Reading and verifying PROGRAM (formats/ProgramFile.h).
-#include "formats/ProgramFile.h"
+// Reading and verifying PROGRAM (pipeline/ProgramFile.h).
+#include "pipeline/ProgramFile.h"
 
-#include "engines/AotLoader.h"
 #include "formats/InputFiles.h"
 #include "ir/Diagnostics.h"
 #include "ladder/Json.h"

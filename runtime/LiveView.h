@@ -1,6 +1,6 @@
-// `serve --http`: the live ladder view (docs/serve.md "Live view"). Composes the trace of the
-// running version (runtime/TraceBuffer.h), the page (ladder/), the controller's force and lock
-// requests and the HTTP server (services/HttpServer.h). A hub thread turns the newest trace
+// The live ladder view of a Server (`serve --http`) (docs/serve.md "Live view"). Composes the trace
+// of the running version (runtime/TraceBuffer.h), the page (ladder/), the controller's force and
+// lock requests and the HTTP server (services/HttpServer.h). A hub thread turns the newest trace
 // snapshot into one SSE message 20 times a second for every page; the scan thread only copies
 // the trace into its triple buffer at a tick boundary.
 #pragma once
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace lj::cli {
+namespace lj::rt {
 
 struct LiveViewConfig {
   std::string host = "127.0.0.1";
@@ -29,11 +29,11 @@ struct LiveViewConfig {
 
 class LiveView {
 public:
-  LiveView(rt::Executive &exec, rt::Exchange &ex, rt::Controller &ctl,
+  LiveView(Executive &exec, Exchange &ex, Controller &ctl,
            std::function<void(const std::string &)> log, LiveViewConfig cfg);
   ~LiveView();
   /// The after-tick hook that publishes the trace (add before exec.start).
-  rt::Executive::AfterTickHook hook();
+  Executive::AfterTickHook hook();
   /// Start the hub and the HTTP server (after exec.start); false with `error`.
   bool start(std::string &error);
   /// True when the traced JIT build was still compiling: its thread is detached and ends with
@@ -55,4 +55,4 @@ std::string newHttpToken();
 /// there with mode 0600. False with `error`.
 bool httpToken(const std::string &file, std::string &token, bool &created, std::string &error);
 
-} // namespace lj::cli
+} // namespace lj::rt

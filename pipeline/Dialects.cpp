@@ -1,11 +1,12 @@
-// The dialects of this build (formats/Dialects.h). A new dialect adds its entry to kDialects
+// The dialects of this build (pipeline/Dialects.h). A new dialect adds its entry to kDialects
 // and moves its name from kPlanned.
-#include "formats/Dialects.h"
+#include "pipeline/Dialects.h"
 
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
 #include "frontends/iec/Objects.h"
+#include "pipeline/Compile.h"
 #include "profiles/Profiles.h"
 #include "profiles/iec/IecProfile.h"
 
@@ -19,16 +20,21 @@ namespace lj::formats {
 
 namespace {
 
+ParsedProgram parseHnc8(std::string_view text, std::string file, Diagnostics &diags,
+                        const SymbolTable *symbols) {
+  return parseStl(text, std::move(file), diags, symbols);
+}
+
 std::optional<VerifiedProgram> compileHnc8(std::string_view text, std::string file,
                                            const VerifyOptions &opts, Diagnostics &diags,
                                            const SymbolTable *symbols) {
-  return compileFrontEnd(text, std::move(file), opts, diags, symbols);
+  return pipeline::compileStl(text, std::move(file), opts, diags, symbols);
 }
 
 constexpr const char *kHnc8Extensions[] = {".stl", ".dit"};
 
-const Dialect kHnc8{"hnc8",       kHnc8Extensions, profileNamed("hnc8"), compileHnc8,
-                    parseAddress, parseAssignment, formatAddress};
+const Dialect kHnc8{"hnc8",      kHnc8Extensions, profileNamed("hnc8"), parseHnc8,
+                    compileHnc8, parseAddress,    parseAssignment,      formatAddress};
 
 // FANUC 0i-D PMC (docs/fanuc-pmc.md): byte-addressed areas, `R100`, `R100.3`, `D100:4`.
 std::optional<CliAddress> fanucAddress(std::string_view text, std::string &error) {
@@ -37,20 +43,29 @@ std::optional<CliAddress> fanucAddress(std::string_view text, std::string &error
 std::optional<Assignment> fanucAssignment(std::string_view item, std::string &error) {
   return parseProfileAssignment(*profileNamed("fanuc"), item, error);
 }
+ParsedProgram parseFanuc(std::string_view text, std::string file, Diagnostics &diags,
+                         const SymbolTable *symbols) {
+  return fanuc::parsePmc(text, std::move(file), diags, symbols);
+}
+std::optional<VerifiedProgram> compileFanuc(std::string_view text, std::string file,
+                                            const VerifyOptions &opts, Diagnostics &diags,
+                                            const SymbolTable *symbols) {
+  return pipeline::compilePmc(text, std::move(file), opts, diags, symbols);
+}
 constexpr const char *kFanucExtensions[] = {".pmc"};
-const Dialect kFanuc{"fanuc",      kFanucExtensions, profileNamed("fanuc"), fanuc::compilePmc,
-                     fanucAddress, fanucAssignment,  formatProfileAddress};
+const Dialect kFanuc{"fanuc",      kFanucExtensions, profileNamed("fanuc"), parseFanuc,
+                     compileFanuc, fanucAddress,     fanucAssignment,       formatProfileAddress};
 
 // IEC IL (Neza): `%I0.1`-style objects (frontends/iec/Objects.h) on the command line, in
 // stimulus files, --watch and --dump (docs/iec-il.md "Command line").
+ParsedProgram parseIec(std::string_view text, std::string file, Diagnostics &diags,
+                       const SymbolTable *) { // compileIl refuses a symbol table
+  return iec::parseIl(text, std::move(file), diags);
+}
 std::optional<VerifiedProgram> compileIec(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
-  if (symbols && !symbols->empty()) {
-    diags.error({}, "an IEC IL program takes no symbol table");
-    return std::nullopt;
-  }
-  return iec::compileIl(text, std::move(file), opts, diags);
+  return pipeline::compileIl(text, std::move(file), opts, diags, symbols);
 }
 
 std::optional<CliAddress> parseIecAddress(std::string_view text, std::string &error) {
@@ -103,8 +118,8 @@ std::string formatIecAddress(const CliAddress &addr) {
 
 constexpr const char *kIecExtensions[] = {".il"};
 
-const Dialect kIec{"iec",           kIecExtensions,     profileNamed("iec"), compileIec,
-                   parseIecAddress, parseIecAssignment, formatIecAddress};
+const Dialect kIec{"iec",      kIecExtensions,  profileNamed("iec"), parseIec,
+                   compileIec, parseIecAddress, parseIecAssignment,  formatIecAddress};
 
 const Dialect *const kDialects[] = {&kHnc8, &kFanuc, &kIec};
 

@@ -1,0 +1,68 @@
+// Parse + verify for every dialect (pipeline/Compile.h).
+#include "pipeline/Compile.h"
+
+#include "frontends/fanuc/FrontEnd.h"
+#include "frontends/hnc8/FrontEnd.h"
+#include "frontends/iec/FrontEnd.h"
+#include "pipeline/Dialects.h"
+#include "profiles/hnc8/Hnc8Profile.h"
+
+#include <algorithm>
+
+namespace lj::pipeline {
+
+namespace {
+
+/// Verify `parsed` unless the front end reported an error.
+std::optional<VerifiedProgram> verifyParsed(const ParsedProgram &parsed, const VerifyOptions &opts,
+                                            Diagnostics &diags) {
+  if (diags.hasErrors()) return std::nullopt;
+  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
+  if (diags.hasErrors()) return std::nullopt;
+  return prog;
+}
+
+} // namespace
+
+std::optional<VerifiedProgram> compileStl(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  const int32_t limit = opts.maxStatements.value_or(hnc8::profile().maxStatements);
+  ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols, limit);
+  // A program cut short at the statement limit is not verified (its end would look missing).
+  if (parsed.stmts.size() > static_cast<size_t>(std::max(limit, 0))) return std::nullopt;
+  std::optional<VerifiedProgram> prog = verify(parsed, opts, diags);
+  if (diags.hasErrors()) return std::nullopt;
+  return prog;
+}
+
+std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  return verifyParsed(fanuc::parsePmc(text, std::move(file), diags, symbols), opts, diags);
+}
+
+std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file,
+                                         const VerifyOptions &opts, Diagnostics &diags,
+                                         const SymbolTable *symbols) {
+  if (symbols && !symbols->empty()) {
+    diags.error({}, "an IEC IL program takes no symbol table");
+    return std::nullopt;
+  }
+  return verifyParsed(iec::parseIl(text, std::move(file), diags), opts, diags);
+}
+
+std::optional<VerifiedProgram> compile(const formats::Dialect &dialect, std::string_view text,
+                                       std::string file, const VerifyOptions &opts,
+                                       Diagnostics &diags, const SymbolTable *symbols) {
+  return dialect.compile(text, std::move(file), opts, diags, symbols);
+}
+
+ParsedProgram parse(const formats::Dialect &dialect, std::string_view text, std::string file,
+                    Diagnostics &diags, const SymbolTable *symbols) {
+  return dialect.parse(text, std::move(file), diags, symbols);
+}
+
+std::string printProgram(const VerifiedProgram &prog) { return lj::printProgram(prog); }
+
+} // namespace lj::pipeline
