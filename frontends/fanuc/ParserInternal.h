@@ -2,7 +2,7 @@
 // and Functional.cpp (the functional instructions: SUB numbers, names, parameters).
 #pragma once
 
-#include "frontends/hnc8/Symbols.h"
+#include "ir/SymbolTable.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
 

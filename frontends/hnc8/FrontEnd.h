@@ -2,9 +2,9 @@
 // located diagnostics in HNC-8 wording.
 #pragma once
 
-#include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
+#include "ir/SymbolTable.h"
 #include "verify/Verify.h"
 
 #include <climits>
