@@ -143,11 +143,24 @@ std::string formatAssignment(const io::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
-// A write or lock item in the running program's dialect: parsed and checked for writability
-// (formats/Address.h, formats/Dialects.h).
-std::optional<io::Assignment> writable(const io::Dialect &d, const std::string &item,
-                                       std::string &err) {
-  std::optional<io::Assignment> a = d.parseAssignment(item, err);
+// The running program's symbols (none before a program runs).
+std::vector<Symbol> symbolsOf(Executive &exec) {
+  std::shared_ptr<ProgramVersion> cur = exec.current();
+  return cur && cur->prog ? cur->prog->symbols : std::vector<Symbol>{};
+}
+
+// An address in the running program's dialect, or one of its symbols (formats/Address.h).
+std::optional<io::CliAddress> address(const io::Dialect &d, Executive &exec, std::string_view item,
+                                      std::string &err) {
+  return io::parseAddressIn(d.parseAddress, symbolsOf(exec), item, err);
+}
+
+// A write or lock item in the running program's dialect (its address perhaps a symbol of the
+// program): parsed and checked for writability (formats/Address.h, formats/Dialects.h).
+std::optional<io::Assignment> writable(const io::Dialect &d, Executive &exec,
+                                       const std::string &item, std::string &err) {
+  std::optional<io::Assignment> a =
+      io::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbolsOf(exec), item, err);
   if (a && !io::checkWritable(a->addr, a->value, err)) return std::nullopt;
   return a;
 }
@@ -460,7 +473,7 @@ json Controller::doRead(const json &req) {
   if (!strings(req, "addrs", items, err)) return fail(err);
   std::vector<io::CliAddress> addrs;
   for (const std::string &t : items) {
-    std::optional<io::CliAddress> a = dialect().parseAddress(t, err);
+    std::optional<io::CliAddress> a = address(dialect(), exec_, t, err);
     if (!a) return fail(err);
     addrs.push_back(*a);
   }
@@ -478,7 +491,7 @@ json Controller::doWrite(const json &req) {
   if (!strings(req, "writes", items, err)) return fail(err);
   std::vector<io::Assignment> writes;
   for (const std::string &t : items) {
-    std::optional<io::Assignment> a = writable(dialect(), t, err);
+    std::optional<io::Assignment> a = writable(dialect(), exec_, t, err);
     if (!a) return fail(err);
     writes.push_back(*a);
   }
@@ -557,12 +570,14 @@ json Controller::doLock(const json &req) {
   if (cmd == "lock") {
     if (!req.contains("item") || !req["item"].is_string())
       return fail("lock needs \"item\" ADDR=VALUE");
-    std::optional<io::Assignment> a = writable(dialect(), req["item"].get<std::string>(), err);
+    std::optional<io::Assignment> a =
+        writable(dialect(), exec_, req["item"].get<std::string>(), err);
     if (!a) return fail(err);
     ex_.lock(*a);
   } else if (cmd == "unlock") {
     if (!req.contains("addr") || !req["addr"].is_string()) return fail("unlock needs \"addr\"");
-    std::optional<io::CliAddress> a = dialect().parseAddress(req["addr"].get<std::string>(), err);
+    std::optional<io::CliAddress> a =
+        address(dialect(), exec_, req["addr"].get<std::string>(), err);
     if (!a) return fail(err);
     if (!ex_.unlock(*a)) return fail("'" + a->text + "' is not locked");
   }

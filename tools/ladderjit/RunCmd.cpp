@@ -25,12 +25,24 @@ namespace {
 
 constexpr size_t kRunNcLogLimit = 10000;
 
-// Every user input of `run`, parsed and checked.
-bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, std::string &error) {
-  sim.ticks = a.ticks;
-  sim.periodMs = a.periodMs;
+// The addressed inputs of `run` (--set, --watch, --stimulus), parsed and checked. Addresses
+// may be symbols of the program (`--watch COOLANT`): `symbols` are its symbols; with
+// `namesLater` (before the program is read) an item shaped like a name passes, to be read again
+// with the symbols once they are known.
+bool parseAddressed(const RunArgs &a, const io::Dialect &d, std::span<const Symbol> symbols,
+                    bool namesLater, io::SimOptions &sim, std::string &error) {
+  sim.sets.clear();
+  sim.watch.clear();
+  sim.stimulus = {};
+  auto later = [&](std::string_view item) {
+    return namesLater && SymbolTable::isNameShaped(item.substr(0, item.find('=')));
+  };
+  auto assign = [&](std::string_view item, std::string &why) -> std::optional<io::Assignment> {
+    if (later(item)) return io::Assignment{};
+    return io::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbols, item, why);
+  };
   for (const std::string &item : a.sets) {
-    std::optional<io::Assignment> as = d.parseAssignment(item, error);
+    std::optional<io::Assignment> as = assign(item, error);
     if (!as) {
       error = "--set: " + error;
       return false;
@@ -46,7 +58,8 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
         error = "--watch: empty address in '" + list + "'";
         return false;
       }
-      std::optional<io::CliAddress> addr = d.parseAddress(item, error);
+      std::optional<io::CliAddress> addr =
+          later(item) ? io::CliAddress{} : io::parseAddressIn(d.parseAddress, symbols, item, error);
       if (!addr) {
         error = "--watch: " + error;
         return false;
@@ -59,10 +72,19 @@ bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, st
   std::string text;
   if (!a.stimulus.empty()) {
     if (!io::readFile(a.stimulus, text, error)) return false;
-    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error, d.parseAssignment);
+    std::optional<io::Stimulus> st = io::parseStimulus(text, a.stimulus, error, assign);
     if (!st) return false;
     sim.stimulus = std::move(*st);
   }
+  return true;
+}
+
+// Every user input of `run`, parsed and checked (names among the addresses: parseAddressed).
+bool parseInputs(const RunArgs &a, const io::Dialect &d, io::SimOptions &sim, std::string &error) {
+  sim.ticks = a.ticks;
+  sim.periodMs = a.periodMs;
+  if (!parseAddressed(a, d, {}, true, sim, error)) return false;
+  std::string text;
   if (!a.params.empty()) {
     if (!io::readFile(a.params, text, error)) return false;
     std::optional<std::vector<io::Assignment>> ps =
@@ -277,7 +299,8 @@ int runRun(const RunArgs &a) {
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code, a.dialect)) return code;
-  // Addresses (--set, --watch, the stimulus) are written in the program's dialect.
+  // Addresses (--set, --watch, the stimulus) are written in the program's dialect; names among
+  // them are read once the program (and so its symbols) is.
   if (!parseInputs(a, *src.dialect, sim, error)) return usageError(error);
   if (src.dit) {
     // A container's parameters are defaults: its P values go first so --params and --set
@@ -288,6 +311,7 @@ int runRun(const RunArgs &a) {
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> prog = loadProgram(src, nvalue, code);
   if (!prog) return code;
+  if (!parseAddressed(a, *src.dialect, prog->symbols, false, sim, error)) return usageError(error);
   sim.profile = prog->profile;
 
   engines::EngineOptions eo;
