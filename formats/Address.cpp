@@ -1,5 +1,7 @@
 // Command-line address and value parsing, and element/bit access to an lj_state by address.
 #include "formats/Address.h"
+#include "frontends/common/ProfileAddress.h"
+#include "frontends/hnc8/Address.h"
 #include "profiles/hnc8/Hnc8Profile.h"
 
 #include <cctype>
@@ -74,35 +76,31 @@ std::optional<CliAddress> parseAddress(std::string_view text, std::string &error
     return std::nullopt;
   };
   if (text.empty()) return fail("empty");
-  std::optional<Area> area = hnc8::profile().areaFromLetter(text[0]);
-  if (!area || *area == Area::Label || *area == Area::Subroutine || *area == Area::None)
+  // The HNC-8 address syntax (frontends/hnc8/Address.h), as the STL parser reads it.
+  const hnc8::AddressText lexed = hnc8::lexAddress(text);
+  const Area area = lexed.area;
+  if (lexed.lex == hnc8::AddressText::Lex::NoArea || area == Area::Label ||
+      area == Area::Subroutine || area == Area::None)
     return fail("unknown area (expected one of X Y F G R W D B P T C)");
-  std::string_view rest = text.substr(1);
-  std::string_view indexPart = rest, bitPart;
-  bool hasBit = false;
-  if (size_t dot = rest.find('.'); dot != std::string_view::npos) {
-    indexPart = rest.substr(0, dot);
-    bitPart = rest.substr(dot + 1);
-    hasBit = true;
-  }
-  if (!isDigits(indexPart)) return fail("expected an element number after the area letter");
-  if (hasBit && !isDigits(bitPart)) return fail("expected a bit number after '.'");
-  int64_t index = digitsValue(indexPart);
-  if (!hnc8::profile().validIndex(*area, index)) {
-    if (*area == Area::Timer || *area == Area::Counter)
+  if (lexed.lex == hnc8::AddressText::Lex::NoIndex)
+    return fail("expected an element number after the area letter");
+  if (lexed.lex == hnc8::AddressText::Lex::NoBit) return fail("expected a bit number after '.'");
+  const int64_t index = lexed.index;
+  if (!hnc8::profile().validIndex(area, index)) {
+    if (area == Area::Timer || area == Area::Counter)
       return fail("number out of range (0..127 or 300..427)");
-    return fail("element out of range (0.." +
-                std::to_string(hnc8::profile().area(*area).count - 1) + ")");
+    return fail("element out of range (0.." + std::to_string(hnc8::profile().area(area).count - 1) +
+                ")");
   }
   CliAddress a;
-  a.area = *area;
+  a.area = area;
   a.index = static_cast<int32_t>(index);
   a.text = std::string(text);
-  if (hasBit) {
-    int64_t b = digitsValue(bitPart);
-    int width = hnc8::profile().bitWidth(*area);
+  if (lexed.bit >= 0) {
+    const int64_t b = lexed.bit;
+    int width = hnc8::profile().bitWidth(area);
     if (b >= width) {
-      if (*area == Area::Timer || *area == Area::Counter)
+      if (area == Area::Timer || area == Area::Counter)
         return fail("the only bit of a timer/counter is .0");
       return fail("bit out of range (0.." + std::to_string(width - 1) + ")");
     }
@@ -186,18 +184,35 @@ void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
   std::memcpy(ptr, &raw, static_cast<size_t>(c.bytes));
 }
 
-std::optional<Assignment> parseAssignment(std::string_view item, std::string &error) {
+namespace {
+
+// `addr=value` with the address read by `parse` (the value as parseValue reads it, checked with
+// checkWritable); a missing `=` quotes `shown`.
+template <class ParseAddress>
+std::optional<Assignment> assignmentOf(std::string_view item, std::string_view shown,
+                                       std::string &error, ParseAddress parse) {
   size_t eq = item.find('=');
   if (eq == std::string_view::npos) {
-    error = "bad assignment '" + std::string(item) + "': expected ADDR=VALUE";
+    error = "bad assignment '" + std::string(shown) + "': expected ADDR=VALUE";
     return std::nullopt;
   }
-  std::optional<CliAddress> addr = parseAddress(item.substr(0, eq), error);
+  std::optional<CliAddress> addr = parse(item.substr(0, eq), error);
   if (!addr) return std::nullopt;
   std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
   if (!value) return std::nullopt;
   if (!checkWritable(*addr, *value, error)) return std::nullopt;
   return Assignment{std::move(*addr), *value};
+}
+
+} // namespace
+
+std::optional<Assignment> parseAssignmentWith(AddressParser parse, std::string_view item,
+                                              std::string &error, size_t shownBytes) {
+  return assignmentOf(item, item.substr(0, shownBytes), error, parse);
+}
+
+std::optional<Assignment> parseAssignment(std::string_view item, std::string &error) {
+  return parseAssignmentWith(parseAddress, item, error);
 }
 
 std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::string_view text,
@@ -207,44 +222,42 @@ std::optional<CliAddress> parseProfileAddress(const TargetProfile &tp, std::stri
     return std::nullopt;
   };
   if (text.empty()) return fail("empty");
-  size_t nameLen = 0;
-  while (nameLen < text.size() && !std::isdigit(static_cast<unsigned char>(text[nameLen])))
-    ++nameLen;
-  std::optional<Area> area = tp.areaFromName(text.substr(0, nameLen));
+  // The profile-laid address syntax (frontends/common/ProfileAddress.h), as the FANUC parser
+  // reads it, plus `:width`.
+  using Lex = frontend::ProfileAddressText::Lex;
+  const frontend::ProfileAddressText lexed = frontend::lexProfileAddress(tp, text);
   std::string known;
   for (int i = 0; i < kAreaCount; ++i) {
     const AreaInfo &ai = tp.areas[static_cast<size_t>(i)];
     if (ai.count > 0 && ai.bytes > 0) known += (known.empty() ? "" : " ") + std::string(ai.name);
   }
-  if (!area || tp.area(*area).bytes == 0)
+  // An area name runs to the first digit here: `X.5` names no area.
+  const bool dotInName =
+      lexed.lex == Lex::NoIndex && lexed.nameEnd < text.size() && text[lexed.nameEnd] == '.';
+  if (lexed.lex == Lex::NoArea || dotInName || tp.area(lexed.area).bytes == 0)
     return fail("unknown area (expected one of " + known + ")");
-  std::string_view rest = text.substr(nameLen), indexPart = rest, tail;
-  size_t sep = rest.find_first_of(".:");
-  if (sep != std::string_view::npos) {
-    indexPart = rest.substr(0, sep);
-    tail = rest.substr(sep + 1);
-  }
-  if (!isDigits(indexPart)) return fail("expected an element number after the area name");
-  const AreaInfo &ai = tp.area(*area);
-  int64_t index = digitsValue(indexPart);
+  if (lexed.lex == Lex::NoIndex) return fail("expected an element number after the area name");
+  const Area area = lexed.area;
+  const AreaInfo &ai = tp.area(area);
+  const int64_t index = lexed.index;
   CliAddress a;
-  a.area = *area;
+  a.area = area;
   a.profile = &tp;
   a.text = std::string(text);
   int64_t width = ai.bytes;
-  if (sep != std::string_view::npos && rest[sep] == '.') {
-    if (!isDigits(tail)) return fail("expected a bit number after '.'");
-    int64_t b = digitsValue(tail);
-    if (b >= tp.bitWidth(*area))
-      return fail("bit out of range (0.." + std::to_string(tp.bitWidth(*area) - 1) + ")");
+  if (lexed.sep == '.') {
+    if (lexed.lex == Lex::NoBit) return fail("expected a bit number after '.'");
+    const int64_t b = lexed.bit;
+    if (b >= tp.bitWidth(area))
+      return fail("bit out of range (0.." + std::to_string(tp.bitWidth(area) - 1) + ")");
     a.bit = static_cast<int8_t>(b);
-  } else if (sep != std::string_view::npos) {
+  } else if (lexed.sep == ':') {
     if (ai.bytes != 1) return fail("a width ':N' is only for byte areas");
-    if (tail != "1" && tail != "2" && tail != "4") return fail("width must be 1, 2 or 4 bytes");
-    width = tail[0] - '0';
+    if (lexed.lex == Lex::NoWidth) return fail("width must be 1, 2 or 4 bytes");
+    width = lexed.width;
     a.width = static_cast<uint8_t>(width);
   }
-  if (!tp.validSpan(*area, index, ai.bytes == 1 ? width : 1)) {
+  if (!tp.validSpan(area, index, ai.bytes == 1 ? width : 1)) {
     std::string ranges = std::string(ai.name) + "0.." + ai.name + std::to_string(ai.count - 1);
     if (ai.upperCount > 0)
       ranges += ", " + std::string(ai.name) + std::to_string(ai.upperLo) + ".." + ai.name +
@@ -267,17 +280,49 @@ std::string formatProfileAddress(const CliAddress &addr) {
 
 std::optional<Assignment> parseProfileAssignment(const TargetProfile &tp, std::string_view item,
                                                  std::string &error) {
-  size_t eq = item.find('=');
-  if (eq == std::string_view::npos) {
-    error = "bad assignment '" + std::string(item) + "': expected ADDR=VALUE";
+  return assignmentOf(item, item, error, [&](std::string_view text, std::string &why) {
+    return parseProfileAddress(tp, text, why);
+  });
+}
+
+const Symbol *findSymbol(std::span<const Symbol> symbols, std::string_view name) {
+  auto same = [](std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i)
+      if (std::toupper(static_cast<unsigned char>(a[i])) !=
+          std::toupper(static_cast<unsigned char>(b[i])))
+        return false;
+    return true;
+  };
+  for (const Symbol &s : symbols)
+    if (same(s.name, name)) return &s;
+  return nullptr;
+}
+
+std::optional<CliAddress> parseAddressIn(AddressParser parse, std::span<const Symbol> symbols,
+                                         std::string_view text, std::string &error) {
+  const Symbol *sym = SymbolTable::isNameShaped(text) ? findSymbol(symbols, text) : nullptr;
+  if (!sym) return parse(text, error);
+  std::optional<CliAddress> a = parse(sym->address, error);
+  if (!a) {
+    error = "symbol " + SymbolTable::quote(sym->name) + " = " + sym->address + ": " + error;
     return std::nullopt;
   }
-  std::optional<CliAddress> addr = parseProfileAddress(tp, item.substr(0, eq), error);
-  if (!addr) return std::nullopt;
-  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
-  if (!value) return std::nullopt;
-  if (!checkWritable(*addr, *value, error)) return std::nullopt;
-  return Assignment{std::move(*addr), *value};
+  a->text = std::string(text);
+  return a;
+}
+
+std::optional<Assignment> parseAssignmentIn(AddressParser parse, AssignmentParser assign,
+                                            std::span<const Symbol> symbols, std::string_view item,
+                                            std::string &error) {
+  const size_t eq = item.find('=');
+  const std::string_view name = item.substr(0, eq);
+  if (eq == std::string_view::npos || !SymbolTable::isNameShaped(name) ||
+      !findSymbol(symbols, name))
+    return assign(item, error);
+  return assignmentOf(item, item, error, [&](std::string_view text, std::string &why) {
+    return parseAddressIn(parse, symbols, text, why);
+  });
 }
 
 std::string formatAddress(const CliAddress &addr) {

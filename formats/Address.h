@@ -4,10 +4,12 @@
 
 #include "ir/Area.h"
 #include "ir/Profile.h"
+#include "ir/SymbolTable.h"
 #include "ladderjit/abi.h"
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -71,5 +73,34 @@ std::optional<Assignment> parseAssignment(std::string_view item, std::string &er
 /// `addr=value` for a profile-laid target (parseProfileAddress syntax).
 std::optional<Assignment> parseProfileAssignment(const TargetProfile &tp, std::string_view item,
                                                  std::string &error);
+
+/// A dialect's reader of addresses and of `addr=value` items (Dialect::parseAddress,
+/// Dialect::parseAssignment).
+using AddressParser = std::optional<CliAddress> (*)(std::string_view text, std::string &error);
+using AssignmentParser = std::optional<Assignment> (*)(std::string_view item, std::string &error);
+
+/// `addr=value` with the address read by `parse` (a dialect's address syntax), the value as
+/// parseValue reads it, checked with checkWritable; a message about a missing `=` quotes the
+/// first `shownBytes` of the item.
+std::optional<Assignment> parseAssignmentWith(AddressParser parse, std::string_view item,
+                                              std::string &error,
+                                              size_t shownBytes = std::string_view::npos);
+
+/// The symbol named `name` in `symbols` (case-insensitive for ASCII letters, as SymbolTable
+/// finds names), or nullptr.
+const Symbol *findSymbol(std::span<const Symbol> symbols, std::string_view name);
+
+/// `text` as an address: when it is shaped like a name (SymbolTable::isNameShaped) and
+/// `symbols` (the program's) defines it, the address the symbol stands for, read by `parse`
+/// (CliAddress::text keeps the name as written: the watch column says `COOLANT`); otherwise
+/// `parse(text)` as it is. Errors about a symbol's address name the symbol.
+std::optional<CliAddress> parseAddressIn(AddressParser parse, std::span<const Symbol> symbols,
+                                         std::string_view text, std::string &error);
+
+/// `addr=value` likewise: a defined symbol before the `=` is read as its address (then the value
+/// as parseValue reads it, checked with checkWritable); any other item goes to `assign` as it is.
+std::optional<Assignment> parseAssignmentIn(AddressParser parse, AssignmentParser assign,
+                                            std::span<const Symbol> symbols, std::string_view item,
+                                            std::string &error);
 
 } // namespace lj::formats

@@ -54,7 +54,7 @@ std::string where(const std::string &file, int32_t line) {
 } // namespace
 
 std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
-                                      std::string &error, AssignmentParser assign) {
+                                      std::string &error, ItemParser assign) {
   if (!assign) assign = parseAssignment;
   Stimulus stim;
   bool ok = forEachLine(text, [&](int32_t lineNo, std::string_view line) {

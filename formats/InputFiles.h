@@ -6,6 +6,7 @@
 #include "formats/NcCommand.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,9 +35,10 @@ struct Stimulus {
 /// least one assignment, or exactly one NC command `nc.NAME key=value ...` instead
 /// (docs/simulated-nc.md). `file` names the source in errors (`file:line: ...`).
 /// `assign` parses one `ADDR=VALUE` item in the program's dialect (Dialect::parseAssignment).
-using AssignmentParser = std::optional<Assignment> (*)(std::string_view item, std::string &error);
+/// A reader of `ADDR=VALUE` items (a dialect's, perhaps with the program's symbols).
+using ItemParser = std::function<std::optional<Assignment>(std::string_view, std::string &)>;
 std::optional<Stimulus> parseStimulus(std::string_view text, const std::string &file,
-                                      std::string &error, AssignmentParser assign = nullptr);
+                                      std::string &error, ItemParser assign = nullptr);
 
 /// Parse a parameter file: one `Pn=VALUE` per line (spaces around `=` allowed), `#` comments,
 /// blank lines ignored; only whole P elements. Later lines win for the same Pn.

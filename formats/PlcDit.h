@@ -4,7 +4,7 @@
 #pragma once
 
 #include "formats/Address.h"
-#include "frontends/hnc8/Symbols.h"
+#include "frontends/hnc8/Address.h"
 
 #include <cstdint>
 #include <optional>
@@ -21,13 +21,13 @@ inline constexpr int kDitVersion = 1;
 
 /// Everything a container holds.
 struct DitFile {
-  int32_t plc2Nvalue = 200;       ///< PLC2 statements per tick (CLI.md default)
-  uint64_t periodMs = 1;          ///< PLC1 period in ms (CLI.md default)
-  std::vector<Assignment> params; ///< P values, file order, no index twice
-  SymbolTable symbols;            ///< at most 1,000 names
-  std::string program;            ///< STL text: LF line ends, a final LF unless empty
-  int32_t programLine = 0;        ///< reader: container line of the first program line
-  std::string hash;               ///< `sha256:` + 64 lowercase hex digits of the content
+  int32_t plc2Nvalue = 200;                 ///< PLC2 statements per tick (CLI.md default)
+  uint64_t periodMs = 1;                    ///< PLC1 period in ms (CLI.md default)
+  std::vector<Assignment> params;           ///< P values, file order, no index twice
+  SymbolTable symbols{hnc8::symbolRules()}; ///< at most 1,000 names
+  std::string program;                      ///< STL text: LF line ends, a final LF unless empty
+  int32_t programLine = 0;                  ///< reader: container line of the first program line
+  std::string hash;                         ///< `sha256:` + 64 lowercase hex digits of the content
 };
 
 /// Whether `text` starts with the container magic (after an optional UTF-8 BOM): the test the

@@ -5,6 +5,7 @@
 // heads near the end of R as well (the range checks of XMOVB and DSCHB).
 #include "gen/FanucData.h"
 #include "gen/FanucRung.h"
+#include "ir/Bcd.h"
 
 namespace lj::gen {
 
@@ -170,10 +171,7 @@ private:
   }
   /// `v` >= 0 as BCD digits (a digit above 9 for -1: 0x1A, the invalid BCD of the rules).
   static int64_t bcd(int64_t v) {
-    if (v < 0) return 0x1A;
-    int64_t r = 0;
-    for (int shift = 0; v > 0; shift += 4, v /= 10) r |= (v % 10) << shift;
-    return r;
+    return v < 0 ? 0x1A : static_cast<int64_t>(lj::bcd::encode(static_cast<uint64_t>(v), 16));
   }
   /// The `count` operand addresses of a rotation, `w` bytes each, the last one written: one
   /// after the other in R or D, or drawn from a few bytes so that they overlap (n in memory

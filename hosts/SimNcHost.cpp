@@ -1,6 +1,7 @@
 // The simulated NC's lj_host callbacks (abi.h), its CNC variable store with the VARGET/VARSET
 // scaling rules (hnc8-functions-2.md 2.22, 2.23, 3), and the call log every callback appends to.
 #include "hosts/SimNcModel.h"
+#include "ir/Bcd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,10 +123,9 @@ struct SimNcHost {
   }
   static int32_t nixieEncode(void *ctx, int32_t value, int32_t width) {
     // BCD digits: two for width 0 (one byte), four for width 1 (two bytes).
-    int digits = width == 0 ? 2 : 4;
-    int64_t v = std::llabs(int64_t{value});
-    int32_t out = 0;
-    for (int d = 0; d < digits; ++d, v /= 10) out |= static_cast<int32_t>(v % 10) << (4 * d);
+    const int digits = width == 0 ? 2 : 4;
+    const auto out = static_cast<int32_t>(
+        bcd::encode(static_cast<uint64_t>(std::llabs(int64_t{value})), digits));
     record(nc(ctx), "nixie_encode", {value, width}, {}, out);
     return out;
   }

@@ -1,6 +1,7 @@
 // The recording test host: lj_host trampolines into TestHost, its variable store with the
 // VARGET/VARSET scaling of hnc8-functions-2.md 2.22, 2.23 and section 3, and the call log.
 #include "hosts/TestHost.h"
+#include "ir/Bcd.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -112,14 +113,9 @@ struct TestHostCallbacks {
     return r;
   }
   static int32_t nixieEncode(void *ctx, int32_t value, int32_t width) {
-    uint32_t mag = value < 0 ? 0u - static_cast<uint32_t>(value) : static_cast<uint32_t>(value);
-    int digits = width == 0 ? 2 : 4;
-    uint32_t bcd = 0;
-    for (int d = 0; d < digits; ++d) {
-      bcd |= (mag % 10u) << (4 * d);
-      mag /= 10u;
-    }
-    auto r = static_cast<int32_t>(bcd);
+    const uint32_t mag =
+        value < 0 ? 0u - static_cast<uint32_t>(value) : static_cast<uint32_t>(value);
+    const auto r = static_cast<int32_t>(bcd::encode(mag, width == 0 ? 2 : 4));
     h(ctx).record("nixie_encode", {value, width}, {}, r);
     return r;
   }

@@ -115,10 +115,9 @@ void bcdArith(const BlockCall &b) {
       err = err || r < 0 || r >= limit;
     }
     if (!err) {
-      uint32_t bcd = 0;
-      for (int k = 0; k < 2 * n; ++k, r /= 10) bcd |= static_cast<uint32_t>(r % 10) << (4 * k);
+      const uint64_t digits = bcd::encode(static_cast<uint64_t>(r), 2 * n);
       for (int k = 0; k < n; ++k)
-        at(b, b.ops[3].off)[k] = static_cast<unsigned char>(bcd >> (8 * k));
+        at(b, b.ops[3].off)[k] = static_cast<unsigned char>(digits >> (8 * k));
     }
   }
   w1(b, in.v[0], in.v[1], err);

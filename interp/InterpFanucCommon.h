@@ -9,6 +9,7 @@
 #pragma once
 
 #include "interp/InterpreterInternal.h"
+#include "ir/Bcd.h"
 
 namespace lj::interp::fanuc {
 
@@ -37,13 +38,7 @@ inline unsigned char *at(const BlockCall &b, uint32_t off) { return bytes(b.s) +
 
 /// Binary value of `digits` BCD digits in `raw`; false on a digit above 9.
 inline bool fromBcd(uint32_t raw, int digits, int64_t &out) {
-  out = 0;
-  for (int k = digits - 1; k >= 0; --k) {
-    const uint32_t d = (raw >> (4 * k)) & 0xF;
-    if (d > 9) return false;
-    out = out * 10 + d;
-  }
-  return true;
+  return bcd::decode(raw, digits, out);
 }
 
 } // namespace lj::interp::fanuc

@@ -45,9 +45,7 @@ int64_t roomAfter(const BlockCall &b, const Operand &o) {
 
 /// `v` (0 <= v < 10^digits) as BCD digits.
 uint32_t toBcd(int64_t v, int digits) {
-  uint32_t r = 0;
-  for (int k = 0; k < digits; ++k, v /= 10) r |= static_cast<uint32_t>(v % 10) << (4 * k);
-  return r;
+  return static_cast<uint32_t>(bcd::encode(static_cast<uint64_t>(v), digits));
 }
 
 void parity(const BlockCall &b) {
@@ -132,9 +130,7 @@ void convertExt(const BlockCall &b) {
       result = in.v[3] ? -v : v;
     } else { // binary -> BCD of |x|; the sign goes to N
       const int64_t mag = x < 0 ? -int64_t{x} : x;
-      int64_t max = 1;
-      for (int k = 0; k < digits; ++k) max *= 10;
-      overflow = err = mag >= max;
+      overflow = err = mag >= bcd::limit(digits);
       result = toBcd(mag, digits);
     }
     // N: the converted value is negative (only when the conversion succeeded).

@@ -3,6 +3,7 @@
 // (FANUC PMC manual ref 6.3, 6.4, 6.6; choices in docs/fanuc-pmc.md). The lowering
 // is lowering/EmitPmcTc.cpp; both share ir/PmcTc.h for the unit tables and the BCD reading.
 #include "interp/InterpreterInternal.h"
+#include "ir/Bcd.h"
 #include "ir/PmcTc.h"
 
 namespace lj::interp {
@@ -28,9 +29,7 @@ bool onDelay(lj_state *s, int32_t slot, bool act, uint32_t presetMs) {
 
 /// The 4 BCD digits of `v` (>= 0; digits above the fourth dropped).
 int32_t bcdDigits(int32_t v) {
-  int32_t r = 0;
-  for (int k = 0; k < 4; ++k, v /= 10) r |= (v % 10) << (4 * k);
-  return r;
+  return static_cast<int32_t>(bcd::encode(static_cast<uint32_t>(v), 4));
 }
 
 uint32_t elapsedMs(const lj_state *s, int32_t slot, uint32_t presetMs) {

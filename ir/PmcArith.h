@@ -5,6 +5,8 @@
 // 3.1, 3.2, 6.10; the [EXT] readings are rows of docs/fanuc-pmc.md).
 #pragma once
 
+#include "ir/Bcd.h"
+
 #include <cstdint>
 
 namespace lj::pmc {
@@ -25,10 +27,6 @@ constexpr int64_t minOf(int width) { return -(int64_t{1} << (8 * width - 1)); }
 constexpr int64_t maxOf(int width) { return (int64_t{1} << (8 * width - 1)) - 1; }
 
 /// 10^digits: the first value that does not fit `digits` BCD digits (reference 3.2).
-constexpr int64_t bcdLimit(int digits) {
-  int64_t v = 1;
-  for (int k = 0; k < digits; ++k) v *= 10;
-  return v;
-}
+constexpr int64_t bcdLimit(int digits) { return bcd::limit(digits); }
 
 } // namespace lj::pmc

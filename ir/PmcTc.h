@@ -4,6 +4,8 @@
 // 3.2, 6.3, 6.6; choices in docs/fanuc-pmc.md).
 #pragma once
 
+#include "ir/Bcd.h"
+
 #include <cstdint>
 
 namespace lj::pmc {
@@ -43,13 +45,7 @@ constexpr uint32_t presetMs(int32_t count, uint32_t unit) {
 /// The value of `width` (1 or 2) bytes of BCD in the low bits of `raw`: each nibble a decimal
 /// digit, a nibble above 9 taken at its binary value (docs/fanuc-pmc.md [EXT] row).
 constexpr int32_t bcdValue(int32_t raw, int width) {
-  const auto u = static_cast<uint32_t>(raw);
-  int32_t v = 0, scale = 1;
-  for (int k = 0; k < 2 * width; ++k) {
-    v += static_cast<int32_t>((u >> (4 * k)) & 0xFu) * scale;
-    scale *= 10;
-  }
-  return v;
+  return static_cast<int32_t>(bcd::decodeLoose(static_cast<uint32_t>(raw), 2 * width));
 }
 
 } // namespace lj::pmc

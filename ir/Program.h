@@ -4,8 +4,7 @@
 
 #include "ir/Area.h"
 #include "ir/OpTable.h"
-
-#include "frontends/hnc8/Symbols.h"
+#include "ir/SymbolTable.h"
 
 #include <algorithm>
 #include <array>

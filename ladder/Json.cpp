@@ -2,6 +2,7 @@
 // paths: HNC-8 JSON -> networks -> statements -> STL text for the HNC-8 parser; another
 // dialect's JSON -> the program text it carries, checked against its networks.
 #include "ladder/Json.h"
+#include "frontends/hnc8/Address.h"
 #include "frontends/hnc8/Mnemonics.h"
 
 #include <nlohmann/json.hpp>
@@ -443,6 +444,7 @@ bool stlFromJson(std::string_view text, StlFromJson &out, std::string &error) {
             "HNC-8 STL";
     return false;
   }
+  out.symbols = SymbolTable(hnc8::symbolRules());
   for (size_t i = 0; i < nets.symbols.size(); ++i) {
     const Symbol &s = nets.symbols[i];
     std::string err;

@@ -4,6 +4,7 @@
 // with R9000). The operation is a constant of the statement, so only its own arithmetic is
 // emitted; the BCD width (BYT) is an input, so both widths are computed and selected.
 #include "ir/PmcArith.h"
+#include "lowering/EmitBcd.h"
 #include "lowering/FunctionEmitter.h"
 
 #include "ladderjit/abi.h"
@@ -11,34 +12,6 @@
 #include <tuple>
 
 namespace lj::lower {
-
-namespace {
-
-/// The binary value of the 2 * `n` BCD digits of the i32 `raw` and whether one is above 9.
-std::pair<llvm::Value *, llvm::Value *> bcdValue(llvm::IRBuilderBase &b, llvm::Value *raw, int n) {
-  llvm::Value *v = b.getInt32(0), *bad = b.getFalse();
-  int32_t scale = 1;
-  for (int k = 0; k < 2 * n; ++k, scale *= 10) {
-    llvm::Value *d = b.CreateAnd(b.CreateLShr(raw, static_cast<uint64_t>(4 * k)), 0xF);
-    bad = b.CreateOr(bad, b.CreateICmpUGT(d, b.getInt32(9)));
-    v = b.CreateAdd(v, b.CreateMul(d, b.getInt32(static_cast<uint32_t>(scale))));
-  }
-  return {v, bad};
-}
-
-/// 2 * `n` BCD digits of the i32 `v` (0 <= v < 10^(2n)).
-llvm::Value *bcdDigits(llvm::IRBuilderBase &b, llvm::Value *v, int n) {
-  llvm::Value *r = b.getInt32(0);
-  int32_t scale = 1;
-  for (int k = 0; k < 2 * n; ++k, scale *= 10) {
-    llvm::Value *d =
-        b.CreateURem(b.CreateUDiv(v, b.getInt32(static_cast<uint32_t>(scale))), b.getInt32(10));
-    r = b.CreateOr(r, b.CreateShl(d, static_cast<uint64_t>(4 * k)));
-  }
-  return r;
-}
-
-} // namespace
 
 llvm::Error FunctionEmitter::emitFanucArith(int32_t i) {
   const Stmt &s = prog_.stmts[i];
@@ -132,13 +105,13 @@ void FunctionEmitter::emitFaBcd(const Stmt &s, int32_t slot) {
   llvm::Value *err[2], *bcd[2];
   for (int n = 1; n <= 2; ++n) {
     const int64_t limit = pmc::bcdLimit(2 * n);
-    auto [x, badX] = bcdValue(b_, raw(s.ops[1], n), n);
+    auto [x, badX] = bcdValue(b_, raw(s.ops[1], n), 2 * n);
     llvm::Value *y, *badY;
     if (constant) {
       y = k32(s.ops[2].value);
       badY = b_.getInt1(s.ops[2].value >= limit);
     } else {
-      std::tie(y, badY) = bcdValue(b_, raw(s.ops[2], n), n);
+      std::tie(y, badY) = bcdValue(b_, raw(s.ops[2], n), 2 * n);
     }
     llvm::Value *bad = b_.CreateOr(badX, badY), *r = nullptr;
     switch (op) {
@@ -161,7 +134,7 @@ void FunctionEmitter::emitFaBcd(const Stmt &s, int32_t slot) {
     llvm::Value *outside =
         b_.CreateOr(b_.CreateICmpSLT(r, k32(0)), b_.CreateICmpSGE(r, k32(limit)));
     err[n - 1] = b_.CreateOr(bad, outside);
-    bcd[n - 1] = bcdDigits(b_, b_.CreateSelect(err[n - 1], k32(0), r), n);
+    bcd[n - 1] = bcdDigits(b_, b_.CreateSelect(err[n - 1], k32(0), r), 2 * n);
   }
   llvm::Value *e = selectBit(byt, err[1], err[0]);
   llvm::Value *en = b_.CreateAnd(act, notV(e));

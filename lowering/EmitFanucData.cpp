@@ -3,6 +3,7 @@
 // rules). Static byte accesses go through the ImageCache; the table accesses of XMOVB and DSCHB
 // use computed addresses (the cache is flushed around them) with alignment 1, since a FANUC
 // word may start at any byte (reference 3.1).
+#include "lowering/EmitBcd.h"
 #include "lowering/FunctionEmitter.h"
 
 #include "ladderjit/abi.h"
@@ -183,35 +184,6 @@ llvm::Error FunctionEmitter::emitFanucData(int32_t i) {
   }
   return llvm::Error::success();
 }
-
-namespace {
-
-/// Binary value of the 4 BCD digits of `raw` (i32) and whether one of them is above 9.
-std::pair<llvm::Value *, llvm::Value *> bcdValue(llvm::IRBuilderBase &b, llvm::Value *raw,
-                                                 int digits) {
-  llvm::Value *v = b.getInt32(0), *bad = b.getFalse();
-  int32_t scale = 1;
-  for (int k = 0; k < digits; ++k, scale *= 10) {
-    llvm::Value *d = b.CreateAnd(b.CreateLShr(raw, static_cast<uint64_t>(4 * k)), 0xF);
-    bad = b.CreateOr(bad, b.CreateICmpUGT(d, b.getInt32(9)));
-    v = b.CreateAdd(v, b.CreateMul(d, b.getInt32(static_cast<uint32_t>(scale))));
-  }
-  return {v, bad};
-}
-
-/// `digits` BCD digits of the non-negative i64 `v` (known to fit), as i64.
-llvm::Value *bcdDigits(llvm::IRBuilderBase &b, llvm::Value *v, int digits) {
-  llvm::Value *r = b.getInt64(0);
-  int64_t scale = 1;
-  for (int k = 0; k < digits; ++k, scale *= 10) {
-    llvm::Value *d =
-        b.CreateURem(b.CreateUDiv(v, b.getInt64(static_cast<uint64_t>(scale))), b.getInt64(10));
-    r = b.CreateOr(r, b.CreateShl(d, static_cast<uint64_t>(4 * k)));
-  }
-  return r;
-}
-
-} // namespace
 
 void FunctionEmitter::emitFdConvert(const Stmt &s, int32_t slot) {
   auto in = fdTake(4); // ACT, RST, CNV, BYT

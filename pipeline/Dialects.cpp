@@ -94,17 +94,7 @@ std::optional<CliAddress> parseIecAddress(std::string_view text, std::string &er
 }
 
 std::optional<Assignment> parseIecAssignment(std::string_view item, std::string &error) {
-  size_t eq = item.find('=');
-  if (eq == std::string_view::npos) {
-    error = "bad assignment '" + std::string(item.substr(0, 40)) + "': expected ADDR=VALUE";
-    return std::nullopt;
-  }
-  std::optional<CliAddress> addr = parseIecAddress(item.substr(0, eq), error);
-  if (!addr) return std::nullopt;
-  std::optional<int64_t> value = parseValue(item.substr(eq + 1), error);
-  if (!value) return std::nullopt;
-  if (!checkWritable(*addr, *value, error)) return std::nullopt;
-  return Assignment{std::move(*addr), *value};
+  return parseAssignmentWith(parseIecAddress, item, error, 40);
 }
 
 std::string formatIecAddress(const CliAddress &addr) {

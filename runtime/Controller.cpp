@@ -143,11 +143,24 @@ std::string formatAssignment(const formats::Assignment &a) {
   return a.addr.text + "=" + std::to_string(a.value);
 }
 
-// A write or lock item in the running program's dialect: parsed and checked for writability
-// (formats/Address.h, pipeline/Dialects.h).
-std::optional<formats::Assignment> writable(const formats::Dialect &d, const std::string &item,
-                                            std::string &err) {
-  std::optional<formats::Assignment> a = d.parseAssignment(item, err);
+// The running program's symbols (none before a program runs).
+std::vector<Symbol> symbolsOf(Executive &exec) {
+  std::shared_ptr<ProgramVersion> cur = exec.current();
+  return cur && cur->prog ? cur->prog->symbols : std::vector<Symbol>{};
+}
+
+// An address in the running program's dialect, or one of its symbols (formats/Address.h).
+std::optional<formats::CliAddress> address(const formats::Dialect &d, Executive &exec, std::string_view item,
+                                      std::string &err) {
+  return formats::parseAddressIn(d.parseAddress, symbolsOf(exec), item, err);
+}
+
+// A write or lock item in the running program's dialect (its address perhaps a symbol of the
+// program): parsed and checked for writability (formats/Address.h, pipeline/Dialects.h).
+std::optional<formats::Assignment> writable(const formats::Dialect &d, Executive &exec,
+                                       const std::string &item, std::string &err) {
+  std::optional<formats::Assignment> a =
+      formats::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbolsOf(exec), item, err);
   if (a && !formats::checkWritable(a->addr, a->value, err)) return std::nullopt;
   return a;
 }
@@ -475,7 +488,7 @@ json Controller::doRead(const json &req) {
   if (!strings(req, "addrs", items, err)) return fail(err);
   std::vector<formats::CliAddress> addrs;
   for (const std::string &t : items) {
-    std::optional<formats::CliAddress> a = dialect().parseAddress(t, err);
+    std::optional<formats::CliAddress> a = address(dialect(), exec_, t, err);
     if (!a) return fail(err);
     addrs.push_back(*a);
   }
@@ -493,7 +506,7 @@ json Controller::doWrite(const json &req) {
   if (!strings(req, "writes", items, err)) return fail(err);
   std::vector<formats::Assignment> writes;
   for (const std::string &t : items) {
-    std::optional<formats::Assignment> a = writable(dialect(), t, err);
+    std::optional<formats::Assignment> a = writable(dialect(), exec_, t, err);
     if (!a) return fail(err);
     writes.push_back(*a);
   }
@@ -585,13 +598,14 @@ json Controller::doLock(const json &req) {
   if (cmd == "lock") {
     if (!req.contains("item") || !req["item"].is_string())
       return fail("lock needs \"item\" ADDR=VALUE");
-    std::optional<formats::Assignment> a = writable(dialect(), req["item"].get<std::string>(), err);
+    std::optional<formats::Assignment> a =
+        writable(dialect(), exec_, req["item"].get<std::string>(), err);
     if (!a) return fail(err);
     ex_.lock(*a);
   } else if (cmd == "unlock") {
     if (!req.contains("addr") || !req["addr"].is_string()) return fail("unlock needs \"addr\"");
     std::optional<formats::CliAddress> a =
-        dialect().parseAddress(req["addr"].get<std::string>(), err);
+        address(dialect(), exec_, req["addr"].get<std::string>(), err);
     if (!a) return fail(err);
     if (!ex_.unlock(*a)) return fail("'" + a->text + "' is not locked");
   }

@@ -165,7 +165,8 @@ const MbBlock *ModbusMap::resolve(MbTable table, uint32_t addr, uint32_t &elemen
 }
 
 std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::string &file,
-                                          const formats::Dialect &dialect, std::string &error) {
+                                          const formats::Dialect &dialect, std::string &error,
+                                          std::span<const Symbol> symbols) {
   ModbusMap m;
   int lineNo = 0;
   size_t pos = 0;
@@ -199,7 +200,7 @@ std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::stri
       return std::nullopt;
     }
     std::string why;
-    std::optional<formats::CliAddress> first = dialect.parseAddress(w[2], why);
+    std::optional<formats::CliAddress> first = formats::parseAddressIn(dialect.parseAddress, symbols, w[2], why);
     if (!first) {
       error = at + why;
       return std::nullopt;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,10 +52,12 @@ public:
   static const ModbusMap &hnc8();
   /// A map of these blocks (they must not overlap within one table).
   static ModbusMap fromBlocks(std::vector<MbBlock> blocks);
-  /// Read a map file (docs/modbus-map.md "Map files") of `dialect`'s addresses. Nothing with
-  /// `error` = "FILE:LINE: problem" for the first bad line.
+  /// Read a map file (docs/modbus-map.md "Map files") of `dialect`'s addresses; a START
+  /// ADDRESS may be a name the program's `symbols` define (formats/Address.h parseAddressIn).
+  /// Nothing with `error` = "FILE:LINE: problem" for the first bad line.
   static std::optional<ModbusMap> parse(std::string_view text, const std::string &file,
-                                        const formats::Dialect &dialect, std::string &error);
+                                        const formats::Dialect &dialect, std::string &error,
+                                        std::span<const Symbol> symbols = {});
 
   /// The block holding Modbus address `addr` of `table`, with the element's index in it and,
   /// for Word32, the register half (0 low, 1 high); nullptr when unmapped.

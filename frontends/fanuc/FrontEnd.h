@@ -2,9 +2,9 @@
 // text -> ParsedProgram on the FANUC profile, with located diagnostics in FANUC wording.
 #pragma once
 
-#include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
+#include "ir/SymbolTable.h"
 
 #include <optional>
 #include <string>

@@ -3,6 +3,9 @@
 // instruction's parameters follow it on its line or on `(PRM) value` lines. The parser tracks the
 // operation-result register ST0..ST7 itself: RD starts a new logic line (depth 1), RD.STK
 // pushes, AND.STK/OR.STK pop; more than eight results is an error, as on the PMC.
+#include "frontends/common/LineTokens.h"
+#include "frontends/common/OperandText.h"
+#include "frontends/common/ProfileAddress.h"
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/fanuc/ParserInternal.h"
 #include "profiles/fanuc/FanucProfile.h"
@@ -28,7 +31,6 @@ namespace {
 using detail::Token;
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 std::string quote(std::string_view t) {
   return "'" + std::string(t.substr(0, 40)) + (t.size() > 40 ? "...'" : "'");
 }
@@ -50,40 +52,24 @@ std::string ranges(Area a) {
 }
 
 bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, std::string &error) {
-  size_t n = 0;
-  while (n < s.size() && !isDigit(s[n]) && s[n] != '.') ++n;
-  std::optional<Area> a = profile().areaFromName(s.substr(0, n));
-  if (n == 0 || !a) {
+  const frontend::ProfileAddressText lexed = frontend::lexProfileAddress(profile(), s);
+  if (lexed.lex == frontend::ProfileAddressText::Lex::NoArea) {
     error = "unknown address " + quote(s) + " (areas: X Y F G R E A T C K D" +
             (labels ? "; labels L, subroutines P)" : ")");
     return false;
   }
-  size_t pos = n;
-  int64_t idx = 0;
-  size_t start = pos;
-  while (pos < s.size() && isDigit(s[pos])) {
-    idx = std::min<int64_t>(idx * 10 + (s[pos] - '0'), int64_t{1} << 40);
-    ++pos;
-  }
-  bit = -1;
-  bool ok = pos > start;
-  if (ok && pos < s.size() && s[pos] == '.') {
-    ++pos;
-    size_t bs = pos;
-    bit = 0;
-    while (pos < s.size() && isDigit(s[pos]))
-      bit = std::min<int64_t>(bit * 10 + (s[pos++] - '0'), 99);
-    ok = pos > bs;
-  }
-  if (!ok || pos != s.size()) {
+  // A width (`:2`) is command-line syntax; the instruction gives an operand's width.
+  if (lexed.lex != frontend::ProfileAddressText::Lex::Ok || lexed.sep == ':') {
     error = "malformed address " + quote(s);
     return false;
   }
+  const int64_t idx = lexed.index;
+  bit = std::min<int64_t>(lexed.bit, 99);
   out = Operand{};
-  out.area = *a;
+  out.area = lexed.area;
   out.index = static_cast<int32_t>(std::min<int64_t>(idx, INT32_MAX));
-  if (!profile().validIndex(*a, idx)) {
-    error = "address " + quote(s) + " out of range (" + ranges(*a) + ")";
+  if (!profile().validIndex(lexed.area, idx)) {
+    error = "address " + quote(s) + " out of range (" + ranges(lexed.area) + ")";
     return false;
   }
   return true;
@@ -118,28 +104,13 @@ bool isMarkerName(std::string_view n) {
   return n == "END1" || n == "END2" || n == "END3" || n == "END" || n == "SP" || n == "SPE";
 }
 
+/// The words of one line (frontend::splitLine) located on line `lineNo`.
 void tokenize(std::string_view line, int32_t lineNo, std::vector<Token> &toks,
               std::string_view &comment, bool &hasComment) {
+  thread_local std::vector<frontend::Word> words;
+  frontend::splitLine(line, words, comment, hasComment);
   toks.clear();
-  hasComment = false;
-  size_t end = line.size();
-  for (size_t i = 0; i < line.size(); ++i)
-    if (line[i] == ';' || (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/')) {
-      end = i;
-      hasComment = true;
-      comment = line.substr(i + (line[i] == ';' ? 1 : 2));
-      while (!comment.empty() && isSpace(comment.front())) comment.remove_prefix(1);
-      while (!comment.empty() && isSpace(comment.back())) comment.remove_suffix(1);
-      break;
-    }
-  size_t i = 0;
-  while (i < end) {
-    while (i < end && isSpace(line[i])) ++i;
-    if (i >= end) break;
-    size_t start = i;
-    while (i < end && !isSpace(line[i])) ++i;
-    toks.push_back({line.substr(start, i - start), {lineNo, static_cast<int32_t>(start + 1)}});
-  }
+  for (const frontend::Word &w : words) toks.push_back({w.text, {lineNo, w.col}});
 }
 
 class Parser final : public detail::Emitter {
@@ -642,21 +613,7 @@ const char *spell(Op op) {
 
 } // namespace
 
-std::string formatOperand(const Operand &op) {
-  switch (op.kind) {
-  case Operand::Kind::None:
-    return "";
-  case Operand::Kind::Const:
-    return std::to_string(op.value);
-  case Operand::Kind::Reg:
-  case Operand::Kind::Bit: {
-    std::string s = std::string(tp().area(op.area).name) + std::to_string(op.index);
-    if (op.kind == Operand::Kind::Bit) s += "." + std::to_string(op.bit);
-    return s;
-  }
-  }
-  return "";
-}
+std::string formatOperand(const Operand &op) { return frontend::operandText(tp(), op); }
 
 // TMRB and TMRBF have two parameters, the timer number and the set time in ms (ref 6.3: "[SUB24
 // TMRB | timer number | set time (ms)]", SUB77 alike); the IR's time-unit operand between them is

@@ -2,9 +2,10 @@
 // and Functional.cpp (the functional instructions: SUB numbers, names, parameters).
 #pragma once
 
-#include "frontends/hnc8/Symbols.h"
+#include "ir/Bcd.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
+#include "ir/SymbolTable.h"
 
 #include <map>
 #include <string>
@@ -133,9 +134,7 @@ PmcSource readPmcSource(std::string_view text, const SymbolTable *external, Symb
 
 /// 0..9999 written in decimal as its 4-digit BCD bit pattern (reference 3.2).
 inline int32_t toBcd(int64_t v) {
-  int32_t r = 0;
-  for (int shift = 0; shift < 16; shift += 4, v /= 10) r |= static_cast<int32_t>(v % 10) << shift;
-  return r;
+  return static_cast<int32_t>(bcd::encode(static_cast<uint64_t>(v), 4));
 }
 
 /// A constant operand `v` located at `at`.

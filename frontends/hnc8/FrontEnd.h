@@ -2,9 +2,9 @@
 // (parse + verify: pipeline/Compile.h).
 #pragma once
 
-#include "frontends/hnc8/Symbols.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
+#include "ir/SymbolTable.h"
 
 #include <climits>
 #include <optional>

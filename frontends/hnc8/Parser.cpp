@@ -1,6 +1,8 @@
 // Lexer and parser for STL text (DIALECT.md 2, docs/dialect-notes.md "Text"): one statement per
 // line, every operand (or the symbol standing for one) checked against the instruction table;
 // bad lines become located diagnostics and are dropped, parsing always continues.
+#include "frontends/common/LineTokens.h"
+#include "frontends/hnc8/Address.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
 #include "profiles/hnc8/Hnc8Profile.h"
@@ -16,9 +18,9 @@ namespace lj {
 
 namespace {
 
-constexpr int64_t kSaturate = int64_t{1} << 40; // far above any index or int32 magnitude
+using hnc8::kSaturated;
+using hnc8::readDecimal;
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isLetter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 
@@ -31,18 +33,6 @@ int hexValue(char c) {
 
 /// The token as it may appear in a message (40 bytes at most).
 std::string quote(std::string_view t) { return quoteToken(t, 40); }
-
-/// Reads decimal digits from `t` at `pos`, saturating; returns false if there are none.
-bool readDecimal(std::string_view t, size_t &pos, int64_t &value) {
-  size_t start = pos;
-  value = 0;
-  while (pos < t.size() && isDigit(t[pos])) {
-    value = value * 10 + (t[pos] - '0');
-    if (value > kSaturate) value = kSaturate;
-    ++pos;
-  }
-  return pos > start;
-}
 
 /// "Y, G, R, W, D or B" for the areas of a mask.
 std::string areaList(AreaMask m) {
@@ -78,10 +68,7 @@ struct RawOperand {
   int64_t bit = -1; // -1: no bit number
 };
 
-struct Token {
-  std::string_view text;
-  int32_t col = 0;
-};
+using Token = frontend::Word;
 
 /// Parses the statements of one line; reports every problem it finds on that line.
 class LineParser {
@@ -161,23 +148,19 @@ private:
 
   bool lexAddress(const Token &t, RawOperand &raw) {
     std::string_view s = t.text;
-    std::optional<Area> area = hnc8::profile().areaFromLetter(s[0]);
-    if (!area) {
+    const hnc8::AddressText a = hnc8::lexAddress(s);
+    if (a.lex == hnc8::AddressText::Lex::NoArea) {
       error(t, "unknown area letter " + quote(s.substr(0, 1)) + " in " + quote(s));
       return false;
     }
-    raw.shape = RawOperand::Shape::Addr;
-    raw.area = *area;
-    size_t pos = 1;
-    bool ok = readDecimal(s, pos, raw.index);
-    if (ok && pos < s.size() && s[pos] == '.') {
-      ++pos;
-      ok = readDecimal(s, pos, raw.bit);
-    }
-    if (!ok || pos != s.size()) {
+    if (a.lex != hnc8::AddressText::Lex::Ok) {
       error(t, "malformed address " + quote(s));
       return false;
     }
+    raw.shape = RawOperand::Shape::Addr;
+    raw.area = a.area;
+    raw.index = a.index;
+    raw.bit = a.bit;
     return true;
   }
 
@@ -281,7 +264,7 @@ private:
         std::string l(hnc8::profile().area(r.area).name);
         error(t,
               // A saturated number (more digits than any index) is not shown as 2^40.
-              "bit number " + (r.bit >= kSaturate ? std::string() : std::to_string(r.bit) + " ") +
+              "bit number " + (r.bit >= kSaturated ? std::string() : std::to_string(r.bit) + " ") +
                   "out of range in " + quote(t.text) + " (" + l +
                   (hnc8::profile().bitWidth(r.area) == 1
                        ? std::string(" has only bit .0")
@@ -334,35 +317,6 @@ private:
   int16_t symbolIndex_ = -1;       ///< its position in the table
 };
 
-/// Splits one line (without its newline) into tokens; a `;` or `//` comment goes to `comment`
-/// (text after the marker, blanks around it dropped; `hasComment` tells an empty one apart).
-void tokenize(std::string_view line, std::vector<Token> &toks, std::string_view &comment,
-              bool &hasComment) {
-  toks.clear();
-  hasComment = false;
-  comment = {};
-  size_t end = line.size();
-  for (size_t i = 0; i < line.size(); ++i) {
-    if (line[i] == ';' || (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/')) {
-      end = i;
-      hasComment = true;
-      comment = line.substr(i + (line[i] == ';' ? 1 : 2));
-      while (!comment.empty() && isSpace(comment.front())) comment.remove_prefix(1);
-      while (!comment.empty() && isSpace(comment.back())) comment.remove_suffix(1);
-      break;
-    }
-  }
-  size_t i = 0;
-  while (i < end) {
-    while (i < end && isSpace(line[i])) ++i;
-    if (i >= end) break;
-    size_t start = i;
-    while (i < end && !isSpace(line[i])) ++i;
-    int32_t col = start >= INT32_MAX ? INT32_MAX : static_cast<int32_t>(start + 1);
-    toks.push_back({line.substr(start, i - start), col});
-  }
-}
-
 } // namespace
 
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags) {
@@ -395,7 +349,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     size_t nl = text.find('\n', pos);
     if (nl == std::string_view::npos) nl = text.size();
     if (line < INT32_MAX) ++line;
-    tokenize(text.substr(pos, nl - pos), toks, comment, hasComment);
+    frontend::splitLine(text.substr(pos, nl - pos), toks, comment, hasComment);
     pos = nl + 1;
     auto next = static_cast<int32_t>(prog.stmts.size());
     if (toks.empty()) {
@@ -436,7 +390,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
       while (pos < text.size()) {
         size_t end = text.find('\n', pos);
         if (end == std::string_view::npos) end = text.size();
-        tokenize(text.substr(pos, end - pos), toks, comment, hasComment);
+        frontend::splitLine(text.substr(pos, end - pos), toks, comment, hasComment);
         pos = end + 1;
         Op op;
         if (!toks.empty() && hnc8::lookupMnemonic(toks[0].text, op)) ++total;

@@ -1,5 +1,6 @@
 // Text dump of a verified program (`ladderjit check --print`, golden tests): a summary of parts,
 // subroutines and PLC2 slices, then one line per statement with the verifier's facts.
+#include "frontends/common/OperandText.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/Mnemonics.h"
 #include "profiles/hnc8/Hnc8Profile.h"
@@ -8,20 +9,7 @@
 
 namespace lj {
 
-std::string formatOperand(const Operand &op) {
-  switch (op.kind) {
-  case Operand::Kind::None:
-    return "";
-  case Operand::Kind::Const:
-    return std::to_string(op.value);
-  case Operand::Kind::Reg:
-    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index);
-  case Operand::Kind::Bit:
-    return std::string(hnc8::profile().area(op.area).name) + std::to_string(op.index) + "." +
-           std::to_string(op.bit);
-  }
-  return "";
-}
+std::string formatOperand(const Operand &op) { return frontend::operandText(hnc8::profile(), op); }
 
 namespace {
 

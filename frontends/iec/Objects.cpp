@@ -1,5 +1,6 @@
 // Neza objects <-> IR operands on the IEC profile's layout (profiles/iec/IecProfile.h).
 #include "frontends/iec/Objects.h"
+#include "frontends/common/OperandText.h"
 
 #include "ir/IecBlocks.h"
 #include "profiles/iec/IecProfile.h"
@@ -236,7 +237,7 @@ std::string formatOperand(const Operand &op) {
   case Operand::Kind::None:
     return "";
   case Operand::Kind::Const:
-    return std::to_string(op.value);
+    return frontend::constantText(op.value);
   case Operand::Kind::Reg:
     switch (op.area) {
     case Area::Label:

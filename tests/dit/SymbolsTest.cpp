@@ -1,5 +1,6 @@
 // Symbols as STL operands (docs/plc-dit.md "Symbols"): name syntax, address normalization, and
 // the parser resolving names in contacts, coils and blocks exactly like the written address.
+#include "frontends/hnc8/Address.h"
 #include "frontends/hnc8/FrontEnd.h"
 
 #include <gtest/gtest.h>
@@ -8,7 +9,7 @@ namespace lj {
 namespace {
 
 SymbolTable table() {
-  SymbolTable t;
+  SymbolTable t(hnc8::symbolRules());
   std::string err;
   EXPECT_TRUE(t.add("START", "X1.0", "", err)) << err;
   EXPECT_TRUE(t.add("Lamp", "Y0.3", "", err)) << err;
@@ -50,7 +51,7 @@ TEST(Symbols, NameSyntax) {
     EXPECT_TRUE(SymbolTable::isNameShaped(ok)) << ok;
   for (const char *bad : {"", "X10", "L3", "Q7", "d5", "1a", "-a", "a.b", "a-b", "X1.0", "+5"})
     EXPECT_FALSE(SymbolTable::isNameShaped(bad)) << bad;
-  SymbolTable t;
+  SymbolTable t(hnc8::symbolRules());
   std::string err;
   EXPECT_TRUE(t.add(std::string(64, 'a'), "X0.0", "", err)) << err;
   EXPECT_FALSE(t.add(std::string(65, 'b'), "X0.0", "", err));
@@ -60,13 +61,13 @@ TEST(Symbols, NameSyntax) {
 // DIALECT.md 1 ranges; T/C 0..127 and 300..427 with only bit .0; L/S take no bit.
 TEST(Symbols, AddressNormalization) {
   std::string err;
-  EXPECT_EQ(SymbolTable::canonicalAddress("x010.3", err), "X10.3");
-  EXPECT_EQ(SymbolTable::canonicalAddress("D0005", err), "D5");
-  EXPECT_EQ(SymbolTable::canonicalAddress("t300.0", err), "T300.0");
-  EXPECT_EQ(SymbolTable::canonicalAddress("S511", err), "S511");
+  EXPECT_EQ(hnc8::canonicalAddress("x010.3", err), "X10.3");
+  EXPECT_EQ(hnc8::canonicalAddress("D0005", err), "D5");
+  EXPECT_EQ(hnc8::canonicalAddress("t300.0", err), "T300.0");
+  EXPECT_EQ(hnc8::canonicalAddress("S511", err), "S511");
   for (const char *bad : {"", "Q5", "X", "X1.", "X1.0.0", "D5.32", "R0.8", "T5.1", "T200", "L3.1",
                           "S512", "5", "X-1", "X99999999999999999999"})
-    EXPECT_EQ(SymbolTable::canonicalAddress(bad, err), "") << bad;
+    EXPECT_EQ(hnc8::canonicalAddress(bad, err), "") << bad;
 }
 
 TEST(Symbols, LookupIsCaseInsensitive) {
@@ -79,7 +80,7 @@ TEST(Symbols, LookupIsCaseInsensitive) {
 }
 
 TEST(Symbols, ThousandAtMost) {
-  SymbolTable t;
+  SymbolTable t(hnc8::symbolRules());
   std::string err;
   for (int i = 0; i < 1000; ++i) ASSERT_TRUE(t.add("N" + std::to_string(i) + "_", "D0", "", err));
   EXPECT_FALSE(t.add("ONE_MORE", "D0", "", err));

@@ -4,6 +4,7 @@
 // for. One test per rule.
 #include "frontends/fanuc/FrontEnd.h"
 #include "pipeline/Compile.h"
+#include "frontends/hnc8/Address.h"
 #include "tests/frontend/FanucDiags.h"
 
 #include <gtest/gtest.h>
@@ -465,7 +466,7 @@ TEST(FanucSymbols, GivenSymbolsAreMergedWithTheFilesOwn) {
             "t.pmc:2:1: error: duplicate symbol 'pump' (already defined in the symbols given with "
             "the program as 'PUMP'; names are case-insensitive)\n");
   // Given symbols are checked under the FANUC rules (this one was made under HNC-8's).
-  SymbolTable hnc8;
+  SymbolTable hnc8(hnc8::symbolRules());
   ASSERT_TRUE(hnc8.add("MODE", "W0", "", err)) << err;
   EXPECT_EQ(parse("END1\nEND2\nEND\n", &hnc8).diags,
             "t.pmc:0:0: error: symbols given with the program: symbol 'MODE': unknown address 'W0' "

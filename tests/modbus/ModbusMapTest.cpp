@@ -98,6 +98,31 @@ TEST(ModbusMapFile, FanucBitsBytesAndWords) {
   EXPECT_FALSE(retained);
 }
 
+// A START ADDRESS may be a symbol of the program (examples/fanuc_coolant.pmc's %@2-E defines
+// COOLANT Y0.0 and M_CODE F10); the map reads it as the address it stands for.
+TEST(ModbusMapFile, SymbolsOfTheProgramAsStartAddresses) {
+  const std::vector<Symbol> symbols = {
+      {"COOLANT", "Y0.0", "COOLANT PUMP"}, {"M_CODE", "F10", "M CODE"}, {"CLEAR", "L3", ""}};
+  std::string err;
+  auto m = ModbusMap::parse("coils 0 coolant 8\ninput 0 M_CODE\n", "m.map", *formats::dialectNamed("fanuc"),
+                            err, symbols);
+  ASSERT_TRUE(m) << err;
+  auto s = fresh();
+  set(*s, "fanuc", "Y0.0=1");
+  set(*s, "fanuc", "F10=8");
+  std::vector<uint8_t> bits;
+  ASSERT_EQ(mbmap::readBits(*m, MbTable::Coils, 0, 2, *s, bits), 0);
+  EXPECT_EQ(bits, (std::vector<uint8_t>{1, 0})); // Y0.0, Y0.1
+  std::vector<uint16_t> regs;
+  ASSERT_EQ(mbmap::readRegisters(*m, MbTable::InputRegisters, 0, 1, *s, regs), 0);
+  EXPECT_EQ(regs, (std::vector<uint16_t>{8}));
+  // Without the symbols the name is no address; a symbol of a label names no value.
+  EXPECT_FALSE(ModbusMap::parse("coils 0 COOLANT 8\n", "m.map", *formats::dialectNamed("fanuc"), err));
+  EXPECT_NE(err.find("bad address 'COOLANT'"), std::string::npos) << err;
+  EXPECT_FALSE(ModbusMap::parse("coils 0 CLEAR\n", "m.map", *formats::dialectNamed("fanuc"), err, symbols));
+  EXPECT_NE(err.find("m.map:1: symbol 'CLEAR' = L3: bad address 'L3'"), std::string::npos) << err;
+}
+
 TEST(ModbusMapFile, IecObjects) {
   auto s = fresh();
   set(*s, "iec", "%M3=1");

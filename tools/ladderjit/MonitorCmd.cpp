@@ -33,8 +33,13 @@ bool findControl(const std::string &given, std::string &path, std::string &error
 
 // Check the addresses / assignments locally, so a typo never reaches the server: an item must
 // be valid in some dialect of this build (the server checks it against the running program's).
+// An address shaped like a name goes to the server, which reads it as a symbol of the running
+// program (`monitor read COOLANT`).
 bool checkItems(const std::vector<std::string> &items, bool assignments, std::string &error) {
   for (const std::string &it : items) {
+    const std::string_view addr =
+        std::string_view(it).substr(0, assignments ? it.find('=') : it.npos);
+    if (SymbolTable::isNameShaped(addr) && (!assignments || addr.size() < it.size())) continue;
     std::string first;
     bool ok = false;
     for (const formats::Dialect *d : formats::allDialects()) {

@@ -26,13 +26,24 @@ namespace {
 
 constexpr size_t kRunNcLogLimit = 10000;
 
-// Every user input of `run`, parsed and checked.
-bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim,
-                 std::string &error) {
-  sim.ticks = a.ticks;
-  sim.periodMs = a.periodMs;
+// The addressed inputs of `run` (--set, --watch, --stimulus), parsed and checked. Addresses
+// may be symbols of the program (`--watch COOLANT`): `symbols` are its symbols; with
+// `namesLater` (before the program is read) an item shaped like a name passes, to be read again
+// with the symbols once they are known.
+bool parseAddressed(const RunArgs &a, const formats::Dialect &d, std::span<const Symbol> symbols,
+                    bool namesLater, hosts::SimOptions &sim, std::string &error) {
+  sim.sets.clear();
+  sim.watch.clear();
+  sim.stimulus = {};
+  auto later = [&](std::string_view item) {
+    return namesLater && SymbolTable::isNameShaped(item.substr(0, item.find('=')));
+  };
+  auto assign = [&](std::string_view item, std::string &why) -> std::optional<formats::Assignment> {
+    if (later(item)) return formats::Assignment{};
+    return formats::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbols, item, why);
+  };
   for (const std::string &item : a.sets) {
-    std::optional<formats::Assignment> as = d.parseAssignment(item, error);
+    std::optional<formats::Assignment> as = assign(item, error);
     if (!as) {
       error = "--set: " + error;
       return false;
@@ -48,7 +59,8 @@ bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions 
         error = "--watch: empty address in '" + list + "'";
         return false;
       }
-      std::optional<formats::CliAddress> addr = d.parseAddress(item, error);
+      std::optional<formats::CliAddress> addr =
+          later(item) ? formats::CliAddress{} : formats::parseAddressIn(d.parseAddress, symbols, item, error);
       if (!addr) {
         error = "--watch: " + error;
         return false;
@@ -61,11 +73,19 @@ bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions 
   std::string text;
   if (!a.stimulus.empty()) {
     if (!formats::readFile(a.stimulus, text, error)) return false;
-    std::optional<formats::Stimulus> st =
-        formats::parseStimulus(text, a.stimulus, error, d.parseAssignment);
+    std::optional<formats::Stimulus> st = formats::parseStimulus(text, a.stimulus, error, assign);
     if (!st) return false;
     sim.stimulus = std::move(*st);
   }
+  return true;
+}
+
+// Every user input of `run`, parsed and checked (names among the addresses: parseAddressed).
+bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim, std::string &error) {
+  sim.ticks = a.ticks;
+  sim.periodMs = a.periodMs;
+  if (!parseAddressed(a, d, {}, true, sim, error)) return false;
+  std::string text;
   if (!a.params.empty()) {
     if (!formats::readFile(a.params, text, error)) return false;
     std::optional<std::vector<formats::Assignment>> ps =
@@ -345,7 +365,8 @@ int runRun(const RunArgs &a) {
   int code = kOk;
   ProgramSource src;
   if (!readProgram(a.program, src, code, a.dialect)) return code;
-  // Addresses (--set, --watch, the stimulus) are written in the program's dialect.
+  // Addresses (--set, --watch, the stimulus) are written in the program's dialect; names among
+  // them are read once the program (and so its symbols) is.
   if (!parseInputs(a, *src.dialect, sim, error)) return usageError(error);
   if (src.dit) {
     // A container's parameters are defaults: its P values go first so --params and --set
@@ -357,6 +378,7 @@ int runRun(const RunArgs &a) {
   std::optional<VerifiedProgram> prog = loadProgram(
       src, nvalue, code, a.quiet ? WarningReport::None : WarningReport::Summary, a.dialect);
   if (!prog) return code;
+  if (!parseAddressed(a, *src.dialect, prog->symbols, false, sim, error)) return usageError(error);
   sim.profile = prog->profile;
 
   engines::EngineOptions eo;

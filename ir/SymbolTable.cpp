@@ -1,9 +1,7 @@
-// Symbol names and their addresses: name syntax, address validation and case-insensitive lookup
-// (docs/plc-dit.md "Symbols").
-#include "frontends/hnc8/Symbols.h"
-#include "profiles/hnc8/Hnc8Profile.h"
+// Symbol names and their addresses: name syntax, the dialect's address check and
+// case-insensitive lookup (docs/plc-dit.md "Symbols").
+#include "ir/SymbolTable.h"
 
-#include "ir/Area.h"
 #include "ir/Diagnostics.h"
 
 namespace lj {
@@ -34,60 +32,6 @@ bool SymbolTable::isNameShaped(std::string_view t) {
   return !(isAsciiLetter(t[0]) && allDigitsAfterFirst);
 }
 
-std::string SymbolTable::canonicalAddress(std::string_view t, std::string &error) {
-  std::optional<Area> area = t.empty() ? std::nullopt : hnc8::profile().areaFromLetter(t[0]);
-  if (!area) {
-    error = "bad address " + quote(t) +
-            ": expected an area letter (X Y F G R W D B P T C L S), "
-            "a number and an optional .bit";
-    return {};
-  }
-  // Digits saturate far above any index so huge numbers are "out of range", not wrapped.
-  auto number = [&](size_t &pos, int64_t &v) {
-    size_t start = pos;
-    v = 0;
-    while (pos < t.size() && isDigit(t[pos])) {
-      v = v * 10 + (t[pos] - '0');
-      if (v > (int64_t{1} << 40)) v = int64_t{1} << 40;
-      ++pos;
-    }
-    return pos > start;
-  };
-  size_t pos = 1;
-  int64_t index = 0, bit = -1;
-  bool ok = number(pos, index);
-  if (ok && pos < t.size() && t[pos] == '.') {
-    ++pos;
-    ok = number(pos, bit);
-  }
-  if (!ok || pos != t.size()) {
-    error = "bad address " + quote(t) + ": expected an area letter, a number and an optional .bit";
-    return {};
-  }
-  const std::string letter = hnc8::profile().area(*area).name;
-  if (!hnc8::profile().validIndex(*area, index)) {
-    error = "address " + quote(t) + " out of range for area " + letter;
-    return {};
-  }
-  if (bit >= 0 && bit >= hnc8::profile().bitWidth(*area)) {
-    error = "bit number out of range in address " + quote(t);
-    return {};
-  }
-  std::string out(letter);
-  out += std::to_string(index);
-  if (bit >= 0) {
-    out += '.';
-    out += std::to_string(bit);
-  }
-  return out;
-}
-
-const SymbolRules &SymbolTable::hnc8Rules() {
-  static constexpr SymbolRules kRules{kMaxSymbols, kMaxNameBytes, kMaxCommentBytes, "HNC-8 limit",
-                                      &SymbolTable::canonicalAddress};
-  return kRules;
-}
-
 std::string SymbolTable::key(std::string_view name) {
   std::string k(name);
   for (char &c : k)
@@ -100,6 +44,10 @@ bool SymbolTable::add(std::string_view name, std::string_view address, std::stri
   Field scratch;
   Field &field = failed ? *failed : scratch;
   field = Field::Name;
+  if (!rules_) {
+    error = "symbol " + quote(name) + ": the table has no dialect rules";
+    return false;
+  }
   if (name.size() > rules_->maxNameBytes) {
     error = "symbol name " + quote(name) + " is longer than " +
             std::to_string(rules_->maxNameBytes) + " bytes";

@@ -1,7 +1,8 @@
 // Symbol table of a program: names that stand for addresses in operands (docs/plc-dit.md
-// "Symbols"). Built by the plc.dit reader or a symbols file and read by the HNC-8 parser; the
-// FANUC front end builds one with its own rules (SymbolRules) from a mnemonic file's %@2-E
-// section (docs/fanuc-pmc.md "Symbols and comments").
+// "Symbols"). Dialect-neutral: each dialect gives its limits and address syntax as SymbolRules
+// (HNC-8: frontends/hnc8/Address.h, filled by the plc.dit reader or a symbols file; FANUC:
+// frontends/fanuc/FrontEnd.h, filled from a mnemonic file's %@2-E section, docs/fanuc-pmc.md
+// "Symbols and comments").
 #pragma once
 
 #include <cstddef>
@@ -34,18 +35,9 @@ struct SymbolRules {
 /// An ordered set of symbols with case-insensitive (ASCII) unique names.
 class SymbolTable {
 public:
-  /// HNC-8 specification: "symbol names 1000 entries".
-  static constexpr size_t kMaxSymbols = 1000;
-  /// Longest HNC-8 name in bytes (a UTF-8 CJK character takes 3).
-  static constexpr size_t kMaxNameBytes = 64;
-  /// Longest HNC-8 comment in bytes.
-  static constexpr size_t kMaxCommentBytes = 256;
-
-  /// The HNC-8 rules (the limits above, canonicalAddress below).
-  static const SymbolRules &hnc8Rules();
-
-  /// A table with the HNC-8 rules.
-  SymbolTable() : rules_(&hnc8Rules()) {}
+  /// A table without rules yet: it holds no symbols and add() refuses until a table with a
+  /// dialect's rules is assigned to it.
+  SymbolTable() = default;
   /// A table with a dialect's rules (`rules` must outlive the table).
   explicit SymbolTable(const SymbolRules &rules) : rules_(&rules) {}
 
@@ -70,16 +62,12 @@ public:
   /// an address such as `X10` or `L3`). Length is not checked here.
   static bool isNameShaped(std::string_view token);
 
-  /// Canonical text of an HNC-8 operand address (`x010.3` -> `X10.3`), or empty with `error` set
-  /// when `text` is not a valid address (area letter, index range, bit number).
-  static std::string canonicalAddress(std::string_view text, std::string &error);
-
   /// The name as a message may show it: printable ASCII kept, other bytes as `\xNN`.
   static std::string quote(std::string_view text);
 
 private:
   static std::string key(std::string_view name);
-  const SymbolRules *rules_;
+  const SymbolRules *rules_ = nullptr;
   std::vector<Symbol> list_;
   std::unordered_map<std::string, size_t> index_; ///< folded name -> position in list_
 };
