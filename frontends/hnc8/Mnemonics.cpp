@@ -221,8 +221,14 @@ bool lookupMnemonic(std::string_view m, Op &out) {
   return true;
 }
 
+namespace detail { // NetworkText.cpp
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+} // namespace detail
+
 const DialectText &dialectText() {
-  static constexpr DialectText kText{"hnc8", &spellingOf, &formatOperand};
+  static constexpr DialectText kText{
+      "hnc8",  &spellingOf,     &formatOperand, nullptr, nullptr, &lookupMnemonic,
+      &detail::printStatements};
   return kText;
 }
 
