@@ -121,6 +121,9 @@ inline constexpr const char *kFanWords[3] = {"MPS", "MRD", "MPP"};
 /// Counts for reports: ladder / stl / marker rungs.
 struct RungCounts {
   int64_t ladder = 0, stl = 0, marker = 0;
+  /// fuzz --round-trip of FANUC / IEC: programs printed back in the dialect, and those with a
+  /// statement the dialect prints no text for (a front end's own expansion, e.g. a FANUC MPS).
+  int64_t printed = 0, unprinted = 0;
 };
 RungCounts countRungs(const Networks &nets);
 
