@@ -215,6 +215,9 @@ uint64_t run(const FuzzOptions &opts, std::ostream &out) {
     FuzzStats st = runWith(opts, out, roundTripFactory(counts));
     out << "round trip rungs: ladder " << counts->ladder << ", stl " << counts->stl << ", marker "
         << counts->marker << "\n";
+    if (counts->printed + counts->unprinted > 0)
+      out << "round trip printed in the dialect: " << counts->printed << " programs, "
+          << counts->unprinted << " with a statement that has no text form of its own\n";
     return st.failures();
   }
   if (opts.switches)

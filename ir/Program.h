@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace lj {
@@ -64,6 +65,19 @@ struct Comment {
   std::string text;
 };
 
+/// One statement of a network as text, for DialectText::printStmts: the operation (which fixes
+/// the stack behaviour), the word it is written with (`instr`, empty: the dialect's spelling of
+/// `op`), its operands as written (a symbol's name where one was used) and its comments.
+struct StmtText {
+  Op op = Op::LoadTrue;
+  std::string instr;
+  std::vector<std::string> operands;
+  uint32_t implied = 0; ///< bit k: operand k is implied, not written (DialectText::implied)
+  std::vector<std::string> before; ///< comment lines before it
+  std::string comment;             ///< trailing comment
+  bool hasComment = false;
+};
+
 /// How the core words an operation or an operand in a message: in the dialect the program was
 /// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
 struct DialectText {
@@ -76,6 +90,22 @@ struct DialectText {
   /// source (a fixed time unit the dialect's instruction has no parameter for): drawings leave
   /// it out. nullptr: every operand is written.
   bool (*implied)(Op op, int k) = nullptr;
+  /// The instruction of statement `s` as this dialect's user writes it, where the operation
+  /// alone does not say (FANUC `MOVW` for a two-byte Move, `EQB`, IL `LD 1`): what drawings and
+  /// the network JSON name it by (docs/ladder-json.md). nullptr: spelling(this, s.op).
+  std::string (*spellStmt)(const Stmt &s) = nullptr;
+  /// The operation a word of this dialect names (what spell() or spellStmt() gave: `RD`,
+  /// `EQB`, `LD`), false when it names none. How the network JSON's "instr" is read back.
+  bool (*lookup)(std::string_view word, Op &op) = nullptr;
+  /// Statements as program text of this dialect (networks -> text, the inverse of the front
+  /// end; docs/ladder-json.md "Other dialects"), appended to `out` line by line with their
+  /// comments in the dialect's syntax. False with `error` ("statement K: ...") for one that has
+  /// no text form. nullptr: the dialect prints no text.
+  bool (*printStmts)(std::span<const StmtText> stmts, std::string &out,
+                     std::string &error) = nullptr;
+  /// What this dialect's symbol table accepts (ir/SymbolTable.h): how a ladder JSON's symbols
+  /// are read back. nullptr: the dialect has no symbol table.
+  const SymbolRules &(*symbolRules)() = nullptr;
 };
 
 /// Whether dialect `d` spells `op`.

@@ -1,10 +1,8 @@
 // STL -> networks (ladder-view-research.md 1.7): a symbolic ST/MS walk over each rung of a
 // verified program, with network nodes instead of bits. A rung becomes a Ladder rung only when
 // its network turns back into exactly its statements; otherwise it stays an Stl rung.
-#include "frontends/hnc8/Mnemonics.h"
 #include "ladder/Network.h"
 
-#include "frontends/hnc8/FrontEnd.h"
 #include "ir/Profile.h"
 
 #include <algorithm>
@@ -313,23 +311,29 @@ private:
   Node zeroNode_;
 };
 
+/// An operand without a dialect to write it (a program no front end made): the profile's area
+/// name and index.
+std::string neutralOperand(const VerifiedProgram &p, const Operand &o) {
+  if (o.kind == Operand::Kind::Const) return std::to_string(o.value);
+  if (o.kind == Operand::Kind::None || !p.profile) return "";
+  std::string t = std::string(p.profile->area(o.area).name) + std::to_string(o.index);
+  return o.kind == Operand::Kind::Bit ? t + "." + std::to_string(o.bit) : t;
+}
+
 Element elementOf(const VerifiedProgram &p, int32_t i) {
   const Stmt &s = p.stmts[static_cast<size_t>(i)];
   Element e;
   e.id = s.id;
   e.loc = s.loc;
   e.op = s.op;
-  if (p.dialect && std::string(p.dialect->name) != "hnc8") e.drawn = drawnMnemonic(p, s);
-  if (p.dialect && std::string(p.dialect->name) == "iec" &&
-      (s.op == Op::Label || s.op == Op::SubBegin) && s.operandCount == 1) {
-    e.drawn = p.dialect->formatOperand(s.ops[0]) + ":"; // IL writes `%L64:` and `SR0:`
-    e.drawnWhole = true;
-  }
+  e.drawn = drawnMnemonic(p, s);
+  // A label written whole, with its operand (IL `%L64:`, `SR0:`; DialectText::spellStmt).
+  e.drawnWhole = s.operandCount == 1 && e.drawn.size() > 1 && e.drawn.back() == ':';
   for (int k = 0; k < s.operandCount; ++k) {
     const Operand &o = s.ops[static_cast<size_t>(k)];
     if (p.dialect && p.dialect->implied && p.dialect->implied(s.op, k)) e.implied |= 1u << k;
     // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).
-    e.operands.push_back(p.dialect ? p.dialect->formatOperand(o) : formatOperand(o));
+    e.operands.push_back(p.dialect ? p.dialect->formatOperand(o) : neutralOperand(p, o));
     e.symbols.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < p.symbols.size()
                             ? p.symbols[static_cast<size_t>(o.symbol)].name
                             : std::string());
@@ -361,12 +365,11 @@ std::string partOf(const VerifiedProgram &p, int32_t i) {
 
 } // namespace
 
-const char *mnemonic(Op op) { return hnc8::mnemonicOf(op); }
-
 Networks fromProgram(const VerifiedProgram &prog) {
   Networks nets;
   nets.file = prog.file;
-  if (prog.dialect) nets.dialect = prog.dialect->name; // the JSON reader accepts only hnc8 back
+  if (prog.dialect) nets.dialect = prog.dialect->name;
+  nets.text = prog.dialect;
   nets.symbols = prog.symbols;
   auto n = static_cast<int32_t>(prog.stmts.size());
   std::vector<Element> elems;
@@ -408,7 +411,7 @@ Networks fromProgram(const VerifiedProgram &prog) {
       Node net;
       std::vector<Element> back;
       std::string err;
-      if (Builder(prog).build(r, mine, net) && rungStatements(net, back, err) &&
+      if (Builder(prog).build(r, mine, net) && rungStatements(net, back, err, prog.dialect) &&
           sameStatements(back, mine)) {
         rung.kind = Rung::Kind::Ladder;
         rung.network = std::move(net);

@@ -1,9 +1,8 @@
 // Writing and reading the ladder network JSON (docs/ladder-json.md), and the JSON PROGRAM
 // paths: HNC-8 JSON -> networks -> statements -> STL text for the HNC-8 parser; another
-// dialect's JSON -> the program text it carries, checked against its networks.
+// dialect's JSON -> program text of that dialect (ToText.cpp). Instructions are named in the
+// dialect's words (DialectText::spellStmt / lookup), never through a front end directly.
 #include "ladder/Json.h"
-#include "frontends/hnc8/Address.h"
-#include "frontends/hnc8/Mnemonics.h"
 
 #include <nlohmann/json.hpp>
 
@@ -19,9 +18,18 @@ using json = nlohmann::ordered_json; // members in the order written: "type" fir
 const char *const kContact[] = {"no", "nc", "rise", "fall", "true"};
 const char *const kEntry[] = {"auto", "direct", "mps", "mrd", "mpp"};
 
-json elemJson(const Element &e, bool withInstr) {
+/// The word the JSON names an element's instruction by: the dialect's (the user's) when that
+/// word names the same operation back, else the operation's neutral name.
+std::string instrWord(const Element &e, const DialectText *d) {
+  std::string w = e.drawnWhole || e.drawn.empty() ? spelling(d, e.op) : e.drawn;
+  Op back = Op::LoadTrue;
+  if (d && d->lookup && d->lookup(w, back) && back == e.op) return w;
+  return instrInfo(e.op).name;
+}
+
+json elemJson(const Element &e, bool withInstr, const DialectText *d) {
   json j;
-  if (withInstr) j["instr"] = mnemonic(e.op);
+  if (withInstr) j["instr"] = instrWord(e, d);
   j["id"] = e.id;
   j["line"] = e.loc.line;
   j["col"] = e.loc.col;
@@ -37,11 +45,11 @@ json elemJson(const Element &e, bool withInstr) {
   return j;
 }
 
-json nodeJson(const Node &n) {
+json nodeJson(const Node &n, const DialectText *d) {
   json j;
   auto withElem = [&](const char *type, const Element &e, bool instr) {
     j["type"] = type;
-    json fields = elemJson(e, instr); // named: items() of a temporary would dangle
+    json fields = elemJson(e, instr, d); // named: items() of a temporary would dangle
     for (auto &[k, v] : fields.items()) j[k] = v;
   };
   switch (n.kind) {
@@ -49,7 +57,7 @@ json nodeJson(const Node &n) {
   case NodeKind::Parallel: {
     j["type"] = n.kind == NodeKind::Series ? "series" : "parallel";
     json c = json::array();
-    for (const Node &k : n.children) c.push_back(nodeJson(k));
+    for (const Node &k : n.children) c.push_back(nodeJson(k, d));
     j["children"] = c;
     break;
   }
@@ -57,7 +65,7 @@ json nodeJson(const Node &n) {
     j["type"] = "fanout";
     json c = json::array();
     for (const Node &k : n.children) {
-      json b = nodeJson(k);
+      json b = nodeJson(k, d);
       c.push_back(b);
     }
     j["branches"] = c;
@@ -67,7 +75,7 @@ json nodeJson(const Node &n) {
     j["type"] = "contact";
     j["contact"] = kContact[static_cast<int>(n.contact)];
     {
-      json fields = elemJson(n.elem, false);
+      json fields = elemJson(n.elem, false, d);
       for (auto &[k, v] : fields.items()) j[k] = v;
     }
     break;
@@ -79,14 +87,14 @@ json nodeJson(const Node &n) {
     if (n.rail) j["rail"] = true;
     if (!n.children.empty()) {
       json c = json::array();
-      for (const Node &k : n.children) c.push_back(nodeJson(k));
+      for (const Node &k : n.children) c.push_back(nodeJson(k, d));
       j["inputs"] = c;
     }
     break;
   }
   }
   if (n.link.id >= 0 || n.link.loc.line > 0 || n.link.hasComment || !n.link.before.empty()) {
-    json l = elemJson(n.link, false);
+    json l = elemJson(n.link, false, d);
     l.erase("operands");
     j["link"] = l;
   }
@@ -113,7 +121,7 @@ bool neutralName(std::string_view m, Op &out) {
 /// Reader with the JSON path of the value being read, for messages.
 class Reader {
 public:
-  explicit Reader(std::string &error) : error_(error) {}
+  Reader(std::string &error, const DialectText *d) : error_(error), d_(d) {}
 
   bool fail(const std::string &path, const std::string &msg) {
     if (error_.empty()) error_ = (path.empty() ? std::string("top level") : path) + ": " + msg;
@@ -171,7 +179,9 @@ public:
     if (needInstr) {
       std::string m;
       if (!str(j, "instr", path, m)) return false;
-      if (!hnc8::lookupMnemonic(m, e.op) && !neutralName(m, e.op))
+      if (d_ && d_->lookup && d_->lookup(m, e.op))
+        e.drawn = m; // as the user's dialect names it (FANUC EQB: the width is in the word)
+      else if (!neutralName(m, e.op))
         return fail(path + ".instr", "unknown instruction " + quoteToken(m, 40));
     }
     if (!integer(j, "id", path, e.id) || !integer(j, "line", path, e.loc.line) ||
@@ -193,6 +203,10 @@ public:
         e.operands.push_back(text);
         e.symbols.push_back(sym);
       }
+    }
+    if (e.drawn.size() > 1 && e.drawn.back() == ':' && e.operands.size() == 1) {
+      e.drawn = e.operands[0] + ":"; // a label written whole (IL `%L64:`)
+      e.drawnWhole = true;
     }
     if (j.contains("comment")) {
       e.hasComment = true;
@@ -265,7 +279,7 @@ public:
                        n.elem.op != Op::LoadRise && n.elem.op != Op::LoadFall &&
                        n.elem.op != Op::LoadTrue;
       if (has != want && !statusBox)
-        return fail(path + ".instr", std::string(mnemonic(n.elem.op)) + " is not a " + type);
+        return fail(path + ".instr", std::string(spelling(d_, n.elem.op)) + " is not a " + type);
       return kids("inputs", false);
     }
     return fail(path + ".type", "unknown node type " + quoteToken(type, 40));
@@ -319,6 +333,7 @@ public:
 
 private:
   std::string &error_;
+  const DialectText *d_;
   std::set<StmtId> ids_;
 };
 
@@ -342,10 +357,10 @@ std::string writeJson(const Networks &nets, std::string_view source) {
       const Rung &r = p.rungs[i];
       json jr{{"number", i + 1}, {"kind", kindName(r.kind)}, {"comment", r.comment}};
       if (r.kind == Rung::Kind::Ladder) {
-        jr["network"] = nodeJson(r.network);
+        jr["network"] = nodeJson(r.network, nets.text);
       } else {
         json st = json::array();
-        for (const Element &e : r.stmts) st.push_back(elemJson(e, true));
+        for (const Element &e : r.stmts) st.push_back(elemJson(e, true, nets.text));
         jr["stmts"] = st;
       }
       rungs.push_back(jr);
@@ -357,14 +372,14 @@ std::string writeJson(const Networks &nets, std::string_view source) {
   return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-bool readJson(std::string_view text, Networks &out, std::string &error) {
+bool readJson(std::string_view text, Networks &out, std::string &error, const DialectText &d) {
   error.clear();
   json j = json::parse(text.begin(), text.end(), nullptr, false);
   if (j.is_discarded()) {
     error = "not valid JSON";
     return false;
   }
-  Reader rd(error);
+  Reader rd(error, &d);
   if (!j.is_object()) return rd.fail("", "expected an object");
   std::string format, dialect;
   if (!rd.str(j, "format", "", format) || !rd.str(j, "dialect", "", dialect)) return false;
@@ -374,8 +389,11 @@ bool readJson(std::string_view text, Networks &out, std::string &error) {
       j["version"].get<int64_t>() != kJsonVersion)
     return rd.fail("version", "this ladderjit reads version " + std::to_string(kJsonVersion));
   if (dialect.empty()) return rd.fail("dialect", "empty");
+  if (dialect != d.name)
+    return rd.fail("dialect", quoteToken(dialect, 40) + " networks read as '" + d.name + "'");
   out = Networks{};
   out.dialect = dialect;
+  out.text = &d;
   if (!rd.str(j, "file", "", out.file, false)) return false;
   if (j.contains("source") && !j["source"].is_string())
     return rd.fail("source", "expected a string (the program text)");
@@ -416,7 +434,7 @@ bool readJson(std::string_view text, Networks &out, std::string &error) {
 }
 
 std::string stlText(const std::vector<Element> &stmts, const std::vector<std::string> *where,
-                    std::vector<LineOrigin> *origins) {
+                    std::vector<LineOrigin> *origins, const DialectText *d) {
   std::string out;
   auto line = [&](const std::string &text, const LineOrigin &o) {
     out += text;
@@ -426,7 +444,7 @@ std::string stlText(const std::vector<Element> &stmts, const std::vector<std::st
   for (size_t i = 0; i < stmts.size(); ++i) {
     const Element &e = stmts[i];
     for (const std::string &c : e.before) line("; " + c, {});
-    std::string t = mnemonic(e.op);
+    std::string t = spelling(d, e.op);
     for (size_t k = 0; k < e.operands.size(); ++k)
       t += " " + (k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k] : e.operands[k]);
     if (e.hasComment) t += " ; " + e.comment;
@@ -435,16 +453,15 @@ std::string stlText(const std::vector<Element> &stmts, const std::vector<std::st
   return out;
 }
 
-bool stlFromJson(std::string_view text, StlFromJson &out, std::string &error) {
+bool stlFromJson(std::string_view text, StlFromJson &out, std::string &error,
+                 const DialectText &d) {
   Networks nets;
-  if (!readJson(text, nets, error)) return false;
-  if (nets.dialect != "hnc8") {
-    error = "dialect: " + quoteToken(nets.dialect, 40) +
-            " networks are read back through the program text they carry (\"source\"), not as "
-            "HNC-8 STL";
+  if (!readJson(text, nets, error, d)) return false;
+  if (!nets.symbols.empty() && !d.symbolRules) {
+    error = "symbols: " + std::string(d.name) + " programs have no symbol table";
     return false;
   }
-  out.symbols = SymbolTable(hnc8::symbolRules());
+  if (d.symbolRules) out.symbols = SymbolTable(d.symbolRules());
   for (size_t i = 0; i < nets.symbols.size(); ++i) {
     const Symbol &s = nets.symbols[i];
     std::string err;
@@ -456,7 +473,7 @@ bool stlFromJson(std::string_view text, StlFromJson &out, std::string &error) {
   std::vector<Element> stmts;
   std::vector<std::string> where;
   if (!toStatements(nets, stmts, error, &where)) return false;
-  out.text = stlText(stmts, &where, &out.lines);
+  out.text = stlText(stmts, &where, &out.lines, &d);
   for (const std::string &c : nets.trailingComments) {
     out.text += "; " + c + "\n";
     out.lines.push_back({});
@@ -489,7 +506,8 @@ std::string renderDiagnostics(const Diagnostics &diags, const StlFromJson &src) 
   return out.render();
 }
 
-bool sameStatementsAs(const Networks &given, const Networks &made, std::string &error) {
+bool sameStatementsAs(const Networks &given, const Networks &made, std::string &error,
+                      bool compareIds) {
   std::vector<Element> a, b;
   std::vector<std::string> where;
   if (!toStatements(given, a, error, &where) || !toStatements(made, b, error)) return false;
@@ -501,11 +519,11 @@ bool sameStatementsAs(const Networks &given, const Networks &made, std::string &
                       : e.operands[k]);
     return t;
   };
-  auto show = [&](const Element &e) { return mnemonic(e.op) + operandsOf(e); };
+  auto show = [&](const Element &e) { return spelling(given.text, e.op) + operandsOf(e); };
   const size_t n = std::min(a.size(), b.size());
   for (size_t i = 0; i < n; ++i) {
     if (a[i].op == b[i].op && a[i].operands == b[i].operands && a[i].symbols == b[i].symbols &&
-        a[i].id == b[i].id)
+        (a[i].id == b[i].id || !compareIds))
       continue;
     error = where[i] + " (id " + std::to_string(a[i].id) + "): the networks say '" + show(a[i]) +
             "', the program text they carry says '" + show(b[i]) + "' (id " +

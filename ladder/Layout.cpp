@@ -161,7 +161,7 @@ private:
       if (k.join == Join::Block && k.link.id >= 0) { // the ANB that joined this block
         Cell j;
         j.kind = "join";
-        j.text = mnemonic(Op::AndBlock);
+        j.text = kBlockJoinWord;
         j.row = row;
         j.col = c;
         j.width = 0;
@@ -189,7 +189,7 @@ private:
     if (!p.children.empty() && p.children[0].link.id >= 0) { // the MPS at the junction
       Cell c;
       c.kind = "join";
-      c.text = mnemonic(Op::BranchPush);
+      c.text = kFanWords[0];
       c.row = row;
       c.col = col;
       c.width = 0;

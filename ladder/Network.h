@@ -22,8 +22,8 @@ struct Element {
   std::vector<std::string> before;   ///< comment lines just before it (not the rung comment)
   std::string comment;               ///< trailing comment on its line
   bool hasComment = false;
-  /// The instruction as the drawing shows it, in the program's dialect (Spelling.cpp); empty:
-  /// mnemonic(op). Drawings and the text form use it; the JSON form stays in HNC-8 STL.
+  /// The instruction as the user's dialect writes it (DialectText::spellStmt: FANUC `EQB`, IL
+  /// `LD 1`); empty: the operation's neutral name. Drawings, the text form and the JSON use it.
   std::string drawn;
   bool drawnWhole = false; ///< `drawn` includes the operands (an IL label `%L64:`)
   /// Bit k: operand k is implied by the front end, not in the source (DialectText::implied);
@@ -82,8 +82,11 @@ struct Networks {
   std::vector<Part> parts;
   std::vector<Symbol> symbols;
   std::vector<std::string> trailingComments; ///< comment lines after the last statement
-  /// The JSON's "source": the program text a non-HNC-8 JSON is read back through (empty: none).
+  /// The JSON's "source": the program text a non-HNC-8 JSON was made from (empty: none).
   std::string source;
+  /// The dialect's words and text (the front end's DialectText); never null for networks made
+  /// by fromProgram or readJson.
+  const DialectText *text = nullptr;
 };
 
 /// Networks of a verified program: every logic rung that has a network whose canonical STL
@@ -97,22 +100,30 @@ Networks fromProgram(const VerifiedProgram &prog);
 bool toStatements(const Networks &nets, std::vector<Element> &out, std::string &error,
                   std::vector<std::string> *where = nullptr);
 
-/// Statements of one ladder rung (see toStatements); false with `error` (element path).
-bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error);
+/// Statements of one ladder rung (see toStatements); false with `error` (element path, the
+/// instructions named in `d`'s words).
+bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error,
+                    const DialectText *d = nullptr);
 
-/// The mnemonic of `op` (table row).
-const char *mnemonic(Op op);
-inline const char *hnc8Mnemonic(Op op) { return mnemonic(op); }
-/// `s` as the ladder view draws it in `p`'s dialect (docs/ladder-view.md "Dialects").
+/// `s` as the ladder view draws it in `p`'s dialect (docs/ladder-view.md "Dialects"): the front
+/// end's DialectText::spellStmt, else its spelling of the operation.
 std::string drawnMnemonic(const VerifiedProgram &p, const Stmt &s);
-/// An element's drawn instruction: `drawn`, else its HNC-8 mnemonic.
+/// An element's drawn instruction: `drawn`, else its operation's neutral name.
 inline std::string drawnText(const Element &e) {
-  return e.drawn.empty() ? mnemonic(e.op) : e.drawn;
+  return e.drawn.empty() ? instrInfo(e.op).name : e.drawn;
 }
+
+/// The words a drawing gives the joins of a network (not statements of any one dialect): the
+/// block join of a sub-network and the push / read / pop of a fan-out's junction.
+inline constexpr const char *kBlockJoinWord = "ANB";
+inline constexpr const char *kFanWords[3] = {"MPS", "MRD", "MPP"};
 
 /// Counts for reports: ladder / stl / marker rungs.
 struct RungCounts {
   int64_t ladder = 0, stl = 0, marker = 0;
+  /// fuzz --round-trip of FANUC / IEC: programs printed back in the dialect, and those with a
+  /// statement the dialect prints no text for (a front end's own expansion, e.g. a FANUC MPS).
+  int64_t printed = 0, unprinted = 0;
 };
 RungCounts countRungs(const Networks &nets);
 

@@ -2,8 +2,6 @@
 // network as an indented series/parallel drawing (docs/ladder-json.md "Text form").
 #include "ladder/Text.h"
 
-#include "frontends/hnc8/Mnemonics.h"
-
 #include <vector>
 
 namespace lj::ladder {
@@ -112,10 +110,9 @@ Lines render(const Node &n) {
     out.push_back("fan-out");
     for (const Node &b : n.children) {
       // The branch entries are drawn with the dialect's spelling of the push/read/pop.
-      const std::string kEntry[] = {"", "",
-                                    std::string("(") + hnc8::mnemonicOf(Op::BranchPush) + ") ",
-                                    std::string("(") + hnc8::mnemonicOf(Op::BranchRead) + ") ",
-                                    std::string("(") + hnc8::mnemonicOf(Op::BranchPop) + ") "};
+      const std::string kEntry[] = {"", "", std::string("(") + kFanWords[0] + ") ",
+                                    std::string("(") + kFanWords[1] + ") ",
+                                    std::string("(") + kFanWords[2] + ") "};
       Lines br = render(b);
       if (br.empty()) br.push_back("(empty)");
       br[0] = kEntry[static_cast<int>(b.entry)] + br[0];

@@ -2,7 +2,6 @@
 // LD/AND/OR form of its place; a sub-network joined in series or parallel is its own LD chain
 // then ANB/ORB; a fan-out is entered directly (outputs, then the continuation) or through
 // MPS/MRD/MPP. Join and entry hints, when present, choose between equivalent forms.
-#include "frontends/hnc8/Mnemonics.h"
 #include "ladder/Network.h"
 
 namespace lj::ladder {
@@ -33,7 +32,8 @@ bool isBlockBox(const Node &n) {
 
 class Emitter {
 public:
-  Emitter(std::vector<Element> &out, std::string &error) : out_(out), error_(error) {}
+  Emitter(std::vector<Element> &out, std::string &error, const DialectText *d)
+      : out_(out), error_(error), d_(d) {}
 
   bool series(const Node &s, bool start, const std::string &path) {
     if (s.kind != NodeKind::Series) return fail(path, "expected a series");
@@ -56,6 +56,7 @@ private:
 
   void emit(const Element &e, Op op) {
     out_.push_back(e);
+    if (op != e.op) out_.back().drawn.clear(); // the word of another form (RD for an AND place)
     out_.back().op = op;
   }
 
@@ -108,20 +109,19 @@ private:
   bool box(const Node &n, Pos pos, const std::string &path) {
     const InstrInfo &ii = instrInfo(n.elem.op);
     if (ii.stack != StackRule::Block && !(ii.stack == StackRule::Push && n.rail))
-      return fail(path, std::string(hnc8::mnemonicOf(ii.op)) + " is no box");
+      return fail(path, std::string(spelling(d_, ii.op)) + " is no box");
     if (!n.children.empty()) {
       if (n.children.size() != ii.inputs)
-        return fail(path, std::string(hnc8::mnemonicOf(ii.op)) + " takes " +
-                              std::to_string(ii.inputs) + " inputs, the box has " +
-                              std::to_string(n.children.size()));
+        return fail(path, std::string(spelling(d_, ii.op)) + " takes " + std::to_string(ii.inputs) +
+                              " inputs, the box has " + std::to_string(n.children.size()));
       for (size_t i = 0; i < n.children.size(); ++i)
         if (!child(n.children[i], Pos::Start, path + "/in" + std::to_string(i))) return false;
     } else if (n.rail) {
       if (ii.inputs > 1)
-        return fail(path, std::string(hnc8::mnemonicOf(ii.op)) + " needs its " +
+        return fail(path, std::string(spelling(d_, ii.op)) + " needs its " +
                               std::to_string(ii.inputs) + " inputs");
     } else if (pos == Pos::Start || ii.inputs > 1) {
-      return fail(path, std::string(hnc8::mnemonicOf(ii.op)) + " needs its input network");
+      return fail(path, std::string(spelling(d_, ii.op)) + " needs its input network");
     }
     if (pos == Pos::Parallel && !isBlockBox(n))
       return fail(path, "a box in parallel needs its own inputs");
@@ -170,6 +170,7 @@ private:
 
   std::vector<Element> &out_;
   std::string &error_;
+  const DialectText *d_;
   std::vector<int> ms_;
 
 public:
@@ -178,8 +179,9 @@ public:
 
 } // namespace
 
-bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error) {
-  Emitter em(out, error);
+bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error,
+                    const DialectText *d) {
+  Emitter em(out, error, d);
   if (!em.series(network, true, "")) return false;
   if (!em.balanced()) {
     error = "network: a branch push has no branch pop after it";
@@ -197,7 +199,7 @@ bool toStatements(const Networks &nets, std::vector<Element> &out, std::string &
       size_t first = out.size();
       if (rung.kind == Rung::Kind::Ladder) {
         std::string err;
-        if (!rungStatements(rung.network, out, err)) {
+        if (!rungStatements(rung.network, out, err, nets.text)) {
           error = part.name + " rung " + std::to_string(r + 1) + ": " + err;
           return false;
         }

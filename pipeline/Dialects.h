@@ -32,6 +32,9 @@ struct Dialect {
   std::optional<CliAddress> (*parseAddress)(std::string_view text, std::string &error);
   std::optional<Assignment> (*parseAssignment)(std::string_view item, std::string &error);
   std::string (*formatAddress)(const CliAddress &addr);
+  /// The front end's words and text (spelling, operand text, networks -> program text): what
+  /// the ladder stage reads and writes the network JSON with.
+  const DialectText &(*text)();
 };
 
 /// Every dialect of this build ("hnc8" first, the default).

@@ -52,24 +52,39 @@ bool readProgramFile(const std::string &path, ProgramSource &src, std::string &e
       return false;
     }
     src.dialect = named;
-    if (named != &defaultDialect()) { // read back through the program text it carries
+    if (named != &defaultDialect()) { // networks -> program text of the dialect
       auto nets = std::make_shared<ladder::Networks>();
-      if (!ladder::readJson(text, *nets, error)) {
+      if (!ladder::readJson(text, *nets, error, named->text())) {
         error = path + ": " + error;
         return false;
       }
       if (nets->source.empty()) {
         error = path + ": a " + std::string(named->name) +
-                " ladder JSON is read back through the program text it carries (\"source\", "
-                "written by `ladderjit ladder --format json`); this one has none";
+                " ladder JSON keeps its untouched rungs from the program text it carries "
+                "(\"source\", written by `ladderjit ladder --format json`); this one has none";
         return false;
       }
-      src.text = nets->source;
+      // The rungs the networks leave unchanged come from that text byte for byte, the edited
+      // ones are printed by the dialect (ladder::programText); the front end and the verifier
+      // then check the result as any program file of the dialect.
+      Diagnostics diags(path);
+      std::optional<VerifiedProgram> made =
+          named->compile(nets->source, path, VerifyOptions{}, diags, nullptr);
+      if (!made || diags.hasErrors()) {
+        error = path + ": the program text the JSON carries (\"source\") does not verify:\n" +
+                capLines(diags.render(), kMaxDiagnosticLines, path);
+        return false;
+      }
+      if (!ladder::programText(*nets, *made, nets->source, src.text, error)) {
+        error = path + ": " + error;
+        return false;
+      }
+      src.edited = src.text != nets->source;
       src.carried = std::move(nets);
       return true;
     }
     auto lad = std::make_shared<ladder::StlFromJson>();
-    if (!ladder::stlFromJson(text, *lad, error)) {
+    if (!ladder::stlFromJson(text, *lad, error, named->text())) {
       error = path + ": " + error;
       return false;
     }
@@ -94,6 +109,20 @@ int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiv
 }
 
 namespace {
+
+/// The program text made from edited networks, numbered, for diagnostics that point into it.
+std::string madeText(const ProgramSource &src) {
+  std::string out =
+      "--- the program text made from the networks (" + std::string(src.dialect->name) + ") ---\n";
+  size_t line = 1, pos = 0;
+  while (pos < src.text.size() && line <= kMaxDiagnosticLines) {
+    size_t nl = src.text.find('\n', pos);
+    if (nl == std::string::npos) nl = src.text.size();
+    out += std::to_string(line++) + ": " + src.text.substr(pos, nl - pos) + "\n";
+    pos = nl + 1;
+  }
+  return out;
+}
 
 /// The symbol table of a FANUC/IEC ladder JSON must be the one of the program text it carries
 /// (the text's is the one used): an edit of it alone is refused, never silently ignored.
@@ -151,12 +180,18 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
       capLines(src.ladder ? ladder::renderDiagnostics(diags, *src.ladder) : diags.render(),
                kMaxDiagnosticLines, src.path);
   if (prog && src.ladder) ladder::applyOrigins(*prog, *src.ladder);
+  if (src.edited && diags.hasErrors()) diagnostics += madeText(src);
   std::string edited;
   if (prog && !diags.hasErrors() && src.carried &&
-      (!ladder::sameStatementsAs(*src.carried, ladder::fromProgram(*prog), edited) ||
+      (!ladder::sameStatementsAs(*src.carried, ladder::fromProgram(*prog), edited, !src.edited) ||
        !sameSymbols(src.carried->symbols, prog->symbols, edited))) {
-    diagnostics += src.path + ": error: " + edited + "; the networks of a " + src.dialect->name +
-                   " program are not read back on their own: edit its program text\n";
+    // Unedited: the networks are not those of the text they carry. Edited: the text printed
+    // from them does not read back as them (a statement the dialect prints otherwise).
+    diagnostics += src.path + ": error: " + edited +
+                   (src.edited ? "; the program text made from the networks does not read back "
+                                 "as them: edit its program text\n" +
+                                     madeText(src)
+                               : "; the networks and the program text they carry differ\n");
     return std::nullopt;
   }
   if (prog && !diags.hasErrors()) return prog;

@@ -30,8 +30,12 @@ struct ProgramSource {
   /// is the STL made from it.
   std::shared_ptr<const ladder::StlFromJson> ladder;
   /// A `.json` PROGRAM of another dialect (FANUC, IEC): its networks, which must hold the
-  /// statements of the program text it carries ("source"); `text` is that program text.
+  /// statements of `text`: the program text it carries ("source") with the rungs the networks
+  /// edited printed anew (docs/ladder-json.md "Other dialects").
   std::shared_ptr<const ladder::Networks> carried;
+  /// `carried` networks were edited: `text` is the program text made from them
+  /// (ladder::programText), not the "source" they carry.
+  bool edited = false;
   /// The dialect it is written in (pipeline/Dialects.h): --dialect, else the extension, else
   /// the JSON's "dialect" member, else HNC-8.
   const Dialect *dialect = &defaultDialect();

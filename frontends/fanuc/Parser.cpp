@@ -624,8 +624,21 @@ bool implied(Op op, int k) {
          (op == Op::PmcCounter && k == 2);
 }
 
+namespace detail { // NetworkText.cpp: the dialect text of networks
+std::string spellStatement(const Stmt &s);
+bool lookupWord(std::string_view w, Op &op);
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+} // namespace detail
+
 const DialectText &dialectText() {
-  static constexpr DialectText kText{"fanuc", &spell, &formatOperand, &implied};
+  static constexpr DialectText kText{"fanuc",
+                                     &spell,
+                                     &formatOperand,
+                                     &implied,
+                                     &detail::spellStatement,
+                                     &detail::lookupWord,
+                                     &detail::printStatements,
+                                     &symbolRules};
   return kText;
 }
 

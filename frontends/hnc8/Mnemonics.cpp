@@ -2,6 +2,7 @@
 // hnc8-cnc-interface.md 4): spelling -> semantic Op, aliases as a column (DIALECT.md 2).
 #include "frontends/hnc8/Mnemonics.h"
 
+#include "frontends/hnc8/Address.h"
 #include "frontends/hnc8/FrontEnd.h"
 
 #include <cctype>
@@ -221,8 +222,14 @@ bool lookupMnemonic(std::string_view m, Op &out) {
   return true;
 }
 
+namespace detail { // NetworkText.cpp
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+} // namespace detail
+
 const DialectText &dialectText() {
-  static constexpr DialectText kText{"hnc8", &spellingOf, &formatOperand};
+  static constexpr DialectText kText{
+      "hnc8",  &spellingOf,     &formatOperand, nullptr, nullptr, &lookupMnemonic,
+      &detail::printStatements, &symbolRules};
   return kText;
 }
 

@@ -7,6 +7,12 @@
 
 namespace lj::iec {
 
+namespace detail { // NetworkText.cpp
+std::string spellStatement(const Stmt &s);
+bool lookupWord(std::string_view w, Op &op);
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+} // namespace detail
+
 void Emitter::emit(Op op, SourceLoc loc, std::initializer_list<Operand> operands) {
   Stmt s;
   s.op = op;
@@ -155,7 +161,13 @@ const char *spell(Op op) {
   }
 }
 
-const DialectText kText{"iec", spell, formatOperand};
+const DialectText kText{"iec",
+                        spell,
+                        formatOperand,
+                        nullptr,
+                        detail::spellStatement,
+                        detail::lookupWord,
+                        detail::printStatements};
 
 } // namespace
 

@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     // The JSON written is read back, and holds exactly the program's statements.
     lj::ladder::Networks back;
     std::string error;
-    if (!lj::ladder::readJson(lj::ladder::writeJson(nets, text), back, error) ||
+    if (!lj::ladder::readJson(lj::ladder::writeJson(nets, text), back, error, *prog->dialect) ||
         !lj::ladder::sameStatementsAs(back, nets, error))
       __builtin_trap();
   }

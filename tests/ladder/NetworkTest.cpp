@@ -22,7 +22,7 @@ std::string stlOf(const Networks &n) {
   std::vector<Element> st;
   std::string err;
   EXPECT_TRUE(toStatements(n, st, err)) << err;
-  return stlText(st, nullptr, nullptr);
+  return stlText(st, nullptr, nullptr, &hnc8::dialectText());
 }
 
 TEST(LadderNetwork, RungBoundariesFollowDataflow) {
@@ -59,7 +59,7 @@ TEST(LadderNetwork, DrawableRegeneratesTheSameStatements) {
   EXPECT_EQ(stlOf(n), text); // deep-stack form kept (join hints), so the slicing counts agree
   Networks back;
   std::string err;
-  ASSERT_TRUE(readJson(writeJson(n), back, err)) << err;
+  ASSERT_TRUE(readJson(writeJson(n), back, err, hnc8::dialectText())) << err;
   EXPECT_EQ(stlOf(back), text);
 }
 
@@ -78,7 +78,7 @@ TEST(LadderNetwork, CanonicalStlWithoutHints) {
       ]}]}}]}]})";
   Networks n;
   std::string err;
-  ASSERT_TRUE(readJson(json, n, err)) << err;
+  ASSERT_TRUE(readJson(json, n, err, hnc8::dialectText())) << err;
   EXPECT_EQ(stlOf(n), "LD X0.0\nORI X0.1\nMPS\nANDP X0.2\nOUT Y0.0\nMPP\nSET R1.0\n");
 }
 
@@ -92,7 +92,7 @@ TEST(LadderNetwork, CommentsWithCarriageReturnsStayReadable) {
   EXPECT_EQ(n.parts[0].rungs[0].network.children[0].elem.comment, "a b");
   Networks back;
   std::string err;
-  ASSERT_TRUE(readJson(writeJson(n), back, err)) << err;
+  ASSERT_TRUE(readJson(writeJson(n), back, err, hnc8::dialectText())) << err;
   EXPECT_EQ(stlOf(back), "; one\n; two\nLD X0.0 ; a b\nOUT Y0.0\n");
 }
 
@@ -102,24 +102,21 @@ TEST(LadderNetwork, JsonErrorsNameThePlace) {
       {"type":"wire"}]}}]}]})";
   Networks n;
   std::string err;
-  EXPECT_FALSE(readJson(json, n, err));
+  EXPECT_FALSE(readJson(json, n, err, hnc8::dialectText()));
   EXPECT_EQ(err, "parts[0].rungs[0].network.children[0].type: unknown node type 'wire'");
-  // Another dialect's networks are read, but not turned into HNC-8 STL: they go back through
-  // the program text they carry (docs/ladder-json.md "Other dialects").
+  // Another dialect's networks are not read as HNC-8 ones (their words are that dialect's).
   const char *fanuc = R"({"format":"ladderjit-ladder","version":1,"dialect":"fanuc",
     "source":"RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n","parts":[]})";
-  ASSERT_TRUE(readJson(fanuc, n, err)) << err;
-  EXPECT_EQ(n.source, "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n");
+  EXPECT_FALSE(readJson(fanuc, n, err, hnc8::dialectText()));
+  EXPECT_EQ(err, "dialect: 'fanuc' networks read as 'hnc8'");
   StlFromJson stl;
-  EXPECT_FALSE(stlFromJson(fanuc, stl, err));
-  EXPECT_EQ(err, "dialect: 'fanuc' networks are read back through the program text they carry "
-                 "(\"source\"), not as HNC-8 STL");
-  EXPECT_FALSE(readJson("{", n, err));
+  EXPECT_FALSE(stlFromJson(fanuc, stl, err, hnc8::dialectText()));
+  EXPECT_FALSE(readJson("{", n, err, hnc8::dialectText()));
   EXPECT_EQ(err, "not valid JSON");
   // An operand that would become two STL tokens is refused, not pasted into the text.
   const char *inject = R"({"format":"ladderjit-ladder","version":1,"dialect":"hnc8","parts":[
     {"name":"PLC1","rungs":[{"kind":"stl","stmts":[{"instr":"LD","operands":[{"text":"X0.0\nOUT"}]}]}]}]})";
-  EXPECT_FALSE(readJson(inject, n, err));
+  EXPECT_FALSE(readJson(inject, n, err, hnc8::dialectText()));
   EXPECT_EQ(err, "parts[0].rungs[0].stmts[0].operands[0].text: a line break is not allowed here");
 }
 
@@ -131,7 +128,7 @@ TEST(LadderNetwork, DiagnosticsPointIntoTheJson) {
       {"type":"coil","instr":"OUT","id":8,"line":12,"col":3,"operands":[{"text":"X0.1"}]}]}}]}]})";
   StlFromJson src;
   std::string err;
-  ASSERT_TRUE(stlFromJson(json, src, err)) << err;
+  ASSERT_TRUE(stlFromJson(json, src, err, hnc8::dialectText())) << err;
   Diagnostics d("p.json");
   EXPECT_FALSE(pipeline::compileStl(src.text, "p.json", VerifyOptions{}, d, &src.symbols));
   std::string out = renderDiagnostics(d, src);

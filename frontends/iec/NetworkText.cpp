@@ -1,0 +1,266 @@
+// IEC IL as networks name and print it (docs/ladder-json.md "Other dialects", docs/ladder-view.md
+// "Dialects"): the instruction of a statement as the Neza writes it, the reverse lookup the
+// network JSON is read back with, and statements as IL lines: a chain that starts while a value
+// is live is a parenthesis (`AND(` / `OR(` by the block that closes it, `)`), a comparison block
+// is the bracketed operand of its LD / AND, an arithmetic block is `[dst := a + b]`, comments are
+// `(* ... *)`. Statements the front end makes from other IL (N, XOR, END and their scratch bits)
+// have no IL form of their own.
+#include "frontends/iec/FrontEnd.h"
+#include "frontends/iec/Objects.h"
+#include "profiles/iec/IecProfile.h"
+
+#include "ir/StackEffect.h"
+
+#include <algorithm>
+
+namespace lj::iec::detail {
+
+namespace {
+
+bool isLoad(Op op) {
+  return op == Op::Load || op == Op::LoadNot || op == Op::LoadRise || op == Op::LoadFall ||
+         op == Op::LoadTrue;
+}
+
+bool isCompare(Op op) { return op == Op::CompareLt || op == Op::CompareLe || op == Op::CompareEq; }
+
+const char *relation(Op op) { return op == Op::CompareLt ? "<" : op == Op::CompareLe ? "<=" : "="; }
+
+const char *arith(Op op) {
+  switch (op) {
+  case Op::Add:
+    return "+";
+  case Op::Subtract:
+    return "-";
+  case Op::Multiply:
+    return "*";
+  case Op::Divide:
+    return "/";
+  default:
+    return nullptr;
+  }
+}
+
+/// A comment's text that cannot end the comment early.
+std::string commentText(const std::string &c) {
+  std::string t = c;
+  for (size_t p; (p = t.find("*)")) != std::string::npos;) t.replace(p, 2, "* )");
+  return t;
+}
+
+/// The modifier letter of a load / contact form: "", N, R, F.
+const char *modifier(Op op) {
+  switch (op) {
+  case Op::LoadNot:
+  case Op::AndNot:
+  case Op::OrNot:
+    return "N";
+  case Op::LoadRise:
+  case Op::AndRise:
+  case Op::OrRise:
+    return "R";
+  case Op::LoadFall:
+  case Op::AndFall:
+  case Op::OrFall:
+    return "F";
+  default:
+    return "";
+  }
+}
+
+} // namespace
+
+std::string spellStatement(const Stmt &s) {
+  switch (s.op) {
+  case Op::AndBlock:
+  case Op::OrBlock:
+    // The IR's block joins, which IL writes only as parentheses: drawn with the words of the
+    // stack machine (an IL listing's ANB / ORB rung shows where a `)` closed).
+    return s.op == Op::AndBlock ? "ANB" : "ORB";
+  case Op::SubEnd:
+    return "RET"; // the end of a subroutine in IL
+  case Op::Label:
+  case Op::SubBegin: // IL writes `%L64:` and `SR0:`: the operand with a colon
+    return s.operandCount == 1 ? formatOperand(s.ops[0]) + ":" : spelling(&dialectText(), s.op);
+  default:
+    return spelling(&dialectText(), s.op);
+  }
+}
+
+bool lookupWord(std::string_view w, Op &op) {
+  static constexpr std::pair<std::string_view, Op> kExtra[] = {
+      {"ANB", Op::AndBlock}, {"ORB", Op::OrBlock}, {"RET", Op::SubEnd}};
+  for (const auto &[name, o] : kExtra)
+    if (w == name) {
+      op = o;
+      return true;
+    }
+  if (w.size() > 1 && w.back() == ':') { // a label or subroutine header written whole
+    std::string why;
+    std::optional<Object> obj = parseObject(w.substr(0, w.size() - 1), why);
+    if (obj && obj->op.area == Area::Label) op = Op::Label;
+    if (obj && obj->op.area == Area::Subroutine) op = Op::SubBegin;
+    if (obj && (obj->op.area == Area::Label || obj->op.area == Area::Subroutine)) return true;
+  }
+  for (int k = 0; k < kOpCount; ++k) {
+    const char *s = dialectText().spell(static_cast<Op>(k));
+    if (s && w == s) {
+      op = static_cast<Op>(k);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error) {
+  const size_t n = stmts.size();
+  // Which parenthesis each load on a live value opens: the block statement that closes it.
+  std::vector<Op> opens(n, Op::LoadTrue);
+  {
+    std::vector<size_t> open;
+    int32_t depth = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const Op op = stmts[i].op;
+      if (isLoad(op) && depth > 0) open.push_back(i);
+      if ((op == Op::AndBlock || op == Op::OrBlock) && !open.empty()) {
+        opens[open.back()] = op;
+        open.pop_back();
+      }
+      depth = stackEffect(instrInfo(op), depth).after(depth);
+    }
+  }
+  auto fail = [&](size_t i, const std::string &why) {
+    error = "statement " + std::to_string(i + 1) + ": " + instrInfo(stmts[i].op).name +
+            " has no IL form" + (why.empty() ? "" : " (" + why + ")");
+    return false;
+  };
+  auto operand = [&](size_t i, size_t k) -> const std::string * {
+    return k < stmts[i].operands.size() ? &stmts[i].operands[k] : nullptr;
+  };
+  int32_t depth = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const StmtText &s = stmts[i];
+    for (const std::string &c : s.before) out += "(* " + commentText(c) + " *)\n";
+    std::string line;
+    size_t last = i; // the last statement this line writes
+    const Op op = s.op;
+    // What the front end adds on its own: the init part's end (IL has no init part) and the
+    // label END jumps to (after the main program). Not written; the front end adds them again.
+    if (op == Op::EndInit ||
+        (op == Op::Label && s.operands.size() == 1 &&
+         s.operands[0] ==
+             formatOperand(
+                 Operand{Operand::Kind::Reg, Area::Label, 0, false, kEndLabel, -1, -1, 0, {}}))) {
+      depth = 0;
+      continue;
+    }
+    const bool nextCompare = i + 1 < n && isCompare(stmts[i + 1].op);
+    if (isLoad(op)) {
+      std::string head;
+      if (depth == 0) {
+        head = std::string("LD") + modifier(op);
+      } else {
+        if (opens[i] == Op::LoadTrue) return fail(i, "a chain no ')' closes");
+        head = std::string(opens[i] == Op::AndBlock ? "AND(" : "OR(") + modifier(op);
+      }
+      if (op == Op::LoadTrue && nextCompare) {
+        const StmtText &c = stmts[i + 1];
+        if (c.operands.size() != 2 || !c.before.empty() || s.hasComment)
+          return fail(i + 1, "a comparison with two operands");
+        line = head + (depth == 0 ? " [" : "[") + c.operands[0] + " " + relation(c.op) + " " +
+               c.operands[1] + "]";
+        last = i + 1;
+      } else if (op == Op::LoadTrue && i + 1 < n && depth == 0 &&
+                 (stmts[i + 1].op == Op::Jump || stmts[i + 1].op == Op::Return) && !s.hasComment &&
+                 stmts[i + 1].before.empty()) {
+        const StmtText &j = stmts[i + 1];
+        line = j.op == Op::Jump ? "JMP " + (j.operands.empty() ? "" : j.operands[0]) : "RET";
+        last = i + 1;
+      } else if (op == Op::LoadTrue) {
+        line = depth == 0 ? "LD 1" : head + " 1";
+      } else {
+        const std::string *x = operand(i, 0);
+        if (!x) return fail(i, "no operand");
+        line = head + " " + *x;
+      }
+    } else {
+      switch (op) {
+      case Op::And:
+      case Op::AndNot:
+      case Op::AndRise:
+      case Op::AndFall:
+      case Op::Or:
+      case Op::OrNot:
+      case Op::OrRise:
+      case Op::OrFall: {
+        const std::string *x = operand(i, 0);
+        if (!x) return fail(i, "no operand");
+        const bool isAnd =
+            op == Op::And || op == Op::AndNot || op == Op::AndRise || op == Op::AndFall;
+        line = std::string(isAnd ? "AND" : "OR") + modifier(op) + " " + *x;
+        break;
+      }
+      case Op::CompareLt:
+      case Op::CompareLe:
+      case Op::CompareEq:
+        if (s.operands.size() != 2) return fail(i, "a comparison with two operands");
+        line = "AND [" + s.operands[0] + " " + relation(op) + " " + s.operands[1] + "]";
+        break;
+      case Op::AndBlock:
+      case Op::OrBlock:
+        line = ")";
+        break;
+      case Op::BranchPush:
+      case Op::BranchRead:
+      case Op::BranchPop:
+      case Op::Coil:
+      case Op::CoilNot:
+      case Op::Set:
+      case Op::Reset:
+      case Op::Jump: {
+        line = spelling(&dialectText(), op);
+        if (const std::string *x = operand(i, 0)) line += " " + *x;
+        break;
+      }
+      case Op::Return:
+        line = "RETC";
+        break;
+      case Op::SubEnd:
+        line = "RET";
+        break;
+      case Op::Call:
+        if (!operand(i, 0)) return fail(i, "no subroutine");
+        line = *operand(i, 0);
+        break;
+      case Op::Label:
+      case Op::SubBegin:
+        if (!operand(i, 0)) return fail(i, "no operand");
+        line = *operand(i, 0) + ":";
+        break;
+      case Op::EndCyclic:
+      case Op::EndSliced:
+        line = "END";
+        break;
+      case Op::Move:
+        if (s.operands.size() != 2) return fail(i, "an operation block [dst := src]");
+        line = "[" + s.operands[1] + " := " + s.operands[0] + "]";
+        break;
+      default:
+        if (const char *a = arith(op); a && s.operands.size() == 3) {
+          line = "[" + s.operands[2] + " := " + s.operands[0] + " " + a + " " + s.operands[1] + "]";
+          break;
+        }
+        return fail(i, "");
+      }
+    }
+    for (size_t k = i; k <= last; ++k) {
+      if (stmts[k].hasComment) line += " (* " + commentText(stmts[k].comment) + " *)";
+      depth = stackEffect(instrInfo(stmts[k].op), depth).after(depth);
+    }
+    out += line + "\n";
+    i = last;
+  }
+  return true;
+}
+
+} // namespace lj::iec::detail

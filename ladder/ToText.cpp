@@ -1,0 +1,169 @@
+// Networks -> program text in their dialect (docs/ladder-json.md "Other dialects"): the runs of
+// rungs the networks leave unchanged are copied from the program text they were made from, byte
+// for byte (comments, spelling, blank lines, order); the others are printed by the dialect's
+// DialectText::printStmts. The front end then reads the result as any program file, with all
+// its checks, and the verifier runs on it: networks edited in a JSON are a program.
+#include "ladder/Json.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <unordered_map>
+
+namespace lj::ladder {
+
+namespace {
+
+bool sameElement(const Element &a, const Element &b) {
+  return a.op == b.op && a.operands == b.operands && a.symbols == b.symbols && a.id == b.id &&
+         a.before == b.before && a.hasComment == b.hasComment && a.comment == b.comment;
+}
+
+/// A run of whole source lines holding whole rungs: statements [begin, end) of the program,
+/// lines [from, to) (1-based) of its text.
+struct Group {
+  size_t begin = 0, end = 0;
+  int32_t from = 0, to = 0;
+};
+
+/// The groups of `src`: a rung starts a new group where its first line (its comment block's, or
+/// its first statement's) comes after every line of the rungs before it.
+std::vector<Group> groupsOf(const VerifiedProgram &src, int32_t lineCount, int32_t &tailFrom) {
+  const size_t n = src.stmts.size();
+  std::vector<int32_t> commentLine(n + 1, INT32_MAX);
+  for (const Comment &c : src.comments)
+    if (!c.trailing && c.stmt >= 0 && static_cast<size_t>(c.stmt) <= n)
+      commentLine[static_cast<size_t>(c.stmt)] =
+          std::min(commentLine[static_cast<size_t>(c.stmt)], c.line);
+  std::vector<Group> out;
+  int32_t lastLine = 0; // the last line of any statement so far
+  for (const RungRange &r : src.rungs) {
+    if (r.range.empty()) continue;
+    const auto b = static_cast<size_t>(r.range.begin);
+    const int32_t first = std::min(commentLine[b], src.stmts[b].loc.line);
+    if (out.empty() || first > lastLine) {
+      if (!out.empty()) out.back().to = first;
+      out.push_back({b, b, first, first});
+    }
+    out.back().end = static_cast<size_t>(r.range.end);
+    for (auto i = b; i < static_cast<size_t>(r.range.end); ++i)
+      lastLine = std::max(lastLine, src.stmts[i].loc.line);
+  }
+  // The tail: the comment block after the last statement, and whatever follows.
+  tailFrom =
+      commentLine[n] != INT32_MAX && commentLine[n] > lastLine ? commentLine[n] : lastLine + 1;
+  tailFrom = std::min(tailFrom, lineCount + 1);
+  if (!out.empty()) out.back().to = tailFrom;
+  return out;
+}
+
+StmtText textOf(const Element &e) {
+  StmtText t;
+  t.op = e.op;
+  t.instr = e.drawnWhole ? std::string() : e.drawn;
+  for (size_t k = 0; k < e.operands.size(); ++k)
+    t.operands.push_back(k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k]
+                                                                       : e.operands[k]);
+  t.implied = e.implied;
+  t.before = e.before;
+  t.comment = e.comment;
+  t.hasComment = e.hasComment;
+  return t;
+}
+
+} // namespace
+
+bool programText(const Networks &given, const VerifiedProgram &src, std::string_view srcText,
+                 std::string &out, std::string &error, bool printAll) {
+  const DialectText *d = given.text ? given.text : src.dialect;
+  if (!d || !d->printStmts) {
+    error = "the " + given.dialect + " dialect prints no program text";
+    return false;
+  }
+  Networks made = fromProgram(src);
+  std::vector<Element> a, b;
+  std::vector<std::string> where;
+  if (!toStatements(given, a, error, &where) || !toStatements(made, b, error)) return false;
+  // The source's lines, each with its line break.
+  std::vector<std::string_view> lines;
+  for (size_t p = 0; p < srcText.size();) {
+    size_t nl = srcText.find('\n', p);
+    size_t e = nl == std::string_view::npos ? srcText.size() : nl + 1;
+    lines.push_back(srcText.substr(p, e - p));
+    p = e;
+  }
+  auto count = static_cast<int32_t>(lines.size());
+  int32_t tailFrom = count + 1;
+  std::vector<Group> groups = groupsOf(src, count, tailFrom);
+  auto copy = [&](int32_t from, int32_t to) {
+    for (int32_t l = std::max(from, 1); l < to && l <= count; ++l)
+      out += lines[static_cast<size_t>(l - 1)];
+  };
+  auto matches = [&](size_t i, const Group &g) {
+    if (i + (g.end - g.begin) > a.size()) return false;
+    for (size_t k = 0; k < g.end - g.begin; ++k)
+      if (!sameElement(a[i + k], b[g.begin + k])) return false;
+    return true;
+  };
+  auto printRung = [&](size_t from, size_t to) {
+    std::vector<StmtText> t;
+    for (size_t k = from; k < to; ++k) t.push_back(textOf(a[k]));
+    std::string err;
+    if (!out.empty() && out.back() != '\n') out += '\n';
+    if (d->printStmts(t, out, err)) return true;
+    size_t k = 0; // "statement K: ..." -> the place of statement K in the networks
+    if (err.rfind("statement ", 0) == 0) {
+      k = static_cast<size_t>(std::max(0L, std::strtol(err.c_str() + 10, nullptr, 10) - 1));
+      if (size_t c = err.find(": "); c != std::string::npos) err = err.substr(c + 2);
+    }
+    const size_t at = std::min(from + k, a.size() - 1);
+    error = where[at] + " (id " + std::to_string(a[at].id) + "): " + err +
+            "; edit this rung in the program text";
+    return false;
+  };
+  // Printed one rung at a time: each starts on an empty stack (the value an output left on it
+  // is dead), which is where a dialect writes RD / LD anew.
+  auto isRungStart = [&](size_t k) {
+    const std::string_view w = where[k], tail = " element 1";
+    return w.size() >= tail.size() && w.substr(w.size() - tail.size()) == tail;
+  };
+  auto print = [&](size_t from, size_t to) {
+    for (size_t r = from; r < to;) {
+      size_t e = r + 1;
+      while (e < to && !isRungStart(e)) ++e;
+      if (!printRung(r, e)) return false;
+      r = e;
+    }
+    return true;
+  };
+  std::unordered_map<StmtId, size_t> posA;
+  for (size_t i = 0; i < a.size(); ++i) posA.emplace(a[i].id, i);
+  copy(1, groups.empty() ? tailFrom : groups[0].from);
+  size_t i = 0, g = printAll ? groups.size() : 0;
+  while (i < a.size() || g < groups.size()) {
+    if (g < groups.size() && matches(i, groups[g])) {
+      copy(groups[g].from, groups[g].to);
+      i += groups[g].end - groups[g].begin;
+      ++g;
+      continue;
+    }
+    // The next group the networks hold unchanged at or after i; the statements before it are
+    // printed, the groups skipped were deleted or edited.
+    size_t next = groups.size(), j = a.size();
+    for (size_t h = g; h < groups.size(); ++h) {
+      if (groups[h].end == groups[h].begin) continue;
+      auto it = posA.find(b[groups[h].begin].id);
+      if (it != posA.end() && it->second >= i && matches(it->second, groups[h])) {
+        next = h;
+        j = it->second;
+        break;
+      }
+    }
+    if (j > i && !print(i, j)) return false;
+    i = j;
+    g = next;
+  }
+  copy(tailFrom, count + 1);
+  return true;
+}
+
+} // namespace lj::ladder
