@@ -28,7 +28,7 @@ void IlParser::run(std::string_view text) {
     pos = nl + 1;
   }
   const SourceLoc end{lineNo, 1};
-  if (inComment_) diags_.error(commentLoc_, "comment '(*' is not closed by '*)'");
+  if (inComment_) diags_.error(commentLoc_, "LJ2022", "comment '(*' is not closed by '*)'");
   blocks_.mustBeClosed(end, "the end of the program");
   closeSequence(end, "the end of the program");
   if (!mainDone_) finishMain(end);
@@ -105,7 +105,8 @@ void IlParser::statement(const std::string &code, int32_t lineNo) {
   const std::string up = upper(rest);
   if (stmtCount_++ >= kStatementLimit) {
     if (stmtCount_ == kStatementLimit + 1)
-      error(loc, "program has more than " + std::to_string(kStatementLimit) + " instructions");
+      error(loc, "LJ2023",
+            "program has more than " + std::to_string(kStatementLimit) + " instructions");
     return;
   }
   // `%Li :` and `SRi :` headers.
@@ -117,7 +118,7 @@ void IlParser::statement(const std::string &code, int32_t lineNo) {
     std::string_view after = rest.substr(colon + 1);
     while (!after.empty() && blank(after.front())) after.remove_prefix(1);
     if (!after.empty() && upper(after).rfind("X", 0) != 0) {
-      error(at(i + colon + 1), "a label or subroutine header stands on its own line");
+      error(at(i + colon + 1), "LJ2024", "a label or subroutine header stands on its own line");
       return;
     }
     if (after.empty()) {
@@ -131,7 +132,7 @@ void IlParser::statement(const std::string &code, int32_t lineNo) {
   }
   if (rest.front() == ')') {
     if (rest.size() > 1) {
-      error(at(i + 1), "unexpected text after ')'");
+      error(at(i + 1), "LJ2025", "unexpected text after ')'");
       return;
     }
     closeParen(loc);
@@ -141,7 +142,8 @@ void IlParser::statement(const std::string &code, int32_t lineNo) {
   while (m < rest.size() && (std::isalnum(static_cast<unsigned char>(rest[m])) || rest[m] == '_'))
     ++m;
   if (m == 0) {
-    error(loc, "expected an instruction, found '" + std::string(rest.substr(0, 20)) + "'");
+    error(loc, "LJ2026",
+          "expected an instruction, found '" + std::string(rest.substr(0, 20)) + "'");
     return;
   }
   std::string mnem = upper(rest.substr(0, m));
@@ -180,13 +182,14 @@ void IlParser::instruction(const std::string &mnem, std::optional<char> paren,
   }
   if (paren) {
     if (mnem != "AND" && mnem != "OR") {
-      error(loc, "only AND( and OR( open a parenthesis, found '" + mnem + "('");
+      error(loc, "LJ2027", "only AND( and OR( open a parenthesis, found '" + mnem + "('");
       return;
     }
     if (!needSequence(loc, mnem + "(")) return;
     if (static_cast<int32_t>(parens_.size()) >= kParenDepth) {
-      error(loc, mnem + "( nests parentheses deeper than " + std::to_string(kParenDepth) +
-                     " levels (modicon-neza.md 2.8, L924-925)");
+      error(loc, "LJ2028",
+            mnem + "( nests parentheses deeper than " + std::to_string(kParenDepth) +
+                " levels (modicon-neza.md 2.8, L924-925)");
       return;
     }
     if (!mps_.empty() && parens_.empty()) {
@@ -220,7 +223,7 @@ void IlParser::instruction(const std::string &mnem, std::optional<char> paren,
   }
   if (mnem == "N") {
     if (!needSequence(loc, mnem)) return;
-    if (!text.empty()) error(opLoc, "N takes no operand");
+    if (!text.empty()) error(opLoc, "LJ2029", "N takes no operand");
     nonReversible(loc, "N");
     em_.negate(loc);
     return;
@@ -247,17 +250,18 @@ void IlParser::instruction(const std::string &mnem, std::optional<char> paren,
     return;
   }
   if (mnem == "NOP") {
-    if (!text.empty()) error(opLoc, "NOP takes no operand");
+    if (!text.empty()) error(opLoc, "LJ2030", "NOP takes no operand");
     return;
   }
   static const char *const kBlocks[] = {"I", "O", "DS", "RET_BLK"};
   for (const char *b : kBlocks)
     if (mnem == b) {
-      error(loc, mnem + ": an input of the %Ri / %DRi / %SBRi / %SCi blocks, which are not "
-                        "supported (their pages are missing from the seed; docs/iec-il.md)");
+      error(loc, "LJ2031",
+            mnem + ": an input of the %Ri / %DRi / %SBRi / %SCi blocks, which are not "
+                   "supported (their pages are missing from the seed; docs/iec-il.md)");
       return;
     }
-  error(loc, "unknown instruction '" + mnem + "'");
+  error(loc, "LJ2032", "unknown instruction '" + mnem + "'");
 }
 
 } // namespace lj::iec::detail

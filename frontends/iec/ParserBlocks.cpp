@@ -19,19 +19,21 @@ void IlParser::operationBlock(std::string_view text, SourceLoc loc) {
     return;
   }
   if (text.back() != ']') {
-    error(loc, "operation block: expected ']' at the end");
+    error(loc, "LJ2033", "operation block: expected ']' at the end");
     return;
   }
   std::string_view in = text.substr(1, text.size() - 2);
   size_t assign = in.find(":=");
   if (assign == std::string_view::npos) {
-    error(loc, "operation block: expected [%MWi := expression]; a comparison [a < b] is the "
-               "operand of LD, LDN, AND, ANDN, AND( or OR(");
+    error(loc, "LJ2034",
+          "operation block: expected [%MWi := expression]; a comparison [a < b] is the "
+          "operand of LD, LDN, AND, ANDN, AND( or OR(");
     return;
   }
   if (!seq_) {
-    error(loc, "an operation block needs a condition: write LD 1 before an unconditional one "
-               "(modicon-neza.md 9 rule 4, L474-489)");
+    error(loc, "LJ2035",
+          "an operation block needs a condition: write LD 1 before an unconditional one "
+          "(modicon-neza.md 9 rule 4, L474-489)");
     seq_ = true;
     return;
   }
@@ -50,8 +52,9 @@ void IlParser::operationBlock(std::string_view text, SourceLoc loc) {
     std::optional<Operand> src = wordOperand(expr, loc, ":=", false);
     if (dst && src && isPreset(*dst) && src->kind == Operand::Kind::Const &&
         (src->value < 0 || src->value > kPresetMax)) {
-      error(loc, ":=: preset " + std::to_string(src->value) +
-                     " out of range (0 <= P <= 9999; modicon-neza.md 3.3, L1276-1278)");
+      error(loc, "LJ2036",
+            ":=: preset " + std::to_string(src->value) +
+                " out of range (0 <= P <= 9999; modicon-neza.md 3.3, L1276-1278)");
       return;
     }
     if (dst && src) em_.emit(Op::Move, loc, {*src, *dst});
@@ -75,14 +78,16 @@ bool IlParser::testInstruction(const std::string &m) {
 }
 
 void IlParser::inputSection(SourceLoc loc, const std::string &what) {
-  error(loc, what + " between BLK and OUT_BLK (" + blocks_.openBlock() +
-                 "): only test instructions and the block's inputs are allowed there "
-                 "(modicon-neza.md 3.1, L1244-1246)");
+  error(loc, "LJ2037",
+        what + " between BLK and OUT_BLK (" + blocks_.openBlock() +
+            "): only test instructions and the block's inputs are allowed there "
+            "(modicon-neza.md 3.1, L1244-1246)");
 }
 
 bool IlParser::outsideBlock(SourceLoc loc, const std::string &what) {
   if (blocks_.section() == FunctionBlocks::Section::None) return true;
-  error(loc, what + " inside " + blocks_.openBlock() + " (before its END_BLK): not allowed");
+  error(loc, "LJ2038",
+        what + " inside " + blocks_.openBlock() + " (before its END_BLK): not allowed");
   return false;
 }
 
@@ -90,7 +95,7 @@ bool IlParser::blockInstruction(const std::string &mnem, std::string_view text, 
                                 SourceLoc opLoc) {
   if (mnem == "CONFIG") {
     if (stmtCount_ - 1 != configLines_)
-      error(loc, "CONFIG lines come before the first instruction of the program");
+      error(loc, "LJ2039", "CONFIG lines come before the first instruction of the program");
     ++configLines_;
     blocks_.config(text, loc);
     return true;
@@ -105,7 +110,7 @@ bool IlParser::blockInstruction(const std::string &mnem, std::string_view text, 
     return true;
   }
   if (mnem == "OUT_BLK" || mnem == "END_BLK") {
-    if (!text.empty()) error(opLoc, mnem + " takes no operand");
+    if (!text.empty()) error(opLoc, "LJ2040", mnem + " takes no operand");
     closeSequence(loc, mnem);
     seq_ = false;
     if (mnem == "OUT_BLK")
@@ -118,10 +123,11 @@ bool IlParser::blockInstruction(const std::string &mnem, std::string_view text, 
   if (!input && !((mnem == "R" || mnem == "S") && text.empty())) return false;
   if (text.empty()) {
     if (blocks_.section() != FunctionBlocks::Section::Inputs) {
-      error(loc, mnem +
-                     " without an operand is a function-block input: it stands between "
-                     "BLK and OUT_BLK (or END_BLK); elsewhere write " +
-                     mnem + " %TMi / %Ci");
+      error(loc, "LJ2041",
+            mnem +
+                " without an operand is a function-block input: it stands between "
+                "BLK and OUT_BLK (or END_BLK); elsewhere write " +
+                mnem + " %TMi / %Ci");
       return true;
     }
     if (needSequence(loc, mnem) && outsideParens(loc, mnem)) blocks_.pin(mnem, loc);
@@ -130,7 +136,8 @@ bool IlParser::blockInstruction(const std::string &mnem, std::string_view text, 
   std::optional<Object> blk = object(text, opLoc, mnem);
   if (!blk) return true;
   if (!FunctionBlocks::isBlock(*blk)) {
-    error(opLoc, mnem + " needs a function block (%TMi, %Ci), found '" + std::string(text) + "'");
+    error(opLoc, "LJ2042",
+          mnem + " needs a function block (%TMi, %Ci), found '" + std::string(text) + "'");
     return true;
   }
   directBlock(mnem, *blk, loc, opLoc);

@@ -9,7 +9,8 @@ namespace lj::iec::detail {
 
 void IlParser::afterMain(SourceLoc loc) {
   if (mainEnded_ && sub_ < 0 && !afterEndReported_) {
-    error(loc, "instruction after END outside a subroutine (after END only SRi : blocks follow)");
+    error(loc, "LJ2043",
+          "instruction after END outside a subroutine (after END only SRi : blocks follow)");
     afterEndReported_ = true;
   }
 }
@@ -28,7 +29,7 @@ void IlParser::header(std::string_view name, SourceLoc loc) {
   std::string err;
   std::optional<Object> obj = parseObject(name, err);
   if (!obj || (obj->cls != ObjClass::Label && obj->cls != ObjClass::Sub)) {
-    error(loc, obj ? "expected %Li : or SRi :" : err);
+    error(loc, "LJ2044", obj ? "expected %Li : or SRi :" : err);
     return;
   }
   blocks_.mustBeClosed(loc, obj->cls == ObjClass::Label ? "a label" : "a subroutine");
@@ -53,7 +54,7 @@ std::optional<Operand> IlParser::label(std::string_view text, SourceLoc opLoc,
   std::optional<Object> obj = object(text, opLoc, mnem);
   if (!obj) return std::nullopt;
   if (obj->cls != ObjClass::Label) {
-    error(opLoc, mnem + " needs a label %Li, found '" + std::string(text) + "'");
+    error(opLoc, "LJ2045", mnem + " needs a label %Li, found '" + std::string(text) + "'");
     return std::nullopt;
   }
   return obj->op;
@@ -82,11 +83,12 @@ void IlParser::jump(const std::string &mnem, std::string_view text, SourceLoc lo
 }
 
 void IlParser::end(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
-  if (!text.empty()) error(opLoc, mnem + " takes no operand");
+  if (!text.empty()) error(opLoc, "LJ2046", mnem + " takes no operand");
   if (!outsideBlock(loc, mnem)) return;
   if (sub_ >= 0) {
-    error(loc, mnem + " inside a subroutine is not supported (the scan ends after the main "
-                      "program; use RET)");
+    error(loc, "LJ2047",
+          mnem + " inside a subroutine is not supported (the scan ends after the main "
+                 "program; use RET)");
     return;
   }
   afterMain(loc);
@@ -114,10 +116,10 @@ void IlParser::end(const std::string &mnem, std::string_view text, SourceLoc loc
 }
 
 void IlParser::ret(const std::string &mnem, std::string_view text, SourceLoc loc, SourceLoc opLoc) {
-  if (!text.empty()) error(opLoc, mnem + " takes no operand");
+  if (!text.empty()) error(opLoc, "LJ2048", mnem + " takes no operand");
   if (!outsideBlock(loc, mnem)) return;
   if (sub_ < 0) {
-    error(loc, mnem + " outside a subroutine");
+    error(loc, "LJ2049", mnem + " outside a subroutine");
     return;
   }
   if (mnem != "RET" && !needSequence(loc, mnem)) return;
@@ -138,14 +140,14 @@ void IlParser::ret(const std::string &mnem, std::string_view text, SourceLoc loc
 
 void IlParser::call(const std::string &mnem, std::string_view text, SourceLoc loc,
                     SourceLoc opLoc) {
-  if (!text.empty()) error(opLoc, mnem + " takes no operand");
+  if (!text.empty()) error(opLoc, "LJ2050", mnem + " takes no operand");
   if (!outsideBlock(loc, mnem)) return;
   afterMain(loc);
   if (!needSequence(loc, mnem) || !outsideParens(loc, mnem)) return;
   std::string err;
   std::optional<Object> obj = parseObject(mnem, err);
   if (!obj) {
-    error(loc, err);
+    error(loc, "LJ2051", err);
     return;
   }
   obj->op.loc = loc;

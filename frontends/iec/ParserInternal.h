@@ -67,7 +67,9 @@ private:
   static constexpr int kMaxErrors = 100;
   static constexpr int32_t kStatementLimit = 10000;
 
-  void error(SourceLoc loc, const std::string &msg) { diags_.error(loc, msg); }
+  void error(SourceLoc loc, const char *code, const std::string &msg) {
+    diags_.error(loc, code, msg);
+  }
 
   // ---- lines, statements and the instruction dispatch (Parser.cpp)
   /// The block presets (FunctionBlocks::presets) at the start of the init part; statement ids

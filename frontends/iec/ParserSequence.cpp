@@ -10,26 +10,28 @@ namespace lj::iec::detail {
 
 bool IlParser::needSequence(SourceLoc loc, const std::string &what) {
   if (seq_) return true;
-  error(loc, what + " without a value to work on: a sequence starts with LD, LDN, LDR or LDF");
+  error(loc, "LJ2053",
+        what + " without a value to work on: a sequence starts with LD, LDN, LDR or LDF");
   seq_ = true; // one error per sequence
   return false;
 }
 
 bool IlParser::outsideParens(SourceLoc loc, const std::string &what) {
   if (parens_.empty()) return true;
-  error(loc, what + " inside parentheses (the " + parenName(parens_.back()) + " on " +
-                 lineText(parens_.back().loc) +
-                 " is open): not allowed (modicon-neza.md 2.8, L973-976)");
+  error(loc, "LJ2054",
+        what + " inside parentheses (the " + parenName(parens_.back()) + " on " +
+            lineText(parens_.back().loc) +
+            " is open): not allowed (modicon-neza.md 2.8, L973-976)");
   return false;
 }
 
 void IlParser::closeSequence(SourceLoc loc, const std::string &where) {
   for (const Paren &p : parens_)
-    error(p.loc,
+    error(p.loc, "LJ2055",
           parenName(p) + " is not closed by ')' before " + where + " (" + lineText(loc) + ")");
   parens_.clear();
   if (!mps_.empty())
-    error(mps_.front(), "MPS has no MPP before " + where + " (" + lineText(loc) + ")");
+    error(mps_.front(), "LJ2056", "MPS has no MPP before " + where + " (" + lineText(loc) + ")");
   mps_.clear();
 }
 
@@ -46,7 +48,7 @@ void IlParser::startSequence(SourceLoc loc, const std::string &mnem) {
 std::optional<Object> IlParser::object(std::string_view text, SourceLoc loc,
                                        const std::string &mnem) {
   if (text.empty()) {
-    error(loc, mnem + " needs an operand");
+    error(loc, "LJ2057", mnem + " needs an operand");
     return std::nullopt;
   }
   bool isBare = false;
@@ -58,7 +60,7 @@ std::optional<Object> IlParser::object(std::string_view text, SourceLoc loc,
   std::string err;
   obj = parseObject(text, err);
   if (!obj) {
-    error(loc, mnem + ": " + err);
+    error(loc, "LJ2058", mnem + ": " + err);
     return std::nullopt;
   }
   blocks_.use(*obj);
@@ -77,28 +79,31 @@ std::optional<Object> IlParser::testOperand(std::string_view text, SourceLoc loc
   if (!obj) return std::nullopt;
   if (obj->cls == ObjClass::Immediate) {
     if (!immediate || mod != Mod::Plain) {
-      error(loc, mnem + " takes no immediate value (modicon-neza.md 2.2-2.6, L614-617, L739-742, "
-                        "L784-787, L829-832)");
+      error(loc, "LJ2059",
+            mnem + " takes no immediate value (modicon-neza.md 2.2-2.6, L614-617, L739-742, "
+                   "L784-787, L829-832)");
       return std::nullopt;
     }
     if (obj->number != 0 && obj->number != 1) {
-      error(loc, mnem + ": an immediate bit value is 0 or 1");
+      error(loc, "LJ2060", mnem + ": an immediate bit value is 0 or 1");
       return std::nullopt;
     }
     return obj;
   }
   if (!isBitObject(obj->cls)) {
-    error(loc, mnem + " needs a bit object (%I, %Q, %M, %S, %MWi:Xk, %TMi.Q, %Ci.E/D/F), found '" +
-                   std::string(text) + "'");
+    error(loc, "LJ2061",
+          mnem + " needs a bit object (%I, %Q, %M, %S, %MWi:Xk, %TMi.Q, %Ci.E/D/F), found '" +
+              std::string(text) + "'");
     return std::nullopt;
   }
   if ((mod == Mod::Rise || mod == Mod::Fall) &&
       !(obj->cls == ObjClass::InputBit ||
         (obj->cls == ObjClass::MemoryBit && obj->number < kEdgeMemoryBits))) {
-    error(loc, mnem +
-                   ": edge instructions take only %I and %M0..%M31 (modicon-neza.md 2.1, "
-                   "L574-575), found '" +
-                   std::string(text) + "'");
+    error(loc, "LJ2062",
+          mnem +
+              ": edge instructions take only %I and %M0..%M31 (modicon-neza.md 2.1, "
+              "L574-575), found '" +
+              std::string(text) + "'");
     return std::nullopt;
   }
   return obj;
@@ -107,7 +112,7 @@ std::optional<Object> IlParser::testOperand(std::string_view text, SourceLoc loc
 std::optional<Relation> IlParser::comparison(std::string_view text, SourceLoc loc,
                                              const std::string &mnem) {
   if (text.size() < 2 || text.front() != '[' || text.back() != ']') {
-    error(loc, mnem + ": expected a comparison [a < b]");
+    error(loc, "LJ2063", mnem + ": expected a comparison [a < b]");
     return std::nullopt;
   }
   std::string_view in = text.substr(1, text.size() - 2);
@@ -124,8 +129,9 @@ std::optional<Relation> IlParser::comparison(std::string_view text, SourceLoc lo
     out.b = *b;
     return out;
   }
-  error(loc, mnem + ": expected a comparison operator (<, <=, >, >=, =, <>) in '" +
-                 std::string(text.substr(0, 40)) + "'");
+  error(loc, "LJ2064",
+        mnem + ": expected a comparison operator (<, <=, >, >=, =, <>) in '" +
+            std::string(text.substr(0, 40)) + "'");
   return std::nullopt;
 }
 
@@ -140,13 +146,14 @@ std::optional<Operand> IlParser::wordOperand(std::string_view t, SourceLoc loc,
   const bool writable =
       obj->cls == ObjClass::Word || (obj->cls == ObjClass::BlockWord && obj->writable);
   if (dest ? !writable : !(word || obj->cls == ObjClass::Immediate)) {
-    error(loc, mnem + ": '" + std::string(t) + "' is not " +
-                   (dest ? "a writable word (%MWi, %SWi, %TMi.P, %Ci.P)" +
-                               std::string(obj->cls == ObjClass::BlockWord
-                                               ? " (the current value .V is read-only, "
-                                                 "modicon-neza.md 1.2)"
-                                               : "")
-                         : "a word (%MWi, %KWi, %SWi, %TMi.V/.P, %Ci.V/.P) or a number"));
+    error(loc, "LJ2065",
+          mnem + ": '" + std::string(t) + "' is not " +
+              (dest ? "a writable word (%MWi, %SWi, %TMi.P, %Ci.P)" +
+                          std::string(obj->cls == ObjClass::BlockWord
+                                          ? " (the current value .V is read-only, "
+                                            "modicon-neza.md 1.2)"
+                                          : "")
+                    : "a word (%MWi, %KWi, %SWi, %TMi.V/.P, %Ci.V/.P) or a number"));
     return std::nullopt;
   }
   return obj->op;
@@ -175,7 +182,7 @@ void IlParser::emitComparison(const Relation &r, bool negated, bool push, Source
 
 void IlParser::closeParen(SourceLoc loc) {
   if (parens_.empty()) {
-    error(loc, "')' without AND( or OR(");
+    error(loc, "LJ2066", "')' without AND( or OR(");
     return;
   }
   em_.emit(parens_.back().close, loc);
@@ -186,7 +193,7 @@ void IlParser::pushTest(const std::string &mnem, Mod mod, std::string_view text,
                         SourceLoc opLoc, bool comparisonOk) {
   if (!text.empty() && text.front() == '[') {
     if (!comparisonOk || mod == Mod::Rise || mod == Mod::Fall) {
-      error(opLoc, mnem + " takes no comparison");
+      error(opLoc, "LJ2067", mnem + " takes no comparison");
       return;
     }
     if (std::optional<Relation> r = comparison(text, opLoc, mnem))
@@ -204,8 +211,9 @@ void IlParser::pushTest(const std::string &mnem, Mod mod, std::string_view text,
 }
 
 void IlParser::nonReversible(SourceLoc loc, const std::string &mnem) {
-  diags_.warning(loc, mnem + " is not reversible: the ladder view shows it as IL expanded into "
-                             "contacts (modicon-neza.md 9 rule 3, L462-473)");
+  diags_.warning(loc, "LJ2068",
+                 mnem + " is not reversible: the ladder view shows it as IL expanded into "
+                        "contacts (modicon-neza.md 9 rule 3, L462-473)");
 }
 
 void IlParser::combine(const std::string &fam, Mod mod, const std::string &mnem,
@@ -214,10 +222,11 @@ void IlParser::combine(const std::string &fam, Mod mod, const std::string &mnem,
   const bool isXor = fam == "XOR";
   if (!text.empty() && text.front() == '[') {
     if (fam != "AND" || mod == Mod::Rise || mod == Mod::Fall) {
-      error(opLoc, mnem +
-                       " takes no comparison (modicon-neza.md 2.5-2.6, L784-787, L829-832; "
-                       "write " +
-                       fam + "( [...] ) instead)");
+      error(opLoc, "LJ2069",
+            mnem +
+                " takes no comparison (modicon-neza.md 2.5-2.6, L784-787, L829-832; "
+                "write " +
+                fam + "( [...] ) instead)");
       return;
     }
     if (std::optional<Relation> r = comparison(text, opLoc, mnem))
@@ -229,8 +238,9 @@ void IlParser::combine(const std::string &fam, Mod mod, const std::string &mnem,
   if (isXor) {
     if (mod == Mod::Not) nonReversible(loc, mnem);
     if (!parens_.empty())
-      diags_.warning(loc, mnem + " inside parentheses is not reversible: ladder cannot place XOR "
-                                 "in a parallel branch (modicon-neza.md 2.6, L833-837)");
+      diags_.warning(loc, "LJ2070",
+                     mnem + " inside parentheses is not reversible: ladder cannot place XOR "
+                            "in a parallel branch (modicon-neza.md 2.6, L833-837)");
     em_.exclusiveOr(loadOp(mod), obj->op, loc);
     return;
   }
@@ -254,22 +264,25 @@ void IlParser::coil(const std::string &mnem, std::string_view text, SourceLoc lo
     return;
   }
   if (obj->cls == ObjClass::SystemBit && runtimeBit(obj->number)) {
-    error(opLoc, mnem + " %S" + std::to_string(obj->number) +
-                     ": the runtime writes this system bit before every scan; the program may "
-                     "only read it (docs/iec-il.md \"System bits\")");
+    error(opLoc, "LJ2071",
+          mnem + " %S" + std::to_string(obj->number) +
+              ": the runtime writes this system bit before every scan; the program may "
+              "only read it (docs/iec-il.md \"System bits\")");
     return;
   }
   if (obj->cls == ObjClass::BlockBit) {
-    error(opLoc, mnem + " " + std::string(text) +
-                     ": function-block outputs are read-only (modicon-neza.md 1.2, L1133-1159)");
+    error(opLoc, "LJ2072",
+          mnem + " " + std::string(text) +
+              ": function-block outputs are read-only (modicon-neza.md 1.2, L1133-1159)");
     return;
   }
   const bool ok = obj->cls == ObjClass::OutputBit || obj->cls == ObjClass::MemoryBit ||
                   obj->cls == ObjClass::SystemBit ||
                   (obj->cls == ObjClass::WordBit && obj->op.area != Area::ConstWords);
   if (!ok) {
-    error(opLoc, mnem + " needs a writable bit (%Q, %M, %S, %MWi:Xk), found '" + std::string(text) +
-                     "'" + (obj->cls == ObjClass::InputBit ? " (inputs are read-only)" : ""));
+    error(opLoc, "LJ2073",
+          mnem + " needs a writable bit (%Q, %M, %S, %MWi:Xk), found '" + std::string(text) + "'" +
+              (obj->cls == ObjClass::InputBit ? " (inputs are read-only)" : ""));
     return;
   }
   const Op op = mnem == "ST"    ? Op::Coil
@@ -280,18 +293,19 @@ void IlParser::coil(const std::string &mnem, std::string_view text, SourceLoc lo
 }
 
 void IlParser::branch(const std::string &mnem, std::string_view text, SourceLoc loc) {
-  if (!text.empty()) error(loc, mnem + " takes no operand");
+  if (!text.empty()) error(loc, "LJ2074", mnem + " takes no operand");
   if (!needSequence(loc, mnem)) return;
   if (!parens_.empty()) {
-    error(loc, mnem + " inside parentheses (the " + parenName(parens_.back()) + " on " +
-                   lineText(parens_.back().loc) +
-                   " is open): not allowed (modicon-neza.md 2.9, L1046)");
+    error(loc, "LJ2075",
+          mnem + " inside parentheses (the " + parenName(parens_.back()) + " on " +
+              lineText(parens_.back().loc) + " is open): not allowed (modicon-neza.md 2.9, L1046)");
     return;
   }
   if (mnem == "MPS") {
     if (static_cast<int32_t>(mps_.size()) >= kMpsDepth) {
-      error(loc, "MPS stack deeper than " + std::to_string(kMpsDepth) +
-                     " entries (modicon-neza.md 2.9, L979)");
+      error(loc, "LJ2076",
+            "MPS stack deeper than " + std::to_string(kMpsDepth) +
+                " entries (modicon-neza.md 2.9, L979)");
       return;
     }
     mps_.push_back(loc);
@@ -299,7 +313,7 @@ void IlParser::branch(const std::string &mnem, std::string_view text, SourceLoc 
     return;
   }
   if (mps_.empty()) {
-    error(loc, mnem + " without MPS (the MPS stack is empty)");
+    error(loc, "LJ2077", mnem + " without MPS (the MPS stack is empty)");
     return;
   }
   if (mnem == "MPP") mps_.pop_back();
