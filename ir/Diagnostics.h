@@ -22,7 +22,8 @@ std::string printable(std::string_view text);
 struct Diagnostic {
   enum class Severity : uint8_t { Error, Warning, Note } severity = Severity::Error;
   SourceLoc loc;
-  std::string message;
+  std::string message; ///< ends in " [CODE]" when the diagnostic has a code
+  std::string code;    ///< the stable code (docs/diagnostics.md), "LJ1001"; empty: none
 };
 
 /// Collects diagnostics for one file; all of them are reported, not only the first.
@@ -35,6 +36,14 @@ public:
   }
   void warning(SourceLoc loc, std::string msg) {
     add(Diagnostic::Severity::Warning, loc, std::move(msg));
+  }
+  /// With a stable code (docs/diagnostics.md): the text ends in " [CODE]", after the
+  /// `file:line:col: error: ` prefix CLI.md fixes.
+  void error(SourceLoc loc, const char *code, std::string msg) {
+    add(Diagnostic::Severity::Error, loc, std::move(msg), code);
+  }
+  void warning(SourceLoc loc, const char *code, std::string msg) {
+    add(Diagnostic::Severity::Warning, loc, std::move(msg), code);
   }
   void note(SourceLoc loc, std::string msg) {
     add(Diagnostic::Severity::Note, loc, std::move(msg));
@@ -49,9 +58,10 @@ public:
   std::string render() const;
 
 private:
-  void add(Diagnostic::Severity s, SourceLoc loc, std::string msg) {
+  void add(Diagnostic::Severity s, SourceLoc loc, std::string msg, const char *code = nullptr) {
     if (s == Diagnostic::Severity::Error) ++errors_;
-    list_.push_back({s, loc, std::move(msg)});
+    if (code && *code) msg += std::string(" [") + code + "]";
+    list_.push_back({s, loc, std::move(msg), code ? code : ""});
   }
   std::string file_;
   std::vector<Diagnostic> list_;

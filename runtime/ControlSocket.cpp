@@ -3,6 +3,7 @@
 
 #include "formats/StateJson.h"
 #include "runtime/ControlPath.h"
+#include "services/ClientSlots.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -44,12 +45,6 @@ bool writeAll(int fd, const std::string &s) {
     off += static_cast<size_t>(n);
   }
   return true;
-}
-
-int64_t steadyMs() {
-  return std::chrono::duration_cast<std::chrono::milliseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
-      .count();
 }
 
 nlohmann::json failure(const std::string &msg) { return {{"ok", false}, {"error", msg}}; }
@@ -170,14 +165,7 @@ void ControlSocket::stop() {
   char c = 1;
   [[maybe_unused]] ssize_t w = ::write(wakePipe_[1], &c, 1);
   if (acceptThread_.joinable()) acceptThread_.join();
-  std::list<Client> clients;
-  {
-    std::lock_guard<std::mutex> g(mu_);
-    for (Client &cl : clients_)
-      if (cl.fd >= 0) ::shutdown(cl.fd, SHUT_RDWR); // wakes their poll
-    clients.splice(clients.end(), clients_);
-  }
-  for (Client &cl : clients) cl.thread.join();
+  services::closeAll(clients_, mu_); // the shutdown wakes their poll
   ::close(listenFd_);
   ::close(wakePipe_[0]);
   ::close(wakePipe_[1]);
@@ -217,56 +205,35 @@ void ControlSocket::acceptLoop() {
 // the connection that has been idle longest (else the one longest stuck in an incomplete
 // request) is closed to make room: an idle connection never locks the operator out.
 void ControlSocket::admit(int fd) {
-  timeval tv{static_cast<time_t>(opt_.requestTimeout.count() / 1000),
-             static_cast<suseconds_t>(opt_.requestTimeout.count() % 1000 * 1000)};
-  ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv); // a client that never reads
+  services::setSendTimeout(fd, opt_.requestTimeout);
   std::lock_guard<std::mutex> g(mu_);
-  for (auto it = clients_.begin(); it != clients_.end();) {
-    if (it->done.load()) {
-      it->thread.join();
-      it = clients_.erase(it);
-    } else {
-      ++it;
-    }
-  }
-  int active = 0;
-  Client *victim = nullptr;
-  for (Client &c : clients_) {
-    if (c.evicted) continue;
-    ++active;
-    int s = c.state.load();
-    if (s == Handling) continue;
-    if (!victim || (s == Idle && victim->state.load() != Idle) ||
-        (s == victim->state.load() && c.sinceMs.load() < victim->sinceMs.load()))
-      victim = &c;
-  }
-  if (active >= kMaxClients && victim) {
-    victim->evicted = true;
-    ::shutdown(victim->fd, SHUT_RDWR);
-    --active;
+  services::reapFinished(clients_);
+  bool evicted = false;
+  const int active = services::makeRoom(clients_, kMaxClients, evicted);
+  if (evicted)
     logLine("control: all " + std::to_string(kMaxClients) +
             " slots taken; closed the connection idle longest to admit a new one");
-  }
   if (active >= kMaxClients + 1) { // every slot, the reserved one too, is running a request
     writeAll(fd, R"({"ok":false,"error":"too many control clients"})"
                  "\n");
     ::close(fd);
     return;
   }
-  Client &c = clients_.emplace_back();
+  services::ClientSlot &c = clients_.emplace_back();
   c.fd = fd;
-  c.sinceMs = steadyMs();
+  c.sinceMs = services::steadyMs();
   c.thread = std::thread([this, p = &c] { serveClient(p); });
 }
 
-void ControlSocket::serveClient(Client *c) {
+void ControlSocket::serveClient(services::ClientSlot *c) {
   const int fd = c->fd;
   std::string buf;
   char chunk[4096];
-  int64_t since = steadyMs(); // idle since, or the first byte of the request in `buf`
+  int64_t since = services::steadyMs(); // idle since, or the first byte of the request in `buf`
   while (!stopping_.load()) {
     const bool partial = !buf.empty();
-    int64_t left = since + (partial ? opt_.requestTimeout : opt_.idleTimeout).count() - steadyMs();
+    int64_t left =
+        since + (partial ? opt_.requestTimeout : opt_.idleTimeout).count() - services::steadyMs();
     if (left <= 0) {
       if (partial) {
         std::string msg = "request not complete within " +
@@ -285,23 +252,23 @@ void ControlSocket::serveClient(Client *c) {
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     if (buf.empty()) {
-      since = steadyMs();
+      since = services::steadyMs();
       c->sinceMs = since;
-      c->state = Receiving;
+      c->state = services::ClientSlot::Receiving;
     }
     buf.append(chunk, static_cast<size_t>(n));
     bool open = true;
     size_t nl;
     while (open && (nl = buf.find('\n')) != std::string::npos) {
-      c->state = Handling;
+      c->state = services::ClientSlot::Handling;
       std::string line = buf.substr(0, nl);
       buf.erase(0, nl + 1);
       std::string out = answer(handler_, line);
       // Answered: the rest (if any) is a new request. Set before sending, so a client that
       // has its answer never sees this connection still counted as busy.
-      since = steadyMs();
+      since = services::steadyMs();
       c->sinceMs = since;
-      c->state = buf.empty() ? Idle : Receiving;
+      c->state = buf.empty() ? services::ClientSlot::Idle : services::ClientSlot::Receiving;
       if (!writeAll(fd, out)) open = false;
     }
     if (!open) break;

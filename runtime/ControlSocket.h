@@ -2,6 +2,8 @@
 // (one request object per line, one response object per line; docs/serve.md "Control").
 #pragma once
 
+#include "services/ClientSlots.h"
+
 #include <nlohmann/json.hpp>
 #include <sys/types.h>
 
@@ -58,18 +60,9 @@ public:
   static bool allowedPeer(uid_t uid);
 
 private:
-  enum State : int { Idle, Receiving, Handling };
-  struct Client {
-    int fd = -1;
-    std::thread thread;
-    std::atomic<bool> done{false};
-    std::atomic<int> state{Idle};
-    std::atomic<int64_t> sinceMs{0}; ///< steady ms of the last state change
-    bool evicted = false;            ///< guarded by mu_
-  };
   void acceptLoop();
   void admit(int fd);
-  void serveClient(Client *c);
+  void serveClient(services::ClientSlot *c);
   void logLine(const std::string &s) const {
     if (opt_.log) opt_.log(s);
   }
@@ -82,7 +75,7 @@ private:
   std::atomic<bool> stopping_{false};
   std::thread acceptThread_;
   std::mutex mu_;
-  std::list<Client> clients_; // finished ones are joined at the next accept; guarded by mu_
+  std::list<services::ClientSlot> clients_; // finished ones are joined at the next accept; guarded by mu_
 };
 
 /// Client side: send `request` to the server at `path` and return its response. False with

@@ -120,24 +120,6 @@ uint8_t planRegisterWrite(uint16_t addr, const std::vector<uint16_t> &regs, bool
 
 } // namespace mbmap
 
-struct ModbusServer::Client {
-  enum State : int { Idle, Receiving, Handling };
-  int fd = -1; // closed (and set to -1) under mu_, so shutdown() never hits a reused number
-  std::thread thread;
-  std::atomic<bool> done{false};
-  std::atomic<int> state{Idle};
-  std::atomic<int64_t> sinceMs{0}; ///< steady ms of the last state change
-  bool evicted = false;            ///< guarded by mu_
-};
-
-namespace {
-int64_t steadyMs() {
-  return std::chrono::duration_cast<std::chrono::milliseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-} // namespace
-
 ModbusServer::ModbusServer(ModbusConfig cfg, ModbusBackend backend)
     : cfg_(std::move(cfg)), be_(std::move(backend)) {}
 
@@ -191,15 +173,7 @@ void ModbusServer::stop() {
   if (acceptThread_.joinable()) acceptThread_.join();
   if (listenFd_ >= 0) ::close(listenFd_);
   listenFd_ = -1;
-  std::list<Client> clients;
-  {
-    std::lock_guard lk(mu_);
-    for (Client &c : clients_)
-      if (c.fd >= 0) ::shutdown(c.fd, SHUT_RDWR); // wakes a client blocked in a read
-    clients.splice(clients.end(), clients_);
-  }
-  for (Client &c : clients)
-    if (c.thread.joinable()) c.thread.join();
+  closeAll(clients_, mu_); // the shutdown wakes a client blocked in a read
 }
 
 void ModbusServer::acceptLoop() {
@@ -207,38 +181,15 @@ void ModbusServer::acceptLoop() {
     pollfd p{listenFd_, POLLIN, 0};
     int r = ::poll(&p, 1, 100);
     std::lock_guard lk(mu_);
-    // Reap finished clients.
-    for (auto it = clients_.begin(); it != clients_.end();) {
-      if (it->done) {
-        it->thread.join();
-        it = clients_.erase(it);
-      } else {
-        ++it;
-      }
-    }
+    reapFinished(clients_);
     if (r <= 0) continue;
     int fd = ::accept4(listenFd_, nullptr, nullptr, SOCK_CLOEXEC);
     if (fd < 0) continue;
     ++stats_.connections;
-    // At the cap, make room: close the client idle longest, else the one longest stuck in an
-    // incomplete frame; one whose request is being served is never closed. So idle or
-    // dripping connections cannot lock a new client out (docs/modbus-map.md "Connections").
-    int active = 0;
-    Client *victim = nullptr;
-    for (Client &c : clients_) {
-      if (c.evicted) continue;
-      ++active;
-      int s = c.state.load();
-      if (s == Client::Handling) continue;
-      int vs = victim ? victim->state.load() : -1;
-      if (!victim || (s == Client::Idle && vs != Client::Idle) ||
-          (s == vs && c.sinceMs.load() < victim->sinceMs.load()))
-        victim = &c;
-    }
-    if (active >= cfg_.maxClients && victim) {
-      victim->evicted = true;
-      ::shutdown(victim->fd, SHUT_RDWR);
-      --active;
+    // At the cap, make room (ClientSlots.h; docs/modbus-map.md "Connections").
+    bool evicted = false;
+    const int active = makeRoom(clients_, cfg_.maxClients, evicted);
+    if (evicted) {
       ++stats_.evicted;
       logLine("modbus: " + std::to_string(cfg_.maxClients) +
               " clients connected; closed the one idle longest to admit a new one");
@@ -250,10 +201,8 @@ void ModbusServer::acceptLoop() {
               " clients busy with requests");
       continue;
     }
-    timeval tv{static_cast<time_t>(cfg_.requestTimeout.count() / 1000),
-               static_cast<suseconds_t>(cfg_.requestTimeout.count() % 1000 * 1000)};
-    ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &tv, sizeof tv); // a client that never reads
-    Client &c = clients_.emplace_back();
+    setSendTimeout(fd, cfg_.requestTimeout);
+    ClientSlot &c = clients_.emplace_back();
     c.fd = fd;
     c.sinceMs = steadyMs();
     c.thread = std::thread([this, &c] { clientLoop(&c); });
@@ -285,7 +234,7 @@ int ModbusServer::readFrame(int fd, uint8_t *buf, int64_t deadlineMs) {
   return have;
 }
 
-void ModbusServer::clientLoop(Client *c) {
+void ModbusServer::clientLoop(ClientSlot *c) {
   // The context only replies on our socket; its own address is never used. Frames are read
   // by readFrame, under the whole-request deadline.
   modbus_t *ctx = modbus_new_tcp("127.0.0.1", 502);
@@ -306,7 +255,7 @@ void ModbusServer::clientLoop(Client *c) {
     if (r < 0 || (p.revents & (POLLERR | POLLNVAL))) break;
     int64_t first = steadyMs();
     c->sinceMs = first;
-    c->state = Client::Receiving;
+    c->state = ClientSlot::Receiving;
     int len = readFrame(c->fd, req.data(), first + cfg_.requestTimeout.count());
     if (len < 0) {
       if (len == -2) { // read what the peer already sent, so closing sends FIN, not RST
@@ -321,7 +270,7 @@ void ModbusServer::clientLoop(Client *c) {
       }
       break; // peer closed, a malformed header, or a frame not whole in time
     }
-    c->state = Client::Handling;
+    c->state = ClientSlot::Handling;
     if (!handle(ctx, req.data(), len)) {
       std::lock_guard lk(mu_);
       ++stats_.dropped;
@@ -329,7 +278,7 @@ void ModbusServer::clientLoop(Client *c) {
     }
     idleSince = steadyMs();
     c->sinceMs = idleSince;
-    c->state = Client::Idle;
+    c->state = ClientSlot::Idle;
   }
   modbus_free(ctx); // does not close the socket (set with modbus_set_socket)
   std::lock_guard lk(mu_);

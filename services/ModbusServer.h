@@ -4,6 +4,7 @@
 
 #include "formats/Address.h"
 #include "ladderjit/abi.h"
+#include "services/ClientSlots.h"
 #include "services/ModbusMap.h"
 
 #include <atomic>
@@ -114,9 +115,8 @@ public:
   ModbusStats stats() const;
 
 private:
-  struct Client;
   void acceptLoop();
-  void clientLoop(Client *c);
+  void clientLoop(ClientSlot *c);
   /// Read one ADU into `buf` by `deadlineMs` (steady ms): its length, -1 when the peer closed,
   /// -2 for a malformed MBAP header, -3 past the deadline.
   int readFrame(int fd, uint8_t *buf, int64_t deadlineMs);
@@ -132,8 +132,8 @@ private:
   std::atomic<bool> stop_{false};
   std::thread acceptThread_;
   mutable std::mutex mu_;
-  std::list<Client> clients_; // guarded by mu_
-  ModbusStats stats_;         // guarded by mu_
+  std::list<ClientSlot> clients_; // guarded by mu_
+  ModbusStats stats_;             // guarded by mu_
 };
 
 } // namespace lj::services

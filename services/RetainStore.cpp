@@ -1,19 +1,19 @@
 // The retentive store: end-of-tick capture (triple buffer), the background writer (temp file,
 // fsync, rename, directory fsync, FILE.prev rotation), group commit and restore with fallback.
+// The bytes of the two file formats are RetainFormat.h's.
 #include "services/RetainStore.h"
+#include "services/RetainFormat.h"
 
 #include "formats/PlcDit.h"
 #include "profiles/Profiles.h"
 
 #include <algorithm>
-#include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
 #include <filesystem>
-#include <openssl/evp.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -22,119 +22,9 @@
 namespace lj::services {
 namespace {
 
-// The file stores integers in host order; the format is defined little-endian (docs/retain.md).
-static_assert(std::endian::native == std::endian::little, "retain file format is little-endian");
-
-constexpr char kMagic[8] = {'L', 'J', 'R', 'E', 'T', 'A', 'I', 'N'};
-constexpr uint32_t kFormatVersion = 1;
-constexpr int kHashField = 72; // "sha256:" + 64 hex digits + NUL
-constexpr size_t kDigestBytes = 32;
 constexpr int kFresh = 4; // middle_ flag: the middle slot holds a capture the writer has not seen
 // Writer poll interval: flags set on the scan thread (which never notifies) are seen this late.
 constexpr auto kPoll = std::chrono::milliseconds(2);
-
-/// The file header of format 1 (HNC-8, docs/retain.md "File format").
-struct FileHeader {
-  char magic[8];
-  uint32_t formatVersion;
-  uint32_t headerBytes;
-  uint32_t abiVersion;
-  uint32_t bCount;
-  uint32_t tcFirst; // first retained timer/counter number (300)
-  uint32_t tcCount;
-  uint32_t timerBytes;
-  uint32_t counterBytes;
-  uint32_t payloadBytes;
-  uint32_t reserved;
-  uint64_t saveSeq;
-  uint64_t tick;
-  uint64_t nowMs;
-  char programHash[kHashField];
-};
-static_assert(sizeof(FileHeader) == 144, "retain file header layout");
-
-/// The file header of format 2 (profile-laid targets, docs/retain.md "Format 2"), followed by
-/// spanCount (offset, bytes) pairs, the payload and the digest.
-struct FileHeader2 {
-  char magic[8];
-  uint32_t formatVersion; // 2
-  uint32_t headerBytes;   // 144
-  uint32_t abiVersion;
-  uint32_t spanCount;
-  uint32_t payloadBytes;
-  uint32_t timerSpan; // index of the lj_timer span, 0xFFFFFFFF: none
-  char profile[16];   // NUL padded
-  uint64_t saveSeq;
-  uint64_t tick;
-  uint64_t nowMs;
-  char programHash[kHashField];
-};
-static_assert(sizeof(FileHeader2) == 144, "retain file header 2 layout");
-constexpr uint32_t kFormat2 = 2;
-constexpr uint32_t kMaxSpans = 64;
-
-constexpr uint32_t kPayloadBytes = sizeof(int32_t) * LJ_B_COUNT +
-                                   sizeof(lj_timer) * kRetainedTcCount +
-                                   sizeof(lj_counter) * kRetainedTcCount;
-
-FileHeader expectedHeader() {
-  FileHeader h{};
-  std::memcpy(h.magic, kMagic, sizeof kMagic);
-  h.formatVersion = kFormatVersion;
-  h.headerBytes = sizeof(FileHeader);
-  h.abiVersion = LJ_ABI_VERSION;
-  h.bCount = LJ_B_COUNT;
-  h.tcFirst = 300;
-  h.tcCount = kRetainedTcCount;
-  h.timerBytes = sizeof(lj_timer);
-  h.counterBytes = sizeof(lj_counter);
-  h.payloadBytes = kPayloadBytes;
-  return h;
-}
-
-FileHeader2 expectedHeader2(const RetainLayout &l) {
-  FileHeader2 h{};
-  std::memcpy(h.magic, kMagic, sizeof kMagic);
-  h.formatVersion = kFormat2;
-  h.headerBytes = sizeof(FileHeader2);
-  h.abiVersion = LJ_ABI_VERSION;
-  h.spanCount = static_cast<uint32_t>(l.spans.size());
-  h.payloadBytes = l.payloadBytes();
-  h.timerSpan = l.timerSpan < 0 ? 0xFFFFFFFFu : static_cast<uint32_t>(l.timerSpan);
-  std::snprintf(h.profile, sizeof h.profile, "%s", l.profile.c_str());
-  return h;
-}
-
-/// Bytes of a whole file of layout `l`.
-size_t fileBytes(const RetainLayout &l) {
-  return (l.format1 ? sizeof(FileHeader) : sizeof(FileHeader2) + 8 * l.spans.size()) +
-         l.payloadBytes() + kDigestBytes;
-}
-
-static_assert(offsetof(FileHeader, saveSeq) == offsetof(FileHeader2, saveSeq) &&
-                  offsetof(FileHeader, tick) == offsetof(FileHeader2, tick) &&
-                  offsetof(FileHeader, nowMs) == offsetof(FileHeader2, nowMs) &&
-                  offsetof(FileHeader, programHash) == offsetof(FileHeader2, programHash),
-              "the two headers share their tail");
-
-std::string describe2(const FileHeader2 &h, const unsigned char *spans) {
-  std::string out = "profile " + std::string(h.profile, strnlen(h.profile, sizeof h.profile)) +
-                    ", ABI " + std::to_string(h.abiVersion) + ", spans";
-  for (uint32_t i = 0; i < h.spanCount && i < kMaxSpans; ++i) {
-    uint32_t o, b;
-    std::memcpy(&o, spans + 8 * i, 4);
-    std::memcpy(&b, spans + 8 * i + 4, 4);
-    out += " " + std::to_string(o) + "+" + std::to_string(b);
-  }
-  return out;
-}
-
-std::array<unsigned char, kDigestBytes> sha256(const unsigned char *data, size_t n) {
-  std::array<unsigned char, kDigestBytes> out{};
-  unsigned int len = 0;
-  EVP_Digest(data, n, out.data(), &len, EVP_sha256(), nullptr);
-  return out;
-}
 
 std::string errnoText(const char *what, const std::string &path) {
   return std::string(what) + " " + path + ": " + std::strerror(errno);
@@ -186,33 +76,7 @@ std::string dirOf(const std::string &path) {
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-bool sameLayout(const FileHeader &h, std::string &why) {
-  FileHeader e = expectedHeader();
-  auto item = [](const char *name, uint32_t v) {
-    return std::string(name) + " " + std::to_string(v);
-  };
-  std::string saved = item("ABI", h.abiVersion) + ", " + item("B", h.bCount) + ", " +
-                      item("T/C from", h.tcFirst) + " x" + std::to_string(h.tcCount) + ", " +
-                      item("timer bytes", h.timerBytes) + ", " +
-                      item("counter bytes", h.counterBytes);
-  std::string ours = item("ABI", e.abiVersion) + ", " + item("B", e.bCount) + ", " +
-                     item("T/C from", e.tcFirst) + " x" + std::to_string(e.tcCount) + ", " +
-                     item("timer bytes", e.timerBytes) + ", " +
-                     item("counter bytes", e.counterBytes);
-  if (saved == ours && h.payloadBytes == e.payloadBytes) return true;
-  why = "saved with another layout (" + saved + "; this build: " + ours + ")";
-  return false;
-}
-
 const TargetProfile &profileForHnc8() { return *profileNamed("hnc8"); }
-
-/// "format 2, profile ..., spans ..." of a saved format-2 file of `got` bytes in `buf`.
-std::string savedFormat2(const FileHeader2 &h, const unsigned char *buf, size_t got) {
-  std::string saved = "format 2";
-  if (sizeof h + 8ull * std::min(h.spanCount, kMaxSpans) <= got)
-    saved += ", " + describe2(h, buf + sizeof h);
-  return saved;
-}
 
 } // namespace
 
@@ -392,9 +256,7 @@ RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const 
   }
   // Read at most one byte more than the largest file any layout writes, so trailing garbage is
   // detected; the size of this layout's file is checked below.
-  const size_t want = fileBytes(layout);
-  const size_t cap =
-      std::max<size_t>(want, sizeof(FileHeader2) + 8 * kMaxSpans + sizeof(lj_state) + kDigestBytes);
+  const size_t cap = std::max(retain::fileBytes(layout), retain::maxFileBytes());
   std::vector<unsigned char> buf(cap + 1);
   size_t got = 0;
   while (got < buf.size()) {
@@ -409,87 +271,7 @@ RetainStore::ReadResult RetainStore::readFile(const RetainLayout &layout, const 
     got += static_cast<size_t>(r);
   }
   ::close(fd);
-  if (got < sizeof(FileHeader) + kDigestBytes) {
-    error = path + ": truncated (" + std::to_string(got) + " bytes, a retain file has " +
-            std::to_string(want) + ")";
-    return ReadResult::Corrupt;
-  }
-  if (std::memcmp(buf.data(), kMagic, sizeof kMagic) != 0) {
-    error = path + ": not a ladderjit retain file (bad magic)";
-    return ReadResult::Corrupt;
-  }
-  // The digest covers everything before it, whatever the layout, so damage is told apart from
-  // a file of another version or layout.
-  auto digest = sha256(buf.data(), got - kDigestBytes);
-  if (std::memcmp(digest.data(), buf.data() + got - kDigestBytes, kDigestBytes) != 0) {
-    error = path + (got == want ? ": checksum mismatch (corrupted)"
-                                : ": truncated or corrupted (" + std::to_string(got) +
-                                      " bytes, checksum mismatch)");
-    return ReadResult::Corrupt;
-  }
-  uint32_t format = 0, headerBytes = 0;
-  std::memcpy(&format, buf.data() + 8, 4);
-  std::memcpy(&headerBytes, buf.data() + 12, 4);
-  const uint32_t ours = layout.format1 ? kFormatVersion : kFormat2;
-  if ((format != kFormatVersion && format != kFormat2) || headerBytes != sizeof(FileHeader)) {
-    error = path + ": retain file format " + std::to_string(format) +
-            ", this build reads formats 1 and 2";
-    return ReadResult::Layout;
-  }
-  const FileHeader2 e2 = expectedHeader2(layout);
-  std::vector<unsigned char> ourSpans(8 * layout.spans.size());
-  for (size_t i = 0; i < layout.spans.size(); ++i) {
-    std::memcpy(ourSpans.data() + 8 * i, &layout.spans[i].offset, 4);
-    std::memcpy(ourSpans.data() + 8 * i + 4, &layout.spans[i].bytes, 4);
-  }
-  const std::string ourText = layout.format1 ? "format 1 (HNC-8 B, T300..T427, C300..C427)"
-                                             : "format 2, " + describe2(e2, ourSpans.data());
-  if (format != ours) {
-    std::string saved =
-        format == kFormatVersion ? "format 1 (HNC-8 B, T300..T427, C300..C427)" : "format 2";
-    if (format == kFormat2) {
-      FileHeader2 h2;
-      std::memcpy(&h2, buf.data(), sizeof h2);
-      saved = savedFormat2(h2, buf.data(), got);
-    }
-    error = path + ": saved with another layout (" + saved + "; this program: " + ourText + ")";
-    return ReadResult::Layout;
-  }
-  if (layout.format1) {
-    FileHeader h;
-    std::memcpy(&h, buf.data(), sizeof h);
-    std::string why;
-    if (!sameLayout(h, why) || got != want) {
-      error = path + ": " + (why.empty() ? "unexpected size " + std::to_string(got) : why);
-      return ReadResult::Layout;
-    }
-  } else {
-    FileHeader2 h;
-    std::memcpy(&h, buf.data(), sizeof h);
-    bool same = h.abiVersion == e2.abiVersion && h.spanCount == e2.spanCount &&
-                h.payloadBytes == e2.payloadBytes && h.timerSpan == e2.timerSpan &&
-                std::memcmp(h.profile, e2.profile, sizeof h.profile) == 0 && got == want &&
-                std::memcmp(buf.data() + sizeof h, ourSpans.data(), ourSpans.size()) == 0;
-    if (!same) {
-      error = path + ": saved with another layout (" + savedFormat2(h, buf.data(), got) +
-              "; this program: " + ourText + ")";
-      return ReadResult::Layout;
-    }
-  }
-  // Both headers keep the save number, tick, now_ms and program hash at the same offsets.
-  FileHeader tail;
-  std::memcpy(&tail, buf.data(), sizeof tail);
-  tail.programHash[kHashField - 1] = '\0';
-  const uint64_t seq = tail.saveSeq, tick = tail.tick, nowMs = tail.nowMs;
-  const std::string hash = tail.programHash;
-  const size_t payloadAt = want - kDigestBytes - layout.payloadBytes();
-  out.bytes.assign(buf.data() + payloadAt, buf.data() + payloadAt + layout.payloadBytes());
-  out.tick = tick;
-  out.nowMs = nowMs;
-  out.index = 0;
-  saveSeq = seq;
-  savedHash = hash;
-  return ReadResult::Ok;
+  return retain::decode(layout, path, buf.data(), got, out, saveSeq, savedHash, error);
 }
 
 RestoreReport RetainStore::restore(lj_state &s, uint64_t nowMs) {
@@ -694,34 +476,8 @@ void RetainStore::writerLoop() {
 }
 
 bool RetainStore::writeFile(const RetainImage &img, std::string &error) {
-  std::vector<unsigned char> buf(fileBytes(layout_));
-  unsigned char *p = buf.data();
-  if (layout_.format1) {
-    FileHeader h = expectedHeader();
-    h.saveSeq = saveSeq_ + 1;
-    h.tick = img.tick;
-    h.nowMs = img.nowMs;
-    std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
-    std::memcpy(p, &h, sizeof h);
-    p += sizeof h;
-  } else {
-    FileHeader2 h = expectedHeader2(layout_);
-    h.saveSeq = saveSeq_ + 1;
-    h.tick = img.tick;
-    h.nowMs = img.nowMs;
-    std::snprintf(h.programHash, sizeof h.programHash, "%s", cfg_.programHash.c_str());
-    std::memcpy(p, &h, sizeof h);
-    p += sizeof h;
-    for (const RetainSpan &sp : layout_.spans) {
-      std::memcpy(p, &sp.offset, 4);
-      std::memcpy(p + 4, &sp.bytes, 4);
-      p += 8;
-    }
-  }
-  std::memcpy(p, img.bytes.data(), img.bytes.size());
-  p += img.bytes.size();
-  auto digest = sha256(buf.data(), static_cast<size_t>(p - buf.data()));
-  std::memcpy(p, digest.data(), kDigestBytes);
+  const std::vector<unsigned char> buf =
+      retain::encode(layout_, img, {saveSeq_ + 1, img.tick, img.nowMs, cfg_.programHash});
   const uint64_t nextSeq = saveSeq_ + 1;
 
   // A new file with a random name (O_CREAT | O_EXCL, mode 0600): a symlink or file planted

@@ -52,7 +52,7 @@ void checkCallGraph(Context &cx) {
             if (on) path += subName(cx, fr.first) + " -> ";
           }
           path += subName(cx, e.callee);
-          cx.error(cx.stmt(e.stmt).loc, "recursion: " + path);
+          cx.error(cx.stmt(e.stmt).loc, "LJ1001", "recursion: " + path);
         } else if (color[c] == White) {
           color[c] = Gray;
           stack.push_back({e.callee, 0});
@@ -80,9 +80,9 @@ void checkCallGraph(Context &cx) {
     for (const CallSite &e : cx.calls[u]) {
       auto c = static_cast<size_t>(e.callee);
       if (!recursion && height[c] > *cx.opts.maxCallDepth)
-        cx.error(cx.stmt(e.stmt).loc, "call nesting depth " + std::to_string(height[c]) +
-                                          " exceeds the limit of " +
-                                          std::to_string(*cx.opts.maxCallDepth));
+        cx.error(cx.stmt(e.stmt).loc, "LJ1002",
+                 "call nesting depth " + std::to_string(height[c]) + " exceeds the limit of " +
+                     std::to_string(*cx.opts.maxCallDepth));
       if (!reached[c]) {
         reached[c] = true;
         work.push_back(e.callee);
@@ -103,7 +103,7 @@ void checkCallGraph(Context &cx) {
     const Subroutine &sub = cx.prog.subs[s];
     bool primary = cx.prog.subByNumber[static_cast<size_t>(sub.number)] == static_cast<int32_t>(s);
     if (!reached[s] && primary)
-      cx.warning(cx.stmt(sub.spIndex).loc,
+      cx.warning(cx.stmt(sub.spIndex).loc, "LJ1003",
                  "subroutine " + subName(cx, static_cast<int32_t>(s)) + " is never called");
   }
 }

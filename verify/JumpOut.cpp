@@ -43,17 +43,18 @@ void checkJumpOuts(Context &cx) {
       const std::string what =
           std::string(cx.spell(Op::JumpOut)) + " " + lbl + std::to_string(s.ops[0].index);
       if (unit.kind != Unit::Kind::Sub) {
-        cx.error(s.loc, what +
-                            " outside a subroutine: it leaves a subroutine for a label "
-                            "before " +
-                            end2);
+        cx.error(s.loc, "LJ1004",
+                 what +
+                     " outside a subroutine: it leaves a subroutine for a label "
+                     "before " +
+                     end2);
         continue;
       }
       auto it = labels.find(s.ops[0].index);
       if (it == labels.end()) {
-        cx.error(s.ops[0].loc, "missing label " + lbl + std::to_string(s.ops[0].index) +
-                                   " before " + end2 + ": " + what +
-                                   " goes on at a label of the part that ends with " + end2);
+        cx.error(s.ops[0].loc, "LJ1005",
+                 "missing label " + lbl + std::to_string(s.ops[0].index) + " before " + end2 +
+                     ": " + what + " goes on at a label of the part that ends with " + end2);
         continue;
       }
       cx.info(i).target = it->second;
@@ -92,12 +93,12 @@ void checkJumpOuts(Context &cx) {
       const std::vector<int32_t> &to = exits[static_cast<size_t>(e.callee)];
       if (to.empty()) continue;
       if (unit.kind != Unit::Kind::Plc2) {
-        cx.error(cx.stmt(e.stmt).loc, std::string(cx.spell(Op::Call)) +
-                                          " of a subroutine that can leave through " +
-                                          cx.spell(Op::JumpOut) + " for " + lbl +
-                                          std::to_string(cx.stmt(to.front()).ops[0].index) + " (" +
-                                          lineOf(cx.stmt(to.front())) + "), a label before " +
-                                          end2 + ": this call is not in that part");
+        cx.error(cx.stmt(e.stmt).loc, "LJ1006",
+                 std::string(cx.spell(Op::Call)) + " of a subroutine that can leave through " +
+                     cx.spell(Op::JumpOut) + " for " + lbl +
+                     std::to_string(cx.stmt(to.front()).ops[0].index) + " (" +
+                     lineOf(cx.stmt(to.front())) + "), a label before " + end2 +
+                     ": this call is not in that part");
         continue;
       }
       for (int32_t l : to) {

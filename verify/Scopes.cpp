@@ -45,7 +45,7 @@ private:
         cur = next++;
       } else if (s.op == Op::LoopEnd) {
         if (open.empty()) {
-          cx_.error(s.loc,
+          cx_.error(s.loc, "LJ1007",
                     std::string(cx_.spell(Op::LoopEnd)) + " without " + cx_.spell(Op::LoopBegin));
           continue;
         }
@@ -59,12 +59,13 @@ private:
         int32_t n = s.ops[0].index;
         auto [it, fresh] = labels_.try_emplace(n, i);
         if (!fresh)
-          cx_.error(s.ops[0].loc, "duplicate label " + label(cx_, n) + " (first on " +
-                                      lineText(cx_.stmt(it->second)) + ")");
+          cx_.error(s.ops[0].loc, "LJ1008",
+                    "duplicate label " + label(cx_, n) + " (first on " +
+                        lineText(cx_.stmt(it->second)) + ")");
       }
     }
     for (int32_t loop : open)
-      cx_.error(cx_.stmt(loop).loc,
+      cx_.error(cx_.stmt(loop).loc, "LJ1009",
                 std::string(cx_.spell(Op::LoopBegin)) + " without " + cx_.spell(Op::LoopEnd));
   }
 
@@ -75,15 +76,15 @@ private:
     int32_t n = s.ops[0].index;
     auto it = labels_.find(n);
     if (it == labels_.end()) {
-      cx_.error(s.ops[0].loc, "missing label " + label(cx_, n));
+      cx_.error(s.ops[0].loc, "LJ1010", "missing label " + label(cx_, n));
       return;
     }
     int32_t lbl = it->second;
     if (scope_[rel(lbl)] != scope_[rel(i)]) {
-      cx_.error(s.ops[0].loc, std::string(cx_.spell(Op::Jump)) + " " + label(cx_, n) +
-                                  " crosses a scope boundary (" + cx_.spell(Op::Label) + " " +
-                                  label(cx_, n) + " on " + lineText(cx_.stmt(lbl)) +
-                                  " is not in the same loop body)");
+      cx_.error(s.ops[0].loc, "LJ1011",
+                std::string(cx_.spell(Op::Jump)) + " " + label(cx_, n) +
+                    " crosses a scope boundary (" + cx_.spell(Op::Label) + " " + label(cx_, n) +
+                    " on " + lineText(cx_.stmt(lbl)) + " is not in the same loop body)");
       return;
     }
     cx_.info(i).target = lbl;
@@ -96,9 +97,9 @@ private:
     int32_t n = s.ops[0].index;
     int16_t sub = cx_.prog.subByNumber[static_cast<size_t>(n)];
     if (sub < 0) {
-      cx_.error(s.ops[0].loc, "undefined subroutine " +
-                                  std::string(cx_.tp.area(Area::Subroutine).name) +
-                                  std::to_string(n));
+      cx_.error(s.ops[0].loc, "LJ1012",
+                "undefined subroutine " + std::string(cx_.tp.area(Area::Subroutine).name) +
+                    std::to_string(n));
       return;
     }
     cx_.info(i).target = sub;
@@ -106,15 +107,16 @@ private:
   }
 
   void underflow(const Stmt &s, const std::string &what) {
-    cx_.error(s.loc, "stack underflow: " + what);
+    cx_.error(s.loc, "LJ1013", "stack underflow: " + what);
   }
 
   /// Every MPS still open at a stack reset is an error, reported at the MPS.
   void closeMps(const std::string &where) {
     for (int32_t mps : mps_)
       if (mps >= 0)
-        cx_.error(cx_.stmt(mps).loc, "unclosed " + std::string(cx_.spell(Op::BranchPush)) +
-                                         ": MS is not empty at " + where);
+        cx_.error(cx_.stmt(mps).loc, "LJ1014",
+                  "unclosed " + std::string(cx_.spell(Op::BranchPush)) + ": MS is not empty at " +
+                      where);
     mps_.clear();
   }
 
@@ -126,7 +128,7 @@ private:
     if (fresh) return;
     const Stmt &first = cx_.stmt(it->second);
     std::string a = cx_.operandText(o);
-    cx_.warning(o.loc, "double coil: " + a + " is also written on " + lineText(first));
+    cx_.warning(o.loc, "LJ1015", "double coil: " + a + " is also written on " + lineText(first));
     cx_.note(first.ops[0].loc, "first write of " + a + " is here");
   }
 
@@ -142,13 +144,14 @@ private:
                          " inputs on ST, found " + std::to_string(d));
     } else {
       if (ii.input == InputRule::Required && d == 0)
-        cx_.warning(s.loc, std::string(cx_.spell(ii.op)) +
-                               ": block needs an input; ST is empty, input is 1");
+        cx_.warning(s.loc, "LJ1016",
+                    std::string(cx_.spell(ii.op)) +
+                        ": block needs an input; ST is empty, input is 1");
     }
     if (s.op == Op::Jump) jump(i);
     if (s.op == Op::Call) call(i);
     if (s.op == Op::Return && unit_.kind != Unit::Kind::Sub)
-      cx_.error(s.loc, std::string(cx_.spell(Op::Return)) + " outside a subroutine");
+      cx_.error(s.loc, "LJ1017", std::string(cx_.spell(Op::Return)) + " outside a subroutine");
   }
 
   /// Stack effect of the dropped lines just before statement `i` (or the unit's end), without
@@ -187,7 +190,7 @@ private:
       inf.msDepth = ms;
       if (s.op == Op::Label || s.op == Op::LoopEnd) dead = false;
       if (dead) {
-        cx_.warning(s.loc, "unreachable code");
+        cx_.warning(s.loc, "LJ1018", "unreachable code");
         dead = false;
       }
       // The depth after it is ir/StackEffect.h's; the cases check and report.

@@ -47,8 +47,9 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
     for (const NumberRange &r : area == Area::Timer ? tp.timerNumbers : tp.counterNumbers)
       spaces += (spaces.empty() ? "" : ", ") + letter + std::to_string(r.lo) + ".." + letter +
                 std::to_string(r.hi);
-    cx.error(s.ops[0].loc, std::string(family) + " number " + std::to_string(n) +
-                               " is not valid (" + spaces + ")");
+    cx.error(s.ops[0].loc, "LJ1019",
+             std::string(family) + " number " + std::to_string(n) + " is not valid (" + spaces +
+                 ")");
     return;
   }
   cx.info(i).slot = slot;
@@ -59,12 +60,14 @@ void timerCounter(Context &cx, int32_t i, SlotUsers &users, const char *family, 
   }
   const Stmt &f = cx.stmt(first);
   if (f.op != s.op) {
-    cx.error(s.ops[0].loc, std::string(family) + " " + name + " is used by both " + cx.spell(f.op) +
-                               " (" + lineText(f) + ") and " + cx.spell(s.op));
+    cx.error(s.ops[0].loc, "LJ1020",
+             std::string(family) + " " + name + " is used by both " + cx.spell(f.op) + " (" +
+                 lineText(f) + ") and " + cx.spell(s.op));
     cx.note(f.ops[0].loc, name + " is first used here");
   } else {
-    cx.warning(s.ops[0].loc, std::string(family) + " " + name + " is also used on " + lineText(f) +
-                                 "; both instructions share its state");
+    cx.warning(s.ops[0].loc, "LJ1021",
+               std::string(family) + " " + name + " is also used on " + lineText(f) +
+                   "; both instructions share its state");
   }
 }
 
@@ -113,8 +116,9 @@ void assignSlots(Context &cx) {
       if (!perObject || !isContact(s.op)) cx.info(i).slot = edges;
       ++edges;
       if (edges == LJ_EDGE_SLOTS + 1)
-        cx.error(s.loc, "too many edge instructions (more than " + std::to_string(LJ_EDGE_SLOTS) +
-                            " " + spellAll(cx, kEdgeOps) + ")");
+        cx.error(s.loc, "LJ1022",
+                 "too many edge instructions (more than " + std::to_string(LJ_EDGE_SLOTS) + " " +
+                     spellAll(cx, kEdgeOps) + ")");
       break;
     case StateKind::Timer:
       timerCounter(cx, i, timers, "timer", Area::Timer);
@@ -127,8 +131,9 @@ void assignSlots(Context &cx) {
       cx.info(i).slot = words;
       words += 2;
       if (words > LJ_INST_WORDS && words <= LJ_INST_WORDS + 2)
-        cx.error(s.loc, "too many stateful CNC blocks (more than " +
-                            std::to_string(LJ_INST_WORDS / 2) + " " + cx.spell(Op::ToolLife) + ")");
+        cx.error(s.loc, "LJ1023",
+                 "too many stateful CNC blocks (more than " + std::to_string(LJ_INST_WORDS / 2) +
+                     " " + cx.spell(Op::ToolLife) + ")");
       break;
     case StateKind::Pls:
     case StateKind::Plf:
@@ -138,18 +143,19 @@ void assignSlots(Context &cx) {
       auto num = static_cast<size_t>(s.ops[0].value);
       const int limit = ii.state == StateKind::Alt ? LJ_BLOCK_SLOTS : cx.tp.pulseSlots();
       if (s.ops[0].value < 0 || s.ops[0].value >= limit) {
-        cx.error(s.ops[0].loc, std::string(cx.spell(ii.op)) + " block number " +
-                                   std::to_string(s.ops[0].value) + " is out of range (0.." +
-                                   std::to_string(limit - 1) + ")");
+        cx.error(s.ops[0].loc, "LJ1024",
+                 std::string(cx.spell(ii.op)) + " block number " + std::to_string(s.ops[0].value) +
+                     " is out of range (0.." + std::to_string(limit - 1) + ")");
         break;
       }
       cx.info(i).slot = s.ops[0].value;
       if (users[num] < 0) {
         users[num] = i;
       } else {
-        cx.warning(s.ops[0].loc, std::string(cx.spell(ii.op)) + " block " + std::to_string(num) +
-                                     " is also used on " + lineText(cx.stmt(users[num])) +
-                                     "; both instructions share its state");
+        cx.warning(s.ops[0].loc, "LJ1025",
+                   std::string(cx.spell(ii.op)) + " block " + std::to_string(num) +
+                       " is also used on " + lineText(cx.stmt(users[num])) +
+                       "; both instructions share its state");
       }
       break;
     }

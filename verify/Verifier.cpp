@@ -39,7 +39,7 @@ void addPart(Context &cx, int rank, StmtRange r, bool (&have)[3]) {
     // After 2END only subroutines may follow (dialect-notes "Program parts").
     for (int32_t i = r.begin; i < r.end; ++i) {
       if (isMarker(cx.stmt(i).op) || cx.stmt(i).op == Op::SubEnd) continue; // reported already
-      cx.error(cx.stmt(i).loc,
+      cx.error(cx.stmt(i).loc, "LJ1026",
                "statement after " + std::string(cx.spell(Op::EndSliced)) + " outside a subroutine");
       break;
     }
@@ -59,18 +59,20 @@ void planParts(Context &cx, int32_t mainEnd) {
   for (int32_t i = 0; i < mainEnd; ++i) {
     const Stmt &s = cx.stmt(i);
     if (s.op == Op::SubEnd) {
-      cx.error(s.loc, std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
+      cx.error(s.loc, "LJ1027",
+               std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
       continue;
     }
     if (!isMarker(s.op)) continue;
     int rank = markerRank(s.op);
     if (first[rank] >= 0) {
-      cx.error(s.loc, std::string("duplicate ") + cx.spell(s.op) + " (first on " +
-                          lineOf(cx.stmt(first[rank])) + ")");
+      cx.error(s.loc, "LJ1028",
+               std::string("duplicate ") + cx.spell(s.op) + " (first on " +
+                   lineOf(cx.stmt(first[rank])) + ")");
     } else if (rank < lastRank) {
-      cx.error(s.loc, std::string(cx.spell(s.op)) + " after " +
-                          cx.spell(cx.stmt(markers.back()).op) +
-                          ": markers must come in the order " + markerOrder(cx));
+      cx.error(s.loc, "LJ1029",
+               std::string(cx.spell(s.op)) + " after " + cx.spell(cx.stmt(markers.back()).op) +
+                   ": markers must come in the order " + markerOrder(cx));
     } else {
       first[rank] = i;
       lastRank = rank;
@@ -102,8 +104,9 @@ void openSub(Context &cx, int32_t sp) {
   int16_t &slot = cx.prog.subByNumber[static_cast<size_t>(number)];
   if (slot >= 0) {
     const Subroutine &prev = cx.prog.subs[static_cast<size_t>(slot)];
-    cx.error(s.ops[0].loc, "duplicate subroutine " + subText(cx, number) + " (first on " +
-                               lineOf(cx.stmt(prev.spIndex)) + ")");
+    cx.error(s.ops[0].loc, "LJ1030",
+             "duplicate subroutine " + subText(cx, number) + " (first on " +
+                 lineOf(cx.stmt(prev.spIndex)) + ")");
   } else {
     slot = static_cast<int16_t>(idx);
   }
@@ -124,9 +127,10 @@ void planSubs(Context &cx, int32_t mainEnd) {
     if (s.op == Op::SubBegin) {
       if (inSub) {
         const Subroutine &cur = cx.prog.subs.back();
-        cx.error(s.loc, "nested " + std::string(cx.spell(Op::SubBegin)) + ": " +
-                            subText(cx, cur.number) + " (" + lineOf(cx.stmt(cur.spIndex)) +
-                            ") has no " + cx.spell(Op::SubEnd) + " before it");
+        cx.error(s.loc, "LJ1031",
+                 "nested " + std::string(cx.spell(Op::SubBegin)) + ": " + subText(cx, cur.number) +
+                     " (" + lineOf(cx.stmt(cur.spIndex)) + ") has no " + cx.spell(Op::SubEnd) +
+                     " before it");
         closeSub(cx, i);
       }
       openSub(cx, i);
@@ -137,22 +141,24 @@ void planSubs(Context &cx, int32_t mainEnd) {
         closeSub(cx, i);
         inSub = false;
       } else {
-        cx.error(s.loc, std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
+        cx.error(s.loc, "LJ1032",
+                 std::string(cx.spell(Op::SubEnd)) + " without " + cx.spell(Op::SubBegin));
       }
     } else if (isMarker(s.op)) {
-      cx.error(s.loc, std::string(cx.spell(s.op)) + " after a subroutine: " +
-                          cx.spell(Op::SubBegin) + " before the end of the main parts (first " +
-                          cx.spell(Op::SubBegin) + " on " + lineOf(cx.stmt(mainEnd)) + ")");
+      cx.error(s.loc, "LJ1033",
+               std::string(cx.spell(s.op)) + " after a subroutine: " + cx.spell(Op::SubBegin) +
+                   " before the end of the main parts (first " + cx.spell(Op::SubBegin) + " on " +
+                   lineOf(cx.stmt(mainEnd)) + ")");
     } else if (!inSub && !outsideReported) {
-      cx.error(s.loc, "statement after the subroutines");
+      cx.error(s.loc, "LJ1034", "statement after the subroutines");
       outsideReported = true;
     }
   }
   if (inSub) {
     const Subroutine &cur = cx.prog.subs.back();
-    cx.error(cx.stmt(cur.spIndex).loc, std::string(cx.spell(Op::SubBegin)) + " " +
-                                           subText(cx, cur.number) + " has no " +
-                                           cx.spell(Op::SubEnd));
+    cx.error(cx.stmt(cur.spIndex).loc, "LJ1035",
+             std::string(cx.spell(Op::SubBegin)) + " " + subText(cx, cur.number) + " has no " +
+                 cx.spell(Op::SubEnd));
     closeSub(cx, n);
   }
 }
@@ -177,7 +183,7 @@ void planStructure(Context &cx) {
 std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyOptions &given,
                                       Diagnostics &diags) {
   if (!parsed.profile) {
-    diags.error({}, "the program names no target profile (its front end must set one)");
+    diags.error({}, "LJ1036", "the program names no target profile (its front end must set one)");
     return std::nullopt;
   }
   const VerifyOptions opts = given.resolved(*parsed.profile);
@@ -196,9 +202,9 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   cx.dropped = parsed.dropped;
   if (prog.stmts.size() > static_cast<size_t>(std::max(*opts.maxStatements, 0))) {
     const Stmt &over = prog.stmts[static_cast<size_t>(std::max(*opts.maxStatements, 0))];
-    cx.error(over.loc, "program has " + std::to_string(prog.stmts.size()) +
-                           " statements, more than the limit of " +
-                           std::to_string(*opts.maxStatements));
+    cx.error(over.loc, "LJ1037",
+             "program has " + std::to_string(prog.stmts.size()) +
+                 " statements, more than the limit of " + std::to_string(*opts.maxStatements));
   }
   verifier::planStructure(cx);
   cx.calls.resize(cx.units.size());

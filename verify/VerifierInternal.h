@@ -41,8 +41,10 @@ struct Context {
 
   const Stmt &stmt(int32_t i) const { return prog.stmts[static_cast<size_t>(i)]; }
   StmtInfo &info(int32_t i) { return prog.info[static_cast<size_t>(i)]; }
-  void error(SourceLoc l, std::string m) { diags.error(l, std::move(m)); }
-  void warning(SourceLoc l, std::string m) { diags.warning(l, std::move(m)); }
+  void error(SourceLoc l, const char *code, std::string m) { diags.error(l, code, std::move(m)); }
+  void warning(SourceLoc l, const char *code, std::string m) {
+    diags.warning(l, code, std::move(m));
+  }
   void note(SourceLoc l, std::string m) { diags.note(l, std::move(m)); }
   /// `op` / `o` as the program's dialect writes them (messages name what the user wrote).
   const char *spell(Op op) const { return spelling(prog.dialect, op); }

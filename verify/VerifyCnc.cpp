@@ -26,8 +26,9 @@ void checkStmt(Context &cx, const Stmt &s) {
     const Operand &n = s.ops[0];
     const std::span<const ValueRange> v = instrInfo(s.op).operands[0].values;
     if (!inValueSet(instrInfo(s.op).operands[0], n.value))
-      cx.error(n.loc, mn + " number " + std::to_string(n.value) + " is neither an alarm (" +
-                          range(v[0]) + ") nor a prompt (" + range(v[1]) + ")");
+      cx.error(n.loc, "LJ1040",
+               mn + " number " + std::to_string(n.value) + " is neither an alarm (" + range(v[0]) +
+                   ") nor a prompt (" + range(v[1]) + ")");
     break;
   }
   case Op::UserOutput: {
@@ -35,10 +36,10 @@ void checkStmt(Context &cx, const Stmt &s) {
     const Operand &o = s.ops[2];
     const int64_t last = int64_t{o.index} + instrInfo(s.op).operands[2].span - 1;
     if (!cx.tp.validIndex(o.area, last))
-      cx.error(o.loc, mn + " output bytes " + addr(cx, o.area, o.index) + ".." +
-                          addr(cx, o.area, last) + " run past the end of " +
-                          cx.tp.area(o.area).name + " (" + addr(cx, o.area, 0) + ".." +
-                          lastOf(cx, o.area) + ")");
+      cx.error(o.loc, "LJ1041",
+               mn + " output bytes " + addr(cx, o.area, o.index) + ".." + addr(cx, o.area, last) +
+                   " run past the end of " + cx.tp.area(o.area).name + " (" + addr(cx, o.area, 0) +
+                   ".." + lastOf(cx, o.area) + ")");
     break;
   }
   case Op::BusSpindleGeared: {
@@ -46,24 +47,26 @@ void checkStmt(Context &cx, const Stmt &s) {
     const Operand &p = s.ops[3];
     const int64_t last = int64_t{p.index} + instrInfo(s.op).operands[3].span - 1;
     if (!cx.tp.validIndex(Area::Param, last))
-      cx.error(p.loc, mn + " parameter block " + addr(cx, Area::Param, p.index) + ".." +
-                          addr(cx, Area::Param, last) + " runs past the end of " +
-                          cx.tp.area(Area::Param).name + " (" + addr(cx, Area::Param, 0) + ".." +
-                          lastOf(cx, Area::Param) + ")");
+      cx.error(p.loc, "LJ1042",
+               mn + " parameter block " + addr(cx, Area::Param, p.index) + ".." +
+                   addr(cx, Area::Param, last) + " runs past the end of " +
+                   cx.tp.area(Area::Param).name + " (" + addr(cx, Area::Param, 0) + ".." +
+                   lastOf(cx, Area::Param) + ")");
     break;
   }
   case Op::ChannelModeSet: {
     const Operand &m = s.ops[1];
     if (m.kind == Operand::Kind::Const &&
         (m.value <= 0 || m.value > 64 || (m.value & (m.value - 1)) != 0))
-      cx.error(m.loc, mn + " mode " + std::to_string(m.value) +
-                          " is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single block, manual, "
-                          "increment, home, MPG, PMC)");
+      cx.error(m.loc, "LJ1043",
+               mn + " mode " + std::to_string(m.value) +
+                   " is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single block, manual, "
+                   "increment, home, MPG, PMC)");
     break;
   }
   case Op::ReferencePoint:
     if (s.ops[1].value == 5)
-      cx.warning(s.ops[1].loc,
+      cx.warning(s.ops[1].loc, "LJ1044",
                  mn + " 5: the 5th reference point has no status bit; the output is always 0");
     break;
   default:

@@ -26,10 +26,11 @@ std::string addr(const Context &cx, const Operand &o) {
 void checkRange(Context &cx, const Stmt &s, const Operand &start, int64_t count, const char *what) {
   const int64_t last = int64_t{start.index} + count - 1;
   if (cx.tp.validIndex(start.area, last)) return;
-  cx.error(start.loc, std::string(cx.spell(s.op)) + " " + what + " " + addr(cx, start) + ".." +
-                          addr(cx, start.area, last) + " runs past the end of " +
-                          cx.tp.area(start.area).name + " (" + addr(cx, start.area, 0) + ".." +
-                          addr(cx, start.area, cx.tp.area(start.area).count - 1) + ")");
+  cx.error(start.loc, "LJ1045",
+           std::string(cx.spell(s.op)) + " " + what + " " + addr(cx, start) + ".." +
+               addr(cx, start.area, last) + " runs past the end of " + cx.tp.area(start.area).name +
+               " (" + addr(cx, start.area, 0) + ".." +
+               addr(cx, start.area, cx.tp.area(start.area).count - 1) + ")");
 }
 
 /// FMOV / ZRST: start and end in the same form and area, start <= end (bits: index*width+bit).
@@ -37,12 +38,13 @@ void checkZone(Context &cx, const Stmt &s) {
   const Operand &a = s.ops[0], &b = s.ops[1];
   const std::string mn = cx.spell(s.op);
   if (a.kind != b.kind) {
-    cx.error(b.loc, mn + " start " + addr(cx, a) + " and end " + addr(cx, b) +
-                        " must both be registers or both be bit addresses");
+    cx.error(b.loc, "LJ1046",
+             mn + " start " + addr(cx, a) + " and end " + addr(cx, b) +
+                 " must both be registers or both be bit addresses");
     return;
   }
   if (a.area != b.area) {
-    cx.error(b.loc,
+    cx.error(b.loc, "LJ1047",
              mn + " start " + addr(cx, a) + " and end " + addr(cx, b) + " are in different areas");
     return;
   }
@@ -51,7 +53,7 @@ void checkZone(Context &cx, const Stmt &s) {
     return o.kind == Operand::Kind::Bit ? int64_t{o.index} * w + o.bit : int64_t{o.index};
   };
   if (pos(b) < pos(a))
-    cx.error(b.loc, mn + " end " + addr(cx, b) + " comes before start " + addr(cx, a));
+    cx.error(b.loc, "LJ1048", mn + " end " + addr(cx, b) + " comes before start " + addr(cx, a));
 }
 
 } // namespace

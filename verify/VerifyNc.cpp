@@ -17,9 +17,10 @@ void mustFit(Context &cx, const Stmt &s, int k, int32_t count, const char *what)
   int64_t last = int64_t{op.index} + count - 1;
   if (last < a.count) return;
   std::string l(a.name);
-  cx.error(op.loc, std::string(cx.spell(s.op)) + " " + what + " " + l + std::to_string(op.index) +
-                       ".." + l + std::to_string(last) + " runs past the end of area " + l + " (" +
-                       l + "0.." + l + std::to_string(a.count - 1) + ")");
+  cx.error(op.loc, "LJ1049",
+           std::string(cx.spell(s.op)) + " " + what + " " + l + std::to_string(op.index) + ".." +
+               l + std::to_string(last) + " runs past the end of area " + l + " (" + l + "0.." + l +
+               std::to_string(a.count - 1) + ")");
 }
 
 /// Elements operand `k` of `s` touches (the table's span column).

@@ -63,21 +63,24 @@ void FunctionBlocks::config(std::string_view args, SourceLoc loc) {
   }
   if (!cur.empty()) words.push_back(upper(cur));
   if (words.empty()) {
-    diags_.error(loc, "CONFIG needs a block: CONFIG %TMi [TON|TOF|TP] [TB=...] [P=n] or "
-                      "CONFIG %Ci [P=n]");
+    diags_.error(loc, "LJ2001",
+                 "CONFIG needs a block: CONFIG %TMi [TON|TOF|TP] [TB=...] [P=n] or "
+                 "CONFIG %Ci [P=n]");
     return;
   }
   std::string err;
   std::optional<Object> blk = parseObject(words[0], err);
   if (!blk || !isBlock(*blk)) {
-    diags_.error(loc, "CONFIG: " + (blk ? "'" + words[0] + "' is not a block (%TMi or %Ci)" : err));
+    diags_.error(loc, "LJ2002",
+                 "CONFIG: " + (blk ? "'" + words[0] + "' is not a block (%TMi or %Ci)" : err));
     return;
   }
   const bool timer = blk->cls == ObjClass::Timer;
   Config &c = configOf(*blk);
   if (c.loc.line != 0) {
-    diags_.error(loc, "CONFIG " + name(*blk) + " again (first on line " +
-                          std::to_string(c.loc.line) + ")");
+    diags_.error(loc, "LJ2003",
+                 "CONFIG " + name(*blk) + " again (first on line " + std::to_string(c.loc.line) +
+                     ")");
     return;
   }
   c.loc = loc;
@@ -95,14 +98,16 @@ void FunctionBlocks::config(std::string_view args, SourceLoc loc) {
       for (int b = 0; b < 5; ++b)
         if (w.substr(3) == kBases[b]) code = b;
       if (code < 0) {
-        diags_.error(loc, "CONFIG " + name(*blk) + ": time base '" + w.substr(3) +
-                              "' (1MIN, 1S, 100MS, 10MS or 1MS; modicon-neza.md 3.3, L1274)");
+        diags_.error(loc, "LJ2004",
+                     "CONFIG " + name(*blk) + ": time base '" + w.substr(3) +
+                         "' (1MIN, 1S, 100MS, 10MS or 1MS; modicon-neza.md 3.3, L1274)");
         continue;
       }
       if (code == 4 && blk->number > 1) {
-        diags_.error(loc, "CONFIG " + name(*blk) +
-                              ": the 1 ms time base is only for %TM0 and "
-                              "%TM1 (modicon-neza.md 3.3, L1274-1275)");
+        diags_.error(loc, "LJ2005",
+                     "CONFIG " + name(*blk) +
+                         ": the 1 ms time base is only for %TM0 and "
+                         "%TM1 (modicon-neza.md 3.3, L1274-1275)");
         continue;
       }
       c.timeBase = code;
@@ -114,34 +119,37 @@ void FunctionBlocks::config(std::string_view args, SourceLoc loc) {
       for (char d : digits) ok = ok && std::isdigit(static_cast<unsigned char>(d));
       const int32_t v = ok ? std::stoi(digits) : -1;
       if (!ok || v > kPresetMax) {
-        diags_.error(loc, "CONFIG " + name(*blk) + ": preset '" + digits +
-                              "' out of range (0 <= P <= 9999; modicon-neza.md 3.3, L1276-1278)");
+        diags_.error(loc, "LJ2006",
+                     "CONFIG " + name(*blk) + ": preset '" + digits +
+                         "' out of range (0 <= P <= 9999; modicon-neza.md 3.3, L1276-1278)");
         continue;
       }
       c.preset = v;
       continue;
     }
-    diags_.error(loc, "CONFIG " + name(*blk) + ": unknown setting '" + w + "' (" +
-                          (timer ? "TON, TOF, TP, TB=..., P=n" : "a counter takes only P=n") + ")");
+    diags_.error(loc, "LJ2007",
+                 "CONFIG " + name(*blk) + ": unknown setting '" + w + "' (" +
+                     (timer ? "TON, TOF, TP, TB=..., P=n" : "a counter takes only P=n") + ")");
   }
 }
 
 void FunctionBlocks::begin(std::string_view text, SourceLoc loc, SourceLoc opLoc) {
   if (open_) {
-    diags_.error(loc,
+    diags_.error(loc, "LJ2008",
                  "BLK inside " + openBlock() + ": blocks do not nest (END_BLK ends the first one)");
     return;
   }
   if (text.empty()) {
-    diags_.error(loc, "BLK needs a block: BLK %TMi or BLK %Ci");
+    diags_.error(loc, "LJ2009", "BLK needs a block: BLK %TMi or BLK %Ci");
     return;
   }
   std::string err;
   std::optional<Object> blk = parseObject(text, err);
   if (!blk || !isBlock(*blk)) {
-    diags_.error(opLoc, "BLK: " + (blk ? "'" + std::string(text) +
-                                             "' is not a function block (%TMi timer, %Ci counter)"
-                                       : err));
+    diags_.error(opLoc, "LJ2010",
+                 "BLK: " + (blk ? "'" + std::string(text) +
+                                      "' is not a function block (%TMi timer, %Ci counter)"
+                                : err));
     return;
   }
   use(*blk);
@@ -157,10 +165,11 @@ int FunctionBlocks::pinIndex(const Object &blk, const std::string &mnem, SourceL
     for (int k = 0; k < 4; ++k)
       if (mnem == kCounterPins[k]) return k;
   }
-  diags_.error(loc, mnem + " is not an input of " + name(blk) + " (" +
-                        (blk.cls == ObjClass::Timer ? "a timer has the input IN"
-                                                    : "a counter has the inputs R, S, CU, CD") +
-                        "; modicon-neza.md 3.2-3.3)");
+  diags_.error(loc, "LJ2011",
+               mnem + " is not an input of " + name(blk) + " (" +
+                   (blk.cls == ObjClass::Timer ? "a timer has the input IN"
+                                               : "a counter has the inputs R, S, CU, CD") +
+                   "; modicon-neza.md 3.2-3.3)");
   return -1;
 }
 
@@ -168,7 +177,8 @@ void FunctionBlocks::pin(const std::string &mnem, SourceLoc loc) {
   const int k = pinIndex(open_->blk, mnem, loc);
   if (k < 0) return;
   if (open_->pins[static_cast<size_t>(k)]) {
-    diags_.error(loc, mnem + " of " + name(open_->blk) + " is given twice in " + openBlock());
+    diags_.error(loc, "LJ2012",
+                 mnem + " of " + name(open_->blk) + " is given twice in " + openBlock());
     return;
   }
   const Operand latch = em_.scratch(loc);
@@ -187,8 +197,9 @@ void FunctionBlocks::run(SourceLoc loc) {
   Config &c = configOf(b.blk);
   if (b.blk.cls == ObjClass::Timer) {
     if (!b.pins[0]) {
-      diags_.error(b.loc, "BLK " + name(b.blk) + " has no IN input before " +
-                              (b.outputs ? "OUT_BLK" : "END_BLK"));
+      diags_.error(b.loc, "LJ2013",
+                   "BLK " + name(b.blk) + " has no IN input before " +
+                       (b.outputs ? "OUT_BLK" : "END_BLK"));
       return;
     }
     em_.emit(Op::Load, loc, {*b.pins[0]});
@@ -199,8 +210,9 @@ void FunctionBlocks::run(SourceLoc loc) {
   for (int k = 0; k < 4; ++k)
     if (b.pins[static_cast<size_t>(k)]) mask |= 1 << k;
   if (mask == 0) {
-    diags_.error(b.loc, "BLK " + name(b.blk) + " has no input (R, S, CU or CD) before " +
-                            (b.outputs ? "OUT_BLK" : "END_BLK"));
+    diags_.error(b.loc, "LJ2014",
+                 "BLK " + name(b.blk) + " has no input (R, S, CU or CD) before " +
+                     (b.outputs ? "OUT_BLK" : "END_BLK"));
     return;
   }
   for (int k = 0; k < 4; ++k)
@@ -210,11 +222,11 @@ void FunctionBlocks::run(SourceLoc loc) {
 
 void FunctionBlocks::outputs(SourceLoc loc) {
   if (!open_) {
-    diags_.error(loc, "OUT_BLK without BLK");
+    diags_.error(loc, "LJ2015", "OUT_BLK without BLK");
     return;
   }
   if (open_->outputs) {
-    diags_.error(loc, "OUT_BLK twice in " + openBlock());
+    diags_.error(loc, "LJ2016", "OUT_BLK twice in " + openBlock());
     return;
   }
   open_->outputs = true;
@@ -223,7 +235,7 @@ void FunctionBlocks::outputs(SourceLoc loc) {
 
 void FunctionBlocks::end(SourceLoc loc) {
   if (!open_) {
-    diags_.error(loc, "END_BLK without BLK");
+    diags_.error(loc, "LJ2017", "END_BLK without BLK");
     return;
   }
   if (!open_->ran) run(loc);
@@ -253,22 +265,25 @@ std::optional<Object> FunctionBlocks::bare(std::string_view name, SourceLoc loc,
   isBare = n == "E" || n == "D" || n == "F" || n == "Q";
   if (!isBare) return std::nullopt;
   if (!open_ || !open_->outputs) {
-    diags_.error(loc, "'" + n +
-                          "' names a block output only between OUT_BLK and END_BLK; "
-                          "elsewhere write it in full (%Ci." +
-                          n + ", %TMi.Q; modicon-neza.md 1.2, L1082-1085)");
+    diags_.error(loc, "LJ2018",
+                 "'" + n +
+                     "' names a block output only between OUT_BLK and END_BLK; "
+                     "elsewhere write it in full (%Ci." +
+                     n + ", %TMi.Q; modicon-neza.md 1.2, L1082-1085)");
     return std::nullopt;
   }
   std::string err;
   std::optional<Object> o = parseObject(FunctionBlocks::name(open_->blk) + "." + n, err);
-  if (!o) diags_.error(loc, "'" + n + "' is not an output of " + openBlock() + ": " + err);
+  if (!o)
+    diags_.error(loc, "LJ2019", "'" + n + "' is not an output of " + openBlock() + ": " + err);
   return o;
 }
 
 void FunctionBlocks::mustBeClosed(SourceLoc loc, const std::string &where) {
   if (!open_) return;
-  diags_.error(open_->loc, openBlock() + " is not closed by END_BLK before " + where + " (line " +
-                               std::to_string(loc.line) + ")");
+  diags_.error(open_->loc, "LJ2020",
+               openBlock() + " is not closed by END_BLK before " + where + " (line " +
+                   std::to_string(loc.line) + ")");
   open_.reset();
 }
 

@@ -31,8 +31,9 @@ Operand Emitter::scratch(SourceLoc loc) {
   o.area = Area::ExtraRelay;
   if (scratchUsed_ >= kScratchBytes * 8) {
     if (scratchUsed_ == kScratchBytes * 8)
-      diags_.error(loc, "too many N / XOR / OPEN / SHORT instructions (more than " +
-                            std::to_string(kScratchBytes * 8) + " scratch bits)");
+      diags_.error(loc, "LJ2021",
+                   "too many N / XOR / OPEN / SHORT instructions (more than " +
+                       std::to_string(kScratchBytes * 8) + " scratch bits)");
     ++scratchUsed_;
     o.index = 0;
     o.bit = 0;

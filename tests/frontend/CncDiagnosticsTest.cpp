@@ -21,39 +21,39 @@ std::string diags(std::string_view text) { return compile(text).diags; }
 TEST(CncDiagnostics, AlarmNumberGap) {
   EXPECT_EQ(diags("LDT\nALARM 300\n"),
             "t.stl:2:7: error: ALARM number 300 is neither an alarm (1..256) nor a prompt "
-            "(501..884)\n");
+            "(501..884) [LJ1040]\n");
   EXPECT_EQ(diags("LDT\nALARM 257\nALARM 500\n"),
             "t.stl:2:7: error: ALARM number 257 is neither an alarm (1..256) nor a prompt "
-            "(501..884)\n"
+            "(501..884) [LJ1040]\n"
             "t.stl:3:7: error: ALARM number 500 is neither an alarm (1..256) nor a prompt "
-            "(501..884)\n");
+            "(501..884) [LJ1040]\n");
   EXPECT_EQ(diags("LDT\nALARM 1\nALARM 256\nALARM 501\nALARM 884\n"), "");
 }
 
 TEST(CncDiagnostics, UserOutBytesMustFit) {
   EXPECT_EQ(diags("LDT\nUSEROUT 0 1 Y510\n"),
             "t.stl:2:13: error: USEROUT output bytes Y510..Y513 run past the end of Y "
-            "(Y0..Y512)\n");
+            "(Y0..Y512) [LJ1041]\n");
   EXPECT_EQ(diags("LDT\nUSEROUT 0 1 R397\n"),
             "t.stl:2:13: error: USEROUT output bytes R397..R400 run past the end of R "
-            "(R0..R399)\n");
+            "(R0..R399) [LJ1041]\n");
   EXPECT_EQ(diags("LDT\nUSEROUT 0 1 Y509\nUSEROUT 0 1 R396\n"), "");
 }
 
 TEST(CncDiagnostics, SpindleParameterBlockMustFit) {
   EXPECT_EQ(diags("LDT\nSPDLBUS1 0 1 R1 P196\n"),
             "t.stl:2:17: error: SPDLBUS1 parameter block P196..P200 runs past the end of P "
-            "(P0..P199)\n");
+            "(P0..P199) [LJ1042]\n");
   EXPECT_EQ(diags("LDT\nSPDLBUS1 0 1 R1 P195\n"), "");
 }
 
 TEST(CncDiagnostics, MdstConstantModeIsOneHot) {
   EXPECT_EQ(diags("LDT\nMDST 0 3\n"),
             "t.stl:2:8: error: MDST mode 3 is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single "
-            "block, manual, increment, home, MPG, PMC)\n");
+            "block, manual, increment, home, MPG, PMC) [LJ1043]\n");
   EXPECT_EQ(diags("LDT\nMDST 0 0\n"),
             "t.stl:2:8: error: MDST mode 0 is not one of 1, 2, 4, 8, 16, 32, 64 (auto, single "
-            "block, manual, increment, home, MPG, PMC)\n");
+            "block, manual, increment, home, MPG, PMC) [LJ1043]\n");
   EXPECT_EQ(diags("LDT\nMDST 0 64\nMDST 0 R0\n"), "");
 }
 
@@ -61,7 +61,7 @@ TEST(CncDiagnostics, RefptFiveWarns) {
   test::Compiled c = compile("LDT\nREFPT 1 5\nOUT R1.0\n");
   EXPECT_TRUE(c.prog.has_value());
   EXPECT_EQ(c.diags, "t.stl:2:9: warning: REFPT 5: the 5th reference point has no status bit; "
-                     "the output is always 0\n");
+                     "the output is always 0 [LJ1044]\n");
 }
 
 // docs/cnc-blocks.md renders the CNC table: one line per row, exactly as the table says.

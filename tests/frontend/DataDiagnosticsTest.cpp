@@ -14,14 +14,15 @@ std::string diags(std::string_view text) { return compile(text).diags; }
 
 // functions-2 0.5: `BMOV D98 D0 5` is an error (range past the end of the area).
 TEST(DataDiagnostics, BmovSourceRange) {
-  EXPECT_EQ(diags("LDT\nBMOV D98 D0 5\n"),
-            "t.stl:2:6: error: BMOV source range D98..D102 runs past the end of D (D0..D99)\n");
+  EXPECT_EQ(
+      diags("LDT\nBMOV D98 D0 5\n"),
+      "t.stl:2:6: error: BMOV source range D98..D102 runs past the end of D (D0..D99) [LJ1045]\n");
 }
 
 TEST(DataDiagnostics, BmovDestinationRange) {
   EXPECT_EQ(diags("LDT\nBMOV D0 W198 5\n"),
             "t.stl:2:9: error: BMOV destination range W198..W202 runs past the end of W "
-            "(W0..W199)\n");
+            "(W0..W199) [LJ1045]\n");
 }
 
 // functions-2 2.3: the count is a constant (n <= 0 is rejected by the table's range).
@@ -35,8 +36,9 @@ TEST(DataDiagnostics, BmovCountConstant) {
 // functions-2 2.4: start and end of FMOV in one area, start <= end (dialect-notes).
 TEST(DataDiagnostics, FmovBounds) {
   EXPECT_EQ(diags("LDT\nFMOV D0 W2 5\n"),
-            "t.stl:2:9: error: FMOV start D0 and end W2 are in different areas\n");
-  EXPECT_EQ(diags("LDT\nFMOV D5 D1 0\n"), "t.stl:2:9: error: FMOV end D1 comes before start D5\n");
+            "t.stl:2:9: error: FMOV start D0 and end W2 are in different areas [LJ1047]\n");
+  EXPECT_EQ(diags("LDT\nFMOV D5 D1 0\n"),
+            "t.stl:2:9: error: FMOV end D1 comes before start D5 [LJ1048]\n");
 }
 
 // functions-2 2.6: ZRST bounds in one form and one area, start <= end (bits ordered as
@@ -44,12 +46,13 @@ TEST(DataDiagnostics, FmovBounds) {
 TEST(DataDiagnostics, ZrstBounds) {
   EXPECT_EQ(diags("LDT\nZRST R1.0 R2\n"),
             "t.stl:2:11: error: ZRST start R1.0 and end R2 must both be registers or both be bit "
-            "addresses\n");
+            "addresses [LJ1046]\n");
   EXPECT_EQ(diags("LDT\nZRST R2.3 R2.1\n"),
-            "t.stl:2:11: error: ZRST end R2.1 comes before start R2.3\n");
+            "t.stl:2:11: error: ZRST end R2.1 comes before start R2.3 [LJ1048]\n");
   EXPECT_EQ(diags("LDT\nZRST W1 D3\n"),
-            "t.stl:2:9: error: ZRST start W1 and end D3 are in different areas\n");
-  EXPECT_EQ(diags("LDT\nZRST R3 R2\n"), "t.stl:2:9: error: ZRST end R2 comes before start R3\n");
+            "t.stl:2:9: error: ZRST start W1 and end D3 are in different areas [LJ1047]\n");
+  EXPECT_EQ(diags("LDT\nZRST R3 R2\n"),
+            "t.stl:2:9: error: ZRST end R2 comes before start R3 [LJ1048]\n");
   EXPECT_EQ(diags("LDT\nZRST X1 R2\n"),
             "t.stl:2:6: error: X1 is read-only; ZRST cannot write its start (writable: Y, G, R, W, "
             "D or B)\n");
@@ -64,26 +67,26 @@ TEST(DataDiagnostics, ZoneAccepted) {
 // (one bit each in a 32-bit result).
 TEST(DataDiagnostics, TableRanges) {
   EXPECT_EQ(diags("LDT\nENCO D98 5 D1 D2\n"),
-            "t.stl:2:6: error: ENCO table D98..D102 runs past the end of D (D0..D99)\n");
+            "t.stl:2:6: error: ENCO table D98..D102 runs past the end of D (D0..D99) [LJ1045]\n");
   EXPECT_EQ(diags("LDT\nENCO D0 33 D1 D2\n"),
             "t.stl:2:9: error: constant '33' out of range for table length of ENCO (1..32)\n");
   EXPECT_EQ(diags("LD X1.0\nCOD D95 8 D1 D2\n"),
-            "t.stl:2:5: error: COD table D95..D102 runs past the end of D (D0..D99)\n");
+            "t.stl:2:5: error: COD table D95..D102 runs past the end of D (D0..D99) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nSER W199 2 D1 D2\n"),
-            "t.stl:2:5: error: SER table W199..W200 runs past the end of W (W0..W199)\n");
+            "t.stl:2:5: error: SER table W199..W200 runs past the end of W (W0..W199) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nDECO X500 13 D1 D2\n"), "");
 }
 
 // functions-2 2.11-2.13: ASSEM sources, DISAS destinations and the ACVT P block (P[k..k+3]).
 TEST(DataDiagnostics, PackAndParameterBlock) {
-  EXPECT_EQ(diags("LD X1.0\nASSEM X510 4 D0\n"),
-            "t.stl:2:7: error: ASSEM source range X510..X513 runs past the end of X (X0..X512)\n");
+  EXPECT_EQ(diags("LD X1.0\nASSEM X510 4 D0\n"), "t.stl:2:7: error: ASSEM source range X510..X513 "
+                                                 "runs past the end of X (X0..X512) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nDISAS D0 4 Y510\n"),
             "t.stl:2:12: error: DISAS destination range Y510..Y513 runs past the end of Y "
-            "(Y0..Y512)\n");
+            "(Y0..Y512) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nACVT P197 D0 D1\n"),
             "t.stl:2:6: error: ACVT parameter block P197..P200 runs past the end of P "
-            "(P0..P199)\n");
+            "(P0..P199) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nACVT P196 D0 D1\n"), "");
   EXPECT_EQ(diags("LD X1.0\nACVT D0 D0 D1\n"),
             "t.stl:2:6: error: area D is not allowed as parameter block of ACVT (allowed: P)\n");
@@ -117,13 +120,14 @@ TEST(DataDiagnostics, PointOperands) {
 TEST(DataDiagnostics, AllErrorsReported) {
   test::Compiled c = compile("LDT\nBMOV D98 D99 5\nLDT\nZRST D9 D8\nLD X1.0\nACVT P199 D0 D1\n");
   EXPECT_EQ(c.errors, 4);
-  EXPECT_EQ(c.diags,
-            "t.stl:2:6: error: BMOV source range D98..D102 runs past the end of D (D0..D99)\n"
-            "t.stl:2:10: error: BMOV destination range D99..D103 runs past the end of D "
-            "(D0..D99)\n"
-            "t.stl:4:9: error: ZRST end D8 comes before start D9\n"
-            "t.stl:6:6: error: ACVT parameter block P199..P202 runs past the end of P "
-            "(P0..P199)\n");
+  EXPECT_EQ(
+      c.diags,
+      "t.stl:2:6: error: BMOV source range D98..D102 runs past the end of D (D0..D99) [LJ1045]\n"
+      "t.stl:2:10: error: BMOV destination range D99..D103 runs past the end of D "
+      "(D0..D99) [LJ1045]\n"
+      "t.stl:4:9: error: ZRST end D8 comes before start D9 [LJ1048]\n"
+      "t.stl:6:6: error: ACVT parameter block P199..P202 runs past the end of P "
+      "(P0..P199) [LJ1045]\n");
 }
 
 } // namespace

@@ -115,13 +115,13 @@ TEST(FanucDiagnostics, JmpcRules) {
   EXPECT_EQ(diags(call + "LBL L1\nEND2\nSP P1\nRD X0.1\nSUB 73\n(PRM) L1\nSPE\nEND\n"), "");
   EXPECT_EQ(diags("END1\nRD X0.0\nJMPC L1\nLBL L1\nEND2\nEND\n"),
             "t.pmc:3:1: error: JMPC L1 outside a subroutine: it leaves a subroutine for a label "
-            "before END2\n");
+            "before END2 [LJ1004]\n");
   EXPECT_EQ(diags("RD X0.0\nJMPC L1\nLBL L1\nEND1\nEND2\nEND\n"),
             "t.pmc:2:1: error: JMPC L1 outside a subroutine: it leaves a subroutine for a label "
-            "before END2\n");
+            "before END2 [LJ1004]\n");
   // The label must be level 2's: not missing, not level 1's, not the subroutine's own.
   const char *missing = "error: missing label L5 before END2: JMPC L5 goes on at a label of the "
-                        "part that ends with END2\n";
+                        "part that ends with END2 [LJ1005]\n";
   EXPECT_EQ(diags(call + "END2\nSP P1\nRD X0.1\nJMPC L5\nSPE\nEND\n"),
             std::string("t.pmc:7:6: ") + missing);
   EXPECT_EQ(diags("LBL L5\nEND1\nRD X0.0\nCALL P1\nEND2\nSP P1\nRD X0.1\nJMPC L5\nSPE\nEND\n"),
@@ -164,8 +164,8 @@ TEST(FanucDiagnostics, SelectCallRules) {
             "t.pmc:3:1: error: CS takes 1 parameters (index address), got 0\n");
   EXPECT_EQ(diags("END1\nRD X0.0\nCS R100\nCM P2\nCE\nEND2\n" + subs),
             // the verifier's rule for CALL, in the dialect's spelling
-            "t.pmc:4:4: error: undefined subroutine P2\n"
-            "t.pmc:7:1: warning: subroutine P1 is never called\n");
+            "t.pmc:4:4: error: undefined subroutine P2 [LJ1012]\n"
+            "t.pmc:7:1: warning: subroutine P1 is never called [LJ1003]\n");
 }
 
 } // namespace

@@ -26,14 +26,9 @@ MOV D0 B0
 1END
 """
 B5_OFFSET = 144 + 5 * 4  # docs/retain.md "File format (format 1)": B0..B49 (int32) from 144
-FAILURES = []
-
-
-def check(cond, what):
-    if not cond:
-        FAILURES.append(what)
-        print("FAIL:", what, flush=True)
-    return cond
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import serveutil  # noqa: E402
+from serveutil import FAILURES, check  # noqa: E402,F401
 
 
 def serve(lj, workdir, retain, duration, *extra):

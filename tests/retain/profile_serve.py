@@ -51,14 +51,9 @@ IEC_MAP = """coils 0 %M0 64
 coils 64 %M64 64
 holding 0 %MW10 4
 """
-FAILURES = []
-
-
-def check(cond, what):
-    if not cond:
-        FAILURES.append(what)
-        print("FAIL:", what, flush=True)
-    return cond
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import serveutil  # noqa: E402
+from serveutil import FAILURES, check  # noqa: E402,F401
 
 
 class Modbus:
@@ -146,9 +141,7 @@ class Server:
         return self.err.read()
 
     def monitor(self, *args):
-        r = subprocess.run([self.lj, "monitor", "--control", self.sock, *args],
-                           capture_output=True, text=True, timeout=30)
-        return r.returncode, r.stdout, r.stderr
+        return serveutil.monitor(self.lj, self.sock, *args, timeout=30)
 
     def write(self, *assignments):
         rc, _, err = self.monitor("write", *assignments)

@@ -38,14 +38,9 @@ SAVEDATA
 """
 B0_OFFSET = 144  # docs/retain.md "File format (format 1)": B0..B49 (int32) at offset 144
 SETTLE = 0.5  # s to wait before asserting that no save happened (a SAVEDATA save takes ms)
-FAILURES = []
-
-
-def check(cond, what):
-    if not cond:
-        FAILURES.append(what)
-        print("FAIL:", what, flush=True)
-    return cond
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import serveutil  # noqa: E402
+from serveutil import FAILURES, check  # noqa: E402,F401
 
 
 class Server:
@@ -76,28 +71,17 @@ class Server:
         return self.err.read()
 
     def monitor(self, *args):
-        r = subprocess.run([self.lj, "monitor", "--control", self.sock, *args],
-                           capture_output=True, text=True, timeout=30)
-        return r.returncode, r.stdout, r.stderr
+        return serveutil.monitor(self.lj, self.sock, *args, timeout=30)
 
     def write(self, *assignments):
         rc, _, err = self.monitor("write", *assignments)
         check(rc == 0, "monitor write %s accepted: %s" % (" ".join(assignments), err))
 
     def read(self, addr):
-        rc, out, _ = self.monitor("read", addr)
-        return int(out.strip().split("=")[1]) if rc == 0 else None
+        return serveutil.read(self.lj, self.sock, addr, timeout=30)
 
     def wait_value(self, addr, want, seconds=10):
-        end = time.time() + seconds
-        v = None
-        while time.time() < end:
-            v = self.read(addr)
-            if v == want:
-                return True
-            time.sleep(0.01)
-        print("  %s = %s, wanted %s" % (addr, v, want), flush=True)
-        return False
+        return serveutil.wait_value(self.lj, self.sock, addr, want, seconds)
 
     def kill9(self):
         self.proc.send_signal(signal.SIGKILL)

@@ -1,50 +1,22 @@
 """Shared by the security regression tests (issue 11): the `ladderjit` binary from argv[1], a
-serve process whose stderr log is collected, and checks that fail loudly. Every wait is bounded
-so a regression shows as a failure, never as a hang."""
+serve process whose stderr log is collected, and checks that fail loudly (tests/support/
+serveutil.py). Every wait is bounded so a regression shows as a failure, never as a hang."""
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import subprocess
 import threading
 import time
 
+import serveutil  # noqa: E402
+from serveutil import FAILURES, PROGRAM, check, finish  # noqa: E402,F401
+
 LJ = sys.argv[1]
-FAILURES = []
-
-PROGRAM = """\
-LDT
-MOV 7 D10
-IEND
-LD X1.0
-OUT Y1.0
-LDT
-MOV 1 D20
-1END
-LDT
-ADD D30 1 D30
-2END
-"""
 
 
-def check(cond, what):
-    print(("ok:   " if cond else "FAIL: ") + what, flush=True)
-    if not cond:
-        FAILURES.append(what)
-
-
-def finish(name):
-    if FAILURES:
-        print(f"{name}: {len(FAILURES)} failure(s)")
-        return 1
-    print(f"{name}: all checks passed")
-    return 0
-
-
-def run(*args, timeout=60, **kw):
-    try:
-        r = subprocess.run([LJ, *args], capture_output=True, text=True, timeout=timeout, **kw)
-        return r.returncode, r.stdout, r.stderr
-    except subprocess.TimeoutExpired:
-        return None, "", f"timed out after {timeout} s"
+def run(*args, timeout=60, env=None):
+    return serveutil.run(LJ, *args, timeout=timeout, env=env)
 
 
 def write(path, text, age=None):
@@ -91,19 +63,13 @@ class Server:
         return False
 
     def monitor(self, *args, timeout=60):
-        return run("monitor", "--control", self.sock, *args, timeout=timeout)
+        return serveutil.monitor(LJ, self.sock, *args, timeout=timeout)
 
     def read(self, addr):
-        rc, out, _ = self.monitor("read", addr)
-        return int(out.strip().split("=")[1]) if rc == 0 else None
+        return serveutil.read(LJ, self.sock, addr)
 
     def wait_value(self, addr, want, seconds=10):
-        end = time.time() + seconds
-        while time.time() < end:
-            if self.read(addr) == want:
-                return True
-            time.sleep(0.02)
-        return False
+        return serveutil.wait_value(LJ, self.sock, addr, want, seconds)
 
     def text(self):
         return "".join(self.log)

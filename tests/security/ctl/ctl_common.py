@@ -1,45 +1,29 @@
 """Shared by the control-socket security tests (tests/security/ctl/): start `ladderjit serve`,
-run commands as another user, raw control-socket and Modbus clients, and failure collection.
-A part that needs a second user and cannot get one FAILS (never skips)."""
+run commands as another user, raw control-socket and Modbus clients, and failure collection
+(tests/support/serveutil.py). A part that needs a second user and cannot get one FAILS (never
+skips)."""
 import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
 import re
 import socket
 import subprocess
-import sys
 import time
 
+import serveutil  # noqa: E402
+from serveutil import FAILURES, check  # noqa: E402,F401
+from serveutil import PROGRAM_COUNT_IN_PLC1 as PROGRAM  # noqa: E402,F401
+
 LJ = sys.argv[1]
-FAILURES = []
-
-PROGRAM = """\
-LDT
-MOV 7 D10
-IEND
-LD X1.0
-OUT Y1.0
-LDT
-ADD D30 1 D30
-1END
-LDT
-MOV 1 D20
-2END
-"""
-
-
-def check(cond, what):
-    print(("ok:   " if cond else "FAIL: ") + what, flush=True)
-    if not cond:
-        FAILURES.append(what)
 
 
 def finish():
-    print("%d failures" % len(FAILURES), flush=True)
-    return 1 if FAILURES else 0
+    return serveutil.finish()
 
 
 def run(*args, env=None, timeout=60):
-    r = subprocess.run([LJ, *args], capture_output=True, timeout=timeout, env=env)
-    return r.returncode, r.stdout.decode(errors="replace"), r.stderr.decode(errors="replace")
+    return serveutil.run(LJ, *args, timeout=timeout, env=env)
 
 
 def start_serve(args, env=None, umask=None, out_path=None):

@@ -1,0 +1,75 @@
+// The NC services of HNC-8 (hnc8-functions-1.md 3.1, hnc8-functions-2.md 2.19-2.23,
+// hnc8-cnc-interface.md 2 / 3.4).
+// Rows in Op order; one of the row files OpTable.cpp assembles (ir/OpTable.h is the interface).
+#pragma once
+
+#include "ir/OpRows.h"
+
+namespace lj::oprows {
+
+inline constexpr InstrInfo kHnc8NcRows[] = {
+    // ---- NC services (functions-1 3.1, functions-2 2.19-2.23, cnc-interface 2 / 3.4) ----
+    ROW(MCodeGet, Nc, Block, Optional, 1, Compare, None, 2, chan(), konst("M code", 0, 32767),
+        none(), none(), "out := EN and the channel requests the M code"),
+    ROW(MCodeAck, Nc, Block, Optional, 1, None, None, 2, chan(), konst("M code", 0, 32767), none(),
+        none(), "acknowledge the M code"),
+    ROW(TCodeGet, Nc, Block, Optional, 1, Compare, None, 2, chan(),
+        regOrConst("T code destination", kDstAreas, true), none(), none(),
+        "out := EN and a T code is pending (stored in the destination)"),
+    ROW(TCodeAck, Nc, Block, Optional, 1, None, None, 1, chan(), none(), none(), none(),
+        "acknowledge the channel's T code"),
+    ROW(HandwheelPulse, Nc, Block, Optional, 1, None, None, 2, src("pulse register"),
+        konst("handwheel", 0, 9), none(), none(),
+        "pass the pulse register to the handwheel (host)"),
+    ROW(TempSensor, Nc, Block, Optional, 1, None, None, 4, konst("sensor", 0, 19),
+        spanning(reg("X group", areas(Area::Input), false), 2), konst("board type", 0, 4),
+        spanning(pblock(), 4), "temperature sensor input (host)"),
+    ROW(PartCount, Nc, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "part count of the channel + 1"),
+    ROW(PartClear, Nc, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "part count of the channel := 0"),
+    ROW(HeadSensors, Nc, Block, Optional, 1, None, None, 3, konst("count", 1, 20),
+        i32Const("enable"), reg("storage start", areas(Area::DWord), true), none(),
+        "copy count temperatures to D registers when enable = 0"),
+    ROW(VarGet, Nc, Block, Required, 1, Enable, None, 4, konst("variable type", 0, 9),
+        src("offset"), konst("exponent", 0, 4), dst("result"), "read a CNC variable (host)"),
+    ROW(VarSet, Nc, Block, Required, 1, Enable, None, 4, konst("variable type", 0, 9),
+        src("offset"), konst("exponent", 0, 4), src("data source"), "write a CNC variable (host)"),
+    ROW(ToolVectorOn, Nc, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "tool-vector direction on (host)"),
+    ROW(ToolVectorOff, Nc, Block, Optional, 1, Enable, None, 1, chan(), none(), none(), none(),
+        "tool-vector direction off (host)"),
+    ROW(PanelDisplay, Nc, Block, Required, 1, Enable, None, 3, src("value"), konst("width", 0, 1),
+        spanning(reg("display",
+                     areas(Area::Output, Area::Relay, Area::Word, Area::DWord, Area::Retained),
+                     true),
+                 2), // two bytes when the width is 1 and the area's elements are bytes
+        none(), "show the value on the panel display"),
+    ROW(ToolInUse, Nc, Block, Optional, 1, None, None, 2, src("channel"), src("tool"), none(),
+        none(), "tool in use (host)"),
+    ROW(ToolLife, Nc, Block, Optional, 1, None, Words, 3, chan(), konst("count", 1, kI32Max),
+        reg("response", areas(Area::Relay), true), none(), "tool-install counter"),
+    ROW(ToolSelect, Nc, Block, Optional, 1, Result, None, 4, src("spindle tool"),
+        src("commanded tool"), dst("error"), dst("target pocket"),
+        "select the pocket of the commanded tool (host)"),
+    ROWX(SpindleAnalog, Nc, Block, Optional, 1, None, None, 5, "analog (DA) spindle (host scaling)",
+         chan(), spindle(), gear(),
+         reg("reference",
+             areas(Area::Output, Area::NcControl, Area::Relay, Area::Word, Area::DWord,
+                   Area::Retained),
+             true),
+         spanning(pblock(), 5)),
+    ROW(SlaveHomingEnable, Nc, Block, Required, 1, None, None, 1, axis(), none(), none(), none(),
+        "slave-axis homing enable (host)"),
+    ROW(HandwheelSet, Nc, Block, Required, 1, None, None, 3, konst("handwheel", 0, 9), axisAny(),
+        src("override"), none(), "handwheel axis and multiplier"),
+    ROW(MagazineRotate, Nc, Block, Optional, 5, Result, None, 4, konst("positions", 1, 32767),
+        reg("current position", kSrcAreas, false), reg("target position", kSrcAreas, false),
+        dst("result"), "rotary magazine direction and steps"),
+    ROW(RaiseEvent, Nc, Block, Required, 1, None, Edge, 1, konst("event", 0, 255), none(), none(),
+        none(), "raise a PLC event"),
+    ROW(SaveRetained, Nc, Block, Required, 1, None, Edge, 0, none(), none(), none(), none(),
+        "save the retentive data (host)"),
+};
+
+} // namespace lj::oprows
