@@ -3,7 +3,7 @@
 // byte of an unsigned or modified file is ever mapped executable (docs/aot.md "Trust").
 #include "engines/AotLoader.h"
 
-#include "engines/AotSigned.h"
+#include "signing/AotSigned.h"
 #include "ladderjit/program.h"
 
 #include <atomic>
@@ -184,7 +184,7 @@ AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue) {
 }
 
 std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,
-                                const TrustedKeys &trust, std::string &error) {
+                                const signing::TrustedKeys &trust, std::string &error) {
   auto fail = [&](const std::string &why) -> std::unique_ptr<Engine> {
     error = "'" + path + "': " + why;
     return nullptr;
@@ -200,8 +200,8 @@ std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect
                 std::to_string(kMaxSize) + ")");
   std::string bytes;
   if (!readAll(f.fd, static_cast<uint64_t>(st.st_size), bytes)) return fail("cannot read");
-  AotMeta meta;
-  if (std::string why = verifySigned(bytes, trust, meta); !why.empty()) return fail(why);
+  signing::AotMeta meta;
+  if (std::string why = signing::verifySigned(bytes, trust, meta); !why.empty()) return fail(why);
   // From here on the trailer is the signer's word: identity and ABI come from it.
   if (meta.abi != LJPROG_ABI_VERSION)
     return fail("program ABI version " + std::to_string(meta.abi) + ", this ladderjit loads " +

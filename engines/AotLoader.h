@@ -2,7 +2,7 @@
 // identity, ABI and ELF checks on the bytes read once, then dlopen of exactly those bytes.
 #pragma once
 
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "formats/PlcDit.h"
 #include "pipeline/ProgramFile.h"
 #include "ir/Engine.h"
@@ -38,6 +38,6 @@ AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue);
 /// file, before any of them is mapped; the verified bytes are then dlopened from a sealed
 /// memfd. Null with `error` set (one line, naming the file) on any problem.
 std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,
-                                const TrustedKeys &trust, std::string &error);
+                                const signing::TrustedKeys &trust, std::string &error);
 
 } // namespace lj::engines

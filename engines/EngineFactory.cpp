@@ -30,9 +30,9 @@ Result<std::unique_ptr<Engine>> buildAndLoadAot(const VerifiedProgram &prog,
   o.output = std::string(tmp && *tmp ? tmp : "/tmp") + "/ladderjit-aot-" +
              std::to_string(getpid()) + "-" + std::to_string(counter++) + ".so";
   o.programHash = "sha256:" + llvm->programDigest(prog);
-  engines::SigningKey ownKey;
-  engines::TrustedKeys ownTrust;
-  const engines::TrustedKeys *trust = opts.aotTrust;
+  signing::SigningKey ownKey;
+  signing::TrustedKeys ownTrust;
+  const signing::TrustedKeys *trust = opts.aotTrust;
   o.signingKey = opts.aotSigningKey;
   if (!o.signingKey || !trust) {
     if (!ownKey.generate(error)) return engineFailed(error);

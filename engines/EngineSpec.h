@@ -57,10 +57,10 @@ struct EngineOptions {
   std::optional<engines::AotExpect> aotExpect;
   /// Aot: the signers whose .so files load (docs/aot.md "Trust"). Required with a path; without
   /// one, the temp .so is signed with aotSigningKey, which this set must trust.
-  const engines::TrustedKeys *aotTrust = nullptr;
+  const signing::TrustedKeys *aotTrust = nullptr;
   /// Aot without a path: the key that signs the temp .so. Null (and aotTrust null): a throwaway
   /// key pair made for this one build, trusted for this one load only.
-  const engines::SigningKey *aotSigningKey = nullptr;
+  const signing::SigningKey *aotSigningKey = nullptr;
   /// Interp and Jit: contacts built as forced (ir/Forces.h, docs/serve.md "Forcing"). Aot
   /// refuses a non-empty set (a prebuilt .so cannot be changed).
   ContactForces forces{};

@@ -2,7 +2,7 @@
 // into both, from the same definitions.
 #include "engines/LlvmBackend.h"
 
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 
 #ifndef LADDERJIT_VERSION
 #error "LADDERJIT_VERSION must be defined (engines/CMakeLists.txt)"
@@ -24,7 +24,7 @@ const char *llvmBuildTag() {
       std::to_string(sizeof(VerifiedProgram)) + "/" + std::to_string(sizeof(jit::JitOptions)) +
       "/" + std::to_string(sizeof(jit::AotOptions)) + "/" +
       std::to_string(sizeof(jit::CompileTimes)) + "/" +
-      std::to_string(sizeof(engines::SigningKey)) + "/" + std::to_string(sizeof(Stmt));
+      std::to_string(sizeof(signing::SigningKey)) + "/" + std::to_string(sizeof(Stmt));
   return tag.c_str();
 }
 

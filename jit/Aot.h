@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <string>
 
-namespace lj::engines {
+namespace lj::signing {
 class SigningKey;
 }
 
@@ -25,7 +25,7 @@ struct AotOptions {
       sourceHash; ///< the program without the nvalue (engines::sourceHash); empty = programHash
   int32_t plc2Nvalue = 0; ///< recorded in the signed trailer (the slicing is in `prog`)
   /// Signs the trailer (docs/aot.md "Trust"); required. Not owned.
-  const engines::SigningKey *signingKey = nullptr;
+  const signing::SigningKey *signingKey = nullptr;
   /// false: the host CPU and its features (fastest, may not run elsewhere); true: the portable
   /// baseline of the architecture (x86-64 without extensions).
   bool genericCpu = false;

@@ -11,7 +11,7 @@
 namespace lj::jit::detail {
 
 /// Link the program object `obj` with the ABI shim and tick.c into `opts.output` (atomically),
-/// and append the trailer signed with `opts.signingKey` (program.h, engines/AotSigned.h). False +
+/// and append the trailer signed with `opts.signingKey` (program.h, signing/AotSigned.h). False +
 /// `error` on failure.
 bool linkSharedObject(std::string_view obj, const AotOptions &opts, uint32_t slices,
                       std::string &error);

@@ -3,7 +3,7 @@
 // no shell), append the signed trailer and rename the result into place.
 #include "jit/AotInternal.h"
 
-#include "engines/AotSigned.h"
+#include "signing/AotSigned.h"
 #include "jit/AotSources.inc" // generated: kAbiH, kProgramH, kTickC, kShimC
 #include "ladderjit/program.h"
 
@@ -198,14 +198,14 @@ bool linkSharedObject(std::string_view obj, const AotOptions &opts, uint32_t sli
     error = "cannot read the linked object '" + linked.string() + "'";
     return false;
   }
-  engines::AotMeta meta;
+  signing::AotMeta meta;
   meta.abi = LJPROG_ABI_VERSION;
   meta.program = hash;
   meta.source = opts.sourceHash.empty() ? hash : opts.sourceHash;
   meta.plc2Nvalue = opts.plc2Nvalue;
   meta.slices = slices;
   meta.stateSize = sizeof(lj_state);
-  if (!engines::signImage(image, meta, *opts.signingKey, error)) return false;
+  if (!signing::signImage(image, meta, *opts.signingKey, error)) return false;
 
   // Atomic replace: a host never sees a half-written .so at `output`. The temp file is new
   // (O_EXCL: nothing planted at its name is followed or written), mode 0666 less the umask.

@@ -4,7 +4,7 @@
 // the scan thread.
 #pragma once
 
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "engines/EngineSpec.h"
 #include "formats/PlcDit.h"
 #include "runtime/Executive.h"
@@ -85,7 +85,7 @@ public:
   /// Whether versions come from AOT .so files (no recompilation: forcing is impossible).
   bool aot() const { return engine_ == "aot"; }
   /// The keys whose .so files engine "aot" accepts (docs/aot.md "Trust"); none = refuse all.
-  void setAotTrust(engines::TrustedKeys keys) { aotTrust_ = std::move(keys); }
+  void setAotTrust(signing::TrustedKeys keys) { aotTrust_ = std::move(keys); }
 
 private:
   std::shared_ptr<ProgramVersion> loadAs(bool interpreted, const std::string &path,
@@ -96,7 +96,7 @@ private:
   /// The session of `tier`, created on first use; call with mu_ held.
   jit::Session *session(bool fast, std::string &error);
 
-  engines::TrustedKeys aotTrust_;
+  signing::TrustedKeys aotTrust_;
   std::string engine_;
   int32_t plc2Nvalue_;
   std::string dialect_;

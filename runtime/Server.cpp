@@ -375,8 +375,8 @@ Status Server::Impl::loadProgram(std::string &error) {
   loader = std::make_unique<ProgramLoader>(aot ? "aot" : a.engine,
                                            a.plc2NvalueGiven ? a.plc2Nvalue : -1, a.dialect);
   if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)
-    engines::TrustedKeys trust;
-    if (!engines::loadTrustedKeys(a.trustKeys, trust, error)) return usage("--trust-key: " + error);
+    signing::TrustedKeys trust;
+    if (!signing::loadTrustedKeys(a.trustKeys, trust, error)) return usage("--trust-key: " + error);
     loader->setAotTrust(std::move(trust));
   }
   std::optional<formats::DitFile> dit;

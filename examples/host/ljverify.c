@@ -1,5 +1,5 @@
 /* Signature check and sealed-memfd dlopen of an AOT .so for C hosts (ljverify.h; the trailer
- * layout is program.h's LJPROG_*, the same checks as ladderjit's engines/AotSigned.cpp). */
+ * layout is program.h's LJPROG_*, the same checks as ladderjit's signing/AotSigned.cpp). */
 #define _GNU_SOURCE
 #include "ljverify.h"
 

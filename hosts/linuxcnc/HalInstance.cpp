@@ -2,7 +2,7 @@
 #include "hosts/linuxcnc/HalInstance.h"
 
 #include "engines/AotLoader.h"
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "formats/InputFiles.h"
 #include "pipeline/ProgramFile.h"
 #include "hosts/SystemBits.h"
@@ -67,8 +67,8 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
     error = "'" + sourcePath + "' has errors: " + diags.substr(0, nl);
     return false;
   }
-  engines::TrustedKeys keys;
-  if (!engines::loadTrustedKeys(trustFiles, keys, error)) {
+  signing::TrustedKeys keys;
+  if (!signing::loadTrustedKeys(trustFiles, keys, error)) {
     error = "trusted keys: " + error;
     return false;
   }

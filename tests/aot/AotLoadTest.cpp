@@ -4,7 +4,7 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "engines/AotLoader.h"
-#include "engines/AotSigned.h"
+#include "signing/AotSigned.h"
 #include "formats/PlcDit.h"
 #include "ir/Engine.h"
 #include "ladderjit/program.h"
@@ -34,21 +34,21 @@ VerifiedProgram program() {
 /// ELF or the exports can be wrong); `abi` = the ABI version it states.
 std::string signedAs(std::string image, const VerifiedProgram &prog,
                      uint32_t abi = LJPROG_ABI_VERSION) {
-  engines::AotMeta m;
+  signing::AotMeta m;
   m.abi = abi;
   m.program = m.source = testHash(prog);
   m.plc2Nvalue = prog.plc2Nvalue;
   m.slices = static_cast<uint32_t>(prog.slices.size());
   m.stateSize = sizeof(lj_state);
   std::string error;
-  EXPECT_TRUE(engines::signImage(image, m, testSigningKey(), error)) << error;
+  EXPECT_TRUE(signing::signImage(image, m, testSigningKey(), error)) << error;
   return image;
 }
 
 /// The ELF image of a built .so (the bytes before its trailer).
 std::string imageOf(const std::string &so) {
-  engines::AotMeta m;
-  EXPECT_EQ(engines::verifySigned(so, testTrust(), m), "");
+  signing::AotMeta m;
+  EXPECT_EQ(signing::verifySigned(so, testTrust(), m), "");
   return so.substr(0, m.imageSize);
 }
 

@@ -4,8 +4,8 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "engines/AotLoader.h"
-#include "engines/AotSigned.h"
-#include "engines/AotTrust.h"
+#include "signing/AotSigned.h"
+#include "signing/AotTrust.h"
 #include "ladderjit/program.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
@@ -30,21 +30,21 @@ protected:
     so_ = dir_.path("prog.so");
     ASSERT_TRUE(buildSo(prog_, so_));
     bytes_ = readBytes(so_);
-    ASSERT_EQ(engines::verifySigned(bytes_, testTrust(), meta_), "");
+    ASSERT_EQ(signing::verifySigned(bytes_, testTrust(), meta_), "");
     image_ = bytes_.substr(0, meta_.imageSize);
     std::string error;
     ASSERT_TRUE(attacker_.generate(error)) << error;
   }
   std::unique_ptr<Engine> load(const std::string &bytes, std::string &error,
-                               const engines::TrustedKeys &trust = testTrust()) {
+                               const signing::TrustedKeys &trust = testTrust()) {
     std::string path = dir_.path("x.so");
     writeBytes(path, bytes);
     return engines::loadAot(path, {testHash(prog_)}, trust, error);
   }
   /// `image` with a trailer stating the genuine facts, signed by `key`.
-  std::string signWith(std::string image, const engines::SigningKey &key) {
+  std::string signWith(std::string image, const signing::SigningKey &key) {
     std::string error;
-    EXPECT_TRUE(engines::signImage(image, meta_, key, error)) << error;
+    EXPECT_TRUE(signing::signImage(image, meta_, key, error)) << error;
     return image;
   }
   /// The genuine META and footer text with `image`, naming the trusted key, and `sig`.
@@ -56,8 +56,8 @@ protected:
   TempDir dir_;
   VerifiedProgram prog_;
   std::string so_, bytes_, image_;
-  engines::AotMeta meta_;
-  engines::SigningKey attacker_;
+  signing::AotMeta meta_;
+  signing::SigningKey attacker_;
 };
 
 TEST_F(AotTrust, GenuineSignedSoLoadsAndTicksLikeTheInterpreter) {
@@ -80,16 +80,16 @@ TEST_F(AotTrust, GenuineSignedSoLoadsAndTicksLikeTheInterpreter) {
 TEST_F(AotTrust, ValidSoSignedByAnUntrustedKeyIsRefused) {
   std::string error;
   EXPECT_EQ(load(signWith(image_, attacker_), error), nullptr);
-  EXPECT_NE(error.find("signed by " + engines::keyId(attacker_.publicRaw()) +
+  EXPECT_NE(error.find("signed by " + signing::keyId(attacker_.publicRaw()) +
                        ", which is not a trusted key"),
             std::string::npos)
       << error;
   // Trusting the other key too makes it load: trust is the only thing that was missing.
-  engines::TrustedKeys both = testTrust();
+  signing::TrustedKeys both = testTrust();
   both.addRaw(attacker_.publicRaw());
   EXPECT_NE(load(signWith(image_, attacker_), error, both), nullptr) << error;
   // Nothing trusted: nothing loads, not even the genuine file.
-  EXPECT_EQ(load(bytes_, error, engines::TrustedKeys{}), nullptr);
+  EXPECT_EQ(load(bytes_, error, signing::TrustedKeys{}), nullptr);
 }
 
 TEST_F(AotTrust, HandMadeSoWithTheRightHashIsRefused) {
@@ -167,16 +167,16 @@ TEST_F(AotTrust, FileKindsAndSizesAreRefusedWithAReason) {
 TEST_F(AotTrust, KeyFilesAreCheckedAndNeverOverwritten) {
   std::string error;
   const std::string base = dir_.path("k");
-  ASSERT_TRUE(engines::writeKeyPair(attacker_, base, error)) << error;
+  ASSERT_TRUE(signing::writeKeyPair(attacker_, base, error)) << error;
   struct stat st {};
   ASSERT_EQ(stat((base + ".key").c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0600u);
-  EXPECT_FALSE(engines::writeKeyPair(attacker_, base, error));
+  EXPECT_FALSE(signing::writeKeyPair(attacker_, base, error));
   EXPECT_NE(error.find("already exists"), std::string::npos) << error;
-  engines::SigningKey k;
+  signing::SigningKey k;
   EXPECT_TRUE(k.loadFile(base + ".key", error)) << error;
   EXPECT_EQ(k.publicRaw(), attacker_.publicRaw());
-  engines::TrustedKeys t;
+  signing::TrustedKeys t;
   EXPECT_TRUE(t.addFile(base + ".pub", error)) << error;
   EXPECT_TRUE(t.trusts(attacker_.publicRaw()));
   // A private key others can read, a public key others can write: refused.
@@ -193,13 +193,13 @@ TEST_F(AotTrust, KeyFilesAreCheckedAndNeverOverwritten) {
   setenv("LADDERJIT_KEY_DIR", keys.c_str(), 1);
   std::string path;
   bool created = false;
-  EXPECT_FALSE(engines::defaultSigningKey(k, path, created, error));
+  EXPECT_FALSE(signing::defaultSigningKey(k, path, created, error));
   EXPECT_NE(error.find("writable by group or others"), std::string::npos) << error;
   ASSERT_EQ(chmod(keys.c_str(), 0700), 0);
-  EXPECT_TRUE(engines::defaultSigningKey(k, path, created, error)) << error;
+  EXPECT_TRUE(signing::defaultSigningKey(k, path, created, error)) << error;
   EXPECT_TRUE(created);
-  engines::TrustedKeys d;
-  EXPECT_TRUE(engines::loadTrustedKeys({}, d, error)) << error;
+  signing::TrustedKeys d;
+  EXPECT_TRUE(signing::loadTrustedKeys({}, d, error)) << error;
   EXPECT_TRUE(d.trusts(k.publicRaw()));
   unsetenv("LADDERJIT_KEY_DIR");
 }

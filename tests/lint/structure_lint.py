@@ -98,7 +98,7 @@ def self_test():
         'verify/C.cpp': '#include "frontends/fanuc/FrontEnd.h"\n',
         'tools/D.cpp': '#include "frontends/iec/FrontEnd.h"\n',
         'formats/E.cpp': '#include "engines/AotLoader.h"\n',
-        'jit/F.cpp': '#include "engines/AotSigned.h"\n',
+        'jit/F.cpp': '#include "engines/AotLoader.h"\n',
         'docs/g.md': 'see ../shared/reference/hnc8-core.md\n',
         'hosts/H.h': 'namespace lj::test {}\n',
         'runtime/I.h': 'namespace lj::io {}\n',

@@ -2,7 +2,7 @@
 // engine factory (engines/EngineSpec.h) exactly as the CLI builds it.
 #include "tests/support/EngineRegistry.h"
 
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "engines/EngineSpec.h"
 
 #include <cstdlib>
@@ -30,9 +30,9 @@ MakeEngineFn fromFactory(engines::EngineSpec spec, bool signWithTestKey = false)
 
 } // namespace
 
-const engines::SigningKey &testSigningKey() {
-  static const engines::SigningKey key = [] {
-    engines::SigningKey k;
+const signing::SigningKey &testSigningKey() {
+  static const signing::SigningKey key = [] {
+    signing::SigningKey k;
     std::string error;
     if (!k.generate(error)) std::abort(); // OpenSSL without Ed25519: nothing can be signed
     return k;
@@ -40,9 +40,9 @@ const engines::SigningKey &testSigningKey() {
   return key;
 }
 
-const engines::TrustedKeys &testTrust() {
-  static const engines::TrustedKeys trust = [] {
-    engines::TrustedKeys t;
+const signing::TrustedKeys &testTrust() {
+  static const signing::TrustedKeys trust = [] {
+    signing::TrustedKeys t;
     t.addRaw(testSigningKey().publicRaw());
     return t;
   }();

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-namespace lj::engines {
+namespace lj::signing {
 class SigningKey;
 class TrustedKeys;
-} // namespace lj::engines
+} // namespace lj::signing
 
 namespace lj::test {
 
@@ -34,8 +34,8 @@ const std::vector<EngineFactory> &registeredEngines();
 
 /// The key pair of the "aot" engine: an in-memory Ed25519 key made once per test process, and
 /// the trust set holding only its public key (docs/aot.md "Trust").
-const engines::SigningKey &testSigningKey();
-const engines::TrustedKeys &testTrust();
+const signing::SigningKey &testSigningKey();
+const signing::TrustedKeys &testTrust();
 
 /// GoogleTest prints parameters with this.
 inline std::ostream &operator<<(std::ostream &os, const EngineFactory &f) { return os << f.name; }

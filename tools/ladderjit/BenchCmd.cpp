@@ -8,7 +8,7 @@
 #include "tools/ladderjit/Progress.h"
 
 #include "engines/AotLoader.h"
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "engines/LlvmBackend.h"
 #include "formats/Address.h"
 #include "formats/InputFiles.h"
@@ -162,12 +162,12 @@ bool addJitLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog, b
 bool addAotLane(const engines::LlvmBackend &llvm, const VerifiedProgram &prog,
                 const ProgramSource &src, int32_t nvalue, const std::string &dir,
                 std::vector<Lane> &lanes, std::string &error) {
-  engines::SigningKey key;
+  signing::SigningKey key;
   if (!key.generate(error)) {
     error = "signing key: " + error;
     return false;
   }
-  engines::TrustedKeys trust;
+  signing::TrustedKeys trust;
   trust.addRaw(key.publicRaw());
   engines::AotExpect id = engines::aotExpectOf(src, nvalue);
   jit::AotOptions o;

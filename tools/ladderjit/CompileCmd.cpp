@@ -4,7 +4,7 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "engines/AotLoader.h"
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 #include "engines/LlvmBackend.h"
 #include "formats/OutputFile.h"
 
@@ -22,8 +22,8 @@ namespace lj::cli {
 std::unique_ptr<Engine> loadAotEngine(const std::string &soPath, const ProgramSource &src,
                                       int32_t plc2Nvalue, const std::vector<std::string> &trustKeys,
                                       std::string &error) {
-  engines::TrustedKeys trust;
-  if (!engines::loadTrustedKeys(trustKeys, trust, error)) return nullptr;
+  signing::TrustedKeys trust;
+  if (!signing::loadTrustedKeys(trustKeys, trust, error)) return nullptr;
   return engines::loadAot(soPath, engines::aotExpectOf(src, plc2Nvalue), trust, error);
 }
 
@@ -50,11 +50,11 @@ int runCompile(const CompileArgs &a) {
   if (!prog) return code;
   const engines::LlvmBackend *llvm = engines::llvmBackend(error);
   if (!llvm) return usageError("compile: " + error);
-  engines::SigningKey key;
+  signing::SigningKey key;
   if (a.signKey.empty()) {
     std::string keyPath;
     bool created = false;
-    if (!engines::defaultSigningKey(key, keyPath, created, error))
+    if (!signing::defaultSigningKey(key, keyPath, created, error))
       return usageError("compile: signing key: " + error);
     if (created)
       std::fprintf(stderr,

@@ -382,12 +382,12 @@ int runRun(const RunArgs &a) {
   sim.profile = prog->profile;
 
   engines::EngineOptions eo;
-  engines::TrustedKeys trust;
+  signing::TrustedKeys trust;
   if (spec->kind == engines::EngineKind::Jit)
     eo.cacheFromEnvironment = true; // docs/aot.md "Object cache"
   if (spec->kind == engines::EngineKind::Aot) {
     // The signers `--trust-key` names (none: the default public key), docs/aot.md "Trust".
-    if (!engines::loadTrustedKeys(a.trustKeys, trust, error))
+    if (!signing::loadTrustedKeys(a.trustKeys, trust, error))
       return usageError("--engine aot: " + error);
     eo.aotExpect = engines::aotExpectOf(src, nvalue);
     eo.aotTrust = &trust;

@@ -1,6 +1,6 @@
-// Ed25519 keys for AOT .so files (engines/AotTrust.h): generation, PEM files with ownership and
+// Ed25519 keys for AOT .so files (signing/AotTrust.h): generation, PEM files with ownership and
 // permission checks, signing and verification through OpenSSL's EVP interface.
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 
 #include <openssl/bio.h>
 #include <openssl/evp.h>
@@ -14,7 +14,7 @@
 #include <unistd.h>
 #include <vector>
 
-namespace lj::engines {
+namespace lj::signing {
 
 struct SigningKey::Impl {
   EVP_PKEY *pkey = nullptr;
@@ -345,4 +345,4 @@ bool loadTrustedKeys(const std::vector<std::string> &files, TrustedKeys &keys, s
   return keys.addFile(pub, error);
 }
 
-} // namespace lj::engines
+} // namespace lj::signing

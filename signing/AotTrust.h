@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lj::engines {
+namespace lj::signing {
 
 /// Length of a raw Ed25519 public key and of a signature.
 constexpr size_t kEd25519KeySize = 32;
@@ -82,4 +82,4 @@ bool defaultSigningKey(SigningKey &key, std::string &path, bool &created, std::s
 /// default public key (which must exist and pass the same ownership checks).
 bool loadTrustedKeys(const std::vector<std::string> &files, TrustedKeys &keys, std::string &error);
 
-} // namespace lj::engines
+} // namespace lj::signing

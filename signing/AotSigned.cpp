@@ -1,6 +1,6 @@
-// Building and verifying the signed trailer of an AOT .so (engines/AotSigned.h). Parsing is strict
+// Building and verifying the signed trailer of an AOT .so (signing/AotSigned.h). Parsing is strict
 // and bounded: every field exactly once, decimal numbers without signs, fixed-size footer.
-#include "engines/AotSigned.h"
+#include "signing/AotSigned.h"
 
 #include "ladderjit/program.h"
 
@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <map>
 
-namespace lj::engines {
+namespace lj::signing {
 
 namespace {
 
@@ -141,4 +141,4 @@ std::string verifySigned(std::string_view file, const TrustedKeys &trust, AotMet
   return {};
 }
 
-} // namespace lj::engines
+} // namespace lj::signing

@@ -2,13 +2,13 @@
 // "Trust"): `compile` appends it, the loader verifies it before mapping any byte of the file.
 #pragma once
 
-#include "engines/AotTrust.h"
+#include "signing/AotTrust.h"
 
 #include <cstdint>
 #include <string>
 #include <string_view>
 
-namespace lj::engines {
+namespace lj::signing {
 
 /// What the trailer states about the image; everything the loader checks comes from here.
 struct AotMeta {
@@ -31,4 +31,4 @@ bool signImage(std::string &file, AotMeta meta, const SigningKey &key, std::stri
 /// are the image); else the reason, one line.
 std::string verifySigned(std::string_view file, const TrustedKeys &trust, AotMeta &meta);
 
-} // namespace lj::engines
+} // namespace lj::signing
