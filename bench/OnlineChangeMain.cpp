@@ -10,8 +10,8 @@
 // change does, JitOptions::quickLeaves) and then, as serve's background optimizer does, the
 // same program again without it ("opt" column: that rebuild's wall time). --full compiles
 // every version without the incremental compile, for comparison.
-#include "pipeline/ProgramFile.h"
 #include "jit/Jit.h"
+#include "pipeline/ProgramFile.h"
 
 #include <time.h>
 

@@ -3,8 +3,8 @@
 // byte of an unsigned or modified file is ever mapped executable (docs/aot.md "Trust").
 #include "engines/AotLoader.h"
 
-#include "signing/AotSigned.h"
 #include "ladderjit/program.h"
+#include "signing/AotSigned.h"
 
 #include <atomic>
 #include <cerrno>

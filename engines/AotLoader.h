@@ -2,10 +2,10 @@
 // identity, ABI and ELF checks on the bytes read once, then dlopen of exactly those bytes.
 #pragma once
 
-#include "signing/AotTrust.h"
 #include "formats/PlcDit.h"
-#include "pipeline/ProgramFile.h"
 #include "ir/Engine.h"
+#include "pipeline/ProgramFile.h"
+#include "signing/AotTrust.h"
 
 #include <cstdint>
 #include <memory>

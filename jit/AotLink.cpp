@@ -3,9 +3,9 @@
 // no shell), append the signed trailer and rename the result into place.
 #include "jit/AotInternal.h"
 
-#include "signing/AotSigned.h"
 #include "jit/AotSources.inc" // generated: kAbiH, kProgramH, kTickC, kShimC
 #include "ladderjit/program.h"
+#include "signing/AotSigned.h"
 
 #include <cerrno>
 #include <chrono>

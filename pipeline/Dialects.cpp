@@ -33,8 +33,9 @@ std::optional<VerifiedProgram> compileHnc8(std::string_view text, std::string fi
 
 constexpr const char *kHnc8Extensions[] = {".stl", ".dit"};
 
-const Dialect kHnc8{"hnc8",      kHnc8Extensions, profileNamed("hnc8"), parseHnc8,
-                    compileHnc8, parseAddress,    parseAssignment,      formatAddress, hnc8::dialectText};
+const Dialect kHnc8{"hnc8",          kHnc8Extensions, profileNamed("hnc8"),
+                    parseHnc8,       compileHnc8,     parseAddress,
+                    parseAssignment, formatAddress,   hnc8::dialectText};
 
 // FANUC 0i-D PMC (docs/fanuc-pmc.md): byte-addressed areas, `R100`, `R100.3`, `D100:4`.
 std::optional<CliAddress> fanucAddress(std::string_view text, std::string &error) {
@@ -53,8 +54,9 @@ std::optional<VerifiedProgram> compileFanuc(std::string_view text, std::string f
   return pipeline::compilePmc(text, std::move(file), opts, diags, symbols);
 }
 constexpr const char *kFanucExtensions[] = {".pmc"};
-const Dialect kFanuc{"fanuc",      kFanucExtensions, profileNamed("fanuc"), parseFanuc,
-                     compileFanuc, fanucAddress,     fanucAssignment,       formatProfileAddress, fanuc::dialectText};
+const Dialect kFanuc{"fanuc",         kFanucExtensions,     profileNamed("fanuc"),
+                     parseFanuc,      compileFanuc,         fanucAddress,
+                     fanucAssignment, formatProfileAddress, fanuc::dialectText};
 
 // IEC IL (Neza): `%I0.1`-style objects (frontends/iec/Objects.h) on the command line, in
 // stimulus files, --watch and --dump (docs/iec-il.md "Command line").
@@ -108,8 +110,9 @@ std::string formatIecAddress(const CliAddress &addr) {
 
 constexpr const char *kIecExtensions[] = {".il"};
 
-const Dialect kIec{"iec",      kIecExtensions,  profileNamed("iec"), parseIec,
-                   compileIec, parseIecAddress, parseIecAssignment,  formatIecAddress, iec::dialectText};
+const Dialect kIec{"iec",           kIecExtensions,  profileNamed("iec"), parseIec,
+                   compileIec,      parseIecAddress, parseIecAssignment,  formatIecAddress,
+                   iec::dialectText};
 
 const Dialect *const kDialects[] = {&kHnc8, &kFanuc, &kIec};
 

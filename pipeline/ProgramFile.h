@@ -3,9 +3,9 @@
 // record it. One implementation for `check`/`run`/`compile`/`emit-llvm` and for serve's loader.
 #pragma once
 
-#include "pipeline/Dialects.h"
 #include "formats/PlcDit.h"
 #include "ir/Program.h"
+#include "pipeline/Dialects.h"
 
 #include <cstdint>
 #include <memory>

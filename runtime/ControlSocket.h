@@ -75,7 +75,8 @@ private:
   std::atomic<bool> stopping_{false};
   std::thread acceptThread_;
   std::mutex mu_;
-  std::list<services::ClientSlot> clients_; // finished ones are joined at the next accept; guarded by mu_
+  std::list<services::ClientSlot>
+      clients_; // finished ones are joined at the next accept; guarded by mu_
 };
 
 /// Client side: send `request` to the server at `path` and return its response. False with

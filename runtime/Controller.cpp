@@ -150,15 +150,15 @@ std::vector<Symbol> symbolsOf(Executive &exec) {
 }
 
 // An address in the running program's dialect, or one of its symbols (formats/Address.h).
-std::optional<formats::CliAddress> address(const formats::Dialect &d, Executive &exec, std::string_view item,
-                                      std::string &err) {
+std::optional<formats::CliAddress> address(const formats::Dialect &d, Executive &exec,
+                                           std::string_view item, std::string &err) {
   return formats::parseAddressIn(d.parseAddress, symbolsOf(exec), item, err);
 }
 
 // A write or lock item in the running program's dialect (its address perhaps a symbol of the
 // program): parsed and checked for writability (formats/Address.h, pipeline/Dialects.h).
 std::optional<formats::Assignment> writable(const formats::Dialect &d, Executive &exec,
-                                       const std::string &item, std::string &err) {
+                                            const std::string &item, std::string &err) {
   std::optional<formats::Assignment> a =
       formats::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbolsOf(exec), item, err);
   if (a && !formats::checkWritable(a->addr, a->value, err)) return std::nullopt;

@@ -4,8 +4,8 @@
 
 #include "engines/EngineSpec.h"
 #include "engines/LlvmBackend.h"
-#include "pipeline/ProgramFile.h"
 #include "ir/Trace.h"
+#include "pipeline/ProgramFile.h"
 
 #include <chrono>
 

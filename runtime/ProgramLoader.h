@@ -4,10 +4,10 @@
 // the scan thread.
 #pragma once
 
-#include "signing/AotTrust.h"
 #include "engines/EngineSpec.h"
 #include "formats/PlcDit.h"
 #include "runtime/Executive.h"
+#include "signing/AotTrust.h"
 
 #include <atomic>
 #include <cstdint>

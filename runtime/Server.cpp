@@ -334,7 +334,8 @@ Status Server::Impl::readPowerUp(std::string &error) {
   if (!a.modbusMap.empty()) {
     std::string text;
     if (!formats::readFile(a.modbusMap, text, error)) return usage("--modbus-map: " + error);
-    std::optional<services::ModbusMap> m = services::ModbusMap::parse(text, a.modbusMap, *setDialect, error);
+    std::optional<services::ModbusMap> m =
+        services::ModbusMap::parse(text, a.modbusMap, *setDialect, error);
     if (!m) return usage("--modbus-map: " + error);
     modbusMap = std::make_shared<const services::ModbusMap>(std::move(*m));
   } else if (!a.modbus.empty() && std::string_view(setDialect->name) != "hnc8") {

@@ -200,7 +200,8 @@ std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::stri
       return std::nullopt;
     }
     std::string why;
-    std::optional<formats::CliAddress> first = formats::parseAddressIn(dialect.parseAddress, symbols, w[2], why);
+    std::optional<formats::CliAddress> first =
+        formats::parseAddressIn(dialect.parseAddress, symbols, w[2], why);
     if (!first) {
       error = at + why;
       return std::nullopt;

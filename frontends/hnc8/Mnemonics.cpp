@@ -228,8 +228,8 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
 
 const DialectText &dialectText() {
   static constexpr DialectText kText{
-      "hnc8",  &spellingOf,     &formatOperand, nullptr, nullptr, &lookupMnemonic,
-      &detail::printStatements, &symbolRules};
+      "hnc8",  &spellingOf,     &formatOperand,           nullptr,
+      nullptr, &lookupMnemonic, &detail::printStatements, &symbolRules};
   return kText;
 }
 

@@ -2,12 +2,12 @@
 #include "hosts/linuxcnc/HalInstance.h"
 
 #include "engines/AotLoader.h"
-#include "signing/AotTrust.h"
 #include "formats/InputFiles.h"
-#include "pipeline/ProgramFile.h"
 #include "hosts/SystemBits.h"
 #include "ir/Diagnostics.h"
+#include "pipeline/ProgramFile.h"
 #include "services/RetainStore.h"
+#include "signing/AotTrust.h"
 
 #include <algorithm>
 #include <chrono>

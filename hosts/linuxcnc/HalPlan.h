@@ -5,8 +5,8 @@
 #pragma once
 
 #include "formats/Address.h"
-#include "pipeline/Dialects.h"
 #include "ir/Program.h"
+#include "pipeline/Dialects.h"
 
 #include <cstdint>
 #include <string>

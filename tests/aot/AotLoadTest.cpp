@@ -4,10 +4,10 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "engines/AotLoader.h"
-#include "signing/AotSigned.h"
 #include "formats/PlcDit.h"
 #include "ir/Engine.h"
 #include "ladderjit/program.h"
+#include "signing/AotSigned.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
 #include "tests/support/StateDiff.h"

@@ -4,9 +4,9 @@
 #include "tests/aot/AotTestUtil.h"
 
 #include "engines/AotLoader.h"
+#include "ladderjit/program.h"
 #include "signing/AotSigned.h"
 #include "signing/AotTrust.h"
-#include "ladderjit/program.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/Machine.h"
 

@@ -1,6 +1,7 @@
 // `--dialect` on every command that takes PROGRAM (and fuzz): an unknown name is a usage error
 // (exit 2) naming the known dialects (hnc8, fanuc, iec); a `.pmc` file is FANUC PMC text, a `.il`
-// file IEC IL; hnc8 and an unknown extension read HNC-8 STL as before (CLI.md, pipeline/Dialects.h).
+// file IEC IL; hnc8 and an unknown extension read HNC-8 STL as before (CLI.md,
+// pipeline/Dialects.h).
 #include "CliRunner.h"
 
 #include <gtest/gtest.h>

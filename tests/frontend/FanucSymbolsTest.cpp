@@ -3,8 +3,8 @@
 // their located messages, and names in operands resolved exactly like the addresses they stand
 // for. One test per rule.
 #include "frontends/fanuc/FrontEnd.h"
-#include "pipeline/Compile.h"
 #include "frontends/hnc8/Address.h"
+#include "pipeline/Compile.h"
 #include "tests/frontend/FanucDiags.h"
 
 #include <gtest/gtest.h>

@@ -27,7 +27,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     (void)lj::ladder::renderText(nets);
     lj::ladder::StlFromJson back;
     std::string error;
-    if (!lj::ladder::stlFromJson(lj::ladder::writeJson(nets), back, error, *prog->dialect)) __builtin_trap();
+    if (!lj::ladder::stlFromJson(lj::ladder::writeJson(nets), back, error, *prog->dialect))
+      __builtin_trap();
     lj::Diagnostics again("fuzz.json");
     std::optional<lj::VerifiedProgram> twin =
         lj::pipeline::compileStl(back.text, "fuzz.json", opts, again, &back.symbols);

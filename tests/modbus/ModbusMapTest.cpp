@@ -104,8 +104,8 @@ TEST(ModbusMapFile, SymbolsOfTheProgramAsStartAddresses) {
   const std::vector<Symbol> symbols = {
       {"COOLANT", "Y0.0", "COOLANT PUMP"}, {"M_CODE", "F10", "M CODE"}, {"CLEAR", "L3", ""}};
   std::string err;
-  auto m = ModbusMap::parse("coils 0 coolant 8\ninput 0 M_CODE\n", "m.map", *formats::dialectNamed("fanuc"),
-                            err, symbols);
+  auto m = ModbusMap::parse("coils 0 coolant 8\ninput 0 M_CODE\n", "m.map",
+                            *formats::dialectNamed("fanuc"), err, symbols);
   ASSERT_TRUE(m) << err;
   auto s = fresh();
   set(*s, "fanuc", "Y0.0=1");
@@ -117,9 +117,11 @@ TEST(ModbusMapFile, SymbolsOfTheProgramAsStartAddresses) {
   ASSERT_EQ(mbmap::readRegisters(*m, MbTable::InputRegisters, 0, 1, *s, regs), 0);
   EXPECT_EQ(regs, (std::vector<uint16_t>{8}));
   // Without the symbols the name is no address; a symbol of a label names no value.
-  EXPECT_FALSE(ModbusMap::parse("coils 0 COOLANT 8\n", "m.map", *formats::dialectNamed("fanuc"), err));
+  EXPECT_FALSE(
+      ModbusMap::parse("coils 0 COOLANT 8\n", "m.map", *formats::dialectNamed("fanuc"), err));
   EXPECT_NE(err.find("bad address 'COOLANT'"), std::string::npos) << err;
-  EXPECT_FALSE(ModbusMap::parse("coils 0 CLEAR\n", "m.map", *formats::dialectNamed("fanuc"), err, symbols));
+  EXPECT_FALSE(
+      ModbusMap::parse("coils 0 CLEAR\n", "m.map", *formats::dialectNamed("fanuc"), err, symbols));
   EXPECT_NE(err.find("m.map:1: symbol 'CLEAR' = L3: bad address 'L3'"), std::string::npos) << err;
 }
 

@@ -10,12 +10,12 @@
 
 #include "engines/EngineSpec.h"
 #include "engines/LlvmBackend.h"
-#include "pipeline/Dialects.h"
 #include "formats/InputFiles.h"
-#include "pipeline/ProgramFile.h"
 #include "hosts/SimNc.h"
 #include "hosts/SystemBits.h"
 #include "ir/Profile.h"
+#include "pipeline/Dialects.h"
+#include "pipeline/ProgramFile.h"
 #include "tests/support/EngineRegistry.h"
 #include "tests/support/StateDiff.h"
 

@@ -2,8 +2,8 @@
 // engine factory (engines/EngineSpec.h) exactly as the CLI builds it.
 #include "tests/support/EngineRegistry.h"
 
-#include "signing/AotTrust.h"
 #include "engines/EngineSpec.h"
+#include "signing/AotTrust.h"
 
 #include <cstdlib>
 

@@ -8,13 +8,13 @@
 #include "tools/ladderjit/Progress.h"
 
 #include "engines/AotLoader.h"
-#include "signing/AotTrust.h"
 #include "engines/LlvmBackend.h"
 #include "formats/Address.h"
 #include "formats/InputFiles.h"
 #include "gen/Rng.h"
 #include "ladder/Json.h"
 #include "pipeline/Compile.h"
+#include "signing/AotTrust.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

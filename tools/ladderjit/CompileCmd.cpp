@@ -4,9 +4,9 @@
 #include "tools/ladderjit/Commands.h"
 
 #include "engines/AotLoader.h"
-#include "signing/AotTrust.h"
 #include "engines/LlvmBackend.h"
 #include "formats/OutputFile.h"
+#include "signing/AotTrust.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -60,7 +60,8 @@ bool parseAddressed(const RunArgs &a, const formats::Dialect &d, std::span<const
         return false;
       }
       std::optional<formats::CliAddress> addr =
-          later(item) ? formats::CliAddress{} : formats::parseAddressIn(d.parseAddress, symbols, item, error);
+          later(item) ? formats::CliAddress{}
+                      : formats::parseAddressIn(d.parseAddress, symbols, item, error);
       if (!addr) {
         error = "--watch: " + error;
         return false;
@@ -81,7 +82,8 @@ bool parseAddressed(const RunArgs &a, const formats::Dialect &d, std::span<const
 }
 
 // Every user input of `run`, parsed and checked (names among the addresses: parseAddressed).
-bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim, std::string &error) {
+bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim,
+                 std::string &error) {
   sim.ticks = a.ticks;
   sim.periodMs = a.periodMs;
   if (!parseAddressed(a, d, {}, true, sim, error)) return false;
