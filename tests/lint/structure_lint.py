@@ -12,6 +12,7 @@ tracked files of the tree (docs/architecture.md "Rules that keep the rooms hones
 4. A clone has no ../shared: README.md, docs/ and every shipped source cite the manuals by
    name; only tests/ and bench/ may read real programs from ../shared.
 5. Namespaces match folders: no `lj::io` (the old catch-all), no `lj::test` outside tests/.
+6. README.md's docs list names every file in docs/ (a reader finds each one from the README).
 
 Usage: structure_lint.py [ROOT]   (exit 0 clean, 1 with one line per violation)
        structure_lint.py --self-test  (builds a tree with one violation of each rule and checks
@@ -88,6 +89,12 @@ def check(root):
             if folder == 'ir' and '/' in inc and inc_top not in ('ir', 'runtime_abi', 'ladderjit',
                                                                'frontends'):
                 problems.append(f'{where}: ir/ includes {inc} (the IR depends on nothing above)')
+    readme_path = os.path.join(root, 'README.md')
+    readme = open(readme_path, encoding='utf-8', errors='replace').read() \
+        if os.path.isfile(readme_path) else ''
+    for f in sorted(tracked_files(root)):
+        if re.fullmatch(r'docs/[^/]+\.md', f) and f'`{f}`' not in readme:
+            problems.append(f'{f}: not named in README.md\'s docs list')
     return problems
 
 
@@ -100,6 +107,9 @@ def self_test():
         'formats/E.cpp': '#include "engines/AotLoader.h"\n',
         'jit/F.cpp': '#include "engines/AotLoader.h"\n',
         'docs/g.md': 'see ../shared/reference/hnc8-core.md\n',
+        'docs/unlisted.md': 'a page nobody can find\n',
+        'docs/ok.md': 'listed\n',
+        'README.md': '- `docs/ok.md`, `docs/g.md`: listed\n',
         'hosts/H.h': 'namespace lj::test {}\n',
         'runtime/I.h': 'namespace lj::io {}\n',
         'tests/ok.py': 'open("../shared/realprograms/x")  # allowed in tests\n',
@@ -112,7 +122,7 @@ def self_test():
             with open(os.path.join(d, name), 'w') as fh:
                 fh.write(text)
         found = check(d)
-    want = [n for n in cases if '/ok.' not in n]
+    want = [n for n in cases if '/ok.' not in n and n != 'README.md']
     missing = [n for n in want if not any(p.startswith(n + ':') for p in found)]
     extra = [p for p in found if '/ok.' in p.split(':')[0]]
     if missing or extra:
