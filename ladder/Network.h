@@ -115,8 +115,9 @@ inline std::string drawnText(const Element &e) {
 
 /// The words a drawing gives the joins of a network (not statements of any one dialect): the
 /// block join of a sub-network and the push / read / pop of a fan-out's junction.
-inline constexpr const char *kBlockJoinWord = "ANB";
-inline constexpr const char *kFanWords[3] = {"MPS", "MRD", "MPP"};
+/// (ladder/Spelling.cpp, the one file of ladder/ that spells drawn words.)
+extern const char *const kBlockJoinWord;
+extern const char *const kFanWords[3];
 
 /// Counts for reports: ladder / stl / marker rungs.
 struct RungCounts {

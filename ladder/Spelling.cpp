@@ -6,6 +6,9 @@
 
 namespace lj::ladder {
 
+const char *const kBlockJoinWord = "ANB";
+const char *const kFanWords[3] = {"MPS", "MRD", "MPP"};
+
 std::string drawnMnemonic(const VerifiedProgram &p, const Stmt &s) {
   if (p.dialect && p.dialect->spellStmt) return p.dialect->spellStmt(s);
   return spelling(p.dialect, s.op);
