@@ -13,7 +13,7 @@ void BM_Parse(benchmark::State &state) {
   Stopwatch sw;
   for (auto _ : state) {
     Diagnostics d("bench.stl");
-    ParsedProgram p = pipeline::parse(formats::defaultDialect(), text, "bench.stl", d);
+    ParsedProgram p = pipeline::parse(pipeline::defaultDialect(), text, "bench.stl", d);
     benchmark::DoNotOptimize(p.stmts.data());
     benchmark::ClobberMemory();
   }
@@ -24,7 +24,7 @@ void BM_Verify(benchmark::State &state) {
   const int n = static_cast<int>(state.range(0));
   Diagnostics pd("bench.stl");
   const ParsedProgram parsed =
-      pipeline::parse(formats::defaultDialect(), programText(n), "bench.stl", pd);
+      pipeline::parse(pipeline::defaultDialect(), programText(n), "bench.stl", pd);
   Stopwatch sw;
   for (auto _ : state) {
     Diagnostics d("bench.stl");

@@ -89,9 +89,9 @@ int main(int argc, char **argv) {
       return 2;
     }
   }
-  lj::formats::ProgramSource src;
+  lj::pipeline::ProgramSource src;
   std::string error;
-  if (!lj::formats::readProgramFile(argv[1], src, error)) {
+  if (!lj::pipeline::readProgramFile(argv[1], src, error)) {
     std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
     return 2;
   }
@@ -135,7 +135,7 @@ int main(int argc, char **argv) {
     auto t0 = std::chrono::steady_clock::now();
     const double fc0 = cpuMs();
     std::string diags;
-    std::optional<lj::VerifiedProgram> v = lj::formats::verifyProgram(src, 200, diags);
+    std::optional<lj::VerifiedProgram> v = lj::pipeline::verifyProgram(src, 200, diags);
     if (!v) {
       std::fprintf(stderr, "bench_online_change: %s\n", diags.c_str());
       return 1;

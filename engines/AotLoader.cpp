@@ -178,9 +178,9 @@ std::string sourceHash(std::string_view stl, const formats::DitFile *dit) {
   return formats::sha256Hash(canon);
 }
 
-AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue) {
+AotExpect aotExpectOf(const pipeline::ProgramSource &src, int32_t plc2Nvalue) {
   const formats::DitFile *dit = src.dit ? &*src.dit : nullptr;
-  return {formats::programHash(src.text, dit, plc2Nvalue), sourceHash(src.text, dit), plc2Nvalue};
+  return {pipeline::programHash(src.text, dit, plc2Nvalue), sourceHash(src.text, dit), plc2Nvalue};
 }
 
 std::unique_ptr<Engine> loadAot(const std::string &path, const AotExpect &expect,

@@ -31,7 +31,7 @@ struct AotExpect {
   std::string source;      ///< empty: not known
   int32_t plc2Nvalue = -1; ///< < 0: not known
 };
-AotExpect aotExpectOf(const formats::ProgramSource &src, int32_t plc2Nvalue);
+AotExpect aotExpectOf(const pipeline::ProgramSource &src, int32_t plc2Nvalue);
 
 /// Load `path` if it is a ladderjit program signed by a key of `trust`, built for this ABI and
 /// state layout from the expected program. Every check runs on the bytes read once from the

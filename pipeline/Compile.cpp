@@ -52,13 +52,13 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
   return verifyParsed(iec::parseIl(text, std::move(file), diags), opts, diags);
 }
 
-std::optional<VerifiedProgram> compile(const formats::Dialect &dialect, std::string_view text,
+std::optional<VerifiedProgram> compile(const pipeline::Dialect &dialect, std::string_view text,
                                        std::string file, const VerifyOptions &opts,
                                        Diagnostics &diags, const SymbolTable *symbols) {
   return dialect.compile(text, std::move(file), opts, diags, symbols);
 }
 
-ParsedProgram parse(const formats::Dialect &dialect, std::string_view text, std::string file,
+ParsedProgram parse(const pipeline::Dialect &dialect, std::string_view text, std::string file,
                     Diagnostics &diags, const SymbolTable *symbols) {
   return dialect.parse(text, std::move(file), diags, symbols);
 }

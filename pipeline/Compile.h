@@ -11,11 +11,9 @@
 #include <string>
 #include <string_view>
 
-namespace lj::formats {
-struct Dialect;
-} // namespace lj::formats
-
 namespace lj::pipeline {
+
+struct Dialect;
 
 /// HNC-8 STL (DIALECT.md): parseStl (with `symbols`, may be null: a plc.dit's or a ladder
 /// JSON's) + verify; nothing on any error. Parsing stops at the statement limit
@@ -38,13 +36,13 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
                                          const SymbolTable *symbols = nullptr);
 
 /// Parse + verify in `dialect` (its Dialect::compile).
-std::optional<VerifiedProgram> compile(const formats::Dialect &dialect, std::string_view text,
+std::optional<VerifiedProgram> compile(const pipeline::Dialect &dialect, std::string_view text,
                                        std::string file, const VerifyOptions &opts,
                                        Diagnostics &diags, const SymbolTable *symbols = nullptr);
 
 /// The front end of `dialect` alone (its Dialect::parse): never fails as a whole, bad lines
 /// become diagnostics. For timing the stages apart (`bench`).
-ParsedProgram parse(const formats::Dialect &dialect, std::string_view text, std::string file,
+ParsedProgram parse(const pipeline::Dialect &dialect, std::string_view text, std::string file,
                     Diagnostics &diags, const SymbolTable *symbols = nullptr);
 
 /// Human-readable dump of a verified program in its own dialect's spelling (one statement per

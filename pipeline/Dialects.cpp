@@ -16,7 +16,18 @@
 #include <array>
 #include <cctype>
 
-namespace lj::formats {
+namespace lj::pipeline {
+
+// The command line's address syntax of each dialect is formats/Address.h's.
+using formats::Assignment;
+using formats::CliAddress;
+using formats::formatAddress;
+using formats::formatProfileAddress;
+using formats::parseAddress;
+using formats::parseAssignment;
+using formats::parseAssignmentWith;
+using formats::parseProfileAddress;
+using formats::parseProfileAssignment;
 
 namespace {
 
@@ -191,4 +202,4 @@ const Dialect *dialectOfJson(std::string_view text, std::string &error) {
   return d;
 }
 
-} // namespace lj::formats
+} // namespace lj::pipeline

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace lj::formats {
+namespace lj::pipeline {
 
 /// One dialect of this build.
 struct Dialect {
@@ -29,9 +29,9 @@ struct Dialect {
                                             const VerifyOptions &opts, Diagnostics &diags,
                                             const SymbolTable *symbols);
   /// Command-line / stimulus / --watch / --dump addresses and `addr=value` items.
-  std::optional<CliAddress> (*parseAddress)(std::string_view text, std::string &error);
-  std::optional<Assignment> (*parseAssignment)(std::string_view item, std::string &error);
-  std::string (*formatAddress)(const CliAddress &addr);
+  std::optional<formats::CliAddress> (*parseAddress)(std::string_view text, std::string &error);
+  std::optional<formats::Assignment> (*parseAssignment)(std::string_view item, std::string &error);
+  std::string (*formatAddress)(const formats::CliAddress &addr);
   /// The front end's words and text (spelling, operand text, networks -> program text): what
   /// the ladder stage reads and writes the network JSON with.
   const DialectText &(*text)();
@@ -64,4 +64,4 @@ const Dialect *dialectOfJson(std::string_view text, std::string &error);
 /// All dialect names this build has, "hnc8, ..." (for messages and --help).
 std::string knownDialects();
 
-} // namespace lj::formats
+} // namespace lj::pipeline

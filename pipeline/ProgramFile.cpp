@@ -7,7 +7,14 @@
 
 #include <algorithm>
 
-namespace lj::formats {
+namespace lj::pipeline {
+
+using formats::DitFile;
+using formats::looksLikeDit;
+using formats::parseDit;
+using formats::programForParser;
+using formats::readFile;
+using formats::sha256Hash;
 
 namespace {
 
@@ -223,4 +230,4 @@ std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue) {
   return programHash(src.text, src.dit ? &*src.dit : nullptr, plc2Nvalue);
 }
 
-} // namespace lj::formats
+} // namespace lj::pipeline

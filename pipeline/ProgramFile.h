@@ -18,14 +18,14 @@ struct StlFromJson;
 struct Networks;
 } // namespace lj::ladder
 
-namespace lj::formats {
+namespace lj::pipeline {
 
 /// PROGRAM as read.
 struct ProgramSource {
   std::string path;
-  std::string text;           ///< what the STL parser reads (container: padded program)
-  std::optional<DitFile> dit; ///< the container, when PROGRAM is one
-  std::string fileHash;       ///< "sha256:..." of the file's bytes (serve's program identity)
+  std::string text;                    ///< what the STL parser reads (container: padded program)
+  std::optional<formats::DitFile> dit; ///< the container, when PROGRAM is one
+  std::string fileHash; ///< "sha256:..." of the file's bytes (serve's program identity)
   /// A `.json` PROGRAM (ladder networks, docs/ladder-json.md): its symbols and line map; `text`
   /// is the STL made from it.
   std::shared_ptr<const ladder::StlFromJson> ladder;
@@ -63,9 +63,9 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
 /// `ladderjit-program 1\nplc2_nvalue = N\n` followed by `container = <dit hash>\n` (a container
 /// with another nvalue) or `[program]\n` and the STL text with CR before LF dropped and a final
 /// LF added (an STL file). `stl` is the STL file's text; ignored when `dit` is given.
-std::string programHash(std::string_view stl, const DitFile *dit, int32_t plc2Nvalue);
+std::string programHash(std::string_view stl, const formats::DitFile *dit, int32_t plc2Nvalue);
 
 /// The program hash an AOT .so built from `src` with `plc2Nvalue` carries (programHash).
 std::string programHashOf(const ProgramSource &src, int32_t plc2Nvalue);
 
-} // namespace lj::formats
+} // namespace lj::pipeline

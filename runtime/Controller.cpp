@@ -150,14 +150,14 @@ std::vector<Symbol> symbolsOf(Executive &exec) {
 }
 
 // An address in the running program's dialect, or one of its symbols (formats/Address.h).
-std::optional<formats::CliAddress> address(const formats::Dialect &d, Executive &exec,
+std::optional<formats::CliAddress> address(const pipeline::Dialect &d, Executive &exec,
                                            std::string_view item, std::string &err) {
   return formats::parseAddressIn(d.parseAddress, symbolsOf(exec), item, err);
 }
 
 // A write or lock item in the running program's dialect (its address perhaps a symbol of the
 // program): parsed and checked for writability (formats/Address.h, pipeline/Dialects.h).
-std::optional<formats::Assignment> writable(const formats::Dialect &d, Executive &exec,
+std::optional<formats::Assignment> writable(const pipeline::Dialect &d, Executive &exec,
                                             const std::string &item, std::string &err) {
   std::optional<formats::Assignment> a =
       formats::parseAssignmentIn(d.parseAddress, d.parseAssignment, symbolsOf(exec), item, err);
@@ -169,7 +169,7 @@ std::optional<formats::Assignment> writable(const formats::Dialect &d, Executive
 
 namespace {
 // The trace's addresses in the running program's syntax (pipeline/Dialects.h).
-AddressParser traceParser(const formats::Dialect &d) {
+AddressParser traceParser(const pipeline::Dialect &d) {
   return [&d](std::string_view text, std::string &error) { return d.parseAddress(text, error); };
 }
 } // namespace
@@ -180,12 +180,12 @@ bool Controller::armTraceFile(const std::string &file, std::string &error) {
   return trace_.defineAndArm(text, file, traceParser(dialect()), exec_.periodNs(), error);
 }
 
-const formats::Dialect &Controller::dialect() const {
+const pipeline::Dialect &Controller::dialect() const {
   std::shared_ptr<ProgramVersion> cur = exec_.current();
-  const formats::Dialect *d = cur && cur->prog && cur->prog->profile
-                                  ? formats::dialectNamed(cur->prog->profile->name)
-                                  : nullptr;
-  return d ? *d : formats::defaultDialect();
+  const pipeline::Dialect *d = cur && cur->prog && cur->prog->profile
+                                   ? pipeline::dialectNamed(cur->prog->profile->name)
+                                   : nullptr;
+  return d ? *d : pipeline::defaultDialect();
 }
 
 Controller::Controller(Exchange &ex, Executive &exec, ProgramLoader &loader, std::string program,

@@ -98,7 +98,7 @@ public:
 
 private:
   /// The running program's dialect: the syntax of read / write / force / lock addresses.
-  const formats::Dialect &dialect() const;
+  const pipeline::Dialect &dialect() const;
   nlohmann::json doRead(const nlohmann::json &req);
   nlohmann::json doWrite(const nlohmann::json &req);
   nlohmann::json doForce(const nlohmann::json &req);

@@ -214,17 +214,17 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     error = "the AOT engine needs a .so built from '" + path + "'";
     return nullptr;
   }
-  formats::ProgramSource src;
-  if (!formats::readProgramFile(path, src, error, dialect_)) return nullptr;
+  pipeline::ProgramSource src;
+  if (!pipeline::readProgramFile(path, src, error, dialect_)) return nullptr;
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
   v->hash = src.fileHash;
   const bool nvalueGiven = plc2Nvalue_ >= 0;
   const int32_t nvalue =
-      formats::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
+      pipeline::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven);
   std::string diagnostics;
   std::optional<VerifiedProgram> prog =
-      formats::verifyProgram(src, nvalue, diagnostics, &v->warnings);
+      pipeline::verifyProgram(src, nvalue, diagnostics, &v->warnings);
   if (!prog) {
     error = diagnostics;
     while (!error.empty() && error.back() == '\n') error.pop_back();

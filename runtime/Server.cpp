@@ -207,7 +207,7 @@ struct Server::Impl {
   int modbusPort = -1;
   LiveViewConfig live;
   bool tokenCreated = false;
-  const formats::Dialect *setDialect = nullptr;
+  const pipeline::Dialect *setDialect = nullptr;
   std::vector<formats::Assignment> powerUp;
   std::shared_ptr<const services::ModbusMap> modbusMap;
   ControllerOptions copts;
@@ -319,8 +319,8 @@ Status Server::Impl::checkOptions() {
 // --params, --set and the Modbus map, in the program's dialect (CLI.md): --dialect, else the
 // extension.
 Status Server::Impl::readPowerUp(std::string &error) {
-  setDialect = a.dialect.empty() ? formats::dialectForPath(a.program, error)
-                                 : formats::dialectForOption(a.dialect, error);
+  setDialect = a.dialect.empty() ? pipeline::dialectForPath(a.program, error)
+                                 : pipeline::dialectForOption(a.dialect, error);
   if (!setDialect) return usage(error);
   if (!a.params.empty()) {
     std::string text;
@@ -372,7 +372,7 @@ Status Server::Impl::checkHttp(std::string &error) {
 // ---- the program ----
 
 Status Server::Impl::loadProgram(std::string &error) {
-  if (!a.dialect.empty() && !formats::dialectForOption(a.dialect, error)) return usage(error);
+  if (!a.dialect.empty() && !pipeline::dialectForOption(a.dialect, error)) return usage(error);
   loader = std::make_unique<ProgramLoader>(aot ? "aot" : a.engine,
                                            a.plc2NvalueGiven ? a.plc2Nvalue : -1, a.dialect);
   if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)

@@ -165,7 +165,7 @@ const MbBlock *ModbusMap::resolve(MbTable table, uint32_t addr, uint32_t &elemen
 }
 
 std::optional<ModbusMap> ModbusMap::parse(std::string_view text, const std::string &file,
-                                          const formats::Dialect &dialect, std::string &error,
+                                          const pipeline::Dialect &dialect, std::string &error,
                                           std::span<const Symbol> symbols) {
   ModbusMap m;
   int lineNo = 0;

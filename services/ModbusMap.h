@@ -56,7 +56,7 @@ public:
   /// ADDRESS may be a name the program's `symbols` define (formats/Address.h parseAddressIn).
   /// Nothing with `error` = "FILE:LINE: problem" for the first bad line.
   static std::optional<ModbusMap> parse(std::string_view text, const std::string &file,
-                                        const formats::Dialect &dialect, std::string &error,
+                                        const pipeline::Dialect &dialect, std::string &error,
                                         std::span<const Symbol> symbols = {});
 
   /// The block holding Modbus address `addr` of `table`, with the element's index in it and,

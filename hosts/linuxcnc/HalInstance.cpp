@@ -57,11 +57,11 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
             "' (expected KEY.pub[,KEY.pub...])";
     return false;
   }
-  formats::ProgramSource src;
-  if (!formats::readProgramFile(sourcePath, src, error)) return false;
-  int32_t nvalue = formats::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
+  pipeline::ProgramSource src;
+  if (!pipeline::readProgramFile(sourcePath, src, error)) return false;
+  int32_t nvalue = pipeline::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
   std::string diags;
-  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diags);
+  std::optional<VerifiedProgram> prog = pipeline::verifyProgram(src, nvalue, diags);
   if (!prog) {
     size_t nl = diags.find('\n');
     error = "'" + sourcePath + "' has errors: " + diags.substr(0, nl);

@@ -34,7 +34,7 @@ bool halFriendly(std::string_view name) {
   });
 }
 
-formats::CliAddress bitAddress(const formats::Dialect &d, const TargetProfile *tp, Area area,
+formats::CliAddress bitAddress(const pipeline::Dialect &d, const TargetProfile *tp, Area area,
                                int32_t index, int bit) {
   formats::CliAddress a;
   a.area = area;
@@ -73,7 +73,7 @@ bool parseType(std::string_view t, PinType &type) {
 
 } // namespace
 
-std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const formats::Dialect &dialect) {
+std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const pipeline::Dialect &dialect) {
   std::set<BitKey> reads, writes;
   for (const Stmt &st : prog.stmts) {
     const InstrInfo &info = instrInfo(st.op);
@@ -110,7 +110,7 @@ std::vector<PinSpec> defaultPins(const VerifiedProgram &prog, const formats::Dia
 }
 
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
-              std::string &error, const formats::Dialect &dialect) {
+              std::string &error, const pipeline::Dialect &dialect) {
   std::vector<PinSpec> mapped;
   bool noDefaults = false;
   std::istringstream in{std::string(text)};

@@ -37,7 +37,7 @@ inline constexpr size_t kHalNameLen = 47;
 /// (`x484.5`, `y0.1`; FANUC `x0.0`, `y200.1`; IEC `i0.3`, `q0.1`: the dialect's spelling,
 /// lowercased, without `%`). `dialect` spells the addresses (default: HNC-8).
 std::vector<PinSpec> defaultPins(const VerifiedProgram &prog,
-                                 const formats::Dialect &dialect = formats::defaultDialect());
+                                 const pipeline::Dialect &dialect = pipeline::defaultDialect());
 
 /// Parse a map file (format: docs/linuxcnc.md "Map file") and merge it with `defaults`: a line
 /// for an address and direction already in the list replaces that pin, other lines add pins
@@ -46,7 +46,7 @@ std::vector<PinSpec> defaultPins(const VerifiedProgram &prog,
 /// (with `error`) on any bad line, a duplicate name or address, or a name HAL would refuse.
 /// Addresses are `dialect`'s (FANUC `D100:2`, IEC `%MW10`).
 bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpec> &pins,
-              std::string &error, const formats::Dialect &dialect = formats::defaultDialect());
+              std::string &error, const pipeline::Dialect &dialect = pipeline::defaultDialect());
 
 /// Check the final list against HAL's rules with `prefix` ("ladderjit"): names unique and at
 /// most kHalNameLen long. False (with `error`) otherwise.

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-namespace lj::formats {
+namespace lj::pipeline {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
@@ -136,4 +136,4 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
 }
 
 } // namespace
-} // namespace lj::formats
+} // namespace lj::pipeline

@@ -15,11 +15,11 @@ using lj::hal::PinSpec;
 using lj::hal::PinType;
 
 lj::VerifiedProgram verify(const std::string &text) {
-  lj::formats::ProgramSource src;
+  lj::pipeline::ProgramSource src;
   src.path = "t.stl";
   src.text = text;
   std::string diags;
-  auto prog = lj::formats::verifyProgram(src, 200, diags);
+  auto prog = lj::pipeline::verifyProgram(src, 200, diags);
   EXPECT_TRUE(prog.has_value()) << diags;
   return *prog;
 }
@@ -115,12 +115,12 @@ TEST(HalPlan, SymbolsNameDefaultPinsWhenHalFriendly) {
 namespace {
 
 lj::VerifiedProgram verifyIn(const char *dialect, const char *path, const std::string &text) {
-  lj::formats::ProgramSource src;
+  lj::pipeline::ProgramSource src;
   src.path = path;
   src.text = text;
-  src.dialect = lj::formats::dialectNamed(dialect);
+  src.dialect = lj::pipeline::dialectNamed(dialect);
   std::string diags;
-  auto prog = lj::formats::verifyProgram(src, 200, diags);
+  auto prog = lj::pipeline::verifyProgram(src, 200, diags);
   EXPECT_TRUE(prog.has_value()) << diags;
   return *prog;
 }
@@ -129,7 +129,7 @@ TEST(HalPlan, FanucPinsAndMapUseFanucAddresses) {
   // Reads X0.0 and X200.3 (the second X range), writes Y0.1; R only internal: no pin.
   auto prog =
       verifyIn("fanuc", "t.pmc", "RD X0.0\nAND X200.3\nWRT Y0.1\nWRT R5.0\nEND1\nEND2\nEND\n");
-  const lj::formats::Dialect &d = *lj::formats::dialectNamed("fanuc");
+  const lj::pipeline::Dialect &d = *lj::pipeline::dialectNamed("fanuc");
   std::vector<PinSpec> pins = lj::hal::defaultPins(prog, d);
   EXPECT_EQ(names(pins), (std::vector<std::string>{"in x0.0", "in x200.3", "out y0.1"}));
   // The pin writes the FANUC byte X200 in lj_state.mem, not HNC-8's X200 in lj_image.
@@ -153,7 +153,7 @@ TEST(HalPlan, FanucPinsAndMapUseFanucAddresses) {
 
 TEST(HalPlan, IecPinsDropThePercentSign) {
   auto prog = verifyIn("iec", "t.il", "000 LD %I0.2\n001 ST %Q0.1\n");
-  EXPECT_EQ(names(lj::hal::defaultPins(prog, *lj::formats::dialectNamed("iec"))),
+  EXPECT_EQ(names(lj::hal::defaultPins(prog, *lj::pipeline::dialectNamed("iec"))),
             (std::vector<std::string>{"in i0.2", "out q0.1"}));
 }
 

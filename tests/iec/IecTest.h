@@ -35,7 +35,7 @@ inline std::string ilErrors(std::string_view text) {
 
 inline formats::CliAddress ilAddress(std::string_view text) {
   std::string err;
-  std::optional<formats::CliAddress> a = formats::dialectNamed("iec")->parseAddress(text, err);
+  std::optional<formats::CliAddress> a = pipeline::dialectNamed("iec")->parseAddress(text, err);
   EXPECT_TRUE(a.has_value()) << err;
   return a.value_or(formats::CliAddress{});
 }

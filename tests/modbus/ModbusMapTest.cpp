@@ -22,28 +22,28 @@ std::unique_ptr<lj_state> fresh() {
 
 ModbusMap parseOk(const char *dialect, const char *text) {
   std::string err;
-  auto m = ModbusMap::parse(text, "m.map", *formats::dialectNamed(dialect), err);
+  auto m = ModbusMap::parse(text, "m.map", *pipeline::dialectNamed(dialect), err);
   EXPECT_TRUE(m) << err;
   return m ? *m : ModbusMap{};
 }
 
 std::string parseErr(const char *dialect, const char *text) {
   std::string err;
-  auto m = ModbusMap::parse(text, "m.map", *formats::dialectNamed(dialect), err);
+  auto m = ModbusMap::parse(text, "m.map", *pipeline::dialectNamed(dialect), err);
   EXPECT_FALSE(m) << text;
   return err;
 }
 
 int64_t get(const lj_state &s, const char *dialect, const char *addr) {
   std::string err;
-  auto a = formats::dialectNamed(dialect)->parseAddress(addr, err);
+  auto a = pipeline::dialectNamed(dialect)->parseAddress(addr, err);
   EXPECT_TRUE(a) << err;
   return a ? formats::readAddress(s, *a) : -999;
 }
 
 void set(lj_state &s, const char *dialect, const char *item) {
   std::string err;
-  auto a = formats::dialectNamed(dialect)->parseAssignment(item, err);
+  auto a = pipeline::dialectNamed(dialect)->parseAssignment(item, err);
   ASSERT_TRUE(a) << err;
   formats::writeAddress(s, a->addr, a->value);
 }
@@ -105,7 +105,7 @@ TEST(ModbusMapFile, SymbolsOfTheProgramAsStartAddresses) {
       {"COOLANT", "Y0.0", "COOLANT PUMP"}, {"M_CODE", "F10", "M CODE"}, {"CLEAR", "L3", ""}};
   std::string err;
   auto m = ModbusMap::parse("coils 0 coolant 8\ninput 0 M_CODE\n", "m.map",
-                            *formats::dialectNamed("fanuc"), err, symbols);
+                            *pipeline::dialectNamed("fanuc"), err, symbols);
   ASSERT_TRUE(m) << err;
   auto s = fresh();
   set(*s, "fanuc", "Y0.0=1");
@@ -118,10 +118,10 @@ TEST(ModbusMapFile, SymbolsOfTheProgramAsStartAddresses) {
   EXPECT_EQ(regs, (std::vector<uint16_t>{8}));
   // Without the symbols the name is no address; a symbol of a label names no value.
   EXPECT_FALSE(
-      ModbusMap::parse("coils 0 COOLANT 8\n", "m.map", *formats::dialectNamed("fanuc"), err));
+      ModbusMap::parse("coils 0 COOLANT 8\n", "m.map", *pipeline::dialectNamed("fanuc"), err));
   EXPECT_NE(err.find("bad address 'COOLANT'"), std::string::npos) << err;
   EXPECT_FALSE(
-      ModbusMap::parse("coils 0 CLEAR\n", "m.map", *formats::dialectNamed("fanuc"), err, symbols));
+      ModbusMap::parse("coils 0 CLEAR\n", "m.map", *pipeline::dialectNamed("fanuc"), err, symbols));
   EXPECT_NE(err.find("m.map:1: symbol 'CLEAR' = L3: bad address 'L3'"), std::string::npos) << err;
 }
 

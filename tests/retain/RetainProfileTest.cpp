@@ -48,13 +48,13 @@ protected:
   }
   static void set(lj_state &s, const char *profile, const char *item) {
     std::string err;
-    auto a = formats::dialectNamed(profile)->parseAssignment(item, err);
+    auto a = pipeline::dialectNamed(profile)->parseAssignment(item, err);
     ASSERT_TRUE(a) << err;
     formats::writeAddress(s, a->addr, a->value);
   }
   static int64_t get(const lj_state &s, const char *profile, const char *addr) {
     std::string err;
-    auto a = formats::dialectNamed(profile)->parseAddress(addr, err);
+    auto a = pipeline::dialectNamed(profile)->parseAddress(addr, err);
     EXPECT_TRUE(a) << err;
     return a ? formats::readAddress(s, *a) : -999;
   }

@@ -125,11 +125,11 @@ const char *servedName(Served s) {
 // The build of lathe_panel.stl that an AOT server serves: `ladderjit compile`'s path (the JIT
 // library's shared object, signed with the test key) into a temporary file.
 std::string compileAot(const std::string &program, std::string &error) {
-  formats::ProgramSource src;
-  if (!formats::readProgramFile(program, src, error, "")) return {};
-  const int32_t nvalue = formats::effectiveNvalue(src, 200, false);
+  pipeline::ProgramSource src;
+  if (!pipeline::readProgramFile(program, src, error, "")) return {};
+  const int32_t nvalue = pipeline::effectiveNvalue(src, 200, false);
   std::string diags;
-  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, nvalue, diags);
+  std::optional<VerifiedProgram> prog = pipeline::verifyProgram(src, nvalue, diags);
   if (!prog) {
     error = diags;
     return {};
@@ -165,7 +165,7 @@ TEST_P(ObserveForce, ServedRunEqualsInterpreterWithTheSameForces) {
   const std::string program = examplePath("lathe_panel.stl");
   std::string err;
   std::optional<formats::Stimulus> stim = formats::parseStimulus(
-      sessionStimulus(ticks), "session.stim", err, formats::defaultDialect().parseAssignment);
+      sessionStimulus(ticks), "session.stim", err, pipeline::defaultDialect().parseAssignment);
   ASSERT_TRUE(stim) << err;
 
   std::string so;
@@ -381,7 +381,7 @@ OUT Y1.0
     Controller ctl(ex, exec, loader, path, nullptr);
     auto tickOnce = [&] { ASSERT_TRUE(ex.waitApplied(ex.post({}), std::chrono::seconds(30))); };
     std::optional<formats::Assignment> press =
-        formats::defaultDialect().parseAssignment("X1.0=1", err);
+        pipeline::defaultDialect().parseAssignment("X1.0=1", err);
     ASSERT_TRUE(press) << err;
     ex.post({*press});
     tickOnce();

@@ -86,7 +86,7 @@ void profileRoundTrip(const char *ext, const char *text, const char *dialect, co
   auto v = loader.load(path, {}, err);
   std::remove(path.c_str());
   ASSERT_TRUE(v) << err;
-  const formats::Dialect *d = formats::dialectNamed(dialect);
+  const pipeline::Dialect *d = pipeline::dialectNamed(dialect);
   auto inAddr = d->parseAddress(in, err);
   auto outAddr = d->parseAddress(out, err);
   ASSERT_TRUE(inAddr && outAddr) << err;

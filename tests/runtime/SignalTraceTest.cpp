@@ -258,7 +258,7 @@ TEST(SignalTrace, ValuesAreReadAddressValues) {
   EXPECT_EQ(c.values[6], -123456);
   EXPECT_EQ(c.values[8], 1500);
   // FANUC: D100:2 a signed word laid in lj_state.mem, R0.3 a bit.
-  const formats::Dialect *fanuc = formats::dialectNamed("fanuc");
+  const pipeline::Dialect *fanuc = pipeline::dialectNamed("fanuc");
   ASSERT_TRUE(fanuc);
   t = makeTrace(
       "signal D100:2, R0.3\ntrigger immediate\npre 0\npost 0\n", err,

@@ -25,9 +25,9 @@ int usageError(const std::string &msg);
 int checkStdout(int code);
 
 /// PROGRAM as read: an STL file, or a plc.dit container (pipeline/ProgramFile.h).
-using formats::effectiveNvalue;
-using formats::programHashOf;
-using formats::ProgramSource;
+using pipeline::effectiveNvalue;
+using pipeline::programHashOf;
+using pipeline::ProgramSource;
 
 /// Read PROGRAM into `src`. An unreadable file or a bad container is an input error: prints
 /// it, sets `exitCode` to 2 and returns false (docs/plc-dit.md "Exit codes").

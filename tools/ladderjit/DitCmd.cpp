@@ -41,10 +41,10 @@ int runDit(const DitArgs &a) {
                       std::to_string(a.periodMs));
   std::string stl, error;
   // A plc.dit holds an HNC-8 program (docs/plc-dit.md): --dialect and the name must say hnc8.
-  const formats::Dialect *d = a.dialect.empty() ? formats::dialectForPath(a.program, error)
-                                                : formats::dialectForOption(a.dialect, error);
+  const pipeline::Dialect *d = a.dialect.empty() ? pipeline::dialectForPath(a.program, error)
+                                                 : pipeline::dialectForOption(a.dialect, error);
   if (!d) return usageError(error);
-  if (d != &formats::defaultDialect())
+  if (d != &pipeline::defaultDialect())
     return usageError(std::string("a plc.dit holds an hnc8 program, not dialect '") + d->name +
                       "'");
   if (!formats::readFile(a.program, stl, error)) return usageError(error);

@@ -24,7 +24,7 @@ int usageError(const std::string &msg) {
 bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
                  std::string_view dialect) {
   std::string error;
-  if (!formats::readProgramFile(path, src, error, dialect)) {
+  if (!pipeline::readProgramFile(path, src, error, dialect)) {
     exitCode = usageError(error);
     return false;
   }
@@ -35,7 +35,7 @@ bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
 std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc2Nvalue,
                                            int &exitCode) {
   std::string diagnostics;
-  std::optional<VerifiedProgram> prog = formats::verifyProgram(src, plc2Nvalue, diagnostics);
+  std::optional<VerifiedProgram> prog = pipeline::verifyProgram(src, plc2Nvalue, diagnostics);
   if (!diagnostics.empty()) std::fputs(diagnostics.c_str(), stderr);
   exitCode = prog ? kOk : kProgramErrors;
   return prog;
@@ -48,7 +48,7 @@ std::optional<VerifiedProgram> loadProgram(const ProgramSource &src, int32_t plc
   std::string diagnostics;
   size_t warnings = 0;
   std::optional<VerifiedProgram> prog =
-      formats::verifyProgram(src, plc2Nvalue, diagnostics, &warnings);
+      pipeline::verifyProgram(src, plc2Nvalue, diagnostics, &warnings);
   exitCode = prog ? kOk : kProgramErrors;
   if (!prog) { // errors: everything, the warnings beside them may explain them
     std::fputs(diagnostics.c_str(), stderr);
@@ -98,12 +98,12 @@ int runFuzz(const FuzzArgs &a) {
   // The generators write HNC-8 STL (gen/RandomProgram.cpp), FANUC PMC (gen/FanucProgram.cpp) and
   // IEC IL (gen/IlGenerator.cpp).
   std::string error;
-  const formats::Dialect *d =
-      formats::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
+  const pipeline::Dialect *d =
+      pipeline::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
   if (!d) return usageError(error);
   const bool fanuc = std::string_view(d->name) == "fanuc";
   const bool iec = std::string_view(d->name) == "iec";
-  if (d != &formats::defaultDialect() && !fanuc && !iec)
+  if (d != &pipeline::defaultDialect() && !fanuc && !iec)
     return usageError(
         std::string("fuzz generates only hnc8, fanuc and iec programs, not dialect '") + d->name +
         "'");

@@ -29,7 +29,7 @@ int runLadder(const LadderArgs &a) {
   std::string out;
   if (a.format == "json")
     // Another dialect's JSON carries its program text: it is read back through it.
-    out = ladder::writeJson(nets, src.dialect == &formats::defaultDialect() ? "" : src.text);
+    out = ladder::writeJson(nets, src.dialect == &pipeline::defaultDialect() ? "" : src.text);
   else if (a.format == "text")
     out = ladder::renderText(nets);
   else {

@@ -42,7 +42,7 @@ bool checkItems(const std::vector<std::string> &items, bool assignments, std::st
     if (SymbolTable::isNameShaped(addr) && (!assignments || addr.size() < it.size())) continue;
     std::string first;
     bool ok = false;
-    for (const formats::Dialect *d : formats::allDialects()) {
+    for (const pipeline::Dialect *d : pipeline::allDialects()) {
       std::string why;
       if (assignments) {
         std::optional<formats::Assignment> as = d->parseAssignment(it, why);

@@ -30,7 +30,7 @@ constexpr size_t kRunNcLogLimit = 10000;
 // may be symbols of the program (`--watch COOLANT`): `symbols` are its symbols; with
 // `namesLater` (before the program is read) an item shaped like a name passes, to be read again
 // with the symbols once they are known.
-bool parseAddressed(const RunArgs &a, const formats::Dialect &d, std::span<const Symbol> symbols,
+bool parseAddressed(const RunArgs &a, const pipeline::Dialect &d, std::span<const Symbol> symbols,
                     bool namesLater, hosts::SimOptions &sim, std::string &error) {
   sim.sets.clear();
   sim.watch.clear();
@@ -82,7 +82,7 @@ bool parseAddressed(const RunArgs &a, const formats::Dialect &d, std::span<const
 }
 
 // Every user input of `run`, parsed and checked (names among the addresses: parseAddressed).
-bool parseInputs(const RunArgs &a, const formats::Dialect &d, hosts::SimOptions &sim,
+bool parseInputs(const RunArgs &a, const pipeline::Dialect &d, hosts::SimOptions &sim,
                  std::string &error) {
   sim.ticks = a.ticks;
   sim.periodMs = a.periodMs;
