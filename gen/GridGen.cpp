@@ -24,6 +24,7 @@ GridPools gridPools(std::string_view dialect) {
     for (int i = 0; i < 16; ++i)
       p.outputs.push_back("R" + std::to_string(i / 8) + "." + std::to_string(i % 8));
     p.edges = dialect == "hnc8";
+    p.branchStack = dialect == "hnc8";
   } else if (dialect == "iec") {
     for (int i = 0; i < 16; ++i) p.inputs.push_back("%I0." + std::to_string(i));
     for (int i = 0; i < 8; ++i) p.outputs.push_back("%Q0." + std::to_string(i));
@@ -103,7 +104,9 @@ private:
         const int m = static_cast<int>(r_.range(2, 3));
         for (int j = 0; j < m; ++j) {
           std::vector<Node> b = inputs(depth + 1);
-          if (b.size() == 1) {
+          if (b.size() == 1 && b[0].kind == NodeKind::Parallel) { // OR of ORs: one parallel
+            for (Node &c : b[0].children) p.children.push_back(std::move(c));
+          } else if (b.size() == 1) {
             p.children.push_back(std::move(b[0]));
           } else {
             Node s;
@@ -133,13 +136,15 @@ private:
     const size_t k =
         std::min<size_t>(outs.size(), depth > 0 ? 2 : static_cast<size_t>(r_.range(2, 3)));
     std::vector<std::vector<std::string>> groups(k);
-    for (size_t i = 0; i < outs.size(); ++i) groups[i < k ? i : r_.below(k)].push_back(outs[i]);
+    for (size_t i = 0; i < outs.size(); ++i)
+      groups[i < k ? i : p_.branchStack ? r_.below(k) : k - 1].push_back(outs[i]);
     Node f;
     f.kind = NodeKind::FanOut;
     for (const auto &g : groups) {
       Node b;
       b.kind = NodeKind::Series;
-      if (g.size() > 1 || r_.chance(50)) b.children = inputs(1);
+      const bool last = &g == &groups.back();
+      if (g.size() > 1 || ((p_.branchStack || last) && r_.chance(50))) b.children = inputs(1);
       for (Node &t : tail(g, depth + 1)) b.children.push_back(std::move(t));
       f.children.push_back(std::move(b));
     }

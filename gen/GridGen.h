@@ -18,6 +18,9 @@ namespace lj::gen {
 struct GridPools {
   std::vector<std::string> inputs, outputs;
   bool edges = false; ///< edge contacts (HNC-8 LDP / LDF and their AND / OR forms)
+  /// Fan-outs with contacts in a branch before the last (a branch stack: MPS/MRD/MPP); FANUC
+  /// PMC mnemonics have none, so there every branch but the last is one output.
+  bool branchStack = true;
 };
 
 /// The pools of "hnc8" (X / Y, R), "fanuc" (X / Y, R) or "iec" (%I / %Q, %M); empty for

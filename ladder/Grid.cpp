@@ -148,6 +148,7 @@ struct Edge {
   bool wire = true; ///< lines only
   int row = 0, col = 0;
   bool alive = true;
+  std::vector<int> rows; ///< a parallel the reduction made: the row each branch starts on
 };
 
 struct UnionFind {
@@ -208,19 +209,29 @@ private:
 
   void cells() {
     const int R = g_.rows, C = g_.cols;
+    // A run of vertical lines joins its rows; the rows between its ends may pass through (a
+    // fan-out to rows below), its two ends must meet a cell.
     for (int b = 1; b < C; ++b)
-      for (int r = 0; r + 1 < R; ++r)
-        if (g_.link(r, b)) {
-          uf_.join(b * R + r, b * R + r + 1);
-          for (int row : {r, r + 1}) {
-            auto filled = [&](int c) {
-              return c >= 0 && c < C && g_.at(row, c).kind != CellKind::Empty &&
-                     g_.at(row, c).kind != CellKind::BoxPart;
-            };
-            if (!filled(b - 1) && !filled(b))
-              error(row, b, "a vertical line joins nothing on this row (unconnected)");
-          }
+      for (int top = 0; top + 1 < R;) {
+        if (!g_.link(top, b)) {
+          ++top;
+          continue;
         }
+        int bottom = top;
+        while (g_.link(bottom, b)) {
+          uf_.join(b * R + bottom, b * R + bottom + 1);
+          ++bottom;
+        }
+        for (int row : {top, bottom}) {
+          auto filled = [&](int c) {
+            return c >= 0 && c < C && g_.at(row, c).kind != CellKind::Empty &&
+                   g_.at(row, c).kind != CellKind::BoxPart;
+          };
+          if (!filled(b - 1) && !filled(b))
+            error(row, b, "a vertical line ends on this row at no element (unconnected)");
+        }
+        top = bottom;
+      }
     int sink = (C + 1) * R;
     for (int r = 0; r < R; ++r)
       for (int c = 0; c < C; ++c) {
@@ -358,19 +369,26 @@ private:
           error(w.row, w.col, "short circuit: this line bridges the elements in parallel with it");
           return false;
         }
-        Edge &top = a.row <= e.row ? a : e;
-        Edge &bottom = a.row <= e.row ? e : a;
-        std::vector<Node> branches;
-        for (Edge *x : {&top, &bottom}) {
-          if (x->items.size() == 1 && x->items[0].kind == NodeKind::Parallel && x->items[0].rail)
-            for (Node &c : x->items[0].children) branches.push_back(std::move(c));
-          else
-            branches.push_back(branchOf(std::move(x->items)));
+        // The branches top row first (each keeps the row it starts on).
+        std::vector<std::pair<int, Node>> branches;
+        for (Edge *x : {&a, &e}) {
+          if (x->items.size() == 1 && x->items[0].kind == NodeKind::Parallel && x->items[0].rail) {
+            for (size_t k = 0; k < x->items[0].children.size(); ++k)
+              branches.push_back({x->rows[k], std::move(x->items[0].children[k])});
+          } else {
+            branches.push_back({x->row, branchOf(std::move(x->items))});
+          }
         }
+        std::stable_sort(branches.begin(), branches.end(),
+                         [](const auto &l, const auto &r) { return l.first < r.first; });
         Node p;
         p.kind = NodeKind::Parallel;
         p.rail = true; // marks a parallel this reduction made (flattened when it grows)
-        p.children = std::move(branches);
+        a.rows.clear();
+        for (auto &[row, n] : branches) {
+          a.rows.push_back(row);
+          p.children.push_back(std::move(n));
+        }
         a.items.clear();
         a.items.push_back(std::move(p));
         a.row = std::min(a.row, e.row);
@@ -394,6 +412,7 @@ private:
         Edge &a = edges_[inEdge[v]];
         Edge &b = edges_[outEdge[v]];
         if (!a.alive || !b.alive || &a == &b) continue;
+        if (a.items.empty()) a.rows = std::move(b.rows); // a line before b's parallel
         for (Node &x : b.items) a.items.push_back(std::move(x));
         a.to = b.to;
         a.wire = a.wire && b.wire;
@@ -443,6 +462,11 @@ private:
       Edge &e = edges_[i];
       append(b, e);
       if (!isSink(e.to) && !grow(e.to, b)) return false;
+      if (b.children.size() == 1 && b.children[0].kind == NodeKind::FanOut) {
+        // lines only to a second junction: its branches are branches of this one
+        for (Node &x : b.children[0].children) f.children.push_back(std::move(x));
+        continue;
+      }
       f.children.push_back(std::move(b));
     }
     s.children.push_back(std::move(f));
