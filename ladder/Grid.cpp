@@ -95,10 +95,11 @@ std::string GridError::text() const {
 
 namespace {
 
-/// A one-input output box (MOV, ADD...): what ToStl takes as an output.
+/// A one-input box (MOV, ADD...) at the right rail: it takes the power at its left; whatever
+/// it passes on is dead, as after an output.
 bool isOutputBox(Op op) {
   const InstrInfo &ii = instrInfo(op);
-  return ii.stack == StackRule::Block && ii.output == OutputRule::None && ii.inputs <= 1;
+  return ii.stack == StackRule::Block && ii.inputs <= 1;
 }
 
 Op contactLoad(CellKind k) {
@@ -281,7 +282,7 @@ private:
               continue;
             }
             if (!isOutputBox(op)) {
-              error(r, c, "box " + cell.instr + " is not a one-input output box the editor draws");
+              error(r, c, "box " + cell.instr + " is not a one-input box the editor draws");
               continue;
             }
             n.elem.op = op;

@@ -106,7 +106,7 @@ using OperandCheck =
 /// element after an output (逻辑输出可以加前置，不可以加后置); an element, output or vertical
 /// link connected to no path from the rail to an output; a short circuit (a path of lines only
 /// from the rail to an output, or a line in parallel with elements); a box that is not a
-/// one-input output box of `d` or has no input; links that join branches which parted before
+/// one-input box of `d` or has no input; links that join branches which parted before
 /// (no series/parallel form). True and `out` set only when there are none.
 bool gridToNetwork(const GridRung &g, const DialectText &d, const OperandCheck &check,
                    const std::string &part, int rung, Node &out, std::vector<GridError> &errors);
