@@ -20,9 +20,15 @@ namespace {
 
 using ladder::GridPart;
 
-constexpr const char *kReasons[8] = {
-    "element after an output", "unconnected", "short circuit", "no series/parallel form",
-    "two networks in a rung",  "no output",   "address",       "other"};
+constexpr const char *kReasons[9] = {"element after an output",
+                                     "unconnected",
+                                     "short circuit",
+                                     "no series/parallel form",
+                                     "two networks in a rung",
+                                     "no output",
+                                     "address",
+                                     "no text in the dialect",
+                                     "other"};
 
 int reasonOf(const std::string &m) {
   if (m.find("after an output") != std::string::npos) return 0;
@@ -32,7 +38,8 @@ int reasonOf(const std::string &m) {
   if (m.find("second network") != std::string::npos) return 4;
   if (m.find("no output") != std::string::npos) return 5;
   if (m.find("address") != std::string::npos || m.find("'") == 0) return 6;
-  return 7;
+  if (m.find("has no text for it") != std::string::npos) return 7;
+  return 8;
 }
 
 /// What one check of a grid program found.
@@ -236,7 +243,7 @@ std::vector<GridPart> minimize(const Checker &ck, std::vector<GridPart> parts, u
 
 } // namespace
 
-const char *editFuzzReason(int k) { return k >= 0 && k < 8 ? kReasons[k] : "?"; }
+const char *editFuzzReason(int k) { return k >= 0 && k < 9 ? kReasons[k] : "?"; }
 
 EditFuzzStats runEdit(const EditFuzzOptions &opts, std::ostream &out) {
   EditFuzzStats st;
@@ -344,7 +351,7 @@ EditFuzzStats runEdit(const EditFuzzOptions &opts, std::ostream &out) {
       << "edits: " << st.edits << " tried, " << st.editsKept << " kept, " << st.refused
       << " refused with a located error (";
   bool first = true;
-  for (int k = 0; k < 8; ++k)
+  for (int k = 0; k < 9; ++k)
     if (st.refusedBy[k]) {
       out << (first ? "" : ", ") << kReasons[k] << " " << st.refusedBy[k];
       first = false;

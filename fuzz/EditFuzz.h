@@ -37,7 +37,7 @@ struct EditFuzzStats {
   uint64_t roundTrip = 0;     ///< grid -> program -> networks -> grid differed
   uint64_t notVerified = 0;   ///< a valid grid whose program the pipeline refused
   uint64_t unlocated = 0;     ///< a refusal whose cell is outside the grid
-  uint64_t refusedBy[8] = {}; ///< by reason (editFuzzReason)
+  uint64_t refusedBy[9] = {}; ///< by reason (editFuzzReason)
   double seconds = 0;
   uint64_t failures() const { return mismatches + roundTrip + notVerified + unlocated; }
 };

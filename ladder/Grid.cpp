@@ -7,9 +7,11 @@
 // view's placement (layoutRung), cell by cell.
 #include "ladder/Grid.h"
 
+#include "ladder/Json.h"
 #include "ladder/Layout.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -255,6 +257,7 @@ private:
           n.kind = NodeKind::Contact;
           n.contact = contactKind(cell.kind);
           n.elem.op = contactLoad(cell.kind);
+          n.elem.id = r * C + c; // the cell: where a printer's error on it is drawn
           n.elem.operands = {cell.operand};
           n.elem.symbols = {""};
           operand(r, c, cell.kind, cell.operand);
@@ -286,6 +289,7 @@ private:
               continue;
             }
             n.elem.op = op;
+            n.elem.id = r * C + c;
             n.elem.drawn = cell.instr;
             for (const std::string &o : cell.operands) {
               operand(r, c, cell.kind, o);
@@ -295,6 +299,7 @@ private:
           } else {
             n.kind = NodeKind::Coil;
             n.elem.op = outputOp(cell.kind);
+            n.elem.id = r * C + c;
             n.elem.operands = {cell.operand};
             n.elem.symbols = {""};
             operand(r, c, cell.kind, cell.operand);
@@ -525,20 +530,6 @@ void collect(const Node &n, std::unordered_map<StmtId, const Node *> &byId) {
   for (const Node &c : n.children) collect(c, byId);
 }
 
-StmtText stmtTextOf(const Element &e) {
-  StmtText t;
-  t.op = e.op;
-  t.instr = e.drawnWhole ? std::string() : e.drawn;
-  for (size_t k = 0; k < e.operands.size(); ++k)
-    t.operands.push_back(k < e.symbols.size() && !e.symbols[k].empty() ? e.symbols[k]
-                                                                       : e.operands[k]);
-  t.implied = e.implied;
-  t.before = e.before;
-  t.comment = e.comment;
-  t.hasComment = e.hasComment;
-  return t;
-}
-
 } // namespace
 
 bool gridToNetwork(const GridRung &g, const DialectText &d, const OperandCheck &check,
@@ -648,10 +639,34 @@ bool gridProgramText(const std::vector<GridPart> &parts, const DialectText &d,
       if (!stmts.empty()) stmts[0].before = part.rungs[r].comment;
       std::vector<StmtText> t;
       for (const Element &e : stmts) t.push_back(stmtTextOf(e));
-      if (!d.printStmts(t, out, err)) {
-        errors.push_back({part.name, number, 0, 0, err});
+      std::string text;
+      if (!d.printStmts(t, text, err)) {
+        // "statement K: ...": drawn on the cell of statement K, or of the element after it (a
+        // branch push has no cell of its own: the first element of its branch).
+        size_t k = 0;
+        if (err.rfind("statement ", 0) == 0) {
+          k = static_cast<size_t>(std::max(1L, std::strtol(err.c_str() + 10, nullptr, 10)) - 1);
+          if (size_t colon = err.find(": "); colon != std::string::npos)
+            err = err.substr(colon + 2);
+        }
+        k = std::min(k, stmts.size() - 1);
+        const StackRule rule = instrInfo(stmts[k].op).stack;
+        if (rule == StackRule::MpsPush || rule == StackRule::MsRead || rule == StackRule::MsPop)
+          err = std::string("this branch starts with contacts behind a fan-out that is not the "
+                            "last, which needs a branch stack (MPS/MRD/MPP); the ") +
+                d.name + " dialect has no text for it (" + err +
+                "): move the branch last or give it a rung of its own";
+        size_t at = k;
+        while (at < stmts.size() && stmts[at].id < 0) ++at;
+        if (at == stmts.size())
+          for (at = k; at > 0 && stmts[at].id < 0;) --at;
+        const GridRung &g = part.rungs[r];
+        const StmtId id = stmts[at].id >= 0 ? stmts[at].id : 0;
+        errors.push_back({part.name, number, id / g.cols, id % g.cols, err});
         ok = false;
+        continue;
       }
+      out += text;
     }
     if (p < partEnd.size() && !partEnd[p].empty()) out += partEnd[p] + "\n";
   }

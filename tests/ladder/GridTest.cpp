@@ -166,6 +166,27 @@ TEST(Grid, OtherDialectsPrintTheirOwnWords) {
   EXPECT_EQ(text({i}, "iec"), "LDN %I0.0\nAND %M1\nS %Q0.0\n");
 }
 
+TEST(Grid, FanucFanOutNeedingABranchStackIsRefusedOnItsBranch) {
+  // |--[X0.0]--+--[X0.1]--(Y0.0)      HNC-8: MPS / MPP; FANUC PMC mnemonics have no branch
+  //            +--[X0.2]--(Y0.1)      stack, so the first branch is refused on its contact.
+  GridRung g = GridRung::blank(2, 4);
+  g.at(0, 0) = cell(CellKind::ContactNO, "X0.0");
+  g.at(0, 1) = cell(CellKind::ContactNO, "X0.1");
+  g.at(0, 2).kind = CellKind::Wire;
+  g.at(0, 3) = cell(CellKind::Coil, "Y0.0");
+  g.at(1, 1) = cell(CellKind::ContactNO, "X0.2");
+  g.at(1, 2).kind = CellKind::Wire;
+  g.at(1, 3) = cell(CellKind::Coil, "Y0.1");
+  g.setLink(0, 1, true);
+  EXPECT_EQ(text({g}), "LD X0.0\nMPS\nAND X0.1\nOUT Y0.0\nMPP\nAND X0.2\nOUT Y0.1\n");
+  std::vector<GridError> errs;
+  text({g}, "fanuc", &errs);
+  ASSERT_EQ(errs.size(), 1u);
+  EXPECT_EQ(errs[0].row, 0);
+  EXPECT_EQ(errs[0].col, 1);
+  EXPECT_NE(errs[0].message.find("branch stack"), std::string::npos) << errs[0].text();
+}
+
 TEST(Grid, ElementAfterAnOutputIsRefusedOnItsCell) {
   GridRung g = GridRung::blank(1, 4);
   g.at(0, 0) = cell(CellKind::ContactNO, "X0.0");
