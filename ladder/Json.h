@@ -47,6 +47,10 @@ std::string stlText(const std::vector<Element> &stmts, const std::vector<std::st
 /// form.
 bool stlFromJson(std::string_view json, StlFromJson &out, std::string &error, const DialectText &d);
 
+/// An element as the dialect printer takes it (DialectText::printStmts): its operation, its
+/// drawn instruction, operands as written (the symbol where one was written), comments.
+StmtText stmtTextOf(const Element &e);
+
 /// Networks -> program text in their dialect (docs/ladder-json.md "Other dialects"): the inverse
 /// of the front end. `src` is the program verified from `srcText` (the JSON's "source"); each
 /// run of rungs whose statements the networks hold unchanged (operations, operands, symbols,

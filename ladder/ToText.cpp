@@ -56,7 +56,9 @@ std::vector<Group> groupsOf(const VerifiedProgram &src, int32_t lineCount, int32
   return out;
 }
 
-StmtText textOf(const Element &e) {
+} // namespace
+
+StmtText stmtTextOf(const Element &e) {
   StmtText t;
   t.op = e.op;
   t.instr = e.drawnWhole ? std::string() : e.drawn;
@@ -69,8 +71,6 @@ StmtText textOf(const Element &e) {
   t.hasComment = e.hasComment;
   return t;
 }
-
-} // namespace
 
 bool programText(const Networks &given, const VerifiedProgram &src, std::string_view srcText,
                  std::string &out, std::string &error, bool printAll) {
@@ -106,7 +106,7 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
   };
   auto printRung = [&](size_t from, size_t to) {
     std::vector<StmtText> t;
-    for (size_t k = from; k < to; ++k) t.push_back(textOf(a[k]));
+    for (size_t k = from; k < to; ++k) t.push_back(stmtTextOf(a[k]));
     std::string err;
     if (!out.empty() && out.back() != '\n') out += '\n';
     if (d->printStmts(t, out, err)) return true;

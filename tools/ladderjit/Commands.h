@@ -144,6 +144,7 @@ struct FuzzArgs {
   bool roundTrip = false; ///< each program against its ladder JSON round trip, on the interpreter
   bool switches = false;  ///< engine switches at random ticks against an unswitched interpreter
   bool trace = false;     ///< both engines traced, traces compared (ir/Trace.h)
+  bool edit = false;      ///< editor grids against the grid evaluator (fuzz/EditFuzz.h)
 };
 int runFuzz(const FuzzArgs &a);
 

@@ -7,6 +7,7 @@
 #include "ir/Diagnostics.h"
 #include "pipeline/Compile.h"
 
+#include "fuzz/EditFuzz.h"
 #include "fuzz/Fuzz.h"
 
 #include <cstdio>
@@ -107,6 +108,36 @@ int runFuzz(const FuzzArgs &a) {
     return usageError(
         std::string("fuzz generates only hnc8, fanuc and iec programs, not dialect '") + d->name +
         "'");
+  if (a.edit) {
+    if (a.roundTrip || a.switches || a.trace)
+      return usageError("--edit excludes --round-trip, --switch and --trace");
+    fuzz::EditFuzzOptions eo;
+    eo.dialect = d->name;
+    eo.seed = a.seed;
+    eo.programs = a.programs;
+    eo.ticks = a.ticks;
+    Progress progress;
+    if (progress.enabled()) {
+      double lastShown = 0;
+      eo.progress = [&progress, &lastShown, total = a.programs](uint64_t done, uint64_t failures,
+                                                                double seconds) {
+        if (seconds < 1.0 || seconds - lastShown < 0.25) return;
+        lastShown = seconds;
+        double rate = static_cast<double>(done) / seconds;
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "fuzz --edit: grids %llu/%llu, %.0f/s, mismatches %llu, %.0f s left",
+                      static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
+                      rate, static_cast<unsigned long long>(failures),
+                      rate > 0 ? static_cast<double>(total - done) / rate : 0.0);
+        progress.show(line);
+      };
+    }
+    fuzz::EditFuzzStats st = fuzz::runEdit(eo, std::cout);
+    progress.clear();
+    std::cout << std::flush;
+    return st.failures() == 0 ? kOk : kProgramErrors;
+  }
   fuzz::FuzzOptions opts;
   opts.fanuc = fanuc;
   opts.iec = iec;

@@ -172,6 +172,10 @@ int mainImpl(int argc, char **argv) {
   cFuzz->add_flag("--switch", fz.switches,
                   "switch engines (interp, JIT fast, JIT optimizing) at random ticks on one "
                   "state, against an unswitched interpreter run (docs/serve.md \"Tiering\")");
+  cFuzz->add_flag("--edit", fz.edit,
+                  "editor grids and random edits: each grid's program on the interpreter against "
+                  "the grid evaluator tick for tick, and grid -> program -> networks -> grid "
+                  "(docs/ladder-edit.md \"Grid and oracle\")");
 
   BenchArgs bn;
   CLI::App *cBench = app.add_subcommand(
