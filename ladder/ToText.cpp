@@ -142,11 +142,18 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     const size_t before = out.size();
     if (d->printStmts(t, out, err)) {
       if (origins) {
+        // A line per comment line before a statement (given to that statement) and one per
+        // statement; a dialect's extra lines (an IL closing parenthesis) go to the last.
+        std::vector<size_t> plan;
+        for (size_t k = from; k < to; ++k) {
+          plan.insert(plan.end(), a[k].before.size(), k);
+          plan.push_back(k);
+        }
         size_t n = static_cast<size_t>(
             std::count(out.begin() + static_cast<std::ptrdiff_t>(before), out.end(), '\n'));
         if (!out.empty() && out.back() != '\n') ++n;
         for (size_t k = 0; k < n; ++k)
-          origins->push_back(origin(from + std::min(k, to - from - 1)));
+          origins->push_back(origin(plan[std::min(k, plan.size() - 1)]));
       }
       return true;
     }
