@@ -312,16 +312,23 @@ json initJson(const VerifiedProgram &p) {
       }
   }
   const bool hasInit = p.init.end > p.init.begin;
+  // The rule per dialect (docs/ladder-edit.md "The init part"): an update is the online change
+  // `monitor load` makes, whose swap runs the new version's init part (docs/serve.md "The swap").
   std::string rule;
   if (dialect == "hnc8")
-    rule = "an update is a program reload: the new init part runs once at the tick the new "
-           "version starts (hnc8-core.md 2.2: 重新载入PLC会运行一次初始化), as `monitor load` "
-           "does; forcing and the live view's rebuilds never run it";
+    rule = "an update is a program reload: the new init part runs once, in the tick the new "
+           "version starts (hnc8-core.md 2.2: 重新载入PLC会运行一次初始化), as for `monitor load`; "
+           "the image, timers and counters are kept";
+  else if (dialect == "fanuc")
+    rule = "the FANUC reference does not say what an online edit does to the first-scan relay; "
+           "here an update is the online change `monitor load` makes: the init part ladderjit "
+           "generates runs once in the swap tick, R9015.0 (first scan) is not set again, the "
+           "image, timers and counters are kept";
   else
-    rule = std::string("the ") + (dialect.empty() ? "program's" : dialect) +
-           " program has no init part of its own; an update is an online change like `monitor "
-           "load`: the image, timers and counters are kept, per-program edge memories restart "
-           "(docs/ladder-edit.md \"The init part\")";
+    rule = "the Neza reference describes cold and warm restarts only (%S0 / %S1, L581-582); an "
+           "update is not a restart: %S0, %S1 and %S13 stay 0, the init part ladderjit generates "
+           "(the %TMi.P / %Ci.P presets) runs once in the swap tick, the image, timers and "
+           "counters are kept";
   return {{"runsOnUpdate", hasInit}, {"writes", writes}, {"rule", rule}};
 }
 
@@ -611,10 +618,10 @@ std::string unifiedDiff(const std::string &a, const std::string &b, const std::s
         ops.push_back({' ', pre + i});
         ++i;
         ++j;
-      } else if (j < m && (i == n || L[i][j + 1] >= L[i + 1][j])) {
-        ops.push_back({'+', pre + j++});
-      } else {
+      } else if (i < n && (j == m || L[i + 1][j] >= L[i][j + 1])) {
         ops.push_back({'-', pre + i++});
+      } else {
+        ops.push_back({'+', pre + j++});
       }
     }
   } else {
