@@ -107,7 +107,7 @@ def version(srv):
         return None
 
 
-def edit_loop(name, program, coil, contact, before, after, added_line, unknown):
+def edit_loop(name, program, coil, contact, before, after, added_line, unknown, init=None):
     """The whole loop on `program` (copied to OUT/NAME/): `coil` is `before` while `contact` is
     locked to 1; after inserting NC `contact` into its rung it is `after` (the rung's logic), and
     `added_line` is the one line the program text gains."""
@@ -128,6 +128,13 @@ def edit_loop(name, program, coil, contact, before, after, added_line, unknown):
         check(set(g["init"]) >= {"runsOnUpdate", "writes", "rule"},
               "%s: GET /api/edit says what an update does with the init part: %s" %
               (name, g.get("init")))
+        if init:
+            # What the init part writes, from the program (hnc8: LDT / OUT R0.2 / MOV 100 G2564).
+            check(g["init"]["runsOnUpdate"] is True and g["init"]["writes"] == init["writes"],
+                  "%s: the init part runs on update and writes %s: %s" % (name, init["writes"], g["init"]))
+            rc, _, e = serveutil.monitor(exe, srv.sock, "write", "%s=%d" % init["word"][:2])
+            check(rc == 0 and wait_value(srv, init["word"][0], init["word"][1]),
+                  "%s: %s=%d written before the edit: %s" % (name, init["word"][0], init["word"][1], e))
         v0 = version(srv)
         new, part, rung = edited(nets, coil, contact)
 
@@ -151,6 +158,9 @@ def edit_loop(name, program, coil, contact, before, after, added_line, unknown):
         check(open(path, "rb").read() == original and not os.path.exists(path + ".history"),
               "%s: after discard: the file untouched, no history" % name)
         check(read(srv, coil) == before, "%s: after discard: %s still %d" % (name, coil, before))
+        if init:
+            check(read(srv, init["word"][0]) == init["word"][1],
+                  "%s: draft, check and discard ran no init: %s still %d" % (name, init["word"][0], init["word"][1]))
 
         # A second editor: refused naming the holder, or takes over explicitly.
         draft(srv, new, base, editor="tab1")
@@ -170,6 +180,11 @@ def edit_loop(name, program, coil, contact, before, after, added_line, unknown):
               "%s: update: %d %s" % (name, st, {k: a.get(k) for k in ("error", "version", "hash")}))
         check(wait_value(srv, coil, after),
               "%s: %s follows the new rung: %d with %s locked to 1" % (name, coil, after, contact))
+        if init:
+            # An update is a reload: the new init part ran once at the swap (hnc8-core.md 2.2),
+            # as for monitor load; draft, check and discard above did not run it.
+            check(read(srv, init["word"][0]) == init["word"][2],
+                  "%s: the update ran the init part: %s = %d again" % (name, init["word"][0], init["word"][2]))
         st, ans = call(srv, "/api/lock", {"item": contact + "=0"})
         check(wait_value(srv, coil, before),
               "%s: %s = %d again with %s locked to 0 (the new rung, not a stale value)" % (name, coil, before, contact))
@@ -289,6 +304,19 @@ def security(program):
         check(st == 200, "and discarded: %d" % st)
     finally:
         srv.stop()
+    # A plc.dit container is not written back: refused with the reason, nothing opened.
+    dit = os.path.join(d, "lathe_panel.dit")
+    shutil.copy(os.path.join(examples, "lathe_panel.dit"), dit)
+    srv = httputil.Serve(exe, dit, d, "dit", duration=60)
+    try:
+        st, g = call(srv, "/api/edit")
+        check(st == 200 and g["running"]["editable"] is False and "plc.dit" in g["running"]["why"],
+              "plc.dit: GET /api/edit says it cannot be edited and why: %s" % g["running"].get("why"))
+        st, a = call(srv, "/api/edit/draft", dict(g["running"]["networks"], base=g["running"]["hash"]))
+        check(st == 409 and a.get("reason") == "not-editable" and "plc.dit" in a.get("error", ""),
+              "plc.dit: a draft is refused: %d %s" % (st, a.get("error")))
+    finally:
+        srv.stop()
     srv = httputil.Serve(exe, path, d, "ro", extra=["--http-read-only"], duration=60)
     try:
         st, g = call(srv, "/api/edit")
@@ -308,7 +336,8 @@ which = os.environ.get("EDIT_API_ONLY", "")
 if which in ("", "hnc8"):
     # HNC-8: LD R0.2 / OUT G2620.2 (R0.2 = 1 from init: manual mode) gains ANI X482.1 (-X key).
     edit_loop("hnc8", os.path.join(examples, "lathe_panel.stl"), "G2620.2", "X482.1", 1, 0,
-              "ANI X482.1", "Q9999.9")
+              "ANI X482.1", "Q9999.9",
+              init={"writes": ["R0.2", "G2564"], "word": ("G2564", 50, 100)})
 if which in ("", "fanuc"):
     # FANUC: RD.NOT ESP_OK / WRT ESTOP (X0.0 = 0: E-stop active) gains AND.NOT X0.1.
     edit_loop("fanuc", os.path.join(examples, "fanuc_coolant.pmc"), "R0.7", "X0.1", 1, 0,
