@@ -336,10 +336,6 @@ json initJson(const VerifiedProgram &p) {
 /// (a text PROGRAM). False with the answer (400 / 409 / 422) in `bad`.
 bool makeBytes(const Served &s, const json &networks, std::string &bytes,
                std::vector<ladder::LineOrigin> &origins, EditAnswer &bad) {
-  if (s.json) { // the draft is the new file, read as any ladder `.json` PROGRAM
-    bytes = networks.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
-    return true;
-  }
   const DialectText *d = s.cur->prog->dialect;
   if (!d) {
     bad = refusal(409, "the running program has no dialect text to edit");
@@ -353,6 +349,12 @@ bool makeBytes(const Served &s, const json &networks, std::string &bytes,
     bad = refusal(422, "the draft is not a network JSON of this program's dialect: " + err,
                   {{"diagnostics", json::array({diag})}});
     return false;
+  }
+  if (s.json) {
+    // The draft is the new file, written as `ladderjit ladder --format json` writes it (with
+    // the program text a FANUC / IEC JSON carries) and read back as any `.json` PROGRAM.
+    bytes = ladder::writeJson(nets, nets.source);
+    return true;
   }
   // Untouched rungs byte for byte from the running file, the edited ones printed by the
   // dialect (ladder::programText), as a `.json` PROGRAM of another dialect is read.

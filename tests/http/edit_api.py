@@ -332,6 +332,38 @@ def security(program):
         srv.stop()
 
 
+def json_program():
+    """A `.json` ladder PROGRAM (`ladderjit ladder --format json` of lathe_panel.stl) is written
+    back as such a JSON: the inserted contact in it, the old JSON in the history."""
+    d = os.path.join(out, "json")
+    os.makedirs(d)
+    path = os.path.join(d, "lathe_panel.json")
+    rc, _, e = serveutil.run(exe, "ladder", "--format", "json", "-o", path,
+                             os.path.join(examples, "lathe_panel.stl"))
+    check(rc == 0, "json: ladder --format json: %s" % e)
+    original = open(path, "rb").read()
+    srv = httputil.Serve(exe, path, d, "serve", duration=60)
+    try:
+        call(srv, "/api/lock", {"item": "X482.1=1"})
+        check(wait_value(srv, "G2620.2", 1), "json: G2620.2 = 1 before the edit")
+        st, g = call(srv, "/api/edit")
+        new, _, _ = edited(g["running"]["networks"], "G2620.2", "X482.1")
+        st, a = draft(srv, new, g["running"]["hash"])
+        st, a = call(srv, "/api/edit/update", {"editor": "tab1"})
+        check(st == 200, "json: update: %d %s" % (st, a.get("error")))
+        check(wait_value(srv, "G2620.2", 0), "json: G2620.2 follows the new rung: 0")
+        now = json.loads(open(path).read())
+        check(find_series(now, "G2620.2") is not None and
+              any(c.get("contact") == "nc" and c["operands"][0]["text"] == "X482.1"
+                  for c in rung_of(now, "G2620.2")["children"]),
+              "json: the file is a ladder JSON holding the new contact")
+        hist = os.path.join(path + ".history", "0001.json")
+        check(os.path.exists(hist) and open(hist, "rb").read() == original,
+              "json: the history holds the old JSON")
+    finally:
+        srv.stop()
+
+
 which = os.environ.get("EDIT_API_ONLY", "")
 if which in ("", "hnc8"):
     # HNC-8: LD R0.2 / OUT G2620.2 (R0.2 = 1 from init: manual mode) gains ANI X482.1 (-X key).
@@ -346,6 +378,8 @@ if which in ("", "iec"):
     # IEC: LD [%MW0 >= %KW0] / ST %M6 / ST %Q0.2 (0 >= 0) gains ANDN %I0.4.
     edit_loop("iec", os.path.join(examples, "conveyor.il"), "%Q0.2", "%I0.4", 1, 0,
               "ANDN %I0.4", "%Z9.9")
+if which in ("", "json"):
+    json_program()
 if which in ("", "security"):
     security(os.path.join(examples, "lathe_panel.stl"))
 httputil.finish()
