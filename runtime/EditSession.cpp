@@ -90,9 +90,10 @@ bool syncDir(const std::string &dir, std::string &error) {
   return true;
 }
 
-/// `data` into a new file `path` (O_EXCL, `mode`), synced.
-bool writeNew(const std::string &path, const std::string &data, mode_t mode, std::string &error) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+/// `data` into the new file `fd` (`path`, opened by the caller; -1: it could not be made) with
+/// `mode`, synced and closed; removed again when that failed.
+bool fillNew(int fd, const std::string &path, const std::string &data, mode_t mode,
+             std::string &error) {
   if (fd < 0) {
     error = errnoText("cannot create '" + path + "'");
     return false;
@@ -143,21 +144,16 @@ bool replaceProgram(const std::string &path, const std::string &old, const std::
   }
   const mode_t mode = st.st_mode & 07777;
   const std::string hdir = EditSession::historyDir(path);
-  if (!nextHistory(hdir, extension(path), historyFile, error) ||
-      !writeNew(historyFile, old, mode & 0700 ? mode : 0600, error) || !syncDir(hdir, error))
+  if (!nextHistory(hdir, extension(path), historyFile, error)) return false;
+  const int hfd =
+      ::open(historyFile.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (!fillNew(hfd, historyFile, old, mode & 0700 ? mode : 0600, error) || !syncDir(hdir, error))
     return false;
   const std::string dir = dirName(path);
   std::string tmpl = dir + "/." + baseName(path) + ".edit-XXXXXX";
-  const int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) {
-    error = errnoText("cannot make a temporary file in '" + dir + "'");
-    return false;
-  }
-  const bool ok = ::fchmod(fd, mode) == 0 && writeAll(fd, data) && ::fsync(fd) == 0;
-  if (!ok) error = errnoText("cannot write '" + tmpl + "'");
-  ::close(fd);
-  if (!ok || ::rename(tmpl.c_str(), path.c_str()) != 0) {
-    if (ok) error = errnoText("cannot rename '" + tmpl + "' to '" + path + "'");
+  if (!fillNew(::mkstemp(tmpl.data()), tmpl, data, mode, error)) return false;
+  if (::rename(tmpl.c_str(), path.c_str()) != 0) {
+    error = errnoText("cannot rename '" + tmpl + "' to '" + path + "'");
     ::unlink(tmpl.c_str());
     return false;
   }
@@ -446,9 +442,11 @@ std::optional<EditAnswer> EditSession::heldByOther(const std::string &editor) co
 
 EditAnswer EditSession::draft(const json &body, const std::string &editor,
                               const std::string &client) {
-  if (!body.contains("base") || !body["base"].is_string())
+  static const std::regex hashRe("sha256:[0-9a-f]{64}");
+  if (!body.contains("base") || !body["base"].is_string() ||
+      !std::regex_match(body["base"].get<std::string>(), hashRe))
     return refusal(400, "a draft needs \"base\": the hash of the running version it was made from "
-                        "(GET /api/edit, running.hash)");
+                        "(GET /api/edit, running.hash: \"sha256:\" and 64 hex digits)");
   if (body.contains("takeOver") && !body["takeOver"].is_boolean())
     return refusal(400, "\"takeOver\" must be true or false");
   json nets = body;
