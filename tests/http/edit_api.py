@@ -321,6 +321,22 @@ def security(program):
               "plc.dit: a draft is refused: %d %s" % (st, a.get("error")))
     finally:
         srv.stop()
+    # An AOT server: a compiled .so cannot be edited live (compile's default key pair, made in
+    # OUT, never ~/.config; docs/aot.md "Trust").
+    os.environ["LADDERJIT_KEY_DIR"] = os.path.join(d, "keys")
+    so = os.path.join(d, "lathe_panel.so")
+    rc, _, e = serveutil.run(exe, "compile", path, "-o", so, timeout=120)
+    check(rc == 0, "aot: ladderjit compile: %s" % e)
+    srv = httputil.Serve(exe, path, d, "aot", extra=["--engine", "aot:" + so], duration=60)
+    try:
+        st, g = call(srv, "/api/edit")
+        check(st == 200 and g["running"]["editable"] is False and "AOT" in g["running"]["why"],
+              "aot: GET /api/edit says a compiled .so cannot be edited live: %s" % g["running"].get("why"))
+        st, a = call(srv, "/api/edit/draft", dict(g["running"]["networks"], base=g["running"]["hash"]))
+        check(st == 409 and a.get("reason") == "not-editable" and "AOT" in a.get("error", ""),
+              "aot: a draft is refused: %d %s" % (st, a.get("error")))
+    finally:
+        srv.stop()
     srv = httputil.Serve(exe, path, d, "ro", extra=["--http-read-only"], duration=60)
     try:
         st, g = call(srv, "/api/edit")
