@@ -1,4 +1,5 @@
-// The serve control logic: online change (command or PROGRAM file change), forcing and the live
+// The serve control logic: online change (command, PROGRAM file change or a ladder edit from the
+// live view, runtime/EditSession.h), forcing and the live
 // view's traced code (rebuilds of the running program switched in without init), the lock list,
 // reads/writes and stats, as JSON requests from the control socket (docs/serve.md "Control").
 #pragma once
