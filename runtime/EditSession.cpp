@@ -132,32 +132,37 @@ bool nextHistory(const std::string &dir, const std::string &ext, std::string &ou
   return true;
 }
 
-/// The program file `path` replaced by `data` atomically (a temporary file beside it, synced,
-/// renamed over it, the directory synced), the old content `old` first kept as the next
-/// numbered copy in the history folder. `historyFile` receives that copy's path.
-bool replaceProgram(const std::string &path, const std::string &old, const std::string &data,
-                    std::string &historyFile, std::string &error) {
+/// The new content of the program file `path`, written before the online change: `data` in a
+/// temporary file beside it (the file's mode), synced. False with `error` (nothing left behind)
+/// when the directory does not take it, so the change is not made.
+bool prepareProgram(const std::string &path, const std::string &data, std::string &temp,
+                    std::string &error) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
     error = "'" + path + "' is no longer a regular file";
     return false;
   }
-  const mode_t mode = st.st_mode & 07777;
+  temp = dirName(path) + "/." + baseName(path) + ".edit-XXXXXX";
+  return fillNew(::mkstemp(temp.data()), temp, data, st.st_mode & 07777, error);
+}
+
+/// After the online change: the old content `old` kept as the next numbered copy in the history
+/// folder (`historyFile`), then the prepared `temp` renamed over `path` and the directory synced.
+bool commitProgram(const std::string &path, const std::string &temp, const std::string &old,
+                   std::string &historyFile, std::string &error) {
+  struct stat st {};
+  const mode_t mode = ::stat(path.c_str(), &st) == 0 ? st.st_mode & 07777 : 0600;
   const std::string hdir = EditSession::historyDir(path);
   if (!nextHistory(hdir, extension(path), historyFile, error)) return false;
   const int hfd =
       ::open(historyFile.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
   if (!fillNew(hfd, historyFile, old, mode & 0700 ? mode : 0600, error) || !syncDir(hdir, error))
     return false;
-  const std::string dir = dirName(path);
-  std::string tmpl = dir + "/." + baseName(path) + ".edit-XXXXXX";
-  if (!fillNew(::mkstemp(tmpl.data()), tmpl, data, mode, error)) return false;
-  if (::rename(tmpl.c_str(), path.c_str()) != 0) {
-    error = errnoText("cannot rename '" + tmpl + "' to '" + path + "'");
-    ::unlink(tmpl.c_str());
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    error = errnoText("cannot rename '" + temp + "' to '" + path + "'");
     return false;
   }
-  return syncDir(dir, error);
+  return syncDir(dirName(path), error);
 }
 
 /// One JSON line appended to the audit log (moved to `.1` once larger than kAuditMaxBytes).
@@ -541,12 +546,22 @@ EditAnswer EditSession::update(const std::string &editor, const std::string &cli
   const std::string oldHash = s.cur->hash, newHash = formats::sha256Hash(bytes);
   const std::string diff =
       unifiedDiff(s.text, bytes, "a/" + baseName(s.path), "b/" + baseName(s.path));
-  std::string historyFile, auditError;
+  // The new file is written (to a temporary file) before the change: a directory that does not
+  // take it refuses the update while the old program still runs.
+  std::string historyFile, auditError, temp, err;
+  if (!prepareProgram(s.path, bytes, temp, err)) {
+    if (log_)
+      log_("edit: update by editor '" + editor + "' from " + client +
+           " refused, the running program is unchanged: " + err);
+    return refusal(409,
+                   "the program file cannot be written, the running program is unchanged: " + err,
+                   {{"reason", "not-writable"}});
+  }
   EditedProgram e;
   e.bytes = bytes;
   e.base = draft_->base;
-  e.write = [&](std::string &err) {
-    if (!replaceProgram(s.path, s.text, bytes, historyFile, err)) return false;
+  e.write = [&](std::string &werr) {
+    if (!commitProgram(s.path, temp, s.text, historyFile, werr)) return false;
     json rec{{"time", utcNow()}, {"client", client}, {"editor", editor},      {"file", s.path},
              {"old", oldHash},   {"new", newHash},   {"history", historyFile}};
     rec["diff"] =
@@ -555,8 +570,8 @@ EditAnswer EditSession::update(const std::string &editor, const std::string &cli
       log_("edit: the audit record could not be written: " + auditError);
     return true;
   };
-  std::string err;
   const bool ok = ctl_.change(s.path, std::nullopt, err, {}, false, false, &e);
+  ::unlink(temp.c_str()); // still there unless it became the program file
   if (e.stale) return stale(exec_.current() ? exec_.current()->hash : "nothing");
   if (!ok && !e.swapped) {
     if (log_)

@@ -201,6 +201,8 @@ def edit_loop(name, program, coil, contact, before, after, added_line, unknown, 
               old_lines[:lo] == new_lines[:nlo] and old_lines[hi:] == new_lines[nhi:],
               "%s: the file gains '%s' in the edited rung (old lines %d-%d printed anew), every "
               "other line byte for byte: %s" % (name, added_line, lo + 1, hi, region))
+        left = [f for f in os.listdir(d) if ".edit-" in f]
+        check(not left, "%s: no temporary file is left beside the program: %s" % (name, left))
         hist = os.path.join(path + ".history", "0001" + os.path.splitext(path)[1])
         check(os.path.exists(hist) and open(hist, "rb").read() == original,
               "%s: the history holds the old file as %s" % (name, os.path.relpath(hist, d)))
