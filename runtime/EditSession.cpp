@@ -445,6 +445,12 @@ std::optional<EditAnswer> EditSession::heldByOther(const std::string &editor) co
         {{"editor", draft_->editor}, {"client", draft_->client}, {"since", draft_->since}}}});
 }
 
+std::optional<EditAnswer> EditSession::notHeldBy(const std::string &editor) const {
+  if (!draft_)
+    return refusal(409, "no draft is open (POST /api/edit/draft first)", {{"reason", "no-draft"}});
+  return heldByOther(editor);
+}
+
 EditAnswer EditSession::draft(const json &body, const std::string &editor,
                               const std::string &client) {
   static const std::regex hashRe("sha256:[0-9a-f]{64}");
@@ -485,9 +491,7 @@ EditAnswer EditSession::draft(const json &body, const std::string &editor,
 
 EditAnswer EditSession::check(const std::string &editor) {
   std::lock_guard<std::mutex> g(mu_);
-  if (!draft_)
-    return refusal(409, "no draft is open (POST /api/edit/draft first)", {{"reason", "no-draft"}});
-  if (std::optional<EditAnswer> held = heldByOther(editor)) return *held;
+  if (std::optional<EditAnswer> no = notHeldBy(editor)) return *no;
   Served s = served(exec_, ctl_);
   if (!s.notEditable.empty()) return refusal(409, s.notEditable, {{"reason", "not-editable"}});
   std::string bytes, diagnostics;
@@ -508,9 +512,7 @@ EditAnswer EditSession::check(const std::string &editor) {
 
 EditAnswer EditSession::update(const std::string &editor, const std::string &client) {
   std::lock_guard<std::mutex> g(mu_);
-  if (!draft_)
-    return refusal(409, "no draft is open (POST /api/edit/draft first)", {{"reason", "no-draft"}});
-  if (std::optional<EditAnswer> held = heldByOther(editor)) return *held;
+  if (std::optional<EditAnswer> no = notHeldBy(editor)) return *no;
   Served s = served(exec_, ctl_);
   if (!s.notEditable.empty()) return refusal(409, s.notEditable, {{"reason", "not-editable"}});
   auto stale = [&](const std::string &running) {

@@ -53,6 +53,8 @@ private:
   EditAnswer discard(const std::string &editor, const std::string &client);
   /// A draft open by another editor: the 409 naming it, else nullopt. Call with mu_ held.
   std::optional<EditAnswer> heldByOther(const std::string &editor) const;
+  /// No draft, or one open by another editor: the 409, else nullopt. Call with mu_ held.
+  std::optional<EditAnswer> notHeldBy(const std::string &editor) const;
 
   Executive &exec_;
   Controller &ctl_;
