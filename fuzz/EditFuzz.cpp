@@ -53,7 +53,7 @@ struct Check {
 
 class Checker {
 public:
-  explicit Checker(const formats::Dialect &d) : d_(d), text_(d.text()) {
+  explicit Checker(const pipeline::Dialect &d) : d_(d), text_(d.text()) {
     pools_ = gen::gridPools(d.name);
     const std::string_view name = d.name;
     if (name == "fanuc") partEnd_ = {"END1\nEND2\nEND"};
@@ -200,7 +200,7 @@ private:
     return d_.parseAddress(a, error).value_or(formats::CliAddress{});
   }
 
-  const formats::Dialect &d_;
+  const pipeline::Dialect &d_;
   const DialectText &text_;
   gen::GridPools pools_;
   std::vector<std::string> partEnd_;
@@ -248,7 +248,7 @@ const char *editFuzzReason(int k) { return k >= 0 && k < 9 ? kReasons[k] : "?"; 
 EditFuzzStats runEdit(const EditFuzzOptions &opts, std::ostream &out) {
   EditFuzzStats st;
   const auto start = std::chrono::steady_clock::now();
-  const formats::Dialect *d = formats::dialectNamed(opts.dialect);
+  const pipeline::Dialect *d = pipeline::dialectNamed(opts.dialect);
   if (!d || gen::gridPools(opts.dialect).inputs.empty()) {
     out << "fuzz --edit: no grids for dialect '" << opts.dialect << "'\n";
     ++st.notVerified;

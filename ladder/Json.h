@@ -58,8 +58,12 @@ StmtText stmtTextOf(const Element &e);
 /// dialect (DialectText::printStmts), so the result is `srcText` itself when nothing was
 /// edited. `printAll`: print every rung (what `fuzz --round-trip` checks the printer with).
 /// False with `error` naming the rung and element of a statement with no text form.
+/// `origins`, when given, receives one LineOrigin per line of `out` (where = the place in
+/// `given` of the statement on it, or of the next one for a comment line; a printed rung's lines
+/// are given its statements in order, exact where the dialect prints one statement a line).
 bool programText(const Networks &given, const VerifiedProgram &src, std::string_view srcText,
-                 std::string &out, std::string &error, bool printAll = false);
+                 std::string &out, std::string &error, bool printAll = false,
+                 std::vector<LineOrigin> *origins = nullptr);
 
 /// Whether `given` (networks read from a JSON) hold the statements of `made` (the networks of
 /// the program verified from the text the JSON carries): the same operations, operand texts,

@@ -73,7 +73,8 @@ StmtText stmtTextOf(const Element &e) {
 }
 
 bool programText(const Networks &given, const VerifiedProgram &src, std::string_view srcText,
-                 std::string &out, std::string &error, bool printAll) {
+                 std::string &out, std::string &error, bool printAll,
+                 std::vector<LineOrigin> *origins) {
   const DialectText *d = given.text ? given.text : src.dialect;
   if (!d || !d->printStmts) {
     error = "the " + given.dialect + " dialect prints no program text";
@@ -94,9 +95,38 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
   auto count = static_cast<int32_t>(lines.size());
   int32_t tailFrom = count + 1;
   std::vector<Group> groups = groupsOf(src, count, tailFrom);
-  auto copy = [&](int32_t from, int32_t to) {
-    for (int32_t l = std::max(from, 1); l < to && l <= count; ++l)
-      out += lines[static_cast<size_t>(l - 1)];
+  // origins: the statement of each source line (its first), -1 for a line without one.
+  std::vector<int32_t> stmtOfLine;
+  if (origins) {
+    stmtOfLine.assign(static_cast<size_t>(count) + 2, -1);
+    for (size_t k = src.stmts.size(); k-- > 0;) {
+      const int32_t l = src.stmts[k].loc.line;
+      if (l >= 1 && l <= count) stmtOfLine[static_cast<size_t>(l)] = static_cast<int32_t>(k);
+    }
+  }
+  auto origin = [&](size_t k) {
+    LineOrigin o;
+    if (k < a.size()) {
+      o.where = where[k];
+      o.id = a[k].id;
+    }
+    return o;
+  };
+  // Lines [from, to) of the source; `at`: where in `a` the statement b[bBegin] is (a copied
+  // group), or npos (the head and tail: no statement).
+  auto copy = [&](int32_t from, int32_t to, size_t at = std::string::npos, size_t bBegin = 0) {
+    const int32_t first = std::max(from, 1);
+    for (int32_t l = first; l < to && l <= count; ++l) out += lines[static_cast<size_t>(l - 1)];
+    if (!origins) return;
+    for (int32_t l = first; l < to && l <= count; ++l) {
+      size_t k = std::string::npos;
+      for (int32_t m = l; m < to && m <= count && at != std::string::npos; ++m)
+        if (stmtOfLine[static_cast<size_t>(m)] >= 0) {
+          k = at + (static_cast<size_t>(stmtOfLine[static_cast<size_t>(m)]) - bBegin);
+          break;
+        }
+      origins->push_back(origin(k));
+    }
   };
   auto matches = [&](size_t i, const Group &g) {
     if (i + (g.end - g.begin) > a.size()) return false;
@@ -109,7 +139,24 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     for (size_t k = from; k < to; ++k) t.push_back(stmtTextOf(a[k]));
     std::string err;
     if (!out.empty() && out.back() != '\n') out += '\n';
-    if (d->printStmts(t, out, err)) return true;
+    const size_t before = out.size();
+    if (d->printStmts(t, out, err)) {
+      if (origins) {
+        // A line per comment line before a statement (given to that statement) and one per
+        // statement; a dialect's extra lines (an IL closing parenthesis) go to the last.
+        std::vector<size_t> plan;
+        for (size_t k = from; k < to; ++k) {
+          plan.insert(plan.end(), a[k].before.size(), k);
+          plan.push_back(k);
+        }
+        size_t n = static_cast<size_t>(
+            std::count(out.begin() + static_cast<std::ptrdiff_t>(before), out.end(), '\n'));
+        if (!out.empty() && out.back() != '\n') ++n;
+        for (size_t k = 0; k < n; ++k)
+          origins->push_back(origin(plan[std::min(k, plan.size() - 1)]));
+      }
+      return true;
+    }
     size_t k = 0; // "statement K: ..." -> the place of statement K in the networks
     if (err.rfind("statement ", 0) == 0) {
       k = static_cast<size_t>(std::max(0L, std::strtol(err.c_str() + 10, nullptr, 10) - 1));
@@ -141,7 +188,7 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
   size_t i = 0, g = printAll ? groups.size() : 0;
   while (i < a.size() || g < groups.size()) {
     if (g < groups.size() && matches(i, groups[g])) {
-      copy(groups[g].from, groups[g].to);
+      copy(groups[g].from, groups[g].to, i, groups[g].begin);
       i += groups[g].end - groups[g].begin;
       ++g;
       continue;

@@ -37,7 +37,7 @@ std::string capLines(std::string text, size_t max, const std::string &file) {
 } // namespace
 
 bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error,
-                     std::string_view dialect) {
+                     std::string_view dialect, const std::string *bytes) {
   src.path = path;
   const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
   const Dialect *d = !dialect.empty() ? dialectForOption(dialect, error)
@@ -46,7 +46,10 @@ bool readProgramFile(const std::string &path, ProgramSource &src, std::string &e
   if (!d) return false;
   src.dialect = d;
   std::string text;
-  if (!readFile(path, text, error)) return false;
+  if (bytes)
+    text = *bytes;
+  else if (!readFile(path, text, error))
+    return false;
   src.fileHash = sha256Hash(text);
   if (json) {
     const Dialect *named = dialectOfJson(text, error);

@@ -269,14 +269,25 @@ bool Controller::settle(const std::string &path, std::string &why, std::string *
 
 bool Controller::change(const std::string &path, const std::optional<ContactForces> &forces,
                         std::string &error, const std::string &so, bool allowShrink,
-                        bool interpreted) {
+                        bool interpreted, EditedProgram *edit) {
   BusyCount busy(busy_);
   std::lock_guard<std::mutex> g(changeMu_);
-  const std::string what = so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")";
+  const std::string what = (so.empty() ? "'" + path + "'" : "'" + path + "' (" + so + ")") +
+                           (edit ? " (ladder edit)" : "");
   if (shutdown_.load()) return refuse(what, "the server is stopping", error);
   std::string why, settledHash;
   const auto settleStart = std::chrono::steady_clock::now();
-  if (!settle(path, why, &settledHash) || (!so.empty() && !settle(so, why)))
+  if (edit) { // the bytes are at hand: nothing is being written
+    std::shared_ptr<ProgramVersion> running = exec_.current();
+    if (!running || running->hash != edit->base) {
+      edit->stale = true;
+      return refuse(what,
+                    "the edit was made from " + edit->base + ", but " +
+                        (running ? running->hash : std::string("nothing")) +
+                        " runs now (another client, monitor load or the file watch changed it)",
+                    error);
+    }
+  } else if (!settle(path, why, &settledHash) || (!so.empty() && !settle(so, why)))
     return refuse(what, why, error);
   // The change is requested from here on: the wait for a file still being written is not part
   // of its latency (docs/serve.md "Online change latency").
@@ -299,9 +310,9 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   // An AOT .so cannot be forced: with forces, the served .so is loaded (and kept, aotBase_) and
   // forced JIT code of the same program is swapped in instead (rebuildRunning).
   const bool aotForced = loader_.aot() && !want.empty();
-  std::shared_ptr<ProgramVersion> next =
-      loader_.load(path, aotForced ? ContactForces{} : want, error, nullptr, so,
-                   forces ? nullptr : &dropped, nullptr, interpreted);
+  std::shared_ptr<ProgramVersion> next = loader_.load(
+      path, aotForced ? ContactForces{} : want, error, nullptr, so, forces ? nullptr : &dropped,
+      nullptr, interpreted, edit ? &edit->bytes : nullptr);
   if (!next) return refuse(what, error, error);
   std::shared_ptr<ProgramVersion> aotBase = loader_.aot() ? next : nullptr;
   if (aotForced) {
@@ -344,6 +355,19 @@ bool Controller::change(const std::string &path, const std::optional<ContactForc
   aotBase_ = std::move(aotBase);
   program_ = path;
   so_ = so;
+  if (edit) {
+    // The file is written once the new version runs, so a failed change writes nothing; its new
+    // mtime is taken here, under the change lock, so the file watch does not load it again.
+    edit->swapped = true;
+    std::string werr;
+    if (edit->write && !edit->write(werr)) {
+      error = "the edited program runs, but '" + path + "' could not be written: " + werr;
+      if (log_) log_("online change of " + what + ": " + error);
+      mtime_ = mtimeOf(path);
+      return false;
+    }
+    mt = mtimeOf(path);
+  }
   mtime_ = mt;
   soMtime_ = soMt;
   if (log_) {
@@ -445,6 +469,12 @@ void Controller::pollProgramFile() {
     log_("'" + (so.empty() ? path : path + "' / '" + so) + "' changed on disk: online change");
   std::string error;
   change(path, std::nullopt, error, so);
+}
+
+std::string Controller::programPath(std::string *so) {
+  std::lock_guard<std::mutex> g(changeMu_);
+  if (so) *so = so_;
+  return program_;
 }
 
 json Controller::handle(const json &req) {

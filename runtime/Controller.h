@@ -1,4 +1,5 @@
-// The serve control logic: online change (command or PROGRAM file change), forcing and the live
+// The serve control logic: online change (command, PROGRAM file change or a ladder edit from the
+// live view, runtime/EditSession.h), forcing and the live
 // view's traced code (rebuilds of the running program switched in without init), the lock list,
 // reads/writes and stats, as JSON requests from the control socket (docs/serve.md "Control").
 #pragma once
@@ -39,6 +40,18 @@ struct ControllerOptions {
   std::chrono::milliseconds settleGiveUp{10000};
 };
 
+/// A ladder edit going live (更新修改, runtime/EditSession.h): the served PROGRAM's new bytes,
+/// swapped in only while the running version is `base`, and written by `write` once the new
+/// version runs (under the change lock, so the file watch does not take the file again).
+struct EditedProgram {
+  std::string bytes;
+  std::string base; ///< the hash of the version the edit was made from
+  /// Called after the swap; false with its reason when the file could not be written.
+  std::function<bool(std::string &error)> write;
+  bool stale = false;   ///< out: refused because `base` no longer runs
+  bool swapped = false; ///< out: the new version runs
+};
+
 /// Refusal counters for `monitor stats` / --stats.
 struct ChangeStats {
   uint64_t refused = 0;    ///< online changes refused (each logged with its reason)
@@ -66,9 +79,19 @@ public:
   /// counted) when the file is not stable within the settle interval, or when the new program is
   /// empty or lacks a part (init, PLC1, PLC2, a subroutine) the running one has, unless
   /// `allowShrink`; and once shutdown() was called.
+  /// `edit`: the new content of `path` (the served PROGRAM) is `edit->bytes`, not the file's (no
+  /// settle wait); refused with `edit->stale` unless the running version is `edit->base`.
   bool change(const std::string &path, const std::optional<ContactForces> &forces,
               std::string &error, const std::string &so = {}, bool allowShrink = false,
-              bool interpreted = false);
+              bool interpreted = false, EditedProgram *edit = nullptr);
+  /// The served PROGRAM (its path; serving AOT, the .so in `so`).
+  std::string programPath(std::string *so = nullptr);
+  /// Read and verify `bytes` as the content of `path` as an online change would (no engine is
+  /// built, nothing runs): the check of a ladder edit. Null with `diagnostics`.
+  std::optional<VerifiedProgram> verifyEdit(const std::string &path, const std::string &bytes,
+                                            std::string &diagnostics) {
+    return loader_.verify(path, bytes, diagnostics);
+  }
 
   /// Once a second from the main thread: if the PROGRAM file's (or, serving AOT, the .so's)
   /// mtime changed since the last look, reload it (forces carried over by statement id, as for

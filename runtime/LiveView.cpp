@@ -5,6 +5,7 @@
 #include "ir/Trace.h"
 #include "ladder/Layout.h"
 #include "ladder/Network.h"
+#include "runtime/EditSession.h"
 #include "services/HttpServer.h"
 
 #include <nlohmann/json.hpp>
@@ -161,6 +162,7 @@ struct LiveView::Impl {
   LiveViewConfig cfg;
   std::string key = newHttpToken(); // the page's key (services/HttpServer.h HttpConfig::key)
   std::unique_ptr<services::HttpServer> http;
+  EditSession edits; // the ladder editor's draft (docs/ladder-edit.md)
 
   uint64_t publishEvery = 1; // ticks between trace copies (~40 per second)
   uint64_t lastPublished = 0;
@@ -183,7 +185,7 @@ struct LiveView::Impl {
 
   Impl(Executive &e, Exchange &x, Controller &c, std::function<void(const std::string &)> l,
        LiveViewConfig cf)
-      : exec(e), ex(x), ctl(c), log(std::move(l)), cfg(std::move(cf)) {
+      : exec(e), ex(x), ctl(c), log(std::move(l)), cfg(std::move(cf)), edits(e, c, log) {
     publishEvery = std::max<uint64_t>(1, 25000000 / std::max<uint64_t>(cfg.periodNs, 1));
   }
 
@@ -378,6 +380,10 @@ bool LiveView::start(std::string &error) {
   };
   be.watchers = [im](int d) { im->watchers.fetch_add(d); };
   be.command = [im](const json &r) { return im->ctl.handle(r); };
+  be.edit = [im](const std::string &action, const json &body, const std::string &client) {
+    EditAnswer a = action.empty() ? im->edits.status() : im->edits.post(action, body, client);
+    return std::make_pair(a.status, std::move(a.body));
+  };
   services::HttpConfig hc;
   hc.host = im->cfg.host;
   hc.port = im->cfg.port;

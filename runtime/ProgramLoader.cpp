@@ -88,8 +88,19 @@ void noteJitBuild(ProgramVersion &v, const jit::CompileTimes &times) {
 std::shared_ptr<ProgramVersion>
 ProgramLoader::load(const std::string &path, const ContactForces &forces, std::string &error,
                     std::optional<formats::DitFile> *ditOut, const std::string &so,
-                    std::vector<std::string> *dropped, int64_t *readyNs, bool interpreted) {
-  return loadAs(interpreted, path, forces, error, ditOut, so, dropped, readyNs);
+                    std::vector<std::string> *dropped, int64_t *readyNs, bool interpreted,
+                    const std::string *bytes) {
+  return loadAs(interpreted, path, forces, error, ditOut, so, dropped, readyNs, bytes);
+}
+
+std::optional<VerifiedProgram>
+ProgramLoader::verify(const std::string &path, const std::string &bytes, std::string &diagnostics) {
+  pipeline::ProgramSource src;
+  if (!pipeline::readProgramFile(path, src, diagnostics, dialect_, &bytes)) return std::nullopt;
+  const bool nvalueGiven = plc2Nvalue_ >= 0;
+  return pipeline::verifyProgram(
+      src, pipeline::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven),
+      diagnostics);
 }
 
 std::shared_ptr<ProgramVersion>
@@ -200,7 +211,8 @@ std::shared_ptr<ProgramVersion> ProgramLoader::rebuild(const ProgramVersion &v,
 std::shared_ptr<ProgramVersion>
 ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactForces &forces,
                       std::string &error, std::optional<formats::DitFile> *ditOut,
-                      const std::string &so, std::vector<std::string> *dropped, int64_t *readyNs) {
+                      const std::string &so, std::vector<std::string> *dropped, int64_t *readyNs,
+                      const std::string *bytes) {
   const int64_t t0 = monoNs();
   if (interpreted && aot()) {
     error = "an AOT server runs its .so from the first tick (no interpreter-first tiering)";
@@ -215,7 +227,7 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     return nullptr;
   }
   pipeline::ProgramSource src;
-  if (!pipeline::readProgramFile(path, src, error, dialect_)) return nullptr;
+  if (!pipeline::readProgramFile(path, src, error, dialect_, bytes)) return nullptr;
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
   v->hash = src.fileHash;

@@ -50,12 +50,17 @@ public:
   /// forces are refused). Null with `error` = the diagnostics or the reason. `dit`, when given,
   /// receives the container (nothing for an STL file). `dropped`: see checkForces (null: a
   /// force whose id is not a contact refuses the load). `readyNs`: see loadInterpreted.
-  std::shared_ptr<ProgramVersion> load(const std::string &path, const ContactForces &forces,
-                                       std::string &error,
-                                       std::optional<formats::DitFile> *dit = nullptr,
-                                       const std::string &so = {},
-                                       std::vector<std::string> *dropped = nullptr,
-                                       int64_t *readyNs = nullptr, bool interpreted = false);
+  /// `bytes`: `path`'s content as it will be written (a ladder edit, runtime/EditSession.h),
+  /// read instead of the file.
+  std::shared_ptr<ProgramVersion>
+  load(const std::string &path, const ContactForces &forces, std::string &error,
+       std::optional<formats::DitFile> *dit = nullptr, const std::string &so = {},
+       std::vector<std::string> *dropped = nullptr, int64_t *readyNs = nullptr,
+       bool interpreted = false, const std::string *bytes = nullptr);
+  /// Read and verify `bytes` as the content of `path` exactly as load does (the dialect option,
+  /// the PLC2 nvalue), building nothing: the check of a ladder edit. Null with `diagnostics`.
+  std::optional<VerifiedProgram> verify(const std::string &path, const std::string &bytes,
+                                        std::string &diagnostics);
   /// The same as load, but the version runs on the interpreter whatever the loader's engine:
   /// the first version of interpreter-first tiering (docs/serve.md "Tiering"), ready as soon as
   /// the program is verified. `readyNs`, when given, receives CLOCK_MONOTONIC at that moment.
@@ -92,7 +97,7 @@ private:
                                          const ContactForces &forces, std::string &error,
                                          std::optional<formats::DitFile> *dit,
                                          const std::string &so, std::vector<std::string> *dropped,
-                                         int64_t *readyNs);
+                                         int64_t *readyNs, const std::string *bytes = nullptr);
   /// The session of `tier`, created on first use; call with mu_ held.
   jit::Session *session(bool fast, std::string &error);
 

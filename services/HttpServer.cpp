@@ -63,6 +63,9 @@ struct Request {
   std::string method, path, client, origin;
   std::string cmd; // POST: the control command
   std::vector<std::string> keys;
+  std::string edit;     // POST /api/edit/ACTION: the action
+  bool bigBody = false; // holds Impl::draftReading (a draft's body is being read)
+  size_t maxBody = 0;
   std::string body;
   bool answered = false; // a response is queued (refusals, 413)
   bool deferred = false; // on the worker
@@ -81,10 +84,12 @@ struct Stream {
 
 /// Blocking work for the worker thread.
 struct Job {
-  enum Kind { Page, Model, Locks, Command } kind = Page;
+  enum Kind { Page, Model, Locks, Command, Edit } kind = Page;
   MHD_Connection *c = nullptr;
   json req;
-  std::string line; // for the log: "POST /api/force {..} from ADDR"
+  std::string line;        // for the log: "POST /api/force {..} from ADDR"
+  std::string action = {}; // Edit: "" for GET /api/edit, else the POST's action
+  std::string client = {}; // Edit: the client, "ADDR:PORT"
 };
 
 struct Reply {
@@ -152,6 +157,9 @@ struct HttpServer::Impl {
   std::string cookieName;
   std::vector<std::string> hostNames; // accepted Host values (lower case)
   std::atomic<bool> stopping{false};
+  /// A draft body (up to maxEditBody) is being read: one at a time, so many connections cannot
+  /// make the server hold many large bodies.
+  std::atomic<bool> draftReading{false};
 
   std::mutex connMu;
   std::set<Conn *> conns;
@@ -368,10 +376,12 @@ struct HttpServer::Impl {
       if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
       return defer(c, rq, Job{Job::Page, c, {}, {}});
     }
-    static const std::set<std::string> kApi = {"/api/model",  "/api/state", "/api/locks",
-                                               "/api/events", "/api/force", "/api/lock",
-                                               "/api/unlock"};
-    if (!kApi.count(p)) {
+    static const std::set<std::string> kApi = {
+        "/api/model",      "/api/state",      "/api/locks",       "/api/events",
+        "/api/force",      "/api/lock",       "/api/unlock",      "/api/edit",
+        "/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard"};
+    const bool edit = p.rfind("/api/edit", 0) == 0;
+    if (!kApi.count(p) || (edit && !be.edit)) {
       rq.answered = true;
       responding(c);
       return queue(c, error(MHD_HTTP_NOT_FOUND, "no such page: " + clientText(p), true));
@@ -382,7 +392,10 @@ struct HttpServer::Impl {
                     "missing token: send 'Authorization: Bearer TOKEN' (the token is in the file "
                     "serve named at start), or open the page with ?token=TOKEN");
     if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
-    const bool post = p == "/api/force" || p == "/api/lock" || p == "/api/unlock";
+    const bool post =
+        p == "/api/force" || p == "/api/lock" || p == "/api/unlock" || (edit && p != "/api/edit");
+    // A whole program's network JSON is larger than a command.
+    rq.maxBody = p == "/api/edit/draft" ? cfg.maxEditBody : cfg.maxBody;
     if (post) {
       if (m != "POST") {
         rq.answered = true;
@@ -396,11 +409,20 @@ struct HttpServer::Impl {
       if (const char *cl = header(c, "Content-Length")) {
         char *end = nullptr;
         const unsigned long long n = std::strtoull(cl, &end, 10);
-        if (n > cfg.maxBody)
+        if (n > rq.maxBody)
           return refuse(c, rq, MHD_HTTP_CONTENT_TOO_LARGE, "body too large",
-                        "the body is larger than " + std::to_string(cfg.maxBody) + " bytes");
+                        "the body is larger than " + std::to_string(rq.maxBody) + " bytes");
       }
-      if (p == "/api/force") {
+      if (p == "/api/edit/draft") {
+        if (draftReading.exchange(true))
+          return refuse(c, rq, MHD_HTTP_SERVICE_UNAVAILABLE, "busy",
+                        "another draft is being received; retry");
+        rq.bigBody = true;
+      }
+      if (edit) {
+        rq.cmd = "edit";
+        rq.edit = p.substr(std::strlen("/api/edit/"));
+      } else if (p == "/api/force") {
         rq.cmd = "force";
         rq.keys = {"id", "line", "mode"};
       } else if (p == "/api/lock") {
@@ -425,6 +447,7 @@ struct HttpServer::Impl {
       return queue(c, std::move(r));
     }
     if (p == "/api/model") return defer(c, rq, Job{Job::Model, c, {}, {}});
+    if (p == "/api/edit") return defer(c, rq, Job{Job::Edit, c, {}, {}, "", rq.client});
     if (p == "/api/locks") return defer(c, rq, Job{Job::Locks, c, {{"cmd", "locks"}}, {}});
     return openStream(c, rq);
   }
@@ -449,10 +472,10 @@ struct HttpServer::Impl {
       *size = 0;
       return MHD_YES;
     }
-    if (rq.body.size() + *size > cfg.maxBody) {
+    if (rq.body.size() + *size > rq.maxBody) {
       *size = 0;
       return refuse(c, rq, MHD_HTTP_CONTENT_TOO_LARGE, "body too large",
-                    "the body is larger than " + std::to_string(cfg.maxBody) + " bytes");
+                    "the body is larger than " + std::to_string(rq.maxBody) + " bytes");
     }
     rq.body.append(data, *size);
     *size = 0;
@@ -468,6 +491,12 @@ struct HttpServer::Impl {
       return queue(c,
                    error(400, "the body must be a JSON object, e.g. {\"id\":12,\"mode\":\"on\"}"));
     }
+    if (!rq.edit.empty()) // the edit session checks its own fields; the log names the size
+      return defer(c, rq,
+                   Job{Job::Edit, c, std::move(b),
+                       rq.method + " " + rq.path + " (" + std::to_string(rq.body.size()) +
+                           " bytes) from " + rq.client,
+                       rq.edit, rq.client});
     json r{{"cmd", rq.cmd}};
     for (const auto &[k, v] : b.items()) {
       if (std::find(rq.keys.begin(), rq.keys.end(), k) == rq.keys.end()) {
@@ -528,6 +557,17 @@ struct HttpServer::Impl {
           case Job::Locks:
             r.body = jsonText(be.command(j.req));
             break;
+          case Job::Edit: {
+            auto [status, ans] = be.edit(j.action, j.req, j.client);
+            if (!j.action.empty())
+              log(j.line + ": " + std::to_string(status) + " " +
+                  (ans.value("ok", false)
+                       ? std::string("ok")
+                       : "refused: " + clientText(ans.value("error", std::string("?")), 200)));
+            r.status = status;
+            r.body = jsonText(ans);
+            break;
+          }
           case Job::Command: {
             json ans = be.command(j.req);
             const bool ok = ans.value("ok", false);
@@ -714,7 +754,9 @@ struct HttpServer::Impl {
   static void onCompleted(void *cls, MHD_Connection *c, void **con_cls,
                           MHD_RequestTerminationCode) {
     Impl &im = *static_cast<Impl *>(cls);
-    delete static_cast<Request *>(*con_cls);
+    auto *rq = static_cast<Request *>(*con_cls);
+    if (rq && rq->bigBody) im.draftReading.store(false);
+    delete rq;
     *con_cls = nullptr;
     // The next request on this connection (keep-alive) has its own deadline.
     if (Conn *cn = connOf(c)) {

@@ -30,6 +30,13 @@ struct HttpBackend {
   std::function<void(int delta)> watchers; ///< an SSE stream opened (+1) or closed (-1)
   /// A control request (runtime/Controller handle: force, lock, unlock, locks).
   std::function<nlohmann::json(const nlohmann::json &)> command;
+  /// The ladder editor's routes (runtime/EditSession.h, docs/ladder-edit.md): `action` empty for
+  /// GET /api/edit, else draft / check / update / discard (POST /api/edit/ACTION) with the
+  /// JSON body; `client` is "ADDR:PORT". Returns the HTTP status and the JSON answer. Unset: the
+  /// routes answer 404.
+  std::function<std::pair<unsigned, nlohmann::json>(
+      const std::string &action, const nlohmann::json &body, const std::string &client)>
+      edit;
 };
 
 struct HttpConfig {
@@ -49,6 +56,9 @@ struct HttpConfig {
   int maxConnections = 256;            ///< open TCP connections; more are closed at once
   size_t connectionMemory = 32 * 1024; ///< request line + headers + read buffer, per connection
   size_t maxBody = 64 * 1024;          ///< POST body bytes, chunked included
+  /// POST /api/edit/draft body bytes (a whole program's network JSON: a 10,000-statement
+  /// program's is a few MiB); one such body is read at a time (another gets 503).
+  size_t maxEditBody = size_t{16} << 20;
   int requestSeconds = 10; ///< headers and body complete within this after the connection
   int idleSeconds = 10;    ///< no byte either way for this long: closed
   std::function<void(const std::string &)> log;

@@ -18,10 +18,10 @@ GridCell cell(CellKind k, std::string operand = {}) {
   return c;
 }
 
-const DialectText &dialect(const char *name) { return formats::dialectNamed(name)->text(); }
+const DialectText &dialect(const char *name) { return pipeline::dialectNamed(name)->text(); }
 
 OperandCheck checkFor(const char *name) {
-  const formats::Dialect *d = formats::dialectNamed(name);
+  const pipeline::Dialect *d = pipeline::dialectNamed(name);
   return [d](CellKind, const std::string &operand, std::string &error) {
     return d->parseAddress(operand, error).has_value();
   };
@@ -285,7 +285,7 @@ TEST(Grid, OperandsAreCheckedByTheDialect) {
 
 TEST(Grid, NetworkToGridPlacesAsTheView) {
   Diagnostics diags("t.stl");
-  std::optional<VerifiedProgram> p = formats::dialectNamed("hnc8")->compile(
+  std::optional<VerifiedProgram> p = pipeline::dialectNamed("hnc8")->compile(
       "LD X0.0\nOR X0.1\nAND X0.2\nOUT Y0.0\n", "t.stl", VerifyOptions{}, diags, nullptr);
   ASSERT_TRUE(p) << diags.render();
   Networks nets = fromProgram(*p);
