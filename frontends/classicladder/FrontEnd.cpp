@@ -1,0 +1,369 @@
+// The ClassicLadder front end: a project's rungs as IR statements (FrontEnd.h). The cell states
+// live in the profile's ExtraRelay bytes: for rung slot k (in the order the rungs are first met)
+// the power of cell (x, y) is bit k * 2 * W * H + x * H + y and an edge contact's previous value
+// the bit W * H further (oracle/classicladder/RefScan.cpp keeps the same two bytes per cell).
+#include "frontends/classicladder/FrontEnd.h"
+
+#include "frontends/classicladder/Reader.h"
+#include "profiles/classicladder/ClassicLadderProfile.h"
+
+#include <algorithm>
+#include <map>
+
+namespace lj::classicladder {
+
+namespace {
+
+const char *spell(Op op) {
+  switch (op) {
+  case Op::Load:
+    return "LD";
+  case Op::LoadNot:
+    return "LDN";
+  case Op::LoadTrue:
+    return "LD 1";
+  case Op::And:
+    return "AND";
+  case Op::AndNot:
+    return "ANDN";
+  case Op::Or:
+    return "OR";
+  case Op::Coil:
+    return "COIL";
+  case Op::CoilNot:
+    return "COILN";
+  case Op::Set:
+    return "SET";
+  case Op::Reset:
+    return "RESET";
+  case Op::EndInit:
+    return "END_INIT";
+  case Op::EndCyclic:
+    return "END_SCAN";
+  case Op::EndSliced:
+    return "END";
+  default:
+    return nullptr;
+  }
+}
+
+std::string formatOperand(const Operand &o) {
+  if (o.kind == Operand::Kind::Const) return std::to_string(o.value);
+  const int32_t n =
+      o.kind == Operand::Kind::Bit ? o.index * 8 + std::max<int8_t>(o.bit, 0) : o.index;
+  switch (o.area) {
+  case Area::Input:
+    return "%I" + std::to_string(n);
+  case Area::Output:
+    return "%Q" + std::to_string(n);
+  case Area::Relay:
+    return "%B" + std::to_string(n);
+  case Area::DWord:
+    return "%W" + std::to_string(n);
+  case Area::ExtraRelay:
+    return "cell" + std::to_string(n); // a rung cell's state, never written by a user
+  default:
+    return "?";
+  }
+}
+
+const DialectText kText{"classicladder", spell, formatOperand};
+
+Operand bitOperand(Area a, int32_t n) {
+  Operand o;
+  o.kind = Operand::Kind::Bit;
+  o.area = a;
+  o.index = n / 8;
+  o.bit = static_cast<int8_t>(n % 8);
+  return o;
+}
+
+class RungMapper {
+public:
+  RungMapper(const Project &p, ParsedProgram &out, Diagnostics &diags)
+      : p_(p), out_(out), diags_(diags) {}
+
+  void run() {
+    emit(Op::EndInit, {});
+    std::vector<const Section *> order;
+    for (const Section &s : p_.sections) order.push_back(&s);
+    std::stable_sort(order.begin(), order.end(),
+                     [](const Section *a, const Section *b) { return a->number < b->number; });
+    for (const Section *s : order) {
+      if (s->language == Language::Sequential) {
+        refuse("section " + std::to_string(s->number) + " '" + s->name +
+               "': sequential (Grafcet) sections are not supported yet by the classicladder "
+               "front end");
+        continue;
+      }
+      if (s->subRoutine >= 0) continue; // runs only when a CALL coil calls it (refused below)
+      for (int32_t r : s->order) rung(r);
+    }
+    emit(Op::EndCyclic, {});
+    emit(Op::EndSliced, {});
+  }
+
+private:
+  void refuse(const std::string &msg) {
+    if (diags_.errorCount() < 50) diags_.error({}, msg);
+  }
+  void refuseCell(int32_t rung, int x, int y, const std::string &what) {
+    refuse("rung " + std::to_string(rung) + " row " + std::to_string(y) + " column " +
+           std::to_string(x) + ": " + what);
+  }
+
+  void emit(Op op, std::initializer_list<Operand> ops) {
+    Stmt s;
+    s.op = op;
+    s.loc = {static_cast<int32_t>(rung_ + 1), static_cast<int32_t>(1)};
+    s.operandCount = static_cast<uint8_t>(ops.size());
+    size_t k = 0;
+    for (const Operand &o : ops) s.ops[k++] = o;
+    s.id = static_cast<StmtId>(out_.stmts.size());
+    out_.stmts.push_back(s);
+  }
+
+  /// Whether a cell writes DynamicOutput (FREE, coils and the editor codes never do).
+  static bool writesPower(const Cell &c) {
+    return c.type == 1 || c.type == 2 || c.type == 3 || c.type == 4 || c.type == 9;
+  }
+
+  Operand power(int x, int y) const { return bitOperand(Area::ExtraRelay, base_ + x * h_ + y); }
+  Operand previous(int x, int y) const {
+    return bitOperand(Area::ExtraRelay, base_ + w_ * h_ + x * h_ + y);
+  }
+
+  /// Pushes StateOnLeft(x, y): the rail in column 0, else the OR of the powers of the vertical
+  /// group (column x's links) in column x - 1; 0 when no cell there writes its power.
+  void loadLeft(const Rung &r, int x, int y) {
+    if (x == 0) {
+      emit(Op::LoadTrue, {});
+      return;
+    }
+    int top = y, bottom = y;
+    while (top > 0 && r.cells[x][top].connectedWithTop) --top;
+    while (bottom + 1 < h_ && r.cells[x][bottom + 1].connectedWithTop) ++bottom;
+    bool first = true;
+    for (int k = top; k <= bottom; ++k) {
+      if (!writesPower(r.cells[x - 1][k])) continue;
+      emit(first ? Op::Load : Op::Or, {power(x - 1, k)});
+      first = false;
+    }
+    if (first) { // nothing conducts into this cell: a constant 0
+      emit(Op::Load, {power(x, y)});
+      emit(Op::AndNot, {power(x, y)});
+    }
+  }
+
+  std::optional<Operand> boolVar(int32_t rung, int x, int y, const Cell &c, bool write) {
+    const Ele e = static_cast<Ele>(c.type);
+    const bool ok = c.varType == 0 || c.varType == 60 || (!write && c.varType == 50);
+    if (!ok) {
+      refuseCell(rung, x, y,
+                 std::string(elementName(c.type)) + " on " + varName(c.varType, c.varNum) +
+                     " is not supported yet by the classicladder front end" +
+                     (write && c.varType == 50 ? " (a coil on an input)" : ""));
+      return std::nullopt;
+    }
+    (void)e;
+    std::string why;
+    std::optional<Operand> o = varOperand(c.varType, c.varNum, why);
+    if (!o) refuseCell(rung, x, y, why);
+    return o;
+  }
+
+  void rung(int32_t index) {
+    auto it = p_.rungs.find(index);
+    if (it == p_.rungs.end()) return; // the reader checked the chains
+    const Rung &r = it->second;
+    rung_ = index;
+    w_ = static_cast<int>(r.cells.size());
+    h_ = w_ ? static_cast<int>(r.cells[0].size()) : 0;
+    auto slot = slots_.find(index);
+    if (slot == slots_.end()) {
+      slot = slots_.emplace(index, next_).first;
+      next_ += 2 * w_ * h_;
+    }
+    base_ = slot->second;
+    if (base_ + 2 * w_ * h_ > kCellBytes * 8) {
+      if (!tooBig_)
+        refuse("rung " + std::to_string(index) +
+               ": the project has more rung cells than the "
+               "classicladder profile holds (" +
+               std::to_string(kCellBytes * 8 / 120) + " rungs of 10x6)");
+      tooBig_ = true;
+      return;
+    }
+    for (int x = 0; x < w_; ++x) {
+      for (int y = 0; y < h_; ++y) cell(r, x, y);
+    }
+  }
+
+  void cell(const Rung &r, int x, int y) {
+    const Cell &c = r.cells[x][y];
+    switch (c.type) {
+    case 1:
+    case 2:
+    case 3:
+    case 4: {
+      std::optional<Operand> v = boolVar(r.index, x, y, c, false);
+      if (!v) return;
+      loadLeft(r, x, y);
+      if (c.type == 1) emit(Op::And, {*v});
+      if (c.type == 2) emit(Op::AndNot, {*v});
+      if (c.type == 3) emit(Op::AndNot, {previous(x, y)}), emit(Op::And, {*v});
+      if (c.type == 4) emit(Op::And, {previous(x, y)}), emit(Op::AndNot, {*v});
+      emit(Op::Coil, {power(x, y)});
+      if (c.type >= 3) { // DynamicVarBak := the variable, whatever the power on the left
+        emit(Op::Load, {*v});
+        emit(Op::Coil, {previous(x, y)});
+      }
+      return;
+    }
+    case 9:
+      loadLeft(r, x, y);
+      emit(Op::Coil, {power(x, y)});
+      return;
+    case 50:
+    case 51:
+    case 52:
+    case 53: {
+      std::optional<Operand> v = boolVar(r.index, x, y, c, true);
+      if (!v) return;
+      loadLeft(r, x, y);
+      const Op op = c.type == 50   ? Op::Coil
+                    : c.type == 51 ? Op::CoilNot
+                    : c.type == 52 ? Op::Set
+                                   : Op::Reset;
+      emit(op, {*v});
+      return;
+    }
+    case 0:
+    case 99:
+      return;
+    default:
+      if (c.type >= 100 && c.type <= 105) return; // editor codes act like FREE
+      refuseCell(r.index, x, y,
+                 blockText(c) + " is not supported yet by the classicladder front end");
+    }
+  }
+
+  /// The element of a refused cell as ClassicLadder's editor names it: `timer %T2`.
+  static std::string blockText(const Cell &c) {
+    const std::string n = std::to_string(c.varNum);
+    switch (c.type) {
+    case 10:
+      return "timer %T" + n;
+    case 11:
+      return "monostable %M" + n;
+    case 12:
+      return "counter %C" + n;
+    case 13:
+      return "IEC timer %TM" + n;
+    case 20:
+      return "compare block (expression " + n + ")";
+    case 60:
+      return "operate block (expression " + n + ")";
+    case 54:
+      return "jump coil (to rung " + n + ")";
+    case 55:
+      return "call coil (SR" + n + ")";
+    default:
+      return std::string(elementName(c.type)) + " (element " + std::to_string(c.type) + ")";
+    }
+  }
+
+  const Project &p_;
+  ParsedProgram &out_;
+  Diagnostics &diags_;
+  std::map<int32_t, int32_t> slots_; ///< rung index -> first state bit
+  int32_t next_ = 0, base_ = 0, rung_ = 0;
+  int w_ = 0, h_ = 0;
+  bool tooBig_ = false;
+};
+
+} // namespace
+
+std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
+  Area a;
+  int32_t count;
+  switch (type) {
+  case 50:
+    a = Area::Input, count = kInputs;
+    break;
+  case 60:
+    a = Area::Output, count = kOutputs;
+    break;
+  case 0:
+    a = Area::Relay, count = kBits;
+    break;
+  case 200:
+    a = Area::DWord, count = kWords;
+    break;
+  default:
+    why = "variable " + varName(type, num) + " is not supported yet by the classicladder front end";
+    return std::nullopt;
+  }
+  if (num < 0 || num >= count) {
+    why = "variable " + varName(type, num) + " is beyond the " + std::to_string(count) + " " +
+          varName(type, 0).substr(0, varName(type, 0).size() - 1) +
+          " variables of the classicladder profile";
+    return std::nullopt;
+  }
+  if (a == Area::DWord) {
+    Operand o;
+    o.kind = Operand::Kind::Reg;
+    o.area = a;
+    o.index = num;
+    return o;
+  }
+  return bitOperand(a, num);
+}
+
+ParsedProgram toProgram(const Project &project, std::string file, Diagnostics &diags) {
+  ParsedProgram out;
+  out.file = std::move(file);
+  out.dialect = &kText;
+  out.profile = &profile();
+  if (project.flavor == Flavor::Upstream09) {
+    diags.error({}, "an upstream ClassicLadder 0.9 project (.clprj, #VER=3.0 rungs of 12x8, "
+                    "variable code 300 a register) does not run: LinuxCNC's classicladder_rt "
+                    "cannot load it either; save it from LinuxCNC's ClassicLadder as a .clp");
+    return out;
+  }
+  RungMapper(project, out, diags).run();
+  return out;
+}
+
+ParsedProgram parseClp(std::string_view text, std::string file, Diagnostics &diags) {
+  Result<Project> p = readProjectText(text, file);
+  if (!p) {
+    // The reader's message is `PATH:LINE: error: TEXT` (or TEXT alone): keep the line as the
+    // location so the rendered diagnostic names the file once.
+    std::string msg = p.status().message();
+    SourceLoc loc{};
+    if (msg.rfind(file + ":", 0) == 0) {
+      size_t at = file.size() + 1;
+      int32_t line = 0;
+      while (at < msg.size() && msg[at] >= '0' && msg[at] <= '9' && line < 100000000)
+        line = line * 10 + (msg[at++] - '0');
+      const std::string tag = ": error: ";
+      if (line > 0 && msg.compare(at, tag.size(), tag) == 0) {
+        loc = {line, 1};
+        msg = msg.substr(at + tag.size());
+      }
+    }
+    diags.error(loc, msg);
+    ParsedProgram out;
+    out.file = std::move(file);
+    out.dialect = &kText;
+    out.profile = &profile();
+    return out;
+  }
+  for (const std::string &w : p->warnings) diags.warning({}, w);
+  return toProgram(*p, std::move(file), diags);
+}
+
+const DialectText &dialectText() { return kText; }
+
+} // namespace lj::classicladder

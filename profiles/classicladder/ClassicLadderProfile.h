@@ -1,0 +1,28 @@
+// The ClassicLadder target profile (LinuxCNC's classicladder_rt, docs/classicladder.md "The
+// classicladder profile"; layout: profiles/classicladder/Areas.cpp). Only the ClassicLadder front
+// end, the profile registry (profiles/Profiles.h) and the dialect registry name it; the core
+// reads the profile a program carries.
+#pragma once
+
+#include "ir/Profile.h"
+
+#include <cstdint>
+
+namespace lj::classicladder {
+
+/// The ClassicLadder profile.
+const TargetProfile &profile();
+
+/// How many of each variable the profile holds. classicladder_rt sizes them at `loadrt` time
+/// (defaults: 15 %I, 15 %Q, 20 %B, 20 %W); the profile holds the largest project ladderjit
+/// accepts, and the front end refuses a variable number beyond these with a located error.
+constexpr int32_t kInputs = 512;  ///< %I0..%I511 (HAL in-NN)
+constexpr int32_t kOutputs = 512; ///< %Q0..%Q511 (HAL out-NN)
+constexpr int32_t kBits = 2048;   ///< %B0..%B2047
+constexpr int32_t kWords = 1024;  ///< %W0..%W1023, 32-bit signed (ClassicLadder's int)
+/// The cell state bytes: one bit per grid cell for the power leaving its right edge
+/// (DynamicOutput) and one per edge contact for its previous value (DynamicVarBak), never
+/// named by a program (docs/classicladder.md "Rungs on the IR").
+constexpr int32_t kCellBytes = 40000;
+
+} // namespace lj::classicladder
