@@ -23,7 +23,8 @@ using Grid = std::array<std::array<Cell, kH>, kW>; // [x][y]
 
 class ClpGen {
 public:
-  ClpGen(uint64_t seed, const ClpGenSizes &s) : rng_(seed), sz_(s) {}
+  ClpGen(uint64_t seed, const ClpGenSizes &s, ClpElements e)
+      : rng_(seed), sz_(s), logicOnly_(e == ClpElements::Logic) {}
 
   std::string project(int32_t rungs) {
     rungs = std::max(rungs, 1);
@@ -79,7 +80,8 @@ private:
 
   /// A boolean operand for a contact: mostly I/Q/B, sometimes a block output.
   void boolVar(Cell &c) {
-    switch (rng_.weighted(std::array<int, 8>{14, 3, 3, 1, 1, 1, 1, 1})) {
+    switch (logicOnly_ ? rng_.weighted(std::array<int, 3>{14, 3, 3})
+                       : rng_.weighted(std::array<int, 8>{14, 3, 3, 1, 1, 1, 1, 1})) {
     case 0:
       c.vt = 50, c.vn = idx(sz_.inputs);
       break;
@@ -210,7 +212,7 @@ private:
 
   std::string rungFile(int n, int prev, int next) {
     Grid g{};
-    switch (rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})) {
+    switch (logicOnly_ ? 0 : rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})) {
     case 0:
       logicRung(g);
       break;
@@ -394,12 +396,14 @@ private:
   ClpGenSizes sz_;
   std::vector<std::string> exprs_;
   int rungs_ = 1;
+  bool logicOnly_ = false;
 };
 
 } // namespace
 
-std::string generateClp(uint64_t seed, int32_t rungs, const ClpGenSizes &sizes) {
-  return ClpGen(seed, sizes).project(rungs);
+std::string generateClp(uint64_t seed, int32_t rungs, const ClpGenSizes &sizes,
+                        ClpElements elements) {
+  return ClpGen(seed, sizes, elements).project(rungs);
 }
 
 } // namespace lj::gen

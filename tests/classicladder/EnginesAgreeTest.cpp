@@ -1,0 +1,271 @@
+// ClassicLadder projects on ladderjit's engines (issue 31 phase 2): the classicladder front end
+// compiles a project, the interpreter, the JIT and AOT (tests/support/EngineRegistry.h) run it,
+// and the reference scan of oracle/classicladder (0 differences against classicladder_rt, see
+// docs/classicladder.md) runs it beside them on the same seeded random inputs, each held for a
+// random number of periods; every output %Q is compared after every period. Real projects from
+// ../shared/realprograms/classicladder (when present) and generated ones (gen/ClpGenerator,
+// restricted to the elements the front end maps). Plus the ClassicLadder surprises on small
+// rungs with the values the reference measured, and the located refusals.
+#include "frontends/classicladder/Reader.h"
+#include "gen/ClpGenerator.h"
+#include "oracle/classicladder/RefScan.h"
+#include "pipeline/Compile.h"
+#include "pipeline/Dialects.h"
+#include "tests/support/EngineRegistry.h"
+#include "tests/support/Machine.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace lj;
+using lj::oracle::ClReferenceScan;
+using lj::oracle::ClSizes;
+
+namespace {
+
+/// The sizes classicladder_rt is loaded with for `p`: the larger of general.txt and what the
+/// rungs use (what the oracle harness does, tests/classicladder/clharness.py).
+ClSizes loadSizes(const classicladder::Project &p) {
+  const classicladder::Sizes &a = p.sizes, &b = p.needed;
+  ClSizes s;
+  s.bits = std::max(a.bits, b.bits);
+  s.words = std::max(a.words, b.words);
+  s.timers = std::max(a.timers, b.timers);
+  s.monostables = std::max(a.monostables, b.monostables);
+  s.counters = std::max(a.counters, b.counters);
+  s.timersIec = std::max(a.timersIec, b.timersIec);
+  s.inputs = std::max(a.physInputs, b.physInputs);
+  s.outputs = std::max(a.physOutputs, b.physOutputs);
+  s.s32in = std::max(a.s32in, b.s32in);
+  s.s32out = std::max(a.s32out, b.s32out);
+  s.floatIn = std::max(a.floatIn, b.floatIn);
+  s.floatOut = std::max(a.floatOut, b.floatOut);
+  return s;
+}
+
+formats::CliAddress address(const std::string &text) {
+  std::string err;
+  std::optional<formats::CliAddress> a =
+      formats::dialectNamed("classicladder")->parseAddress(text, err);
+  EXPECT_TRUE(a.has_value()) << err;
+  return a.value_or(formats::CliAddress{});
+}
+
+std::optional<VerifiedProgram> compile(const std::string &text, const std::string &name,
+                                       std::string &errors) {
+  Diagnostics diags(name);
+  std::optional<VerifiedProgram> p = pipeline::compileClp(text, name, VerifyOptions{}, diags);
+  errors = diags.render();
+  return p;
+}
+
+/// Runs `text` on every engine and the reference scan for `periods` periods of 1 ms; returns
+/// the number of (period, output, engine) differences and records the first one.
+int64_t agree(const std::string &text, const std::string &name, uint64_t seed, int periods) {
+  std::string errors;
+  std::optional<VerifiedProgram> prog = compile(text, name, errors);
+  if (!prog) {
+    ADD_FAILURE() << name << " does not compile:\n" << errors;
+    return -1;
+  }
+  Result<classicladder::Project> project = classicladder::readProjectText(text, name);
+  if (!project) {
+    ADD_FAILURE() << project.status().message();
+    return -1;
+  }
+  const ClSizes sz = loadSizes(*project);
+  ClReferenceScan ref(*project, sz);
+  std::vector<std::unique_ptr<test::Machine>> engines;
+  for (const test::EngineFactory &f : test::registeredEngines()) {
+    engines.push_back(test::Machine::create(*prog, f));
+    if (!engines.back()) return -1;
+    EXPECT_EQ(engines.back()->init(), uint32_t{LJ_FAULT_NONE});
+  }
+  std::vector<formats::CliAddress> in, out;
+  for (int i = 0; i < sz.inputs; ++i) in.push_back(address("%I" + std::to_string(i)));
+  for (int i = 0; i < sz.outputs; ++i) out.push_back(address("%Q" + std::to_string(i)));
+  std::mt19937_64 rng(seed);
+  std::vector<int> hold(in.size(), 0);
+  int64_t diffs = 0;
+  for (int period = 0; period < periods; ++period) {
+    for (size_t i = 0; i < in.size(); ++i) {
+      if (hold[i]-- > 0) continue;
+      hold[i] = static_cast<int>(rng() % 40); // held 1..40 periods
+      const uint8_t v = rng() % 2;
+      ref.in[i] = v;
+      for (auto &m : engines) formats::writeAddress(m->state(), in[i], v);
+    }
+    ref.refresh(1);
+    for (auto &m : engines) EXPECT_EQ(m->tick(), uint32_t{LJ_FAULT_NONE});
+    for (size_t j = 0; j < out.size(); ++j) {
+      for (auto &m : engines) {
+        const int64_t got = formats::readAddress(m->state(), out[j]);
+        if (got == ref.out[j]) continue;
+        if (diffs++ == 0)
+          ADD_FAILURE() << name << " seed " << seed << " period " << period << " %Q" << j << ": "
+                        << m->engine().name() << " gives " << got << ", ClassicLadder's scan "
+                        << int(ref.out[j]);
+      }
+    }
+  }
+  return diffs;
+}
+
+std::string slurp(const fs::path &p) {
+  std::ifstream f(p, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+const char *kEmpty = "0-0-0/0";
+
+/// A one-rung project (the RefScanTest form): rows of 10 cells, missing cells empty.
+std::string oneRung(const std::vector<std::vector<std::string>> &rows) {
+  std::string s = "_FILES_CLASSICLADDER\n_FILE-sections.csv\n000,0,-1,0,0,0\n"
+                  "_/FILE-sections.csv\n_FILE-rung_0.csv\n#VER=2.0\n#NEXTRUNG=-1\n";
+  for (size_t y = 0; y < 6; ++y)
+    for (size_t x = 0; x < 10; ++x) {
+      const bool have = y < rows.size() && x < rows[y].size() && !rows[y][x].empty();
+      s += (have ? rows[y][x] : std::string(kEmpty)) + (x < 9 ? " , " : "\n");
+    }
+  return s + "_/FILE-rung_0.csv\n_/FILES_CLASSICLADDER\n";
+}
+
+std::vector<std::string> wire(const std::string &first, const std::string &coil) {
+  std::vector<std::string> row(10, "9-0-0/0");
+  row[0] = first;
+  row[9] = coil;
+  return row;
+}
+
+class ClEngines : public ::testing::TestWithParam<test::EngineFactory> {};
+
+} // namespace
+
+TEST_P(ClEngines, EmptyCellsDoNotConduct) {
+  // reference 2.4 (surprise 1): an NC contact followed by empty cells leaves its coil at 0;
+  // the same contact wired by connections drives its coil
+  std::vector<std::string> gap(10, "");
+  gap[0] = "2-0-50/0";
+  gap[9] = "50-0-60/0";
+  std::string err;
+  std::optional<VerifiedProgram> p =
+      compile(oneRung({gap, wire("2-0-50/0", "50-0-60/1")}), "t.clp", err);
+  ASSERT_TRUE(p) << err;
+  auto m = test::Machine::create(*p, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 0);
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q1")), 1);
+}
+
+TEST_P(ClEngines, CoilsAreWrittenAtOnceColumnByColumn) {
+  // reference 2.4: cells run column by column, a coil writes its variable at once. Row 0:
+  // %I0 -> coil %B0 in column 9; row 1: contact %B0 in column 0 -> coil %Q0. Column 0 runs
+  // before column 9, so %Q0 follows %B0 one scan late.
+  std::string err;
+  std::optional<VerifiedProgram> p =
+      compile(oneRung({wire("1-0-50/0", "50-0-0/0"), wire("1-0-0/0", "50-0-60/0")}), "t.clp", err);
+  ASSERT_TRUE(p) << err;
+  auto m = test::Machine::create(*p, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  formats::writeAddress(m->state(), address("%I0"), 1);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%B0")), 1);
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 0);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 1);
+}
+
+TEST_P(ClEngines, RisingEdgeRemembersItsVariableWithoutPower) {
+  // calc.c: an edge contact stores its variable whatever the power on its left. Row 0: %I1 then
+  // a rising contact on %I0 -> %Q0. %I0 rises while %I1 = 0: no edge later when %I1 comes.
+  std::vector<std::string> row = wire("1-0-50/1", "50-0-60/0");
+  row[1] = "3-0-50/0";
+  std::string err;
+  std::optional<VerifiedProgram> p = compile(oneRung({row}), "t.clp", err);
+  ASSERT_TRUE(p) << err;
+  auto m = test::Machine::create(*p, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  formats::writeAddress(m->state(), address("%I0"), 1);
+  m->tick();
+  formats::writeAddress(m->state(), address("%I1"), 1);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 0);
+  formats::writeAddress(m->state(), address("%I0"), 0);
+  m->tick();
+  formats::writeAddress(m->state(), address("%I0"), 1);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 1);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, ClEngines, ::testing::ValuesIn(test::registeredEngines()),
+                         [](const ::testing::TestParamInfo<test::EngineFactory> &info) {
+                           return info.param.name;
+                         });
+
+TEST(ClAgree, RefusedElementsAreLocated) {
+  std::vector<std::string> row = wire("1-0-50/0", "50-0-60/0");
+  row[4] = "10-0-0/3"; // an old timer %T3 at column 4
+  row[3] = "99-0-0/0";
+  std::string err;
+  EXPECT_FALSE(compile(oneRung({row, {"", "", "", "99-0-0/0", "99-0-0/0"}}), "t.clp", err));
+  EXPECT_NE(err.find("rung 0 row 0 column 4: timer %T3 is not supported yet by the classicladder "
+                     "front end"),
+            std::string::npos)
+      << err;
+  EXPECT_FALSE(compile(oneRung({wire("1-0-50/0", "50-0-50/2")}), "t.clp", err));
+  EXPECT_NE(err.find("rung 0 row 0 column 9: coil on %I2"), std::string::npos) << err;
+  EXPECT_FALSE(compile(oneRung({wire("1-0-50/600", "50-0-60/0")}), "t.clp", err));
+  EXPECT_NE(err.find("rung 0 row 0 column 0: variable %I600 is beyond the 512"), std::string::npos)
+      << err;
+  EXPECT_FALSE(compile("_FILES_CLASSICLADDER\nrubbish\n", "bad.clp", err));
+  EXPECT_NE(err.find("bad.clp:"), std::string::npos) << err;
+}
+
+TEST(ClAgree, GeneratedProjects) {
+  // gen/ClpGenerator restricted to the mapped elements: 60 projects x 1,500 periods.
+  int64_t total = 0;
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    const std::string text =
+        gen::generateClp(seed, 4 + static_cast<int32_t>(seed % 12), {}, gen::ClpElements::Logic);
+    total += agree(text, "gen" + std::to_string(seed) + ".clp", seed, 1500);
+  }
+  EXPECT_EQ(total, 0);
+}
+
+#ifdef LJ_CL_REAL_DIR
+TEST(ClAgree, RealProjects) {
+  // Every real project the front end accepts: 10,000 periods each, 0 differences. The others
+  // must be refused with a located error (docs/classicladder.md lists what each one uses).
+  std::vector<fs::path> files;
+  for (const auto &e : fs::recursive_directory_iterator(LJ_CL_REAL_DIR))
+    if (e.is_regular_file() && e.path().extension() == ".clp") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  int accepted = 0;
+  for (const fs::path &f : files) {
+    const std::string text = slurp(f);
+    std::string err;
+    if (!compile(text, f.string(), err)) {
+      EXPECT_NE(err.find("error:"), std::string::npos) << f;
+      continue;
+    }
+    ++accepted;
+    EXPECT_EQ(agree(text, f.string(), 7, 10000), 0) << f;
+  }
+  std::cout << accepted << " of " << files.size() << " real projects accepted\n";
+  EXPECT_GE(accepted, 3); // blank, cl-estop/estop, tests/classicladder/estop
+}
+#endif
