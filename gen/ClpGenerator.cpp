@@ -24,7 +24,8 @@ using Grid = std::array<std::array<Cell, kH>, kW>; // [x][y]
 class ClpGen {
 public:
   ClpGen(uint64_t seed, const ClpGenSizes &s, ClpElements e)
-      : rng_(seed), sz_(s), logicOnly_(e == ClpElements::Logic) {}
+      : rng_(seed), sz_(s), logicOnly_(e != ClpElements::All),
+        expressions_(e != ClpElements::Logic) {}
 
   std::string project(int32_t rungs) {
     rungs = std::max(rungs, 1);
@@ -212,7 +213,9 @@ private:
 
   std::string rungFile(int n, int prev, int next) {
     Grid g{};
-    switch (logicOnly_ ? 0 : rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})) {
+    switch (!logicOnly_     ? rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})
+            : !expressions_ ? 0
+                            : rng_.weighted(std::array<int, 5>{5, 0, 0, 2, 2})) {
     case 0:
       logicRung(g);
       break;
@@ -243,7 +246,8 @@ private:
   }
 
   std::string var() {
-    switch (rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 1, 1, 1, 1, 2})) {
+    switch (logicOnly_ ? rng_.weighted(std::array<int, 9>{5, 5, 2, 0, 0, 0, 0, 1, 2})
+                       : rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 1, 1, 1, 1, 2})) {
     case 0:
       return "@200/" + std::to_string(idx(sz_.words)) + "@";
     case 1:
@@ -329,7 +333,8 @@ private:
       if (compare)
         t = expr(1) + ops[rng_.below(6)] + expr(1);
       else {
-        int k = rng_.weighted(std::array<int, 3>{3, 4, 1});
+        int k = logicOnly_ ? rng_.weighted(std::array<int, 3>{3, 4, 0})
+                           : rng_.weighted(std::array<int, 3>{3, 4, 1});
         std::string target = k == 0   ? "@200/" + std::to_string(idx(sz_.words)) + "@"
                              : k == 1 ? "@280/" + std::to_string(idx(sz_.s32out)) + "@"
                                       : "@310/" + std::to_string(idx(sz_.floatOut)) + "@";
@@ -396,7 +401,8 @@ private:
   ClpGenSizes sz_;
   std::vector<std::string> exprs_;
   int rungs_ = 1;
-  bool logicOnly_ = false;
+  bool logicOnly_ = false;  ///< contacts and coils on %I %Q %B only
+  bool expressions_ = true; ///< compare and operate rungs
 };
 
 } // namespace

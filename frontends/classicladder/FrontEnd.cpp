@@ -36,6 +36,28 @@ const char *spell(Op op) {
     return "SET";
   case Op::Reset:
     return "RESET";
+  case Op::Move:
+    return "MOVE";
+  case Op::Add:
+    return "ADD";
+  case Op::Subtract:
+    return "SUB";
+  case Op::Multiply:
+    return "MUL";
+  case Op::Divide:
+    return "DIV";
+  case Op::BitAnd:
+    return "AND_W";
+  case Op::BitOr:
+    return "OR_W";
+  case Op::BitXor:
+    return "XOR_W";
+  case Op::CompareLt:
+    return "LT";
+  case Op::CompareLe:
+    return "LE";
+  case Op::CompareEq:
+    return "EQ";
   case Op::EndInit:
     return "END_INIT";
   case Op::EndCyclic:
@@ -59,7 +81,11 @@ std::string formatOperand(const Operand &o) {
   case Area::Relay:
     return "%B" + std::to_string(n);
   case Area::DWord:
-    return "%W" + std::to_string(n);
+    return (n < kWords ? "%W" : "tmp") + std::to_string(n);
+  case Area::Word:
+    return "%IW" + std::to_string(n);
+  case Area::Retained:
+    return "%QW" + std::to_string(n);
   case Area::ExtraRelay:
     return "cell" + std::to_string(n); // a rung cell's state, never written by a user
   default:
@@ -77,6 +103,9 @@ Operand bitOperand(Area a, int32_t n) {
   o.bit = static_cast<int8_t>(n % 8);
   return o;
 }
+
+/// ExtraRelay bits at the end of the cell bytes kept for the expression code (flag()).
+constexpr int32_t kScratchBits = 8;
 
 class RungMapper {
 public:
@@ -125,7 +154,7 @@ private:
 
   /// Whether a cell writes DynamicOutput (FREE, coils and the editor codes never do).
   static bool writesPower(const Cell &c) {
-    return c.type == 1 || c.type == 2 || c.type == 3 || c.type == 4 || c.type == 9;
+    return c.type == 1 || c.type == 2 || c.type == 3 || c.type == 4 || c.type == 9 || c.type == 20;
   }
 
   Operand power(int x, int y) const { return bitOperand(Area::ExtraRelay, base_ + x * h_ + y); }
@@ -185,7 +214,7 @@ private:
       next_ += 2 * w_ * h_;
     }
     base_ = slot->second;
-    if (base_ + 2 * w_ * h_ > kCellBytes * 8) {
+    if (base_ + 2 * w_ * h_ > kCellBytes * 8 - kScratchBits) {
       if (!tooBig_)
         refuse("rung " + std::to_string(index) +
                ": the project has more rung cells than the "
@@ -238,6 +267,12 @@ private:
       emit(op, {*v});
       return;
     }
+    case 20:
+      compare(r, x, y, c);
+      return;
+    case 60:
+      operate(r, x, y, c);
+      return;
     case 0:
     case 99:
       return;
@@ -246,6 +281,244 @@ private:
       refuseCell(r.index, x, y,
                  blockText(c) + " is not supported yet by the classicladder front end");
     }
+  }
+
+  // ---- compare and operate blocks: the expression trees of Expression.h evaluated into the
+  // scratch words after %W (one per tree level) with 2.9's rules: 32-bit wrapping + - *,
+  // division and modulo by zero keep the left operand, a^b squares a b times ----
+
+  static Operand word(int32_t k) {
+    Operand o;
+    o.kind = Operand::Kind::Reg;
+    o.area = Area::DWord;
+    o.index = kWords + k;
+    return o;
+  }
+  static Operand konst(int32_t v) {
+    Operand o;
+    o.kind = Operand::Kind::Const;
+    o.value = v;
+    return o;
+  }
+  /// A scratch bit of the expression code (a condition computed and used at once).
+  static Operand flag() { return bitOperand(Area::ExtraRelay, kCellBytes * 8 - 1); }
+
+  /// dst := value, unconditionally.
+  void move(const Operand &from, const Operand &to) {
+    emit(Op::LoadTrue, {});
+    emit(Op::Move, {from, to});
+  }
+  /// flag := a OP b (OP a compare operation: a < b, a <= b, a == b).
+  void test(Op op, const Operand &a, const Operand &b) {
+    emit(Op::LoadTrue, {});
+    emit(op, {a, b});
+    emit(Op::Coil, {flag()});
+  }
+
+  /// The value of `n` into scratch word k (words above k are free). False (reported) when the
+  /// tree uses what the front end does not map.
+  bool value(const ExprNode &n, int32_t k, const std::string &where) {
+    using K = ExprNode::Kind;
+    if (k + 3 >= kTempWords) {
+      refuse(where + ": the expression nests deeper than the classicladder profile's " +
+             std::to_string(kTempWords) + " scratch words");
+      return false;
+    }
+    const Operand t = word(k), u = word(k + 1), v = word(k + 2);
+    switch (n.kind) {
+    case K::Const:
+      move(konst(n.value), t);
+      return true;
+    case K::Var: {
+      if (n.var.indexType >= 0) {
+        refuse(where + ": indexed variable " + varName(n.var.type, n.var.num) +
+               "[...] is not supported yet by the classicladder front end");
+        return false;
+      }
+      std::string why;
+      std::optional<Operand> o = varOperand(n.var.type, n.var.num, why);
+      if (!o) {
+        refuse(where + ": " + why);
+        return false;
+      }
+      if (o->kind == Operand::Kind::Bit) { // a bit read as a value: 0 or 1
+        move(konst(0), t);
+        emit(Op::Load, {*o});
+        emit(Op::Move, {konst(1), t});
+      } else {
+        move(*o, t);
+      }
+      return true;
+    }
+    case K::Not:
+      if (!value(*n.kids[0], k, where)) return false;
+      test(Op::CompareEq, t, konst(0));
+      move(konst(0), t);
+      emit(Op::Load, {flag()});
+      emit(Op::Move, {konst(1), t});
+      return true;
+    case K::Or:
+    case K::Xor:
+    case K::And:
+    case K::Add:
+    case K::Sub:
+    case K::Mul: {
+      if (!value(*n.kids[0], k, where) || !value(*n.kids[1], k + 1, where)) return false;
+      const Op op = n.kind == K::Or    ? Op::BitOr
+                    : n.kind == K::Xor ? Op::BitXor
+                    : n.kind == K::And ? Op::BitAnd
+                    : n.kind == K::Add ? Op::Add
+                    : n.kind == K::Sub ? Op::Subtract
+                                       : Op::Multiply;
+      emit(Op::LoadTrue, {});
+      emit(op, {t, u, t});
+      return true;
+    }
+    case K::Div:
+    case K::Mod:
+      // by zero: nothing done, the left operand stays (2.9); INT_MIN / -1 is INT_MIN (the IR's
+      // Divide) and INT_MIN % -1 = INT_MIN - INT_MIN * -1 = 0, as Expression.cpp evaluates
+      if (!value(*n.kids[0], k, where) || !value(*n.kids[1], k + 1, where)) return false;
+      test(Op::CompareEq, u, konst(0));
+      emit(Op::LoadNot, {flag()});
+      emit(Op::Divide, {t, u, n.kind == K::Div ? t : v});
+      if (n.kind == K::Mod) {
+        emit(Op::LoadNot, {flag()});
+        emit(Op::Multiply, {v, u, v});
+        emit(Op::LoadNot, {flag()});
+        emit(Op::Subtract, {t, v, t});
+      }
+      return true;
+    case K::Pow:
+      // pow_int squares a b times; modulo 2^32 the squares are fixed after 32 (Expression.cpp)
+      if (!value(*n.kids[0], k, where) || !value(*n.kids[1], k + 1, where)) return false;
+      for (int32_t i = 0; i < 40; ++i) {
+        test(Op::CompareLt, konst(i), u);
+        emit(Op::Load, {flag()});
+        emit(Op::Multiply, {t, t, t});
+      }
+      return true;
+    case K::Abs:
+      if (!value(*n.kids[0], k, where)) return false;
+      test(Op::CompareLt, t, konst(0));
+      emit(Op::Load, {flag()});
+      emit(Op::Subtract, {konst(0), t, t});
+      return true;
+    case K::Mini:
+    case K::Maxi:
+    case K::Avg: {
+      if (n.kids.empty()) {
+        move(konst(n.kind == K::Mini ? INT32_MAX : n.kind == K::Maxi ? INT32_MIN : 0), t);
+        return true;
+      }
+      if (!value(*n.kids[0], k, where)) return false;
+      for (size_t i = 1; i < n.kids.size(); ++i) {
+        if (!value(*n.kids[i], k + 1, where)) return false;
+        if (n.kind == K::Avg) {
+          emit(Op::LoadTrue, {});
+          emit(Op::Add, {t, u, t});
+          continue;
+        }
+        n.kind == K::Mini ? test(Op::CompareLt, u, t) : test(Op::CompareLt, t, u);
+        emit(Op::Load, {flag()});
+        emit(Op::Move, {u, t});
+      }
+      if (n.kind == K::Avg && n.kids.size() > 1) {
+        emit(Op::LoadTrue, {});
+        emit(Op::Divide, {t, konst(static_cast<int32_t>(n.kids.size())), t});
+      }
+      return true;
+    }
+    default:
+      refuse(where + ": the 0.9 function of '" + toString(n) +
+             "' is not supported by the classicladder front end (LinuxCNC has none)");
+      return false;
+    }
+  }
+
+  std::string cellWhere(const Rung &r, int x, int y) const {
+    return "rung " + std::to_string(r.index) + " row " + std::to_string(y) + " column " +
+           std::to_string(x);
+  }
+
+  /// Compare block (3x1, alive at its right cell): power = comparison && StateOnLeft(x - 2).
+  void compare(const Rung &r, int x, int y, const Cell &c) {
+    const ArithExpr *a = p_.expression(c.varNum);
+    const std::string where =
+        cellWhere(r, x, y) + ": compare block (expression " + std::to_string(c.varNum) + ")";
+    const Operand res = previous(x, y); // the block's comparison result
+    if (!a || a->expr.empty || !a->expr.isCompare) {
+      emit(Op::Load, {res}); // an empty slot or a text that is no comparison: false
+      emit(Op::AndNot, {res});
+      emit(Op::Coil, {power(x, y)});
+      return;
+    }
+    const Expression &e = a->expr;
+    if (!value(*e.left, 0, where) || !value(*e.right, 1, where)) return;
+    using C = Expression::CmpOp;
+    const Operand l = word(0), rr = word(1);
+    switch (e.cmp) {
+    case C::Gt:
+      test(Op::CompareLt, rr, l);
+      break;
+    case C::Lt:
+      test(Op::CompareLt, l, rr);
+      break;
+    case C::Ge:
+      test(Op::CompareLe, rr, l);
+      break;
+    case C::Le:
+      test(Op::CompareLe, l, rr);
+      break;
+    case C::Eq:
+    case C::Ne:
+      test(Op::CompareEq, l, rr);
+      break;
+    }
+    emit(e.cmp == C::Ne ? Op::LoadNot : Op::Load, {flag()});
+    emit(Op::Coil, {res});
+    loadLeft(r, x - 2, y);
+    emit(Op::And, {res});
+    emit(Op::Coil, {power(x, y)});
+  }
+
+  /// Operate block (3x1 in the output column): when StateOnLeft(x - 2), target := value.
+  void operate(const Rung &r, int x, int y, const Cell &c) {
+    const ArithExpr *a = p_.expression(c.varNum);
+    if (!a || a->expr.empty || !a->expr.isOperate) return; // does nothing (2.9)
+    const Expression &e = a->expr;
+    const std::string where =
+        cellWhere(r, x, y) + ": operate block (expression " + std::to_string(c.varNum) + ")";
+    if (e.target.indexType >= 0) {
+      refuse(where + ": indexed target " + varName(e.target.type, e.target.num) +
+             "[...] is not supported yet by the classicladder front end");
+      return;
+    }
+    std::string why;
+    std::optional<Operand> to = varOperand(e.target.type, e.target.num, why);
+    if (!to || to->area == Area::Input) {
+      refuse(where + ": " +
+             (to ? "writing the input " + varName(e.target.type, e.target.num) +
+                       " is not supported yet by the classicladder front end"
+                 : why));
+      return;
+    }
+    const Operand en = previous(x, y); // StateOnLeft, kept while the value is computed
+    loadLeft(r, x - 2, y);
+    emit(Op::Coil, {en});
+    if (!value(*e.value, 0, where)) return;
+    if (to->kind == Operand::Kind::Bit) { // a bit := value != 0
+      test(Op::CompareEq, word(0), konst(0));
+      emit(Op::Load, {en});
+      emit(Op::AndNot, {flag()});
+      emit(Op::Set, {*to});
+      emit(Op::Load, {en});
+      emit(Op::And, {flag()});
+      emit(Op::Reset, {*to});
+      return;
+    }
+    emit(Op::Load, {en});
+    emit(Op::Move, {word(0), *to});
   }
 
   /// The element of a refused cell as ClassicLadder's editor names it: `timer %T2`.
@@ -300,6 +573,12 @@ std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
   case 200:
     a = Area::DWord, count = kWords;
     break;
+  case 270:
+    a = Area::Word, count = kWordInputs;
+    break;
+  case 280:
+    a = Area::Retained, count = kWordOutputs;
+    break;
   default:
     why = "variable " + varName(type, num) + " is not supported yet by the classicladder front end";
     return std::nullopt;
@@ -310,7 +589,7 @@ std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
           " variables of the classicladder profile";
     return std::nullopt;
   }
-  if (a == Area::DWord) {
+  if (a == Area::DWord || a == Area::Word || a == Area::Retained) {
     Operand o;
     o.kind = Operand::Kind::Reg;
     o.area = a;

@@ -87,9 +87,12 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
     if (!engines.back()) return -1;
     EXPECT_EQ(engines.back()->init(), uint32_t{LJ_FAULT_NONE});
   }
+  // the HAL pins: in-NN and s32in-NN driven, out-NN and s32out-NN compared
   std::vector<formats::CliAddress> in, out;
   for (int i = 0; i < sz.inputs; ++i) in.push_back(address("%I" + std::to_string(i)));
+  for (int i = 0; i < sz.s32in; ++i) in.push_back(address("%IW" + std::to_string(i)));
   for (int i = 0; i < sz.outputs; ++i) out.push_back(address("%Q" + std::to_string(i)));
+  for (int i = 0; i < sz.s32out; ++i) out.push_back(address("%QW" + std::to_string(i)));
   std::mt19937_64 rng(seed);
   std::vector<int> hold(in.size(), 0);
   int64_t diffs = 0;
@@ -97,20 +100,29 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
     for (size_t i = 0; i < in.size(); ++i) {
       if (hold[i]-- > 0) continue;
       hold[i] = static_cast<int>(rng() % 40); // held 1..40 periods
-      const uint8_t v = rng() % 2;
-      ref.in[i] = v;
+      const bool word = i >= static_cast<size_t>(sz.inputs);
+      // words: mostly small (comparisons go both ways), sometimes any 32-bit value (wrapping)
+      const int32_t v = !word            ? static_cast<int32_t>(rng() % 2)
+                        : rng() % 4 == 0 ? static_cast<int32_t>(static_cast<uint32_t>(rng()))
+                                         : static_cast<int32_t>(rng() % 121) - 20;
+      if (word)
+        ref.s32in[i - static_cast<size_t>(sz.inputs)] = v;
+      else
+        ref.in[i] = static_cast<uint8_t>(v);
       for (auto &m : engines) formats::writeAddress(m->state(), in[i], v);
     }
     ref.refresh(1);
     for (auto &m : engines) EXPECT_EQ(m->tick(), uint32_t{LJ_FAULT_NONE});
     for (size_t j = 0; j < out.size(); ++j) {
+      const bool word = j >= static_cast<size_t>(sz.outputs);
+      const int64_t want = word ? ref.s32out[j - static_cast<size_t>(sz.outputs)] : ref.out[j];
       for (auto &m : engines) {
         const int64_t got = formats::readAddress(m->state(), out[j]);
-        if (got == ref.out[j]) continue;
+        if (got == want) continue;
         if (diffs++ == 0)
-          ADD_FAILURE() << name << " seed " << seed << " period " << period << " %Q" << j << ": "
-                        << m->engine().name() << " gives " << got << ", ClassicLadder's scan "
-                        << int(ref.out[j]);
+          ADD_FAILURE() << name << " seed " << seed << " period " << period << " " << out[j].text
+                        << ": " << m->engine().name() << " gives " << got
+                        << ", ClassicLadder's scan " << want;
       }
     }
   }
@@ -127,7 +139,8 @@ std::string slurp(const fs::path &p) {
 const char *kEmpty = "0-0-0/0";
 
 /// A one-rung project (the RefScanTest form): rows of 10 cells, missing cells empty.
-std::string oneRung(const std::vector<std::vector<std::string>> &rows) {
+std::string oneRung(const std::vector<std::vector<std::string>> &rows,
+                    const std::string &extra = "") {
   std::string s = "_FILES_CLASSICLADDER\n_FILE-sections.csv\n000,0,-1,0,0,0\n"
                   "_/FILE-sections.csv\n_FILE-rung_0.csv\n#VER=2.0\n#NEXTRUNG=-1\n";
   for (size_t y = 0; y < 6; ++y)
@@ -135,7 +148,7 @@ std::string oneRung(const std::vector<std::vector<std::string>> &rows) {
       const bool have = y < rows.size() && x < rows[y].size() && !rows[y][x].empty();
       s += (have ? rows[y][x] : std::string(kEmpty)) + (x < 9 ? " , " : "\n");
     }
-  return s + "_/FILE-rung_0.csv\n_/FILES_CLASSICLADDER\n";
+  return s + "_/FILE-rung_0.csv\n" + extra + "_/FILES_CLASSICLADDER\n";
 }
 
 std::vector<std::string> wire(const std::string &first, const std::string &coil) {
@@ -211,6 +224,47 @@ TEST_P(ClEngines, RisingEdgeRemembersItsVariableWithoutPower) {
   EXPECT_EQ(formats::readAddress(m->state(), address("%Q0")), 0);
 }
 
+TEST_P(ClEngines, OperateFollowsClassicLadder29Arithmetic) {
+  // reference 4.5 / arithm_eval.c: a division by zero keeps the left operand, a^b squares a
+  // b times (a^(2^b)), products wrap at 32 bits, MINI / ABS as written. Five operate blocks in
+  // column 9 of rows 0..4, powered from the rail by connections.
+  std::vector<std::vector<std::string>> rows;
+  for (int y = 0; y < 5; ++y) {
+    std::vector<std::string> row(10, "9-0-0/0");
+    row[7] = row[8] = "99-0-0/0";
+    row[9] = "60-0-0/" + std::to_string(y);
+    rows.push_back(row);
+  }
+  const std::string exprs = "_FILE-arithmetic_expressions.csv\n#VER=2.0\n"
+                            "0000,@280/0@:=@270/0@/@270/1@\n"
+                            "0001,@280/1@:=@270/0@^2\n"
+                            "0002,@280/2@:=@270/0@*@270/0@\n"
+                            "0003,@280/3@:=MINI(@270/0@,@270/2@)+ABS(@270/2@)\n"
+                            "0004,@280/4@:=@270/0@%@270/1@\n"
+                            "_/FILE-arithmetic_expressions.csv\n";
+  std::string err;
+  std::optional<VerifiedProgram> p = compile(oneRung(rows, exprs), "t.clp", err);
+  ASSERT_TRUE(p) << err;
+  auto m = test::Machine::create(*p, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  formats::writeAddress(m->state(), address("%IW0"), 70000);
+  formats::writeAddress(m->state(), address("%IW1"), 0);
+  formats::writeAddress(m->state(), address("%IW2"), -7);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW0")), 70000); // 70000 / 0: left kept
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW1")),         // 70000^4 mod 2^32
+            static_cast<int32_t>(70000u * 70000u * 70000u * 70000u));
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW2")),
+            static_cast<int32_t>(70000u * 70000u));
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW3")), -7 + 7); // MINI(70000, -7) + ABS(-7)
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW4")), 70000);  // % 0: left kept
+  formats::writeAddress(m->state(), address("%IW1"), 300);
+  m->tick();
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW0")), 233);
+  EXPECT_EQ(formats::readAddress(m->state(), address("%QW4")), 100);
+}
+
 INSTANTIATE_TEST_SUITE_P(Engines, ClEngines, ::testing::ValuesIn(test::registeredEngines()),
                          [](const ::testing::TestParamInfo<test::EngineFactory> &info) {
                            return info.param.name;
@@ -236,11 +290,13 @@ TEST(ClAgree, RefusedElementsAreLocated) {
 }
 
 TEST(ClAgree, GeneratedProjects) {
-  // gen/ClpGenerator restricted to the mapped elements: 60 projects x 1,500 periods.
+  // gen/ClpGenerator restricted to the mapped elements: 60 projects x 1,500 periods, one in
+  // three logic only, the others with compare and operate blocks.
   int64_t total = 0;
   for (uint64_t seed = 1; seed <= 60; ++seed) {
     const std::string text =
-        gen::generateClp(seed, 4 + static_cast<int32_t>(seed % 12), {}, gen::ClpElements::Logic);
+        gen::generateClp(seed, 4 + static_cast<int32_t>(seed % 12), {},
+                         seed % 3 ? gen::ClpElements::Expressions : gen::ClpElements::Logic);
     total += agree(text, "gen" + std::to_string(seed) + ".clp", seed, 1500);
   }
   EXPECT_EQ(total, 0);
