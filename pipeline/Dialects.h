@@ -47,7 +47,7 @@ const Dialect *dialectNamed(std::string_view name);
 const Dialect &defaultDialect();
 
 /// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'NAME' is not
-/// available in this build (known: hnc8, fanuc, iec)" for a dialect ladderjit plans but this
+/// available in this build (known: hnc8, fanuc, iec, classicladder)" for a dialect ladderjit plans but this
 /// build lacks (none today: kPlanned is empty), "unknown dialect 'x' (known: ...)" otherwise.
 const Dialect *dialectForOption(std::string_view name, std::string &error);
 
