@@ -496,7 +496,7 @@ private:
     }
     std::string why;
     std::optional<Operand> to = varOperand(e.target.type, e.target.num, why);
-    if (!to || to->area == Area::Input) {
+    if (!to || to->area == Area::Input || to->area == Area::Word) { // %I, %IW: HAL copies them in
       refuse(where + ": " +
              (to ? "writing the input " + varName(e.target.type, e.target.num) +
                        " is not supported yet by the classicladder front end"
