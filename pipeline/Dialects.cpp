@@ -181,7 +181,7 @@ struct Planned {
   const char *name;
   const char *extension;
 };
-// None at present: hnc8, fanuc and iec are all built.
+// None at present: hnc8, fanuc, iec and classicladder are all built.
 constexpr std::array<Planned, 0> kPlanned{};
 
 std::string quoted(std::string_view s) {
