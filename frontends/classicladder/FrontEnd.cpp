@@ -58,6 +58,16 @@ const char *spell(Op op) {
     return "LE";
   case Op::CompareEq:
     return "EQ";
+  case Op::Jump:
+    return "JUMP";
+  case Op::Label:
+    return "RUNG";
+  case Op::Call:
+    return "CALL";
+  case Op::SubBegin:
+    return "SR";
+  case Op::SubEnd:
+    return "END_SR";
   case Op::EndInit:
     return "END_INIT";
   case Op::EndCyclic:
@@ -86,6 +96,10 @@ std::string formatOperand(const Operand &o) {
     return "%IW" + std::to_string(n);
   case Area::Retained:
     return "%QW" + std::to_string(n);
+  case Area::Label:
+    return "L" + std::to_string(o.index);
+  case Area::Subroutine:
+    return "SR" + std::to_string(o.index);
   case Area::ExtraRelay:
     return "cell" + std::to_string(n); // a rung cell's state, never written by a user
   default:
@@ -106,6 +120,9 @@ Operand bitOperand(Area a, int32_t n) {
 
 /// ExtraRelay bits at the end of the cell bytes kept for the expression code (flag()).
 constexpr int32_t kScratchBits = 8;
+/// Labels (one per rung placed in a section) and sub-routines the profile holds
+/// (profiles/classicladder/Areas.cpp).
+constexpr int32_t kLabels = 4096, kSubroutines = 64;
 
 class RungMapper {
 public:
@@ -125,11 +142,25 @@ public:
                "front end");
         continue;
       }
-      if (s->subRoutine >= 0) continue; // runs only when a CALL coil calls it (refused below)
-      for (int32_t r : s->order) rung(r);
+      if (s->subRoutine >= 0) continue; // runs only when a CALL coil calls it (below)
+      section(*s);
     }
     emit(Op::EndCyclic, {});
     emit(Op::EndSliced, {});
+    // sub-routine sections: a CALL coil runs the first section with its number (calc.c)
+    std::map<int32_t, const Section *> subs;
+    for (const Section &s : p_.sections)
+      if (s.subRoutine >= 0 && !subs.count(s.subRoutine)) subs[s.subRoutine] = &s;
+    for (const auto &[n, s] : subs) {
+      if (s->language != Language::Ladder || n >= kSubroutines) continue; // calls do nothing
+      Operand sr;
+      sr.kind = Operand::Kind::Reg;
+      sr.area = Area::Subroutine;
+      sr.index = n;
+      emit(Op::SubBegin, {sr});
+      section(*s);
+      emit(Op::SubEnd, {});
+    }
   }
 
 private:
@@ -201,6 +232,73 @@ private:
     return o;
   }
 
+  /// A ladder section's rungs in #NEXTRUNG order, each with a label a jump can reach.
+  void section(const Section &s) {
+    section_ = &s;
+    labels_.clear();
+    for (int32_t r : s.order) labels_[r] = nextLabel_++;
+    for (size_t i = 0; i < s.order.size(); ++i) {
+      position_ = static_cast<int32_t>(i);
+      if (labels_.at(s.order[i]) < kLabels) emit(Op::Label, {label(labels_.at(s.order[i]))});
+      rung(s.order[i]);
+    }
+    section_ = nullptr;
+  }
+  static Operand label(int32_t n) {
+    Operand o;
+    o.kind = Operand::Kind::Reg;
+    o.area = Area::Label;
+    o.index = n;
+    return o;
+  }
+
+  /// Jump coil: when powered, the rest of the rung is skipped and the section goes on at the
+  /// target rung along its chain (calc.c). A target later in this section's chain is a forward
+  /// IR jump; a target outside the chain or not after this rung (a loop) is refused.
+  void jump(const Rung &r, int x, int y, const Cell &c) {
+    const auto at = std::find(section_->order.begin(), section_->order.end(), c.varNum);
+    const int32_t pos = static_cast<int32_t>(at - section_->order.begin());
+    if (at == section_->order.end() || pos <= position_) {
+      refuseCell(r.index, x, y,
+                 "jump coil to rung " + std::to_string(c.varNum) +
+                     (at == section_->order.end()
+                          ? ", which is not on this section's chain, is not supported yet"
+                          : " (back: a loop) is not supported yet") +
+                     " by the classicladder front end");
+      return;
+    }
+    const int32_t l = labels_.at(c.varNum);
+    if (l >= kLabels) {
+      refuseCell(r.index, x, y, "the project has more rungs than the profile's labels");
+      return;
+    }
+    loadLeft(r, x, y);
+    emit(Op::Jump, {label(l)});
+  }
+
+  /// Call coil: when powered, the sub-routine section runs now, mid-rung (calc.c).
+  void call(const Rung &r, int x, int y, const Cell &c) {
+    const Section *target = nullptr;
+    for (const Section &s : p_.sections)
+      if (s.subRoutine == c.varNum) {
+        target = &s;
+        break;
+      }
+    if (!target || target->language != Language::Ladder) return; // calc.c: nothing happens
+    if (c.varNum < 0 || c.varNum >= kSubroutines) {
+      refuseCell(r.index, x, y,
+                 "call coil SR" + std::to_string(c.varNum) + " is beyond the profile's SR0..SR" +
+                     std::to_string(kSubroutines - 1));
+      return;
+    }
+    Operand sr;
+    sr.kind = Operand::Kind::Reg;
+    sr.area = Area::Subroutine;
+    sr.index = c.varNum;
+    loadLeft(r, x, y);
+    emit(Op::Call, {sr});
+  }
+
   void rung(int32_t index) {
     auto it = p_.rungs.find(index);
     if (it == p_.rungs.end()) return; // the reader checked the chains
@@ -269,6 +367,12 @@ private:
     }
     case 20:
       compare(r, x, y, c);
+      return;
+    case 54:
+      jump(r, x, y, c);
+      return;
+    case 55:
+      call(r, x, y, c);
       return;
     case 60:
       operate(r, x, y, c);
@@ -549,7 +653,11 @@ private:
   const Project &p_;
   ParsedProgram &out_;
   Diagnostics &diags_;
-  std::map<int32_t, int32_t> slots_; ///< rung index -> first state bit
+  std::map<int32_t, int32_t> slots_;  ///< rung index -> first state bit
+  const Section *section_ = nullptr;  ///< the section being mapped
+  std::map<int32_t, int32_t> labels_; ///< its rungs -> their labels
+  int32_t position_ = 0;              ///< the rung being mapped, in the section's order
+  int32_t nextLabel_ = 0;
   int32_t next_ = 0, base_ = 0, rung_ = 0;
   int w_ = 0, h_ = 0;
   bool tooBig_ = false;

@@ -45,17 +45,17 @@ constexpr TargetProfile kClassicLadder{
         none(),                                                           // Param
         none(),                                                           // Timer
         none(),                                                           // Counter
-        {"%L", 0, 0, false, false, false, 0},                             // Label
-        {"SR", 0, 0, false, false, false, 0},                             // Subroutine
-        none(),                                                           // KeepRelay
-        bits("%~", kCellBytes, true, kCellOff),                           // ExtraRelay: cell states
-        none(),                                                           // MessageBits
-        none(),                                                           // TimerData
-        none(),                                                           // CounterData
-        none(),                                                           // DataTable
-        none(),                                                           // SystemBits
-        none(),                                                           // SystemWords
-        none(),                                                           // ConstWords
+        {"%L", 4096, 0, false, false, false, 0}, // Label: one per rung placed
+        {"SR", 64, 0, false, false, false, 0},   // Subroutine: SR0..SR63
+        none(),                                  // KeepRelay
+        bits("%~", kCellBytes, true, kCellOff),  // ExtraRelay: cell states
+        none(),                                  // MessageBits
+        none(),                                  // TimerData
+        none(),                                  // CounterData
+        none(),                                  // DataTable
+        none(),                                  // SystemBits
+        none(),                                  // SystemWords
+        none(),                                  // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
     {{{0, -1}, {0, -1}}},

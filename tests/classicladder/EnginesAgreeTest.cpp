@@ -265,6 +265,61 @@ TEST_P(ClEngines, OperateFollowsClassicLadder29Arithmetic) {
   EXPECT_EQ(formats::readAddress(m->state(), address("%QW4")), 100);
 }
 
+/// A rung file: rows of 10 cells (missing cells empty) and its #NEXTRUNG.
+std::string rungFile(int n, int next, const std::vector<std::vector<std::string>> &rows) {
+  std::string s = "_FILE-rung_" + std::to_string(n) +
+                  ".csv\n#VER=2.0\n#NEXTRUNG=" + std::to_string(next) + "\n";
+  for (size_t y = 0; y < 6; ++y)
+    for (size_t x = 0; x < 10; ++x) {
+      const bool have = y < rows.size() && x < rows[y].size() && !rows[y][x].empty();
+      s += (have ? rows[y][x] : std::string(kEmpty)) + (x < 9 ? " , " : "\n");
+    }
+  return s + "_/FILE-rung_" + std::to_string(n) + ".csv\n";
+}
+
+/// Main section: rungs 0 -> 1 -> 2 (rung 0 jumps to 2 on %I0, rung 2 calls SR0 on %I1);
+/// SR0: rung 3.
+std::string jumpCallProject() {
+  return "_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n000,0,-1,0,2,0\n001,0,0,3,3,0\n"
+         "_/FILE-sections.csv\n" +
+         rungFile(0, 1, {wire("1-0-50/0", "54-0-0/2"), wire("1-0-50/3", "50-0-60/0")}) +
+         rungFile(1, 2, {wire("1-0-50/3", "50-0-60/1")}) +
+         rungFile(2, -1, {wire("9-0-0/0", "50-0-60/2"), wire("1-0-50/1", "55-0-0/0")}) +
+         rungFile(3, -1, {wire("1-0-50/2", "50-0-60/3")}) + "_/FILES_CLASSICLADDER\n";
+}
+
+TEST_P(ClEngines, JumpSkipsTheRestOfItsRungAndCallRunsTheSubRoutine) {
+  // calc.c (reference 2.4): a powered jump coil ends its rung at once (cells after it, column
+  // by column, keep their values) and the section goes on at the target; a powered call coil
+  // runs the sub-routine section now. Main section: rungs 0 -> 1 -> 2; SR0: rung 3.
+  const std::string p = jumpCallProject();
+  std::string err;
+  std::optional<VerifiedProgram> prog = compile(p, "t.clp", err);
+  ASSERT_TRUE(prog) << err;
+  auto m = test::Machine::create(*prog, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  auto set = [&](const char *a, int v) { formats::writeAddress(m->state(), address(a), v); };
+  auto get = [&](const char *a) { return formats::readAddress(m->state(), address(a)); };
+  set("%I3", 1);
+  m->tick();
+  EXPECT_EQ(get("%Q0"), 1);
+  EXPECT_EQ(get("%Q1"), 1);
+  EXPECT_EQ(get("%Q2"), 1);
+  EXPECT_EQ(get("%Q3"), 0); // not called
+  set("%I0", 1), set("%I3", 0), set("%I1", 1), set("%I2", 1);
+  m->tick();
+  EXPECT_EQ(get("%Q0"), 1); // row 1 of rung 0 comes after the jump in column 9: skipped
+  EXPECT_EQ(get("%Q1"), 1); // rung 1 skipped
+  EXPECT_EQ(get("%Q2"), 1);
+  EXPECT_EQ(get("%Q3"), 1); // SR0 ran
+  set("%I0", 0), set("%I1", 0), set("%I2", 0);
+  m->tick();
+  EXPECT_EQ(get("%Q0"), 0);
+  EXPECT_EQ(get("%Q1"), 0);
+  EXPECT_EQ(get("%Q3"), 1); // SR0 not called: its coil keeps its value
+}
+
 INSTANTIATE_TEST_SUITE_P(Engines, ClEngines, ::testing::ValuesIn(test::registeredEngines()),
                          [](const ::testing::TestParamInfo<test::EngineFactory> &info) {
                            return info.param.name;
@@ -285,8 +340,17 @@ TEST(ClAgree, RefusedElementsAreLocated) {
   EXPECT_FALSE(compile(oneRung({wire("1-0-50/600", "50-0-60/0")}), "t.clp", err));
   EXPECT_NE(err.find("rung 0 row 0 column 0: variable %I600 is beyond the 512"), std::string::npos)
       << err;
+  EXPECT_FALSE(compile(oneRung({wire("1-0-50/0", "54-0-0/0")}), "t.clp", err));
+  EXPECT_NE(err.find("rung 0 row 0 column 9: jump coil to rung 0 (back: a loop) is not "
+                     "supported yet"),
+            std::string::npos)
+      << err;
   EXPECT_FALSE(compile("_FILES_CLASSICLADDER\nrubbish\n", "bad.clp", err));
   EXPECT_NE(err.find("bad.clp:"), std::string::npos) << err;
+}
+
+TEST(ClAgree, JumpAndCallAgainstTheReferenceScan) {
+  EXPECT_EQ(agree(jumpCallProject(), "jumpcall.clp", 3, 5000), 0);
 }
 
 TEST(ClAgree, GeneratedProjects) {
