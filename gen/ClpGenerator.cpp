@@ -246,7 +246,7 @@ private:
   }
 
   std::string var() {
-    switch (logicOnly_ ? rng_.weighted(std::array<int, 9>{5, 5, 2, 0, 0, 0, 0, 1, 2})
+    switch (logicOnly_ ? rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 0, 0, 0, 1, 2})
                        : rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 1, 1, 1, 1, 2})) {
     case 0:
       return "@200/" + std::to_string(idx(sz_.words)) + "@";
@@ -333,8 +333,7 @@ private:
       if (compare)
         t = expr(1) + ops[rng_.below(6)] + expr(1);
       else {
-        int k = logicOnly_ ? rng_.weighted(std::array<int, 3>{3, 4, 0})
-                           : rng_.weighted(std::array<int, 3>{3, 4, 1});
+        int k = rng_.weighted(std::array<int, 3>{3, 4, 1});
         std::string target = k == 0   ? "@200/" + std::to_string(idx(sz_.words)) + "@"
                              : k == 1 ? "@280/" + std::to_string(idx(sz_.s32out)) + "@"
                                       : "@310/" + std::to_string(idx(sz_.floatOut)) + "@";

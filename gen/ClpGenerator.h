@@ -22,7 +22,8 @@ struct ClpGenSizes {
 /// Which elements a generated project uses: all of the above, or only what ladderjit's
 /// classicladder front end maps today (docs/classicladder.md): Logic = contacts
 /// NO/NC/rising/falling on %I %Q %B, coils, negated, set and reset coils, connections and
-/// vertical links; Expressions = Logic plus compare and operate blocks on %W %IW %QW %I %B.
+/// vertical links; Expressions = Logic plus compare and operate blocks on %W %IW %QW %IF %QF
+/// %I %B.
 enum class ClpElements : uint8_t { All, Logic, Expressions };
 
 /// A random project for `seed` with about `rungs` rungs (at least 1), as `.clp` text.

@@ -90,12 +90,18 @@ std::string formatOperand(const Operand &o) {
     return "%Q" + std::to_string(n);
   case Area::Relay:
     return "%B" + std::to_string(n);
+  case Area::KeepRelay:
+    return "%S" + std::to_string(n);
   case Area::DWord:
     return (n < kWords ? "%W" : "tmp") + std::to_string(n);
   case Area::Word:
     return "%IW" + std::to_string(n);
   case Area::Retained:
     return "%QW" + std::to_string(n);
+  case Area::Param:
+    return "%IF" + std::to_string(n);
+  case Area::NcControl:
+    return "%QF" + std::to_string(n);
   case Area::Label:
     return "L" + std::to_string(o.index);
   case Area::Subroutine:
@@ -217,7 +223,8 @@ private:
 
   std::optional<Operand> boolVar(int32_t rung, int x, int y, const Cell &c, bool write) {
     const Ele e = static_cast<Ele>(c.type);
-    const bool ok = c.varType == 0 || c.varType == 60 || (!write && c.varType == 50);
+    const bool ok =
+        c.varType == 0 || c.varType == 60 || c.varType == 70 || (!write && c.varType == 50);
     if (!ok) {
       refuseCell(rung, x, y,
                  std::string(elementName(c.type)) + " on " + varName(c.varType, c.varNum) +
@@ -600,7 +607,8 @@ private:
     }
     std::string why;
     std::optional<Operand> to = varOperand(e.target.type, e.target.num, why);
-    if (!to || to->area == Area::Input || to->area == Area::Word) { // %I, %IW: HAL copies them in
+    if (!to || to->area == Area::Input || to->area == Area::Word ||
+        to->area == Area::Param) { // %I, %IW: HAL copies them in
       refuse(where + ": " +
              (to ? "writing the input " + varName(e.target.type, e.target.num) +
                        " is not supported yet by the classicladder front end"
@@ -678,6 +686,9 @@ std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
   case 0:
     a = Area::Relay, count = kBits;
     break;
+  case 70:
+    a = Area::KeepRelay, count = kSystemBits;
+    break;
   case 200:
     a = Area::DWord, count = kWords;
     break;
@@ -686,6 +697,12 @@ std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
     break;
   case 280:
     a = Area::Retained, count = kWordOutputs;
+    break;
+  case 300:
+    a = Area::Param, count = kFloatInputs;
+    break;
+  case 310:
+    a = Area::NcControl, count = kFloatOutputs;
     break;
   default:
     why = "variable " + varName(type, num) + " is not supported yet by the classicladder front end";
@@ -697,7 +714,8 @@ std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
           " variables of the classicladder profile";
     return std::nullopt;
   }
-  if (a == Area::DWord || a == Area::Word || a == Area::Retained) {
+  if (a == Area::DWord || a == Area::Word || a == Area::Retained || a == Area::Param ||
+      a == Area::NcControl) {
     Operand o;
     o.kind = Operand::Kind::Reg;
     o.area = a;

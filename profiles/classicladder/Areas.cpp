@@ -13,13 +13,17 @@ namespace {
 
 using namespace classicladder;
 
-constexpr uint32_t kInOff = 0;                                        // %I
-constexpr uint32_t kOutOff = kInOff + kInputs / 8;                    // %Q
-constexpr uint32_t kBitOff = kOutOff + kOutputs / 8;                  // %B
-constexpr uint32_t kWordOff = (kBitOff + kBits / 8 + 3) / 4 * 4;      // %W, then the scratch words
+constexpr uint32_t kInOff = 0;                       // %I
+constexpr uint32_t kOutOff = kInOff + kInputs / 8;   // %Q
+constexpr uint32_t kBitOff = kOutOff + kOutputs / 8; // %B
+constexpr uint32_t kSysOff = kBitOff + kBits / 8;    // %S
+constexpr uint32_t kWordOff =
+    (kSysOff + (kSystemBits + 7) / 8 + 3) / 4 * 4;                    // %W, then the scratch words
 constexpr uint32_t kWordInOff = kWordOff + 4 * (kWords + kTempWords); // %IW
 constexpr uint32_t kWordOutOff = kWordInOff + 4 * kWordInputs;        // %QW
-constexpr uint32_t kCellOff = kWordOutOff + 4 * kWordOutputs;         // cell states
+constexpr uint32_t kFloatInOff = kWordOutOff + 4 * kWordOutputs;      // %IF
+constexpr uint32_t kFloatOutOff = kFloatInOff + 4 * kFloatInputs;     // %QF
+constexpr uint32_t kCellOff = kFloatOutOff + 4 * kFloatOutputs;       // cell states
 constexpr uint32_t kEnd = kCellOff + kCellBytes;
 
 constexpr uint32_t mem(uint32_t off) {
@@ -34,28 +38,30 @@ constexpr AreaInfo none() { return {"", 0, 0, false, false}; }
 constexpr TargetProfile kClassicLadder{
     "classicladder",
     {{
-        bits("%I", kInputs / 8, false, kInOff),                           // Input: HAL in-NN
-        bits("%Q", kOutputs / 8, true, kOutOff),                          // Output: HAL out-NN
-        none(),                                                           // NcStatus
-        none(),                                                           // NcControl
-        bits("%B", kBits / 8, true, kBitOff),                             // Relay
-        {"%IW", kWordInputs, 4, true, true, false, mem(kWordInOff)},      // Word: %IW (s32in)
+        bits("%I", kInputs / 8, false, kInOff),  // Input: HAL in-NN
+        bits("%Q", kOutputs / 8, true, kOutOff), // Output: HAL out-NN
+        none(),                                  // NcStatus
+        {"%QF", kFloatOutputs, 4, true, true, false,
+         mem(kFloatOutOff)},                                         // NcControl: %QF (floatout)
+        bits("%B", kBits / 8, true, kBitOff),                        // Relay
+        {"%IW", kWordInputs, 4, true, true, false, mem(kWordInOff)}, // Word: %IW (s32in)
         {"%W", kWords + kTempWords, 4, true, true, false, mem(kWordOff)}, // DWord: %W, scratch
         {"%QW", kWordOutputs, 4, true, true, false, mem(kWordOutOff)},    // Retained: %QW (s32out)
-        none(),                                                           // Param
-        none(),                                                           // Timer
-        none(),                                                           // Counter
-        {"%L", 4096, 0, false, false, false, 0}, // Label: one per rung placed
-        {"SR", 64, 0, false, false, false, 0},   // Subroutine: SR0..SR63
-        none(),                                  // KeepRelay
-        bits("%~", kCellBytes, true, kCellOff),  // ExtraRelay: cell states
-        none(),                                  // MessageBits
-        none(),                                  // TimerData
-        none(),                                  // CounterData
-        none(),                                  // DataTable
-        none(),                                  // SystemBits
-        none(),                                  // SystemWords
-        none(),                                  // ConstWords
+        {"%IF", kFloatInputs, 4, true, false, false,
+         mem(kFloatInOff)},                               // Param: %IF (floatin, read-only)
+        none(),                                           // Timer
+        none(),                                           // Counter
+        {"%L", 4096, 0, false, false, false, 0},          // Label: one per rung placed
+        {"SR", 64, 0, false, false, false, 0},            // Subroutine: SR0..SR63
+        bits("%S", (kSystemBits + 7) / 8, true, kSysOff), // KeepRelay: %S (never retained)
+        bits("%~", kCellBytes, true, kCellOff),           // ExtraRelay: cell states
+        none(),                                           // MessageBits
+        none(),                                           // TimerData
+        none(),                                           // CounterData
+        none(),                                           // DataTable
+        none(),                                           // SystemBits
+        none(),                                           // SystemWords
+        none(),                                           // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
     {{{0, -1}, {0, -1}}},

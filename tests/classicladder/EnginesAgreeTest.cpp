@@ -91,8 +91,13 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
   std::vector<formats::CliAddress> in, out;
   for (int i = 0; i < sz.inputs; ++i) in.push_back(address("%I" + std::to_string(i)));
   for (int i = 0; i < sz.s32in; ++i) in.push_back(address("%IW" + std::to_string(i)));
+  for (int i = 0; i < sz.floatIn; ++i) in.push_back(address("%IF" + std::to_string(i)));
   for (int i = 0; i < sz.outputs; ++i) out.push_back(address("%Q" + std::to_string(i)));
   for (int i = 0; i < sz.s32out; ++i) out.push_back(address("%QW" + std::to_string(i)));
+  for (int i = 0; i < sz.floatOut; ++i) out.push_back(address("%QF" + std::to_string(i)));
+  const size_t s32in = static_cast<size_t>(sz.inputs), fin = s32in + static_cast<size_t>(sz.s32in);
+  const size_t s32out = static_cast<size_t>(sz.outputs),
+               fout = s32out + static_cast<size_t>(sz.s32out);
   std::mt19937_64 rng(seed);
   std::vector<int> hold(in.size(), 0);
   int64_t diffs = 0;
@@ -105,8 +110,11 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
       const int32_t v = !word            ? static_cast<int32_t>(rng() % 2)
                         : rng() % 4 == 0 ? static_cast<int32_t>(static_cast<uint32_t>(rng()))
                                          : static_cast<int32_t>(rng() % 121) - 20;
-      if (word)
-        ref.s32in[i - static_cast<size_t>(sz.inputs)] = v;
+      // floatin-NN: whole numbers, which 2.9 reads as they are (the host writes the int)
+      if (i >= fin)
+        ref.floatIn[i - fin] = v;
+      else if (word)
+        ref.s32in[i - s32in] = v;
       else
         ref.in[i] = static_cast<uint8_t>(v);
       for (auto &m : engines) formats::writeAddress(m->state(), in[i], v);
@@ -115,7 +123,9 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
     for (auto &m : engines) EXPECT_EQ(m->tick(), uint32_t{LJ_FAULT_NONE});
     for (size_t j = 0; j < out.size(); ++j) {
       const bool word = j >= static_cast<size_t>(sz.outputs);
-      const int64_t want = word ? ref.s32out[j - static_cast<size_t>(sz.outputs)] : ref.out[j];
+      const int64_t want = j >= fout ? static_cast<int64_t>(ref.floatOut[j - fout])
+                           : word    ? ref.s32out[j - s32out]
+                                     : ref.out[j];
       for (auto &m : engines) {
         const int64_t got = formats::readAddress(m->state(), out[j]);
         if (got == want) continue;
