@@ -173,9 +173,16 @@ private:
   void refuse(const std::string &msg) {
     if (diags_.errorCount() < 50) diags_.error({}, msg);
   }
+  /// A refused cell, located at its row's line of the project file where the reader knows it.
   void refuseCell(int32_t rung, int x, int y, const std::string &what) {
-    refuse("rung " + std::to_string(rung) + " row " + std::to_string(y) + " column " +
-           std::to_string(x) + ": " + what);
+    SourceLoc loc{};
+    auto it = p_.rungs.find(rung);
+    if (it != p_.rungs.end() && y >= 0 && static_cast<size_t>(y) < it->second.rowLines.size() &&
+        it->second.rowLines[static_cast<size_t>(y)] > 0)
+      loc = {it->second.rowLines[static_cast<size_t>(y)], 1};
+    if (diags_.errorCount() < 50)
+      diags_.error(loc, "rung " + std::to_string(rung) + " row " + std::to_string(y) + " column " +
+                            std::to_string(x) + ": " + what);
   }
 
   void emit(Op op, std::initializer_list<Operand> ops) {
