@@ -23,7 +23,9 @@ using Grid = std::array<std::array<Cell, kH>, kW>; // [x][y]
 
 class ClpGen {
 public:
-  ClpGen(uint64_t seed, const ClpGenSizes &s) : rng_(seed), sz_(s) {}
+  ClpGen(uint64_t seed, const ClpGenSizes &s, ClpElements e)
+      : rng_(seed), sz_(s), logicOnly_(e != ClpElements::All),
+        expressions_(e != ClpElements::Logic) {}
 
   std::string project(int32_t rungs) {
     rungs = std::max(rungs, 1);
@@ -79,7 +81,8 @@ private:
 
   /// A boolean operand for a contact: mostly I/Q/B, sometimes a block output.
   void boolVar(Cell &c) {
-    switch (rng_.weighted(std::array<int, 8>{14, 3, 3, 1, 1, 1, 1, 1})) {
+    switch (logicOnly_ ? rng_.weighted(std::array<int, 3>{14, 3, 3})
+                       : rng_.weighted(std::array<int, 8>{14, 3, 3, 1, 1, 1, 1, 1})) {
     case 0:
       c.vt = 50, c.vn = idx(sz_.inputs);
       break;
@@ -210,7 +213,9 @@ private:
 
   std::string rungFile(int n, int prev, int next) {
     Grid g{};
-    switch (rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})) {
+    switch (!logicOnly_     ? rng_.weighted(std::array<int, 5>{5, 3, 1, 2, 2})
+            : !expressions_ ? 0
+                            : rng_.weighted(std::array<int, 5>{5, 0, 0, 2, 2})) {
     case 0:
       logicRung(g);
       break;
@@ -241,7 +246,8 @@ private:
   }
 
   std::string var() {
-    switch (rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 1, 1, 1, 1, 2})) {
+    switch (logicOnly_ ? rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 0, 0, 0, 1, 2})
+                       : rng_.weighted(std::array<int, 9>{5, 5, 2, 2, 1, 1, 1, 1, 2})) {
     case 0:
       return "@200/" + std::to_string(idx(sz_.words)) + "@";
     case 1:
@@ -394,12 +400,15 @@ private:
   ClpGenSizes sz_;
   std::vector<std::string> exprs_;
   int rungs_ = 1;
+  bool logicOnly_ = false;  ///< contacts and coils on %I %Q %B only
+  bool expressions_ = true; ///< compare and operate rungs
 };
 
 } // namespace
 
-std::string generateClp(uint64_t seed, int32_t rungs, const ClpGenSizes &sizes) {
-  return ClpGen(seed, sizes).project(rungs);
+std::string generateClp(uint64_t seed, int32_t rungs, const ClpGenSizes &sizes,
+                        ClpElements elements) {
+  return ClpGen(seed, sizes, elements).project(rungs);
 }
 
 } // namespace lj::gen

@@ -653,8 +653,9 @@ bool gridProgramText(const std::vector<GridPart> &parts, const DialectText &d,
         const StackRule rule = instrInfo(stmts[k].op).stack;
         if (rule == StackRule::MpsPush || rule == StackRule::MsRead || rule == StackRule::MsPop)
           err = std::string("this branch starts with contacts behind a fan-out that is not the "
-                            "last, which needs a branch stack (MPS/MRD/MPP); the ") +
-                d.name + " dialect has no text for it (" + err +
+                            "last, which needs a branch stack (") +
+                kFanWords[0] + "/" + kFanWords[1] + "/" + kFanWords[2] + "); the " + d.name +
+                " dialect has no text for it (" + err +
                 "): move the branch last or give it a rung of its own";
         size_t at = k;
         while (at < stmts.size() && stmts[at].id < 0) ++at;

@@ -1,6 +1,7 @@
 // Parse + verify for every dialect (pipeline/Compile.h).
 #include "pipeline/Compile.h"
 
+#include "frontends/classicladder/FrontEnd.h"
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
@@ -50,6 +51,16 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
     return std::nullopt;
   }
   return verifyParsed(iec::parseIl(text, std::move(file), diags), opts, diags);
+}
+
+std::optional<VerifiedProgram> compileClp(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols) {
+  if (symbols && !symbols->empty()) {
+    diags.error({}, "a ClassicLadder project takes no symbol table (its symbols.csv is its own)");
+    return std::nullopt;
+  }
+  return verifyParsed(classicladder::parseClp(text, std::move(file), diags), opts, diags);
 }
 
 std::optional<VerifiedProgram> compile(const pipeline::Dialect &dialect, std::string_view text,

@@ -35,6 +35,13 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
                                          const VerifyOptions &opts, Diagnostics &diags,
                                          const SymbolTable *symbols = nullptr);
 
+/// A ClassicLadder `.clp` project (docs/classicladder.md): classicladder::parseClp + verify;
+/// nothing on any error, and no verify after a read error or a refused element. A project takes
+/// no symbol table from outside (its symbols.csv is its own): a non-empty `symbols` is an error.
+std::optional<VerifiedProgram> compileClp(std::string_view text, std::string file,
+                                          const VerifyOptions &opts, Diagnostics &diags,
+                                          const SymbolTable *symbols = nullptr);
+
 /// Parse + verify in `dialect` (its Dialect::compile).
 std::optional<VerifiedProgram> compile(const pipeline::Dialect &dialect, std::string_view text,
                                        std::string file, const VerifyOptions &opts,

@@ -2,12 +2,14 @@
 // and moves its name from kPlanned.
 #include "pipeline/Dialects.h"
 
+#include "frontends/classicladder/FrontEnd.h"
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
 #include "frontends/iec/Objects.h"
 #include "pipeline/Compile.h"
 #include "profiles/Profiles.h"
+#include "profiles/classicladder/ClassicLadderProfile.h"
 #include "profiles/iec/IecProfile.h"
 
 #include <nlohmann/json.hpp>
@@ -125,7 +127,64 @@ const Dialect kIec{"iec",           kIecExtensions,  profileNamed("iec"), parseI
                    compileIec,      parseIecAddress, parseIecAssignment,  formatIecAddress,
                    iec::dialectText};
 
-const Dialect *const kDialects[] = {&kHnc8, &kFanuc, &kIec};
+std::string quoted(std::string_view s);
+
+// ClassicLadder (docs/classicladder.md): `.clp` projects; addresses are ClassicLadder's
+// variable names (`%I3`, `%Q0`, `%B7`, `%W2`) on the classicladder profile.
+ParsedProgram parseClassicLadder(std::string_view text, std::string file, Diagnostics &diags,
+                                 const SymbolTable *) { // compileClp refuses a symbol table
+  return classicladder::parseClp(text, std::move(file), diags);
+}
+std::optional<VerifiedProgram> compileClassicLadder(std::string_view text, std::string file,
+                                                    const VerifyOptions &opts, Diagnostics &diags,
+                                                    const SymbolTable *symbols) {
+  return pipeline::compileClp(text, std::move(file), opts, diags, symbols);
+}
+
+std::optional<CliAddress> parseClAddress(std::string_view text, std::string &error) {
+  std::optional<classicladder::VarRef> v =
+      classicladder::parseVarName(std::string(text.substr(0, 40)));
+  if (!v || text.size() > 40) {
+    error =
+        "bad address " + quoted(text) + ": expected a ClassicLadder variable (%I3, %Q0, %B7, %W2)";
+    return std::nullopt;
+  }
+  std::string why;
+  std::optional<Operand> o = classicladder::varOperand(v->type, v->num, why);
+  if (!o) {
+    error = "bad address " + quoted(text) + ": " + why;
+    return std::nullopt;
+  }
+  CliAddress a;
+  a.area = o->area;
+  a.index = o->index;
+  a.bit = o->kind == Operand::Kind::Bit ? o->bit : int8_t{-1};
+  a.text = std::string(text);
+  a.profile = &classicladder::profile();
+  return a;
+}
+
+std::optional<Assignment> parseClAssignment(std::string_view item, std::string &error) {
+  return parseAssignmentWith(parseClAddress, item, error, 40);
+}
+
+std::string formatClAddress(const CliAddress &addr) {
+  Operand o;
+  o.kind = addr.isBit() ? Operand::Kind::Bit : Operand::Kind::Reg;
+  o.area = addr.area;
+  o.index = addr.index;
+  o.bit = addr.bit;
+  return classicladder::dialectText().formatOperand(o);
+}
+
+constexpr const char *kClassicLadderExtensions[] = {".clp"};
+
+const Dialect kClassicLadder{
+    "classicladder",    kClassicLadderExtensions, profileNamed("classicladder"),
+    parseClassicLadder, compileClassicLadder,     parseClAddress,
+    parseClAssignment,  formatClAddress,          classicladder::dialectText};
+
+const Dialect *const kDialects[] = {&kHnc8, &kFanuc, &kIec, &kClassicLadder};
 
 /// Dialects ladderjit plans (docs/architecture.md "Adding a dialect") and the extensions that
 /// name them; a build without one says so instead of reading the file as HNC-8.
@@ -133,7 +192,7 @@ struct Planned {
   const char *name;
   const char *extension;
 };
-// None at present: hnc8, fanuc and iec are all built.
+// None at present: hnc8, fanuc, iec and classicladder are all built.
 constexpr std::array<Planned, 0> kPlanned{};
 
 std::string quoted(std::string_view s) {

@@ -47,14 +47,15 @@ const Dialect *dialectNamed(std::string_view name);
 const Dialect &defaultDialect();
 
 /// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'NAME' is not
-/// available in this build (known: hnc8, fanuc, iec)" for a dialect ladderjit plans but this
-/// build lacks (none today: kPlanned is empty), "unknown dialect 'x' (known: ...)" otherwise.
+/// available in this build (known: hnc8, fanuc, iec, classicladder)" for a dialect ladderjit plans
+/// but this build lacks (none today: kPlanned is empty), "unknown dialect 'x' (known: ...)"
+/// otherwise.
 const Dialect *dialectForOption(std::string_view name, std::string &error);
 
 /// The dialect PROGRAM `path` is written in, by its extension: `.stl` and `.dit` hnc8, `.pmc`
-/// fanuc, `.il` iec; any other name is HNC-8 STL (as before dialects existed). A `.json` file is
-/// not decided here: it names its dialect (jsonDialect). Nullptr with `error` set when the
-/// extension's dialect is not in this build.
+/// fanuc, `.il` iec, `.clp` classicladder; any other name is HNC-8 STL (as before dialects
+/// existed). A `.json` file is not decided here: it names its dialect (jsonDialect). Nullptr with
+/// `error` set when the extension's dialect is not in this build.
 const Dialect *dialectForPath(std::string_view path, std::string &error);
 
 /// The dialect a ladder JSON document names in its "dialect" member (docs/ladder-json.md), or

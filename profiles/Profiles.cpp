@@ -1,6 +1,7 @@
 // The profiles of this build (profiles/Profiles.h). A new target adds its profile here.
 #include "profiles/Profiles.h"
 
+#include "profiles/classicladder/ClassicLadderProfile.h"
 #include "profiles/fanuc/FanucProfile.h"
 #include "profiles/hnc8/Hnc8Profile.h"
 #include "profiles/iec/IecProfile.h"
@@ -8,7 +9,8 @@
 namespace lj {
 
 std::span<const TargetProfile *const> allProfiles() {
-  static const TargetProfile *const kAll[] = {&hnc8::profile(), &fanuc::profile(), &iec::profile()};
+  static const TargetProfile *const kAll[] = {&hnc8::profile(), &fanuc::profile(), &iec::profile(),
+                                              &classicladder::profile()};
   return kAll;
 }
 

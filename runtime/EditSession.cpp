@@ -290,8 +290,8 @@ json runningNetworks(const Served &s) {
     json j = json::parse(s.text, nullptr, false);
     if (!j.is_discarded()) return j;
   }
-  const bool hnc8 = s.cur->prog->profile &&
-                    pipeline::dialectNamed(s.cur->prog->profile->name) == &pipeline::defaultDialect();
+  const bool hnc8 = s.cur->prog->profile && pipeline::dialectNamed(s.cur->prog->profile->name) ==
+                                                &pipeline::defaultDialect();
   std::string text = ladder::writeJson(ladder::fromProgram(*s.cur->prog),
                                        hnc8 || !s.fresh ? std::string_view() : s.text);
   json j = json::parse(text, nullptr, false);

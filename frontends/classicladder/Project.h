@@ -119,6 +119,7 @@ struct Rung {
   int32_t version = 2;   ///< #VER (3 in 0.9)
   int32_t linesUsed = 0; ///< #NBRLINES (0.9), else the grid height
   std::vector<std::vector<Cell>> cells; ///< cells[x][y], x = column (0 touches the rail)
+  std::vector<int32_t> rowLines;        ///< line of row y in the project file (0 when unknown)
   const Cell &at(int x, int y) const { return cells[x][y]; }
 };
 

@@ -463,6 +463,7 @@ private:
                      "more than " + std::to_string(height) + " rows (a rung is " +
                          std::to_string(width) + "x" + std::to_string(height) + ")");
       auto cells = splitCommas(l);
+      r.rowLines.push_back(i < f.lineNumbers.size() ? f.lineNumbers[i] : 0);
       if (static_cast<int>(cells.size()) != width)
         return error(f, i, where + " row " + std::to_string(y),
                      std::to_string(cells.size()) + " cells (a row has " + std::to_string(width) +

@@ -33,7 +33,7 @@ TEST(Dialect, EveryProgramCommandRefusesAnUnknownDialect) {
     args.push_back("cobol");
     CliResult r = runCli(args);
     EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
-    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8, fanuc, iec)"))
+    EXPECT_TRUE(says(r, "unknown dialect 'cobol' (known: hnc8, fanuc, iec, classicladder)"))
         << args[0] << ": " << r.err;
   }
 }
@@ -81,7 +81,8 @@ TEST(Dialect, LadderJsonNamesItsDialect) {
   other.replace(other.find("\"dialect\": \"hnc8\""), 17, "\"dialect\": \"cobol\"");
   r = runCli({"check", writeScratch("f.json", other)});
   EXPECT_EQ(r.exitCode, 2) << r.err;
-  EXPECT_TRUE(says(r, "f.json: ladder JSON: unknown dialect 'cobol' (known: hnc8, fanuc, iec)"))
+  EXPECT_TRUE(says(
+      r, "f.json: ladder JSON: unknown dialect 'cobol' (known: hnc8, fanuc, iec, classicladder)"))
       << r.err;
 }
 

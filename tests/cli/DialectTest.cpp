@@ -15,7 +15,7 @@ namespace lj::pipeline {
 namespace {
 
 TEST(Profiles, RegistryHoldsHnc8ByName) {
-  ASSERT_EQ(allProfiles().size(), 3u); // hnc8, fanuc, iec
+  ASSERT_EQ(allProfiles().size(), 4u); // hnc8, fanuc, iec, classicladder
   const TargetProfile *p = profileNamed("hnc8");
   ASSERT_NE(p, nullptr);
   EXPECT_STREQ(p->name, "hnc8");
@@ -31,16 +31,18 @@ TEST(Profiles, RegistryHoldsHnc8ByName) {
   EXPECT_EQ(p->cncRow(Op::Coil), nullptr);
 }
 
-TEST(Dialects, Hnc8FanucAndIecAreRegisteredWithTheirProfiles) {
-  ASSERT_EQ(allDialects().size(), 3u);
+TEST(Dialects, Hnc8FanucIecAndClassicLadderAreRegisteredWithTheirProfiles) {
+  ASSERT_EQ(allDialects().size(), 4u);
   EXPECT_EQ(dialectNamed("hnc8"), &defaultDialect());
   EXPECT_EQ(defaultDialect().profile, profileNamed("hnc8"));
   ASSERT_NE(dialectNamed("fanuc"), nullptr);
   EXPECT_EQ(dialectNamed("fanuc")->profile, profileNamed("fanuc"));
   ASSERT_NE(dialectNamed("iec"), nullptr);
   EXPECT_EQ(dialectNamed("iec")->profile, profileNamed("iec"));
+  ASSERT_NE(dialectNamed("classicladder"), nullptr); // docs/classicladder.md
+  EXPECT_EQ(dialectNamed("classicladder")->profile, profileNamed("classicladder"));
   EXPECT_EQ(dialectNamed("HNC8"), nullptr); // names are exact
-  EXPECT_EQ(knownDialects(), "hnc8, fanuc, iec");
+  EXPECT_EQ(knownDialects(), "hnc8, fanuc, iec, classicladder");
 }
 
 TEST(Profiles, FanucAreasAreBytesWithUpperRanges) {
@@ -79,6 +81,7 @@ TEST(Dialects, ExtensionChoosesTheDialect) {
   EXPECT_EQ(dialectForPath("spindle.pmc", error), dialectNamed("fanuc"));
   EXPECT_EQ(dialectForPath("SPINDLE.PMC", error), dialectNamed("fanuc"));
   EXPECT_EQ(dialectForPath("x.il", error), dialectNamed("iec"));
+  EXPECT_EQ(dialectForPath("estop.clp", error), dialectNamed("classicladder"));
   EXPECT_EQ(dialectForPath("X.IL", error), dialectNamed("iec"));
   EXPECT_TRUE(error.empty()) << error;
 }
@@ -89,7 +92,7 @@ TEST(Dialects, OptionNamesTheDialect) {
   EXPECT_EQ(dialectForOption("fanuc", error), dialectNamed("fanuc"));
   EXPECT_EQ(dialectForOption("iec", error), dialectNamed("iec"));
   EXPECT_EQ(dialectForOption("siemens", error), nullptr);
-  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc, iec)");
+  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc, iec, classicladder)");
 }
 
 TEST(Dialects, LadderJsonNamesItsDialect) {
@@ -99,7 +102,7 @@ TEST(Dialects, LadderJsonNamesItsDialect) {
   EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error),
             dialectNamed("iec"));
   EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec)");
+  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec, classicladder)");
 }
 
 std::string tempFile(const std::string &name, const std::string &text) {
@@ -124,7 +127,7 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
 
   ProgramSource refused;
   EXPECT_FALSE(readProgramFile(stl, refused, error, "cobol"));
-  EXPECT_EQ(error, "unknown dialect 'cobol' (known: hnc8, fanuc, iec)");
+  EXPECT_EQ(error, "unknown dialect 'cobol' (known: hnc8, fanuc, iec, classicladder)");
   // --dialect hnc8 reads a .pmc name as HNC-8 STL; without it the .pmc is FANUC text.
   const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
   ProgramSource asFanuc;
