@@ -49,7 +49,8 @@ def top(path):
 
 def check(root):
     problems = []
-    for f in sorted(tracked_files(root)):
+    files = sorted(tracked_files(root))
+    for f in files:
         if not f.endswith(TEXT_EXT) and os.path.basename(f) not in ('CMakeLists.txt', 'README.md'):
             continue
         try:
@@ -92,7 +93,7 @@ def check(root):
     readme_path = os.path.join(root, 'README.md')
     readme = open(readme_path, encoding='utf-8', errors='replace').read() \
         if os.path.isfile(readme_path) else ''
-    for f in sorted(tracked_files(root)):
+    for f in files:
         if re.fullmatch(r'docs/[^/]+\.md', f) and f'`{f}`' not in readme:
             problems.append(f'{f}: not named in README.md\'s docs list')
     return problems
