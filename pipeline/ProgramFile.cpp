@@ -167,7 +167,7 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
       ++line;
       lineStart = i + 1;
     } else if (src.text[i] == '\r' && src.text[i + 1] != '\n') {
-      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)},
+      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)}, "LJ0001",
                   "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
                   "not with CR alone");
       diagnostics = diags.render();

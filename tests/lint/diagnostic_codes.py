@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Stable diagnostic codes (docs/diagnostics.md): every error and warning reported in verify/ and
-the front ends frontends/{iec,hnc8,fanuc}/ passes a code `"LJnnnn"` right after its location, no
+"""Stable diagnostic codes (docs/diagnostics.md): every error and warning reported in pipeline/,
+verify/ and the front ends frontends/{iec,hnc8,fanuc}/ passes a code `"LJnnnn"` right after its location, no
 code is used twice, and the table of docs/diagnostics.md lists exactly the codes the sources use,
 each once.
 Usage: diagnostic_codes.py SOURCE_DIR | --self-test. Exit status 0 = pass. The self-test runs
@@ -10,7 +10,7 @@ import os
 import re
 import sys
 
-DIRS = ["verify", "frontends/iec", "frontends/hnc8", "frontends/fanuc"]
+DIRS = ["pipeline", "verify", "frontends/iec", "frontends/hnc8", "frontends/fanuc"]
 # A report: name.error( / name.warning( / error( / warning( as a call (not a declaration).
 CALL = re.compile(r"(?<![\w:])(?:[A-Za-z_]\w*(?:\.|->))?(error|warning)\(")
 DECL = re.compile(r"\b(void|bool|Status|static)\s*$")
