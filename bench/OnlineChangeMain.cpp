@@ -90,9 +90,8 @@ int main(int argc, char **argv) {
     }
   }
   lj::pipeline::ProgramSource src;
-  std::string error;
-  if (!lj::pipeline::readProgramFile(argv[1], src, error)) {
-    std::fprintf(stderr, "bench_online_change: %s\n", error.c_str());
+  if (lj::Status st = lj::pipeline::readProgramFile(argv[1], src); !st.ok()) {
+    std::fprintf(stderr, "bench_online_change: %s\n", st.message().c_str());
     return 2;
   }
   std::vector<std::string> lines;
@@ -105,6 +104,7 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "bench_online_change: no X contact to edit in %s\n", argv[1]);
     return 2;
   }
+  std::string error;
   std::shared_ptr<lj::jit::Session> session =
       lj::jit::Session::create(lj::jit::Tier::Optimizing, error);
   if (!session) {

@@ -47,7 +47,7 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
                                          const VerifyOptions &opts, Diagnostics &diags,
                                          const SymbolTable *symbols) {
   if (symbols && !symbols->empty()) {
-    diags.error({}, "an IEC IL program takes no symbol table");
+    diags.error({}, "LJ0002", "an IEC IL program takes no symbol table");
     return std::nullopt;
   }
   return verifyParsed(iec::parseIl(text, std::move(file), diags), opts, diags);
@@ -57,7 +57,8 @@ std::optional<VerifiedProgram> compileClp(std::string_view text, std::string fil
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
   if (symbols && !symbols->empty()) {
-    diags.error({}, "a ClassicLadder project takes no symbol table (its symbols.csv is its own)");
+    diags.error({}, "LJ0003",
+                "a ClassicLadder project takes no symbol table (its symbols.csv is its own)");
     return std::nullopt;
   }
   return verifyParsed(classicladder::parseClp(text, std::move(file), diags), opts, diags);

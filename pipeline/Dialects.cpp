@@ -227,37 +227,39 @@ std::string knownDialects() {
   return out;
 }
 
-const Dialect *dialectForOption(std::string_view name, std::string &error) {
+Result<const Dialect *> dialectForOption(std::string_view name) {
   if (const Dialect *d = dialectNamed(name)) return d;
   const bool planned = std::any_of(std::begin(kPlanned), std::end(kPlanned),
                                    [&](const Planned &p) { return name == p.name; });
-  error = planned ? "dialect " + quoted(name) +
-                        " is not available in this build (known: " + knownDialects() + ")"
-                  : "unknown dialect " + quoted(name) + " (known: " + knownDialects() + ")";
-  return nullptr;
+  return Status::error(
+      ErrorCode::InvalidArgument,
+      planned ? "dialect " + quoted(name) +
+                    " is not available in this build (known: " + knownDialects() + ")"
+              : "unknown dialect " + quoted(name) + " (known: " + knownDialects() + ")");
 }
 
-const Dialect *dialectForPath(std::string_view path, std::string &error) {
+Result<const Dialect *> dialectForPath(std::string_view path) {
   for (const Dialect *d : kDialects)
     for (const char *ext : d->extensions)
       if (endsWith(path, ext)) return d;
   for (const Planned &p : kPlanned)
     if (endsWith(path, p.extension)) {
-      error = std::string(path) + ": a " + p.extension + " file is dialect " + quoted(p.name) +
-              ", which is not available in this build (known: " + knownDialects() +
-              "; --dialect NAME reads it as another dialect)";
-      return nullptr;
+      return Status::error(ErrorCode::InvalidArgument,
+                           std::string(path) + ": a " + p.extension + " file is dialect " +
+                               quoted(p.name) + ", which is not available in this build (known: " +
+                               knownDialects() + "; --dialect NAME reads it as another dialect)",
+                           {std::string(path)});
     }
   return &kHnc8;
 }
 
-const Dialect *dialectOfJson(std::string_view text, std::string &error) {
+Result<const Dialect *> dialectOfJson(std::string_view text) {
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("dialect") || !j["dialect"].is_string())
     return &kHnc8; // the ladder JSON reader names what is wrong with the document
   const std::string name = j["dialect"].get<std::string>();
-  const Dialect *d = dialectForOption(name, error);
-  if (!d) error = "ladder JSON: " + error;
+  Result<const Dialect *> d = dialectForOption(name);
+  if (!d) return d.status().withContext("ladder JSON");
   return d;
 }
 

@@ -7,6 +7,7 @@
 #include "formats/Address.h"
 #include "ir/Diagnostics.h"
 #include "ir/Program.h"
+#include "ir/Status.h"
 #include "verify/Verify.h"
 
 #include <optional>
@@ -46,21 +47,22 @@ const Dialect *dialectNamed(std::string_view name);
 /// The default dialect (HNC-8): plc.dit containers and files with an unknown extension.
 const Dialect &defaultDialect();
 
-/// The dialect for --dialect `name`, or nullptr with `error` set: "dialect 'NAME' is not
+/// The dialect for --dialect `name`, or an InvalidArgument error: "dialect 'NAME' is not
 /// available in this build (known: hnc8, fanuc, iec, classicladder)" for a dialect ladderjit plans
 /// but this build lacks (none today: kPlanned is empty), "unknown dialect 'x' (known: ...)"
 /// otherwise.
-const Dialect *dialectForOption(std::string_view name, std::string &error);
+Result<const Dialect *> dialectForOption(std::string_view name);
 
 /// The dialect PROGRAM `path` is written in, by its extension: `.stl` and `.dit` hnc8, `.pmc`
 /// fanuc, `.il` iec, `.clp` classicladder; any other name is HNC-8 STL (as before dialects
-/// existed). A `.json` file is not decided here: it names its dialect (jsonDialect). Nullptr with
-/// `error` set when the extension's dialect is not in this build.
-const Dialect *dialectForPath(std::string_view path, std::string &error);
+/// existed). A `.json` file is not decided here: it names its dialect (dialectOfJson). An
+/// InvalidArgument error when the extension's dialect is not in this build.
+Result<const Dialect *> dialectForPath(std::string_view path);
 
-/// The dialect a ladder JSON document names in its "dialect" member (docs/ladder-json.md), or
-/// nullptr with `error` set (missing member: the JSON reader reports it; then hnc8 is returned).
-const Dialect *dialectOfJson(std::string_view text, std::string &error);
+/// The dialect a ladder JSON document names in its "dialect" member (docs/ladder-json.md), or an
+/// InvalidArgument error "ladder JSON: unknown dialect ..." (missing member: the JSON reader
+/// reports it; then hnc8 is returned).
+Result<const Dialect *> dialectOfJson(std::string_view text);
 
 /// All dialect names this build has, "hnc8, ..." (for messages and --help).
 std::string knownDialects();

@@ -36,81 +36,76 @@ std::string capLines(std::string text, size_t max, const std::string &file) {
 
 } // namespace
 
-bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error,
-                     std::string_view dialect, const std::string *bytes) {
+Status readProgramFile(const std::string &path, ProgramSource &src, std::string_view dialect,
+                       const std::string *bytes) {
   src.path = path;
   const bool json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
-  const Dialect *d = !dialect.empty() ? dialectForOption(dialect, error)
-                     : json           ? &defaultDialect()
-                                      : dialectForPath(path, error);
-  if (!d) return false;
-  src.dialect = d;
+  Result<const Dialect *> d = !dialect.empty() ? dialectForOption(dialect)
+                              : json           ? Result<const Dialect *>(&defaultDialect())
+                                               : dialectForPath(path);
+  if (!d) return d.status();
+  src.dialect = *d;
+  // The other libraries this reads with (formats/, ladder/) still report through a message.
+  std::string error;
+  auto fail = [&](ErrorCode code, std::string message) {
+    return Status::error(code, std::move(message), {path});
+  };
   std::string text;
   if (bytes)
     text = *bytes;
   else if (!readFile(path, text, error))
-    return false;
+    return fail(ErrorCode::NotFound, error);
   src.fileHash = sha256Hash(text);
   if (json) {
-    const Dialect *named = dialectOfJson(text, error);
-    if (!named) {
-      error = path + ": " + error;
-      return false;
-    }
-    if (!dialect.empty() && named != d) {
-      error = path + ": the ladder JSON is dialect '" + named->name + "', not '" + d->name + "'";
-      return false;
-    }
+    Result<const Dialect *> namedOr = dialectOfJson(text);
+    if (!namedOr) return namedOr.status().withContext(path);
+    const Dialect *named = *namedOr;
+    if (!dialect.empty() && named != *d)
+      return fail(ErrorCode::InvalidArgument, path + ": the ladder JSON is dialect '" +
+                                                  named->name + "', not '" + (*d)->name + "'");
     src.dialect = named;
     if (named != &defaultDialect()) { // networks -> program text of the dialect
       auto nets = std::make_shared<ladder::Networks>();
-      if (!ladder::readJson(text, *nets, error, named->text())) {
-        error = path + ": " + error;
-        return false;
-      }
-      if (nets->source.empty()) {
-        error = path + ": a " + std::string(named->name) +
-                " ladder JSON keeps its untouched rungs from the program text it carries "
-                "(\"source\", written by `ladderjit ladder --format json`); this one has none";
-        return false;
-      }
+      if (!ladder::readJson(text, *nets, error, named->text()))
+        return fail(ErrorCode::BadFormat, path + ": " + error);
+      if (nets->source.empty())
+        return fail(ErrorCode::BadFormat,
+                    path + ": a " + std::string(named->name) +
+                        " ladder JSON keeps its untouched rungs from the program text it carries "
+                        "(\"source\", written by `ladderjit ladder --format json`); this one has "
+                        "none");
       // The rungs the networks leave unchanged come from that text byte for byte, the edited
       // ones are printed by the dialect (ladder::programText); the front end and the verifier
       // then check the result as any program file of the dialect.
       Diagnostics diags(path);
       std::optional<VerifiedProgram> made =
           named->compile(nets->source, path, VerifyOptions{}, diags, nullptr);
-      if (!made || diags.hasErrors()) {
-        error = path + ": the program text the JSON carries (\"source\") does not verify:\n" +
-                capLines(diags.render(), kMaxDiagnosticLines, path);
-        return false;
-      }
-      if (!ladder::programText(*nets, *made, nets->source, src.text, error)) {
-        error = path + ": " + error;
-        return false;
-      }
+      if (!made || diags.hasErrors())
+        return fail(ErrorCode::Rejected,
+                    path + ": the program text the JSON carries (\"source\") does not verify:\n" +
+                        capLines(diags.render(), kMaxDiagnosticLines, path));
+      if (!ladder::programText(*nets, *made, nets->source, src.text, error))
+        return fail(ErrorCode::BadFormat, path + ": " + error);
       src.edited = src.text != nets->source;
       src.carried = std::move(nets);
-      return true;
+      return {};
     }
     auto lad = std::make_shared<ladder::StlFromJson>();
-    if (!ladder::stlFromJson(text, *lad, error, named->text())) {
-      error = path + ": " + error;
-      return false;
-    }
+    if (!ladder::stlFromJson(text, *lad, error, named->text()))
+      return fail(ErrorCode::BadFormat, path + ": " + error);
     src.text = lad->text;
     src.ladder = std::move(lad);
-    return true;
+    return {};
   }
   bool named = path.size() >= 4 && path.compare(path.size() - 4, 4, ".dit") == 0;
   if (!looksLikeDit(text) && !named) {
     src.text = std::move(text);
-    return true;
+    return {};
   }
   src.dit = parseDit(text, path, error);
-  if (!src.dit) return false;
+  if (!src.dit) return fail(ErrorCode::BadFormat, error);
   src.text = programForParser(*src.dit);
-  return true;
+  return {};
 }
 
 int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven) {
@@ -167,7 +162,7 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
       ++line;
       lineStart = i + 1;
     } else if (src.text[i] == '\r' && src.text[i + 1] != '\n') {
-      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)},
+      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)}, "LJ0001",
                   "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
                   "not with CR alone");
       diagnostics = diags.render();

@@ -5,6 +5,7 @@
 
 #include "formats/PlcDit.h"
 #include "ir/Program.h"
+#include "ir/Status.h"
 #include "pipeline/Dialects.h"
 
 #include <cstdint>
@@ -42,12 +43,15 @@ struct ProgramSource {
 };
 
 /// Read PROGRAM into `src` (a `.json` name: ladder network JSON). `dialect`: the --dialect
-/// option (empty: chosen by the file name, dialectForPath). False (with `error`) for an unknown
-/// or unavailable dialect, an unreadable file or a damaged container; a `.dit` name without the
-/// magic line is a damaged container, not STL. `bytes`, when given, are the file's content
-/// (a ladder edit not yet written, runtime/EditSession.h): read as if `path` held them.
-bool readProgramFile(const std::string &path, ProgramSource &src, std::string &error,
-                     std::string_view dialect = {}, const std::string *bytes = nullptr);
+/// option (empty: chosen by the file name, dialectForPath). An error whose message is the
+/// whole line CLI.md prints: InvalidArgument for an unknown or unavailable dialect (or a JSON
+/// of another dialect than --dialect), NotFound for an unreadable file, BadFormat for a damaged
+/// container or network JSON, Rejected when a network JSON's carried program text does not
+/// verify; a `.dit` name without the magic line is a damaged container, not STL. `bytes`, when
+/// given, are the file's content (a ladder edit not yet written, runtime/EditSession.h): read
+/// as if `path` held them.
+Status readProgramFile(const std::string &path, ProgramSource &src, std::string_view dialect = {},
+                       const std::string *bytes = nullptr);
 
 /// The PLC2 nvalue to plan with: the option when given, else the container's, else `option`.
 int32_t effectiveNvalue(const ProgramSource &src, int32_t option, bool optionGiven);

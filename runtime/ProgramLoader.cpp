@@ -96,7 +96,10 @@ ProgramLoader::load(const std::string &path, const ContactForces &forces, std::s
 std::optional<VerifiedProgram>
 ProgramLoader::verify(const std::string &path, const std::string &bytes, std::string &diagnostics) {
   pipeline::ProgramSource src;
-  if (!pipeline::readProgramFile(path, src, diagnostics, dialect_, &bytes)) return std::nullopt;
+  if (Status st = pipeline::readProgramFile(path, src, dialect_, &bytes); !st.ok()) {
+    diagnostics = st.message();
+    return std::nullopt;
+  }
   const bool nvalueGiven = plc2Nvalue_ >= 0;
   return pipeline::verifyProgram(
       src, pipeline::effectiveNvalue(src, nvalueGiven ? plc2Nvalue_ : 200, nvalueGiven),
@@ -227,7 +230,10 @@ ProgramLoader::loadAs(bool interpreted, const std::string &path, const ContactFo
     return nullptr;
   }
   pipeline::ProgramSource src;
-  if (!pipeline::readProgramFile(path, src, error, dialect_, bytes)) return nullptr;
+  if (Status st = pipeline::readProgramFile(path, src, dialect_, bytes); !st.ok()) {
+    error = st.message();
+    return nullptr;
+  }
   auto v = std::make_shared<ProgramVersion>();
   v->path = path;
   v->hash = src.fileHash;

@@ -319,9 +319,10 @@ Status Server::Impl::checkOptions() {
 // --params, --set and the Modbus map, in the program's dialect (CLI.md): --dialect, else the
 // extension.
 Status Server::Impl::readPowerUp(std::string &error) {
-  setDialect = a.dialect.empty() ? pipeline::dialectForPath(a.program, error)
-                                 : pipeline::dialectForOption(a.dialect, error);
-  if (!setDialect) return usage(error);
+  Result<const pipeline::Dialect *> d = a.dialect.empty() ? pipeline::dialectForPath(a.program)
+                                                          : pipeline::dialectForOption(a.dialect);
+  if (!d) return usage(d.status().message());
+  setDialect = *d;
   if (!a.params.empty()) {
     std::string text;
     if (!formats::readFile(a.params, text, error)) return usage(error);
@@ -372,7 +373,9 @@ Status Server::Impl::checkHttp(std::string &error) {
 // ---- the program ----
 
 Status Server::Impl::loadProgram(std::string &error) {
-  if (!a.dialect.empty() && !pipeline::dialectForOption(a.dialect, error)) return usage(error);
+  if (!a.dialect.empty())
+    if (Result<const pipeline::Dialect *> d = pipeline::dialectForOption(a.dialect); !d)
+      return usage(d.status().message());
   loader = std::make_unique<ProgramLoader>(aot ? "aot" : a.engine,
                                            a.plc2NvalueGiven ? a.plc2Nvalue : -1, a.dialect);
   if (aot) { // who may have signed the .so files of start and of `monitor load` (docs/aot.md)

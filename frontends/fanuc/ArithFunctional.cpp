@@ -58,9 +58,10 @@ bool arithFormat(Emitter &e, const Token &t, bool &isAddr, int &width) {
   if (!e.constant(t, 0, 9999, "format", v)) return false;
   width = static_cast<int>(v % 10);
   if ((width != 1 && width != 2 && width != 4) || (v / 10) % 100 != 0 || v / 1000 > 1) {
-    e.error(t.loc, "format '" + std::string(t.text) +
-                       "': expected 0001/0002/0004 (operand 2 a constant) or 1001/1002/1004 "
-                       "(an address)");
+    e.error(t.loc, "LJ4059",
+            "format '" + std::string(t.text) +
+                "': expected 0001/0002/0004 (operand 2 a constant) or 1001/1002/1004 "
+                "(an address)");
     return false;
   }
   isAddr = v >= 1000;
@@ -81,8 +82,9 @@ bool binary(Emitter &e, const Spec &sp, const Functional &f, SourceLoc at) {
   Operand a, b, c;
   if (!arithFormat(e, p[0], isAddr, w) || !e.dataOperand(p[1], w, false, false, a)) return false;
   if (!isAddr && !numeric(p[2])) {
-    e.error(p[2].loc, "format " + std::string(p[0].text) + " says operand 2 is a constant, got '" +
-                          std::string(p[2].text) + "'");
+    e.error(p[2].loc, "LJ4060",
+            "format " + std::string(p[0].text) + " says operand 2 is a constant, got '" +
+                std::string(p[2].text) + "'");
     return false;
   }
   if (!e.dataOperand(p[2], w, !isAddr, false, b) || !e.dataOperand(p[3], w, false, true, c))
@@ -119,7 +121,7 @@ bool numeb(Emitter &e, const Functional &f, SourceLoc at) {
   int64_t w, v;
   if (!e.constant(p[0], 1, 4, "format (data length)", w)) return false;
   if (w == 3) {
-    e.error(p[0].loc, "format '3': expected 1, 2 or 4");
+    e.error(p[0].loc, "LJ4061", "format '3': expected 1, 2 or 4");
     return false;
   }
   const int width = static_cast<int>(w);
@@ -127,7 +129,7 @@ bool numeb(Emitter &e, const Functional &f, SourceLoc at) {
   const std::string role =
       "constant for " + std::to_string(width) + " byte" + (width == 1 ? "" : "s");
   if (!numeric(p[1])) {
-    e.error(p[1].loc, "NUMEB writes a constant, got '" + std::string(p[1].text) + "'");
+    e.error(p[1].loc, "LJ4062", "NUMEB writes a constant, got '" + std::string(p[1].text) + "'");
     return false;
   }
   Operand c;
@@ -159,18 +161,19 @@ bool emitArithFunctional(Emitter &e, const Functional &f, int sub, const std::st
   if (!sp) return false;
   const SourceLoc at = f.head.loc;
   if (static_cast<int>(f.params.size()) != sp->params) {
-    e.error(at, what + " takes " + std::to_string(sp->params) + " parameters (" + sp->roles +
-                    "), got " + std::to_string(f.params.size()));
+    e.error(at, "LJ4063",
+            what + " takes " + std::to_string(sp->params) + " parameters (" + sp->roles +
+                "), got " + std::to_string(f.params.size()));
     return true;
   }
   if (e.depth() < sp->inputCount) {
     if (sp->inputCount == 1)
-      e.error(at, what + " needs its ACT input in ST0 (an RD before it)");
+      e.error(at, "LJ4064", what + " needs its ACT input in ST0 (an RD before it)");
     else
-      e.error(at, what + " needs its inputs " + sp->inputs + " in ST" +
-                      std::to_string(sp->inputCount - 1) +
-                      "..ST0 (RD, then RD.STK for each further input), found " +
-                      std::to_string(e.depth()));
+      e.error(
+          at, "LJ4065",
+          what + " needs its inputs " + sp->inputs + " in ST" + std::to_string(sp->inputCount - 1) +
+              "..ST0 (RD, then RD.STK for each further input), found " + std::to_string(e.depth()));
     return true;
   }
   bool ok;

@@ -18,8 +18,9 @@ bool formatNnd(Emitter &e, const Token &t, int &nn, int &d) {
   d = static_cast<int>(v % 10);
   nn = static_cast<int>(v / 10);
   if (d != 1 && d != 2 && d != 4) {
-    e.error(t.loc, "format '" + std::string(t.text) +
-                       "': the last digit is the data length 1, 2 or 4 (0nnd, like 0021)");
+    e.error(t.loc, "LJ4066",
+            "format '" + std::string(t.text) +
+                "': the last digit is the data length 1, 2 or 4 (0nnd, like 0021)");
     return false;
   }
   return true;
@@ -30,7 +31,7 @@ bool length(Emitter &e, const Token &t, const char *role, int &d) {
   int64_t v;
   if (!e.constant(t, 1, 4, role, v)) return false;
   if (v == 3) {
-    e.error(t.loc, std::string(role) + " '3': expected 1, 2 or 4");
+    e.error(t.loc, "LJ4067", std::string(role) + " '3': expected 1, 2 or 4");
     return false;
   }
   d = static_cast<int>(v);
@@ -121,8 +122,9 @@ void emitRows(Emitter &e, const Functional &f, size_t first, SourceLoc at,
 bool paramCount(Emitter &e, const Functional &f, const std::string &what, size_t n,
                 const char *roles) {
   if (f.params.size() == n) return true;
-  e.error(f.head.loc, what + " takes " + std::to_string(n) + " parameters (" + roles + "), got " +
-                          std::to_string(f.params.size()));
+  e.error(f.head.loc, "LJ4068",
+          what + " takes " + std::to_string(n) + " parameters (" + roles + "), got " +
+              std::to_string(f.params.size()));
   return false;
 }
 
@@ -133,8 +135,9 @@ void codeTable(Emitter &e, const Functional &f, const std::string &what, bool bi
   const char *roles = binary ? "format, table size, input address, output address, table entries"
                              : "table size, input address, output address, table entries";
   if (f.params.size() < head) {
-    e.error(at, what + " takes " + std::to_string(head) + " parameters and its table entries (" +
-                    roles + "), got " + std::to_string(f.params.size()));
+    e.error(at, "LJ4069",
+            what + " takes " + std::to_string(head) + " parameters and its table entries (" +
+                roles + "), got " + std::to_string(f.params.size()));
     return;
   }
   const auto &p = f.params;
@@ -145,10 +148,10 @@ void codeTable(Emitter &e, const Functional &f, const std::string &what, bool bi
   if (!e.constant(p[k], 0, binary ? 256 : 99, "table size", size)) return;
   const Token &sizeTok = p[k++];
   if (p.size() != head + static_cast<size_t>(size)) {
-    e.error(sizeTok.loc, what + " with table size " + std::to_string(size) + " takes " +
-                             std::to_string(size) + " table entries after its " +
-                             std::to_string(head) + " parameters, got " +
-                             std::to_string(p.size() - head));
+    e.error(sizeTok.loc, "LJ4070",
+            what + " with table size " + std::to_string(size) + " takes " + std::to_string(size) +
+                " table entries after its " + std::to_string(head) + " parameters, got " +
+                std::to_string(p.size() - head));
     return;
   }
   Operand in, out;
@@ -179,9 +182,10 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
                         const std::string &what) {
   const SourceLoc at = f.head.loc;
   if (const char *svc = cncService(name)) {
-    e.error(at, what + " is not supported by this build: it needs " + svc +
-                    ", a CNC service the FANUC 0i-D PMC manual (6.10) names but does not "
-                    "describe (docs/fanuc-pmc.md \"Not supported\")");
+    e.error(at, "LJ4071",
+            what + " is not supported by this build: it needs " + svc +
+                ", a CNC service the FANUC 0i-D PMC manual (6.10) names but does not "
+                "describe (docs/fanuc-pmc.md \"Not supported\")");
     return true;
   }
   static constexpr std::string_view kMine[] = {
@@ -199,10 +203,11 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   if (name == "COME") {
     if (!paramCount(e, f, what, 0, "none")) return true;
     if (rg.comStmt < 0) {
-      e.error(at, what + " without COM");
+      e.error(at, "LJ4072", what + " without COM");
     } else if (rg.jmpLabel >= 0 && rg.jmpInsideCom) {
-      e.error(at, what + " inside JMP..JMPE (JMP on line " + std::to_string(rg.jmpLine) +
-                      "): close the JMP first");
+      e.error(at, "LJ4073",
+              what + " inside JMP..JMPE (JMP on line " + std::to_string(rg.jmpLine) +
+                  "): close the JMP first");
     } else {
       rg.comStmt = -1;
     }
@@ -211,10 +216,11 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   if (name == "JMPE") {
     if (!paramCount(e, f, what, 0, "none")) return true;
     if (rg.jmpLabel < 0) {
-      e.error(at, what + " without JMP");
+      e.error(at, "LJ4074", what + " without JMP");
     } else if (rg.comStmt >= 0 && !rg.jmpInsideCom) {
-      e.error(at, what + " inside COM..COME (COM on line " + std::to_string(rg.comLine) +
-                      "): close the COM first");
+      e.error(at, "LJ4075",
+              what + " inside COM..COME (COM on line " + std::to_string(rg.comLine) +
+                  "): close the COM first");
     } else {
       Operand l;
       l.kind = Operand::Kind::Reg;
@@ -229,10 +235,11 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   }
   const int inputs = inputCount(name);
   if (e.depth() < inputs) {
-    e.error(at, what + " needs its inputs " + inputsOf(name) + " in ST" +
-                    std::to_string(inputs - 1) + "..ST0 (" +
-                    (inputs == 1 ? "an RD before it" : "RD, then RD.STK for each further input") +
-                    "), found " + std::to_string(e.depth()));
+    e.error(at, "LJ4076",
+            what + " needs its inputs " + inputsOf(name) + " in ST" + std::to_string(inputs - 1) +
+                "..ST0 (" +
+                (inputs == 1 ? "an RD before it" : "RD, then RD.STK for each further input") +
+                "), found " + std::to_string(e.depth()));
     return true;
   }
   const auto &p = f.params;
@@ -241,7 +248,8 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   if (name == "COM") {
     if (!paramCount(e, f, what, 0, "none")) return true;
     if (rg.comStmt >= 0) {
-      e.error(at, what + " inside COM..COME (COM on line " + std::to_string(rg.comLine) + ")");
+      e.error(at, "LJ4077",
+              what + " inside COM..COME (COM on line " + std::to_string(rg.comLine) + ")");
       return true;
     }
     rg.comStmt = e.stmtCount();
@@ -253,7 +261,8 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
   if (name == "JMP") {
     if (!paramCount(e, f, what, 0, "none")) return true;
     if (rg.jmpLabel >= 0) {
-      e.error(at, what + " inside JMP..JMPE (JMP on line " + std::to_string(rg.jmpLine) + ")");
+      e.error(at, "LJ4078",
+              what + " inside JMP..JMPE (JMP on line " + std::to_string(rg.jmpLine) + ")");
       return true;
     }
     rg.jmpLabel = rg.nextLabel++;
@@ -282,9 +291,10 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
     if (ok) {
       const int64_t nn = spec / 100, dd = spec % 100;
       if (dd != 1 && dd != 10 && dd != 11) {
-        e.error(p[1].loc, "decode specification '" + std::string(p[1].text) +
-                              "': the last two digits are 01 (low digit), 10 (high digit) or 11 "
-                              "(both), like 0311");
+        e.error(p[1].loc, "LJ4079",
+                "decode specification '" + std::string(p[1].text) +
+                    "': the last two digits are 01 (low digit), 10 (high digit) or 11 "
+                    "(both), like 0311");
         return true;
       }
       const int mask = dd == 1 ? 0x0F : dd == 10 ? 0xF0 : 0xFF;
@@ -366,8 +376,9 @@ bool emitDataFunctional(Emitter &e, const Functional &f, std::string_view name,
         spanOperand(e, p[3], 2, 1, search, d);
     if (!ok) return true;
     if (search && b.area != Area::DataTable) {
-      e.error(p[1].loc, "table head '" + std::string(p[1].text) +
-                            "': DSCH searches the data table only (a D address, ref 6.7)");
+      e.error(p[1].loc, "LJ4080",
+              "table head '" + std::string(p[1].text) +
+                  "': DSCH searches the data table only (a D address, ref 6.7)");
       return true;
     }
     e.emit(search ? Op::BcdSearchTable : Op::BcdIndexedTable, at, {konst(cap, p[0].loc), b, c, d});
@@ -398,11 +409,13 @@ bool emitCommonCoil(Emitter &e, Op op, const Operand &bit, SourceLoc at) {
 void closeRegions(Emitter &e, std::string_view marker, SourceLoc at) {
   FlowRegions &rg = e.regions();
   if (rg.comStmt >= 0)
-    e.error(at, "COM on line " + std::to_string(rg.comLine) + " has no COME before " +
-                    std::string(marker));
+    e.error(at, "LJ4081",
+            "COM on line " + std::to_string(rg.comLine) + " has no COME before " +
+                std::string(marker));
   if (rg.jmpLabel >= 0)
-    e.error(at, "JMP on line " + std::to_string(rg.jmpLine) + " has no JMPE before " +
-                    std::string(marker));
+    e.error(at, "LJ4082",
+            "JMP on line " + std::to_string(rg.jmpLine) + " has no JMPE before " +
+                std::string(marker));
   rg.comStmt = -1;
   rg.jmpLabel = -1;
 }

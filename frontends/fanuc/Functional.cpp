@@ -211,18 +211,15 @@ Shape shapeOf(Fn f) {
 
 /// A 4-digit nibble written in binary (`0001`) as MOVE's mask halves are (reference 6.5).
 bool nibble(Emitter &e, const Token &t, int &out) {
-  if (t.text.size() != 4) {
-    e.error(t.loc,
+  out = 0;
+  auto bad = [&] {
+    e.error(t.loc, "LJ4002",
             "a MOVE mask half is 4 binary digits (like 0001), got '" + std::string(t.text) + "'");
     return false;
-  }
-  out = 0;
+  };
+  if (t.text.size() != 4) return bad();
   for (char c : t.text) {
-    if (c != '0' && c != '1') {
-      e.error(t.loc,
-              "a MOVE mask half is 4 binary digits (like 0001), got '" + std::string(t.text) + "'");
-      return false;
-    }
+    if (c != '0' && c != '1') return bad();
     out = out * 2 + (c - '0');
   }
   return true;
@@ -235,9 +232,10 @@ bool format(Emitter &e, const Token &t, bool allowAddress, bool &isAddr, int &wi
   width = static_cast<int>(v % 10);
   const int64_t kind = v / 1000, middle = (v / 10) % 100;
   if ((width != 1 && width != 2 && width != 4) || middle != 0 || kind > (allowAddress ? 1 : 0)) {
-    e.error(t.loc, std::string("format '") + std::string(t.text) + "': expected " +
-                       (allowAddress ? "0001/0002/0004 (constant) or 1001/1002/1004 (address)"
-                                     : "0001, 0002 or 0004"));
+    e.error(t.loc, "LJ4046",
+            std::string("format '") + std::string(t.text) + "': expected " +
+                (allowAddress ? "0001/0002/0004 (constant) or 1001/1002/1004 (address)"
+                              : "0001, 0002 or 0004"));
     return false;
   }
   isAddr = kind == 1;
@@ -253,8 +251,9 @@ void selectCall(Emitter &e, Fn fn, const std::string &what, SourceLoc at,
   Operand a;
   if (fn == Fn::Cs) {
     if (rg.csLine != at.line || rg.csOk) {
-      e.error(at, what + " inside the CS list opened on line " + std::to_string(rg.csLine) +
-                      " (CS..CE lists do not nest; close it with CE first)");
+      e.error(at, "LJ4047",
+              what + " inside the CS list opened on line " + std::to_string(rg.csLine) +
+                  " (CS..CE lists do not nest; close it with CE first)");
       return;
     }
     if (!e.dataOperand(p[0], 2, false, false, a)) return;
@@ -265,7 +264,7 @@ void selectCall(Emitter &e, Fn fn, const std::string &what, SourceLoc at,
     return;
   }
   if (rg.csLine == 0) {
-    e.error(at, what + " outside a CS..CE list (it must follow a CS)");
+    e.error(at, "LJ4048", what + " outside a CS..CE list (it must follow a CS)");
     return;
   }
   if (fn == Fn::Ce) {
@@ -291,7 +290,7 @@ void selectCall(Emitter &e, Fn fn, const std::string &what, SourceLoc at,
 void closeSelect(Emitter &e, std::string_view marker, SourceLoc at) {
   FlowRegions &rg = e.regions();
   if (rg.csLine > 0)
-    e.error(at,
+    e.error(at, "LJ4049",
             "CS on line " + std::to_string(rg.csLine) + " has no CE before " + std::string(marker));
   rg.csLine = 0;
 }
@@ -301,8 +300,9 @@ bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at) 
   if (rg.csLine == 0 || head == "CS" || head == "CM" || head == "CE" || sub == 74 || sub == 75 ||
       sub == 76)
     return false;
-  e.error(at, "only CM lines may stand between CS (line " + std::to_string(rg.csLine) +
-                  ") and CE, got " + std::string(head));
+  e.error(at, "LJ4050",
+          "only CM lines may stand between CS (line " + std::to_string(rg.csLine) +
+              ") and CE, got " + std::string(head));
   return true;
 }
 
@@ -316,7 +316,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
     if (!e.constant(f.number, 0, 9999, "SUB number", n)) return;
     row = rowBySub(n);
     if (!row) {
-      e.error(f.number.loc, "unknown functional instruction SUB " + std::to_string(n));
+      e.error(f.number.loc, "LJ4051", "unknown functional instruction SUB " + std::to_string(n));
       return;
     }
     what = "SUB " + std::to_string(n) + " (" + row->name + ")";
@@ -325,13 +325,14 @@ void emitFunctional(Emitter &e, const Functional &f) {
     what = row->name;
   }
   const SourceLoc at = f.head.loc;
+  auto notYet = [&] {
+    e.error(at, "LJ4003",
+            what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
+  };
   if (emitTimerCounter(e, f, row->sub, what)) return; // TimerCounter.cpp
   if (row->fn == Fn::Unsupported && emitDataFunctional(e, f, row->name, what)) return;
   if (row->fn == Fn::Unsupported && emitArithFunctional(e, f, row->sub, what)) return;
-  if (row->fn == Fn::Unsupported) {
-    e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
-    return;
-  }
+  if (row->fn == Fn::Unsupported) return notYet();
   if (row->fn == Fn::Cs && e.regions().csLine == 0) {
     // Open the list before CS's own checks so its CM/CE lines do not report again.
     e.regions().csLine = at.line;
@@ -339,19 +340,20 @@ void emitFunctional(Emitter &e, const Functional &f) {
   }
   const Shape shape = shapeOf(row->fn);
   if (static_cast<int>(f.params.size()) != shape.count) {
-    e.error(at, what + " takes " + std::to_string(shape.count) + " parameters (" + shape.roles +
-                    "), got " + std::to_string(f.params.size()));
+    e.error(at, "LJ4052",
+            what + " takes " + std::to_string(shape.count) + " parameters (" + shape.roles +
+                "), got " + std::to_string(f.params.size()));
     return;
   }
   const auto &p = f.params;
   const bool needsAct =
       row->fn != Fn::Callu && row->fn != Fn::Lbl && row->fn != Fn::Cm && row->fn != Fn::Ce;
   if (needsAct && e.depth() < 1) {
-    e.error(at, what + " needs its ACT input in ST0 (an RD before it)");
+    e.error(at, "LJ4053", what + " needs its ACT input in ST0 (an RD before it)");
     return;
   }
   if ((row->fn == Fn::Call || row->fn == Fn::Callu || row->fn == Fn::Cs) && e.level() == 1) {
-    e.error(at, what + ": level 1 cannot call subroutines (reference 4.2, L877)");
+    e.error(at, "LJ4054", what + ": level 1 cannot call subroutines (reference 4.2, L877)");
     return;
   }
   Operand a, b, c;
@@ -434,7 +436,8 @@ void emitFunctional(Emitter &e, const Functional &f) {
     if (isAddr ? !e.dataOperand(p[2], w, false, false, b) : !e.dataOperand(p[2], w, true, false, b))
       return;
     if (!isAddr && b.kind != Operand::Kind::Const) {
-      e.error(p[2].loc, "format " + std::string(p[0].text) + " says the operand is a constant");
+      e.error(p[2].loc, "LJ4055",
+              "format " + std::string(p[0].text) + " says the operand is a constant");
       return;
     }
     if (!e.dataOperand(p[3], w, false, true, c)) return;
@@ -478,8 +481,7 @@ void emitFunctional(Emitter &e, const Functional &f) {
     }
     return;
   case Fn::Ne:
-    e.error(at, what + " is not implemented in this build (docs/fanuc-pmc.md \"Not yet\")");
-    return;
+    return notYet();
   case Fn::Jmpb:
     if (!e.labelOperand(p[0], Area::Label, a)) return;
     e.emit(Op::Jump, at, {a});

@@ -119,11 +119,13 @@ public:
       } else if (in_ == In::Outside || in_ == In::AfterEnd) {
         if (!t.empty() && t[0] != ';' && t.substr(0, 2) != "//" && !reported_) {
           reported_ = true;
-          diags_.error({line, col}, in_ == In::AfterEnd
-                                        ? "text after %@E (the end of the mnemonic file)"
-                                        : "text outside a section: " + SymbolTable::quote(t) +
-                                              " (mnemonic lines belong in a %@3 section, symbols "
-                                              "in a %@2-E section)");
+          if (in_ == In::AfterEnd)
+            afterEnd(line, col);
+          else
+            diags_.error({line, col}, "LJ4004",
+                         "text outside a section: " + SymbolTable::quote(t) +
+                             " (mnemonic lines belong in a %@3 section, symbols in a %@2-E "
+                             "section)");
         }
       }
       if (!t.empty() && t[0] != ';' && t.substr(0, 2) != "//") first = false;
@@ -131,17 +133,20 @@ public:
       pos = nl + 1;
     }
     if (in_ != In::Outside && in_ != In::AfterEnd) {
-      diags_.error({openLine_, 1}, "section " + openName_ +
-                                       " is not closed: the file ends inside it (a line holding "
-                                       "only '%' ends a section)");
+      diags_.error({openLine_, 1}, "LJ4083",
+                   "section " + openName_ +
+                       " is not closed: the file ends inside it (a line holding "
+                       "only '%' ends a section)");
       close(text_.size());
     }
     if (allLine_ > 0 && in_ != In::AfterEnd)
-      diags_.error({std::max(lastLine_, 1), 1}, "%@A (line " + std::to_string(allLine_) +
-                                                    ") without %@E at the end of the file");
+      diags_.error({std::max(lastLine_, 1), 1}, "LJ4084",
+                   "%@A (line " + std::to_string(allLine_) +
+                       ") without %@E at the end of the file");
     if (ladderLine_ == 0)
-      diags_.error({1, 1}, "this mnemonic file has no ladder section (%@3 holds the mnemonic "
-                           "lines, docs/fanuc-pmc.md)");
+      diags_.error({1, 1}, "LJ4085",
+                   "this mnemonic file has no ladder section (%@3 holds the mnemonic "
+                   "lines, docs/fanuc-pmc.md)");
     src_.hasLadder = ladderLine_ > 0;
   }
 
@@ -153,15 +158,17 @@ private:
     reported_ = false;
     if (t == "%") {
       if (in_ == In::Outside || in_ == In::AfterEnd)
-        diags_.error({line, col}, "'%' closes no section (it ends the section a %@ line opens)");
+        diags_.error({line, col}, "LJ4086",
+                     "'%' closes no section (it ends the section a %@ line opens)");
       else
         close(lineStart);
       return;
     }
     if (t.size() < 3 || t[1] != '@') {
-      diags_.error({line, col}, "bad section line " + SymbolTable::quote(t) +
-                                    ": a section starts with %@ and its code (%@3, %@2-E), a "
-                                    "line holding only '%' ends it");
+      diags_.error({line, col}, "LJ4087",
+                   "bad section line " + SymbolTable::quote(t) +
+                       ": a section starts with %@ and its code (%@3, %@2-E), a "
+                       "line holding only '%' ends it");
       return;
     }
     std::string_view code = t.substr(2);
@@ -170,14 +177,15 @@ private:
     const std::string name = "%@" + std::string(trim(code.substr(0, paren)));
     if (id == "A") {
       if (!first || allLine_ > 0)
-        diags_.error({line, col}, "%@A must be the first line of the file (it opens ALL-format "
-                                  "data)");
+        diags_.error({line, col}, "LJ4088",
+                     "%@A must be the first line of the file (it opens ALL-format "
+                     "data)");
       else
         allLine_ = line;
       return;
     }
     if (in_ == In::AfterEnd) {
-      if (!reported_) diags_.error({line, col}, "text after %@E (the end of the mnemonic file)");
+      if (!reported_) afterEnd(line, col);
       reported_ = true;
       return;
     }
@@ -185,7 +193,8 @@ private:
     if (in_ != In::Outside) close(lineStart);
     if (id == "E") {
       if (allLine_ == 0)
-        diags_.error({line, col}, "%@E without %@A (%@E ends ALL-format data that %@A starts)");
+        diags_.error({line, col}, "LJ4089",
+                     "%@E without %@A (%@E ends ALL-format data that %@A starts)");
       in_ = In::AfterEnd;
       return;
     }
@@ -193,8 +202,9 @@ private:
     openName_ = name;
     if (id == "3") {
       if (ladderLine_ > 0) {
-        diags_.error({line, col}, "a second ladder section %@3 (the first is on line " +
-                                      std::to_string(ladderLine_) + ")");
+        diags_.error({line, col}, "LJ4090",
+                     "a second ladder section %@3 (the first is on line " +
+                         std::to_string(ladderLine_) + ")");
         in_ = In::Skipped;
         return;
       }
@@ -208,7 +218,7 @@ private:
                 : In::Skipped;
       nameless_ = 0;
     } else {
-      diags_.warning({line, col},
+      diags_.warning({line, col}, "LJ4091",
                      "section " + name + sectionContents(id) + " is not read by ladderjit");
       in_ = In::Skipped;
     }
@@ -221,7 +231,7 @@ private:
       src_.firstLine = ladderLine_ + 1;
     }
     if (in_ == In::Symbols && nameless_ > 0)
-      diags_.warning(namelessAt_,
+      diags_.warning(namelessAt_, "LJ4092",
                      std::to_string(nameless_) + " row" + (nameless_ == 1 ? "" : "s") +
                          " of section " + openName_ +
                          " give an address no symbol name: ladderjit keeps only named symbols, "
@@ -236,11 +246,11 @@ private:
     if (opt.empty()) return true;
     const size_t close = opt.find(')');
     if (close == std::string_view::npos) {
-      diags_.error({line, col}, "the %@2-E option has no closing ')'");
+      diags_.error({line, col}, "LJ4093", "the %@2-E option has no closing ')'");
       return false;
     }
     if (const std::string_view after = trim(opt.substr(close + 1)); !after.empty()) {
-      diags_.error({line, col + static_cast<int32_t>(after.data() - opt.data())},
+      diags_.error({line, col + static_cast<int32_t>(after.data() - opt.data())}, "LJ4094",
                    "text after the %@2-E option: " + SymbolTable::quote(after));
       return false;
     }
@@ -258,7 +268,7 @@ private:
       i = end;
       const size_t eq = item.find('=');
       if (eq == std::string_view::npos) {
-        diags_.error({line, at},
+        diags_.error({line, at}, "LJ4095",
                      "expected KEY=COLUMN in the %@2-E option, got " + SymbolTable::quote(item));
         return false;
       }
@@ -266,8 +276,9 @@ private:
       int k = 0;
       while (k < 4 && key != kKeys[k]) ++k;
       if (k == 4) {
-        diags_.error({line, at}, "unknown key " + SymbolTable::quote(item.substr(0, eq)) +
-                                     " in the %@2-E option (keys: SYM ADR CM1 CM2)");
+        diags_.error({line, at}, "LJ4096",
+                     "unknown key " + SymbolTable::quote(item.substr(0, eq)) +
+                         " in the %@2-E option (keys: SYM ADR CM1 CM2)");
         return false;
       }
       const std::string_view num = item.substr(eq + 1);
@@ -278,18 +289,19 @@ private:
         n = n * 10 + (num[d] - '0');
       }
       if (!ok || n < 1 || n > kMaxColumn) {
-        diags_.error({line, at + static_cast<int32_t>(eq) + 1},
+        diags_.error({line, at + static_cast<int32_t>(eq) + 1}, "LJ4097",
                      "bad column number " + SymbolTable::quote(num) + " for " + kKeys[k] + " (1.." +
                          std::to_string(kMaxColumn) + ")");
         return false;
       }
       if (cols_.col[static_cast<size_t>(k)] != 0) {
-        diags_.error({line, at}, std::string(kKeys[k]) + " is given twice in the %@2-E option");
+        diags_.error({line, at}, "LJ4098",
+                     std::string(kKeys[k]) + " is given twice in the %@2-E option");
         return false;
       }
       for (int o = 0; o < 4; ++o)
         if (cols_.col[static_cast<size_t>(o)] == n) {
-          diags_.error({line, at + static_cast<int32_t>(eq) + 1},
+          diags_.error({line, at + static_cast<int32_t>(eq) + 1}, "LJ4099",
                        "column " + std::to_string(n) + " is given to both " + kKeys[o] + " and " +
                            kKeys[k]);
           return false;
@@ -298,8 +310,9 @@ private:
     }
     for (int k = 0; k < 2; ++k)
       if (cols_.col[static_cast<size_t>(k)] == 0) {
-        diags_.error({line, col}, std::string("the %@2-E option gives no ") + kKeys[k] +
-                                      " column (a symbol needs SYM and ADR)");
+        diags_.error({line, col}, "LJ4100",
+                     std::string("the %@2-E option gives no ") + kKeys[k] +
+                         " column (a symbol needs SYM and ADR)");
         return false;
       }
     return true;
@@ -334,7 +347,7 @@ private:
     if (!cm2.text.empty()) (comment += comment.empty() ? "" : " / ") += cm2.text;
     if (const Symbol *prev = table_.find(n)) {
       const int32_t at = defined_[static_cast<size_t>(prev - table_.symbols().data())];
-      diags_.error({line, name.col},
+      diags_.error({line, name.col}, "LJ4101",
                    "duplicate symbol " + SymbolTable::quote(n) + " (already defined " +
                        (at > 0 ? "on line " + std::to_string(at)
                                : std::string("in the symbols given with the program")) +
@@ -354,8 +367,13 @@ private:
     defined_.push_back(line);
   }
 
+  /// A line after %@E, the end of the file, that is no comment.
+  void afterEnd(int32_t line, int32_t col) {
+    diags_.error({line, col}, "LJ4005", "text after %@E (the end of the mnemonic file)");
+  }
+
   void reject(const std::string &name, int32_t line, int32_t col, std::string msg) {
-    diags_.error({line, col}, std::move(msg));
+    diags_.error({line, col}, "LJ4006", std::move(msg));
     src_.rejected.emplace(detail::upper(name), line);
   }
 
@@ -398,7 +416,7 @@ PmcSource readPmcSource(std::string_view text, const SymbolTable *external, Symb
       if (table.add(s.name, s.address, s.comment, why))
         defined.push_back(0);
       else
-        diags.error({}, "symbols given with the program: " + why);
+        diags.error({}, "LJ4102", "symbols given with the program: " + why);
     }
   }
   // A mnemonic file: its first line that is neither blank nor a comment is a section line.

@@ -124,9 +124,10 @@ public:
   void line(const std::vector<Token> &toks, bool hasComment, std::string_view comment) {
     const std::string head = detail::upper(toks[0].text);
     if (!toks[0].text.empty() && toks[0].text[0] == '%') {
-      error(toks[0].loc, quote(toks[0].text) +
-                             " among mnemonic lines: a mnemonic file starts with %@A or a section "
-                             "header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md");
+      error(toks[0].loc, "LJ4007",
+            quote(toks[0].text) +
+                " among mnemonic lines: a mnemonic file starts with %@A or a section "
+                "header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md");
       return;
     }
     if (symbols_)
@@ -136,11 +137,11 @@ public:
           symbolAt_.emplace(std::make_pair(toks[k].loc.line, toks[k].loc.col), sym);
     if (head == "(PRM)" || head == "PRM") {
       if (!pending_) {
-        error(toks[0].loc, "parameter line without a functional instruction before it");
+        error(toks[0].loc, "LJ4008", "parameter line without a functional instruction before it");
         return;
       }
       if (toks.size() != 2) {
-        error(toks[0].loc,
+        error(toks[0].loc, "LJ4009",
               "a parameter line holds one value, got " + std::to_string(toks.size() - 1));
         return;
       }
@@ -150,7 +151,7 @@ public:
     flush();
     const auto next = static_cast<int32_t>(prog_.stmts.size());
     if (afterEnd_) {
-      error(toks[0].loc, "statement after END (END ends the program)");
+      error(toks[0].loc, "LJ4010", "statement after END (END ends the program)");
       return;
     }
     if (!isMarkerName(head)) {
@@ -172,7 +173,7 @@ public:
       size_t first = 1;
       if (head == "SUB") {
         if (toks.size() < 2) {
-          error(toks[0].loc, "SUB needs its instruction number (SUB 24)");
+          error(toks[0].loc, "LJ4011", "SUB needs its instruction number (SUB 24)");
           return;
         }
         f.number = toks[1];
@@ -184,7 +185,7 @@ public:
       pendingFirst_ = next;
       return;
     } else {
-      error(toks[0].loc, "unknown instruction " + quote(toks[0].text));
+      error(toks[0].loc, "LJ4012", "unknown instruction " + quote(toks[0].text));
       return;
     }
     if (hasComment && static_cast<int32_t>(prog_.stmts.size()) > next)
@@ -204,19 +205,19 @@ public:
   void finish(int32_t lastLine) {
     flush();
     if (!sawEnd1_)
-      error({lastLine, 1}, "program has no END1 (END1 is required, reference 4.1)");
+      error({lastLine, 1}, "LJ4013", "program has no END1 (END1 is required, reference 4.1)");
     else if (!sawEnd2_)
-      error({lastLine, 1}, "program has no END2 (level 2 ends with END2)");
+      error({lastLine, 1}, "LJ4014", "program has no END2 (level 2 ends with END2)");
     else if (!afterEnd_)
-      error({lastLine, 1}, "program has no END (the last instruction)");
+      error({lastLine, 1}, "LJ4015", "program has no END (the last instruction)");
   }
 
   // ---- Emitter ----
   // An error at an operand written as a symbol says what the symbol stands for.
-  void error(SourceLoc at, std::string msg) override {
+  void error(SourceLoc at, const char *code, std::string msg) override {
     if (auto it = symbolAt_.find({at.line, at.col}); it != symbolAt_.end())
       msg += " (symbol " + SymbolTable::quote(it->second->name) + " = " + it->second->address + ")";
-    diags_.error(at, std::move(msg));
+    diags_.error(at, code, std::move(msg));
   }
 
   std::string unknownSymbol(std::string_view name) const {
@@ -235,7 +236,7 @@ public:
     if (symbols_ && SymbolTable::isNameShaped(s)) {
       const Symbol *sym = symbols_->find(s);
       if (!sym) {
-        error(t.loc, unknownSymbol(s));
+        error(t.loc, "LJ4016", unknownSymbol(s));
         return false;
       }
       // The table holds canonical addresses: the checks that follow are exactly those of the
@@ -245,7 +246,7 @@ public:
     }
     std::string why;
     if (!detail::readAddress(s, true, out, bit, why)) {
-      error(t.loc, why);
+      error(t.loc, "LJ4017", why);
       return false;
     }
     out.loc = t.loc;
@@ -257,25 +258,22 @@ public:
     int64_t bit;
     if (!address(t, out, bit)) return false;
     if (tp().area(out.area).bytes == 0) {
-      error(t.loc, "expected a bit address (like R0.0), got " + quote(t.text));
+      error(t.loc, "LJ4018", "expected a bit address (like R0.0), got " + quote(t.text));
       return false;
     }
     if (bit < 0) {
-      error(t.loc, "expected a bit address (like R0.0), got byte " + quote(t.text));
+      error(t.loc, "LJ4019", "expected a bit address (like R0.0), got byte " + quote(t.text));
       return false;
     }
     if (bit > 7) {
       // The digits saturate at 2^40: a longer number is not shown as that value.
-      error(t.loc, "bit number " +
-                       (bit >= (int64_t{1} << 40) ? std::string() : std::to_string(bit) + " ") +
-                       "out of range in " + quote(t.text) + " (bits 0..7)");
+      error(t.loc, "LJ4020",
+            "bit number " +
+                (bit >= (int64_t{1} << 40) ? std::string() : std::to_string(bit) + " ") +
+                "out of range in " + quote(t.text) + " (bits 0..7)");
       return false;
     }
-    if (writes && !tp().area(out.area).writable) {
-      error(t.loc, quote(t.text) + " is read-only (" + tp().area(out.area).name +
-                       " is written by the machine or the CNC)");
-      return false;
-    }
+    if (writes && !tp().area(out.area).writable) return readOnly(t, out.area);
     out.kind = Operand::Kind::Bit;
     out.bit = static_cast<int8_t>(bit);
     return true;
@@ -294,13 +292,14 @@ public:
     while (pos < s.size() && isDigit(s[pos]))
       v = std::min<int64_t>(v * 10 + (s[pos++] - '0'), int64_t{1} << 40);
     if (pos == start || pos != s.size()) {
-      error(t.loc, std::string("expected a number as ") + role + ", got " + quote(s));
+      error(t.loc, "LJ4021", std::string("expected a number as ") + role + ", got " + quote(s));
       return false;
     }
     if (neg) v = -v;
     if (v < lo || v > hi) {
-      error(t.loc, std::string(role) + " " + quote(s) + " out of range (" + std::to_string(lo) +
-                       ".." + std::to_string(hi) + ")");
+      error(t.loc, "LJ4022",
+            std::string(role) + " " + quote(s) + " out of range (" + std::to_string(lo) + ".." +
+                std::to_string(hi) + ")");
       return false;
     }
     return true;
@@ -310,7 +309,7 @@ public:
     std::string_view s = t.text;
     if (!s.empty() && (isDigit(s[0]) || s[0] == '-' || s[0] == '+')) {
       if (!constOk) {
-        error(t.loc, "expected an address, got constant " + quote(s));
+        error(t.loc, "LJ4023", "expected an address, got constant " + quote(s));
         return false;
       }
       const int64_t lo = width == 1 ? -128 : width == 2 ? -32768 : INT32_MIN;
@@ -329,19 +328,16 @@ public:
     int64_t bit;
     if (!address(t, out, bit)) return false;
     if (bit >= 0 || tp().area(out.area).bytes == 0) {
-      error(t.loc, "expected a byte address (like D100), got " + quote(s));
+      error(t.loc, "LJ4024", "expected a byte address (like D100), got " + quote(s));
       return false;
     }
     if (!tp().validSpan(out.area, out.index, width)) {
-      error(t.loc, quote(s) + " as " + std::to_string(width) + " bytes runs past the end of " +
-                       detail::ranges(out.area));
+      error(t.loc, "LJ4025",
+            quote(s) + " as " + std::to_string(width) + " bytes runs past the end of " +
+                detail::ranges(out.area));
       return false;
     }
-    if (writes && !tp().area(out.area).writable) {
-      error(t.loc, quote(s) + " is read-only (" + tp().area(out.area).name +
-                       " is written by the machine or the CNC)");
-      return false;
-    }
+    if (writes && !tp().area(out.area).writable) return readOnly(t, out.area);
     out.kind = Operand::Kind::Reg;
     out.width = static_cast<uint8_t>(width);
     return true;
@@ -349,21 +345,21 @@ public:
 
   bool labelOperand(const Token &t, Area a, Operand &out) override {
     if (symbols_ && SymbolTable::isNameShaped(t.text)) {
-      error(t.loc, std::string("expected ") +
-                       (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
-                       quote(t.text) + ": labels and subroutines are not symbols");
+      error(t.loc, "LJ4026",
+            std::string("expected ") + (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") +
+                ", got " + quote(t.text) + ": labels and subroutines are not symbols");
       return false;
     }
     int64_t bit;
     if (!address(t, out, bit) || out.area != a || bit >= 0) {
       if (out.area != a || bit >= 0)
-        error(t.loc, std::string("expected ") +
-                         (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") + ", got " +
-                         quote(t.text));
+        error(t.loc, "LJ4027",
+              std::string("expected ") + (a == Area::Label ? "a label (L1)" : "a subroutine (P1)") +
+                  ", got " + quote(t.text));
       return false;
     }
     if (out.index < 1) {
-      error(t.loc, quote(t.text) + ": numbers start at 1");
+      error(t.loc, "LJ4028", quote(t.text) + ": numbers start at 1");
       return false;
     }
     out.kind = Operand::Kind::Reg;
@@ -386,48 +382,59 @@ public:
   bool claimNumber(char space, int64_t n, SourceLoc at) override {
     auto [it, fresh] = numbers_.emplace(std::make_pair(space, n), at);
     if (!fresh)
-      error(at, std::string(space == 'E'                   ? "edge"
-                            : space == 'C' || space == 'B' ? "counter"
-                                                           : "timer") +
-                    " number " + std::to_string(n) + " is already used on line " +
-                    std::to_string(it->second.line));
+      error(at, "LJ4029",
+            std::string(space == 'E'                   ? "edge"
+                        : space == 'C' || space == 'B' ? "counter"
+                                                       : "timer") +
+                " number " + std::to_string(n) + " is already used on line " +
+                std::to_string(it->second.line));
     return fresh;
   }
   int32_t stmtCount() const override { return static_cast<int32_t>(prog_.stmts.size()); }
   detail::FlowRegions &regions() override { return regions_; }
 
 private:
+  /// A written operand `t` in area `a`, which only the machine or the CNC writes: false.
+  bool readOnly(const Token &t, Area a) {
+    error(t.loc, "LJ4001",
+          quote(t.text) + " is read-only (" + tp().area(a).name +
+              " is written by the machine or the CNC)");
+    return false;
+  }
+
   void basic(const Basic &b, const std::vector<Token> &toks) {
     const bool operand = b.kind != Basic::Block;
     if (toks.size() != (operand ? 2u : 1u)) {
-      error(toks[0].loc, std::string(b.name) +
-                             (operand ? " takes one bit address" : " takes no operand") + ", got " +
-                             std::to_string(toks.size() - 1));
+      error(toks[0].loc, "LJ4030",
+            std::string(b.name) + (operand ? " takes one bit address" : " takes no operand") +
+                ", got " + std::to_string(toks.size() - 1));
       return;
     }
     switch (b.kind) {
     case Basic::Combine:
     case Basic::Write:
       if (depth_ < 1) {
-        error(toks[0].loc, std::string(b.name) + " without a logic line (start it with RD)");
+        error(toks[0].loc, "LJ4031",
+              std::string(b.name) + " without a logic line (start it with RD)");
         return;
       }
       break;
     case Basic::ReadStk:
       if (depth_ < 1) {
-        error(toks[0].loc, std::string(b.name) + " with no logic line to push (use RD)");
+        error(toks[0].loc, "LJ4032", std::string(b.name) + " with no logic line to push (use RD)");
         return;
       }
       if (depth_ >= 8) {
-        error(toks[0].loc,
+        error(toks[0].loc, "LJ4033",
               std::string(b.name) + " pushes a ninth operation result: the PMC has only ST0..ST7");
         return;
       }
       break;
     case Basic::Block:
       if (depth_ < 2) {
-        error(toks[0].loc, std::string(b.name) + " needs two logic lines (ST1 and ST0), found " +
-                               std::to_string(depth_));
+        error(toks[0].loc, "LJ4034",
+              std::string(b.name) + " needs two logic lines (ST1 and ST0), found " +
+                  std::to_string(depth_));
         return;
       }
       break;
@@ -461,38 +468,41 @@ private:
     const SourceLoc at = toks[0].loc;
     const bool takesOperand = head == "SP";
     if (toks.size() != (takesOperand ? 2u : 1u)) {
-      error(at, head + (takesOperand ? " takes one subroutine (SP P1)" : " takes no operand") +
-                    ", got " + std::to_string(toks.size() - 1));
+      error(at, "LJ4035",
+            head + (takesOperand ? " takes one subroutine (SP P1)" : " takes no operand") +
+                ", got " + std::to_string(toks.size() - 1));
       return;
     }
     depth_ = 0;
     detail::closeRegions(*this, head, at);
     detail::closeSelect(*this, head, at);
     if (head == "END1") {
-      if (sawEnd1_) return error(at, "duplicate END1");
+      if (sawEnd1_) return error(at, "LJ4036", "duplicate END1");
       sawEnd1_ = true;
       level_ = 2;
       emit(Op::EndCyclic, at, {});
     } else if (head == "END2") {
-      if (!sawEnd1_) return error(at, "END2 before END1");
-      if (sawEnd2_) return error(at, "duplicate END2");
+      if (!sawEnd1_) return error(at, "LJ4037", "END2 before END1");
+      if (sawEnd2_) return error(at, "LJ4038", "duplicate END2");
       sawEnd2_ = true;
       level_ = 3;
       level3Start_ = static_cast<int32_t>(prog_.stmts.size());
       emit(Op::EndSliced, at, {});
     } else if (head == "END3") {
       if (!sawEnd2_ || level_ != 3)
-        return error(at, "END3 must follow END2 (level 3 is END2..END3)");
+        return error(at, "LJ4039", "END3 must follow END2 (level 3 is END2..END3)");
       if (static_cast<int32_t>(prog_.stmts.size()) != level3Start_ + 1)
-        return error(at, "level 3 (END2..END3) is not supported: it must be empty "
-                         "(docs/fanuc-pmc.md, [EXT] levels)");
+        return error(at, "LJ4040",
+                     "level 3 (END2..END3) is not supported: it must be empty "
+                     "(docs/fanuc-pmc.md, [EXT] levels)");
       level_ = 4;
     } else if (head == "END") {
-      if (!sawEnd2_) return error(at, "END before END2");
-      if (inSub_) return error(at, "END inside a subroutine (SP without SPE)");
+      if (!sawEnd2_) return error(at, "LJ4041", "END before END2");
+      if (inSub_) return error(at, "LJ4042", "END inside a subroutine (SP without SPE)");
       afterEnd_ = true;
     } else if (head == "SP") {
-      if (!sawEnd2_) return error(at, "SP before END2: subroutines follow END2 (or END3)");
+      if (!sawEnd2_)
+        return error(at, "LJ4043", "SP before END2: subroutines follow END2 (or END3)");
       if (level_ == 3) level_ = 4;
       Operand o;
       if (!labelOperand(toks[1], Area::Subroutine, o)) return;
@@ -678,12 +688,13 @@ ParsedProgram parsePmc(std::string_view text, std::string file, Diagnostics &dia
     }
     p.line(toks, hasComment, comment);
     if (diags.errorCount() >= 100) {
-      diags.error({line, 1}, "too many errors (100); the rest is not checked");
+      diags.error({line, 1}, "LJ4044", "too many errors (100); the rest is not checked");
       break;
     }
     if (prog.stmts.size() > static_cast<size_t>(profile().maxStatements)) {
-      diags.error({line, 1}, "program has more than " + std::to_string(profile().maxStatements) +
-                                 " statements");
+      diags.error({line, 1}, "LJ4045",
+                  "program has more than " + std::to_string(profile().maxStatements) +
+                      " statements");
       break;
     }
   }

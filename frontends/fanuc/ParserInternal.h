@@ -39,7 +39,8 @@ struct FlowRegions {
 class Emitter {
 public:
   virtual ~Emitter() = default;
-  virtual void error(SourceLoc at, std::string msg) = 0;
+  /// A located error with its stable code (docs/diagnostics.md, LJ4001..).
+  virtual void error(SourceLoc at, const char *code, std::string msg) = 0;
   /// A bit address (`R0.0`); `writes`: must be writable.
   virtual bool bitOperand(const Token &t, bool writes, Operand &out) = 0;
   /// A byte address read/written as `width` bytes (`D100`), or with `constOk` a decimal

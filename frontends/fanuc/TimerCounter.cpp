@@ -58,8 +58,9 @@ bool compbFormat(Emitter &e, const Token &t, bool &isAddr, int &width) {
   if (!e.constant(t, 0, 9999, "format", v)) return false;
   width = static_cast<int>(v % 10);
   if ((width != 1 && width != 2 && width != 4) || (v / 10) % 100 != 0 || v / 1000 > 1) {
-    e.error(t.loc, "format '" + std::string(t.text) +
-                       "': expected 0001/0002/0004 (constant) or 1001/1002/1004 (address)");
+    e.error(t.loc, "LJ4056",
+            "format '" + std::string(t.text) +
+                "': expected 0001/0002/0004 (constant) or 1001/1002/1004 (address)");
     return false;
   }
   isAddr = v >= 1000;
@@ -168,13 +169,15 @@ bool emitTimerCounter(Emitter &e, const Functional &f, int sub, const std::strin
     if (s.sub == sub) sp = &s;
   if (!sp) return false;
   if (static_cast<int>(f.params.size()) != sp->params) {
-    e.error(f.head.loc, what + " takes " + std::to_string(sp->params) + " parameters (" +
-                            sp->roles + "), got " + std::to_string(f.params.size()));
+    e.error(f.head.loc, "LJ4057",
+            what + " takes " + std::to_string(sp->params) + " parameters (" + sp->roles +
+                "), got " + std::to_string(f.params.size()));
     return true;
   }
   if (e.depth() < sp->inputs) {
-    e.error(f.head.loc, what + " needs " + inputNames(sub) + ", found " +
-                            std::to_string(e.depth()) + " ST entries");
+    e.error(f.head.loc, "LJ4058",
+            what + " needs " + inputNames(sub) + ", found " + std::to_string(e.depth()) +
+                " ST entries");
     return true;
   }
   emitSpec(e, *sp, f);

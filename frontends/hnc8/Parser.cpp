@@ -34,6 +34,11 @@ int hexValue(char c) {
 /// The token as it may appear in a message (40 bytes at most).
 std::string quote(std::string_view t) { return quoteToken(t, 40); }
 
+/// A line that starts with no known mnemonic: one check wherever the parser meets it.
+void unknownMnemonic(Diagnostics &diags, SourceLoc at, std::string_view t) {
+  diags.error(at, "LJ3001", "unknown mnemonic " + quote(t));
+}
+
 /// "Y, G, R, W, D or B" for the areas of a mask.
 std::string areaList(AreaMask m) {
   std::string out;
@@ -80,7 +85,7 @@ public:
   bool parse(const std::vector<Token> &toks, Stmt &stmt) {
     Op op;
     if (!hnc8::lookupMnemonic(toks[0].text, op)) {
-      error(toks[0], "unknown mnemonic " + quote(toks[0].text));
+      unknownMnemonic(diags_, {line_, toks[0].col}, toks[0].text);
       return false;
     }
     const InstrInfo &info = instrInfo(op);
@@ -100,10 +105,10 @@ public:
 
 private:
   // While an operand written as a symbol is checked, every message says what it stands for.
-  void error(const Token &t, std::string msg) {
+  void error(const Token &t, const char *code, std::string msg) {
     if (symbol_)
       msg += " (symbol " + SymbolTable::quote(symbol_->name) + " = " + symbol_->address + ")";
-    diags_.error({line_, t.col}, std::move(msg));
+    diags_.error({line_, t.col}, code, std::move(msg));
   }
 
   void countError(const InstrInfo &info, const std::vector<Token> &toks, size_t given) {
@@ -121,7 +126,7 @@ private:
     want += ", got " + std::to_string(given);
     // Too many: point at the first extra operand; too few: at the mnemonic.
     const Token &at = given > info.operandCount ? toks[info.operandCount + 1] : toks[0];
-    error(at, want);
+    error(at, "LJ3003", want);
   }
 
   bool lex(const Token &t, RawOperand &raw) {
@@ -131,7 +136,7 @@ private:
     if (symbols_ && SymbolTable::isNameShaped(s)) {
       const Symbol *sym = symbols_->find(s);
       if (!sym) {
-        error(t, "unknown symbol " + SymbolTable::quote(s));
+        error(t, "LJ3004", "unknown symbol " + SymbolTable::quote(s));
         return false;
       }
       symbol_ = sym;
@@ -142,7 +147,7 @@ private:
     }
     if (isLetter(s[0])) return lexAddress(t, raw);
     if (isDigit(s[0]) || s[0] == '+' || s[0] == '-') return lexConstant(t, raw);
-    error(t, "malformed operand " + quote(s));
+    error(t, "LJ3005", "malformed operand " + quote(s));
     return false;
   }
 
@@ -150,11 +155,11 @@ private:
     std::string_view s = t.text;
     const hnc8::AddressText a = hnc8::lexAddress(s);
     if (a.lex == hnc8::AddressText::Lex::NoArea) {
-      error(t, "unknown area letter " + quote(s.substr(0, 1)) + " in " + quote(s));
+      error(t, "LJ3006", "unknown area letter " + quote(s.substr(0, 1)) + " in " + quote(s));
       return false;
     }
     if (a.lex != hnc8::AddressText::Lex::Ok) {
-      error(t, "malformed address " + quote(s));
+      error(t, "LJ3007", "malformed address " + quote(s));
       return false;
     }
     raw.shape = RawOperand::Shape::Addr;
@@ -167,21 +172,22 @@ private:
   bool lexConstant(const Token &t, RawOperand &raw) {
     std::string_view s = t.text;
     raw.shape = RawOperand::Shape::Const;
+    auto malformed = [&] {
+      error(t, "LJ3002", "malformed constant " + quote(s));
+      return false;
+    };
     if (s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X')) {
       // Hex is a 32-bit pattern: 0xFFFFFFFF is -1 (dialect-notes "Text").
       uint64_t v = 0;
       int digits = 0;
       for (size_t i = 2; i < s.size(); ++i) {
         int h = hexValue(s[i]);
-        if (h < 0) {
-          error(t, "malformed constant " + quote(s));
-          return false;
-        }
+        if (h < 0) return malformed();
         if (v != 0 || h != 0) ++digits;
         v = (v << 4 | static_cast<uint64_t>(h)) & 0xFFFFFFFFFull;
       }
       if (digits > 8) {
-        error(t, "hex constant " + quote(s) + " has more than 32 bits");
+        error(t, "LJ3008", "hex constant " + quote(s) + " has more than 32 bits");
         return false;
       }
       raw.value = static_cast<int32_t>(static_cast<uint32_t>(v));
@@ -194,13 +200,10 @@ private:
       pos = 1;
     }
     int64_t mag = 0;
-    if (!readDecimal(s, pos, mag) || pos != s.size()) {
-      error(t, "malformed constant " + quote(s));
-      return false;
-    }
+    if (!readDecimal(s, pos, mag) || pos != s.size()) return malformed();
     int64_t v = neg ? -mag : mag;
     if (v < INT32_MIN || v > INT32_MAX) {
-      error(t, "constant " + quote(s) + " is outside the int32 range");
+      error(t, "LJ3009", "constant " + quote(s) + " is outside the int32 range");
       return false;
     }
     raw.value = v;
@@ -221,18 +224,20 @@ private:
   bool checkArea(const InstrInfo &info, const OperandSpec &spec, const Token &t,
                  const RawOperand &r) {
     if (spec.writes && !hnc8::profile().area(r.area).writable) {
-      error(t, addrText(r) + " is read-only; " + hnc8::mnemonicOf(info.op) + " cannot write its " +
-                   spec.role + " (writable: " + areaList(spec.areas) + ")");
+      error(t, "LJ3010",
+            addrText(r) + " is read-only; " + hnc8::mnemonicOf(info.op) + " cannot write its " +
+                spec.role + " (writable: " + areaList(spec.areas) + ")");
       return false;
     }
     if (!hasArea(spec.areas, r.area)) {
-      error(t, std::string("area ") + hnc8::profile().area(r.area).name + " is not allowed as " +
-                   spec.role + " of " + hnc8::mnemonicOf(info.op) +
-                   " (allowed: " + areaList(spec.areas) + ")");
+      error(t, "LJ3011",
+            std::string("area ") + hnc8::profile().area(r.area).name + " is not allowed as " +
+                spec.role + " of " + hnc8::mnemonicOf(info.op) +
+                " (allowed: " + areaList(spec.areas) + ")");
       return false;
     }
     if (!hnc8::profile().validIndex(r.area, r.index)) {
-      error(t, "address " + quote(t.text) + " out of range (" + indexRange(r.area) + ")");
+      error(t, "LJ3012", "address " + quote(t.text) + " out of range (" + indexRange(r.area) + ")");
       return false;
     }
     return true;
@@ -255,14 +260,15 @@ private:
     }
     if (spec.isBit) {
       if (isConst || r.bit < 0) {
-        error(t, what + "a bit address (like X1.0) as " + spec.role + ", got " +
-                     (isConst ? "constant " : "register ") + quote(t.text));
+        error(t, "LJ3013",
+              what + "a bit address (like X1.0) as " + spec.role + ", got " +
+                  (isConst ? "constant " : "register ") + quote(t.text));
         return false;
       }
       if (!checkArea(info, spec, t, r)) return false;
       if (r.bit >= hnc8::profile().bitWidth(r.area)) {
         std::string l(hnc8::profile().area(r.area).name);
-        error(t,
+        error(t, "LJ3014",
               // A saturated number (more digits than any index) is not shown as 2^40.
               "bit number " + (r.bit >= kSaturated ? std::string() : std::to_string(r.bit) + " ") +
                   "out of range in " + quote(t.text) + " (" + l +
@@ -285,13 +291,14 @@ private:
     if (hasArea(spec.areas, Area::Subroutine)) accepts = "a subroutine (S0..S511)";
     if (isConst) {
       if (!spec.constOk) {
-        error(t, what + accepts + " as " + spec.role + ", got constant " + quote(t.text));
+        error(t, "LJ3015", what + accepts + " as " + spec.role + ", got constant " + quote(t.text));
         return false;
       }
       if (r.value < spec.cmin || r.value > spec.cmax) {
-        error(t, "constant " + quote(t.text) + " out of range for " + spec.role + " of " +
-                     hnc8::mnemonicOf(info.op) + " (" + std::to_string(spec.cmin) + ".." +
-                     std::to_string(spec.cmax) + ")");
+        error(t, "LJ3016",
+              "constant " + quote(t.text) + " out of range for " + spec.role + " of " +
+                  hnc8::mnemonicOf(info.op) + " (" + std::to_string(spec.cmin) + ".." +
+                  std::to_string(spec.cmax) + ")");
         return false;
       }
       out.kind = Operand::Kind::Const;
@@ -299,8 +306,9 @@ private:
       return true;
     }
     if (r.bit >= 0 || spec.areas == 0) {
-      error(t, what + accepts + " as " + spec.role + ", got " +
-                   (r.bit >= 0 ? "bit address " : "register ") + quote(t.text));
+      error(t, "LJ3017",
+            what + accepts + " as " + spec.role + ", got " +
+                (r.bit >= 0 ? "bit address " : "register ") + quote(t.text));
       return false;
     }
     if (!checkArea(info, spec, t, r)) return false;
@@ -363,7 +371,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
       // one error, and none of its lines is echoed.
       leading.push_back({line, toks[0]});
       if (static_cast<int>(leading.size()) < kNotStlLines) continue;
-      diags.error({leading[0].first, 1},
+      diags.error({leading[0].first, 1}, "LJ3018",
                   "not an STL program: none of its first " + std::to_string(kNotStlLines) +
                       " lines starts with an instruction; the rest is not read");
       leading.clear();
@@ -371,8 +379,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     }
     if (!sawMnemonic) {
       sawMnemonic = true;
-      for (const auto &[l, t] : leading)
-        diags.error({l, t.col}, "unknown mnemonic " + quote(t.text));
+      for (const auto &[l, t] : leading) unknownMnemonic(diags, {l, t.col}, t.text);
       leading.clear();
     }
     Stmt stmt;
@@ -395,18 +402,18 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
         Op op;
         if (!toks.empty() && hnc8::lookupMnemonic(toks[0].text, op)) ++total;
       }
-      diags.error(prog.stmts.back().loc, "program has " + std::to_string(total) +
-                                             " statements, more than the limit of " +
-                                             std::to_string(limit));
+      diags.error(prog.stmts.back().loc, "LJ3019",
+                  "program has " + std::to_string(total) + " statements, more than the limit of " +
+                      std::to_string(limit));
       break;
     }
     if (diags.errorCount() >= kMaxErrors) {
-      diags.error({line, 1},
+      diags.error({line, 1}, "LJ3020",
                   "too many errors (" + std::to_string(kMaxErrors) + "); the rest is not checked");
       break;
     }
   }
-  for (const auto &[l, t] : leading) diags.error({l, t.col}, "unknown mnemonic " + quote(t.text));
+  for (const auto &[l, t] : leading) unknownMnemonic(diags, {l, t.col}, t.text);
   return prog;
 }
 

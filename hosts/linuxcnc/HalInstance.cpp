@@ -58,7 +58,10 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
     return false;
   }
   pipeline::ProgramSource src;
-  if (!pipeline::readProgramFile(sourcePath, src, error)) return false;
+  if (Status st = pipeline::readProgramFile(sourcePath, src); !st.ok()) {
+    error = st.message();
+    return false;
+  }
   int32_t nvalue = pipeline::effectiveNvalue(src, nvalueGiven ? opt.plc2Nvalue : 200, nvalueGiven);
   std::string diags;
   std::optional<VerifiedProgram> prog = pipeline::verifyProgram(src, nvalue, diags);

@@ -69,40 +69,44 @@ TEST(Profiles, IecProfileHasPerObjectEdgesAndNoCncTable) {
   EXPECT_FALSE(p->validIndex(Area::Timer, 32));
 }
 
+/// The dialect a Result holds, nullptr when it holds an error.
+const Dialect *held(const Result<const Dialect *> &r) { return r ? r.value() : nullptr; }
+
 TEST(Dialects, ExtensionChoosesTheDialect) {
-  std::string error;
-  EXPECT_EQ(dialectForPath("a/b/prog.stl", error), &defaultDialect());
-  EXPECT_EQ(dialectForPath("PROG.STL", error), &defaultDialect());
-  EXPECT_EQ(dialectForPath("plc.dit", error), &defaultDialect());
+  EXPECT_EQ(held(dialectForPath("a/b/prog.stl")), &defaultDialect());
+  EXPECT_EQ(held(dialectForPath("PROG.STL")), &defaultDialect());
+  EXPECT_EQ(held(dialectForPath("plc.dit")), &defaultDialect());
   // An unknown extension keeps the behaviour from before dialects: HNC-8 STL.
-  EXPECT_EQ(dialectForPath("prog.txt", error), &defaultDialect());
-  EXPECT_EQ(dialectForPath("prog", error), &defaultDialect());
-  EXPECT_TRUE(error.empty()) << error;
-  EXPECT_EQ(dialectForPath("spindle.pmc", error), dialectNamed("fanuc"));
-  EXPECT_EQ(dialectForPath("SPINDLE.PMC", error), dialectNamed("fanuc"));
-  EXPECT_EQ(dialectForPath("x.il", error), dialectNamed("iec"));
-  EXPECT_EQ(dialectForPath("estop.clp", error), dialectNamed("classicladder"));
-  EXPECT_EQ(dialectForPath("X.IL", error), dialectNamed("iec"));
-  EXPECT_TRUE(error.empty()) << error;
+  EXPECT_EQ(held(dialectForPath("prog.txt")), &defaultDialect());
+  EXPECT_EQ(held(dialectForPath("prog")), &defaultDialect());
+  EXPECT_EQ(held(dialectForPath("spindle.pmc")), dialectNamed("fanuc"));
+  EXPECT_EQ(held(dialectForPath("SPINDLE.PMC")), dialectNamed("fanuc"));
+  EXPECT_EQ(held(dialectForPath("x.il")), dialectNamed("iec"));
+  EXPECT_EQ(held(dialectForPath("estop.clp")), dialectNamed("classicladder"));
+  EXPECT_EQ(held(dialectForPath("X.IL")), dialectNamed("iec"));
 }
 
 TEST(Dialects, OptionNamesTheDialect) {
-  std::string error;
-  EXPECT_EQ(dialectForOption("hnc8", error), &defaultDialect());
-  EXPECT_EQ(dialectForOption("fanuc", error), dialectNamed("fanuc"));
-  EXPECT_EQ(dialectForOption("iec", error), dialectNamed("iec"));
-  EXPECT_EQ(dialectForOption("siemens", error), nullptr);
-  EXPECT_EQ(error, "unknown dialect 'siemens' (known: hnc8, fanuc, iec, classicladder)");
+  EXPECT_EQ(held(dialectForOption("hnc8")), &defaultDialect());
+  EXPECT_EQ(held(dialectForOption("fanuc")), dialectNamed("fanuc"));
+  EXPECT_EQ(held(dialectForOption("iec")), dialectNamed("iec"));
+  Result<const Dialect *> unknown = dialectForOption("siemens");
+  ASSERT_FALSE(unknown);
+  EXPECT_EQ(unknown.status().code(), ErrorCode::InvalidArgument);
+  EXPECT_EQ(unknown.status().message(),
+            "unknown dialect 'siemens' (known: hnc8, fanuc, iec, classicladder)");
 }
 
 TEST(Dialects, LadderJsonNamesItsDialect) {
-  std::string error;
-  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})", error),
+  EXPECT_EQ(held(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"hnc8"})")),
             &defaultDialect());
-  EXPECT_EQ(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})", error),
+  EXPECT_EQ(held(dialectOfJson(R"({"format":"ladderjit-ladder","dialect":"iec"})")),
             dialectNamed("iec"));
-  EXPECT_EQ(dialectOfJson(R"({"dialect":"xyz"})", error), nullptr);
-  EXPECT_EQ(error, "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec, classicladder)");
+  Result<const Dialect *> unknown = dialectOfJson(R"({"dialect":"xyz"})");
+  ASSERT_FALSE(unknown);
+  EXPECT_EQ(unknown.status().code(), ErrorCode::InvalidArgument);
+  EXPECT_EQ(unknown.status().message(),
+            "ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec, classicladder)");
 }
 
 std::string tempFile(const std::string &name, const std::string &text) {
@@ -114,11 +118,12 @@ std::string tempFile(const std::string &name, const std::string &text) {
 TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
   const std::string stl = tempFile("dialect_ok.stl", "LD X0.0\nOUT Y0.0\n");
   ProgramSource src;
-  std::string error;
-  ASSERT_TRUE(readProgramFile(stl, src, error)) << error;
+  Status st = readProgramFile(stl, src);
+  ASSERT_TRUE(st.ok()) << st.message();
   EXPECT_EQ(src.dialect, &defaultDialect());
   ProgramSource viaOption;
-  ASSERT_TRUE(readProgramFile(stl, viaOption, error, "hnc8")) << error;
+  st = readProgramFile(stl, viaOption, "hnc8");
+  ASSERT_TRUE(st.ok()) << st.message();
   EXPECT_EQ(viaOption.dialect, &defaultDialect());
   std::string diags;
   std::optional<VerifiedProgram> prog = verifyProgram(src, 200, diags);
@@ -126,16 +131,40 @@ TEST(Dialects, ReadProgramFileRecordsAndRefusesDialects) {
   EXPECT_EQ(prog->profile, profileNamed("hnc8")); // the verified program carries its profile
 
   ProgramSource refused;
-  EXPECT_FALSE(readProgramFile(stl, refused, error, "cobol"));
-  EXPECT_EQ(error, "unknown dialect 'cobol' (known: hnc8, fanuc, iec, classicladder)");
+  st = readProgramFile(stl, refused, "cobol");
+  EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+  EXPECT_EQ(st.message(), "unknown dialect 'cobol' (known: hnc8, fanuc, iec, classicladder)");
   // --dialect hnc8 reads a .pmc name as HNC-8 STL; without it the .pmc is FANUC text.
   const std::string pmc = tempFile("dialect_as.pmc", "LD X0.0\nOUT Y0.0\n");
   ProgramSource asFanuc;
-  ASSERT_TRUE(readProgramFile(pmc, asFanuc, error)) << error;
+  st = readProgramFile(pmc, asFanuc);
+  ASSERT_TRUE(st.ok()) << st.message();
   EXPECT_EQ(asFanuc.dialect, dialectNamed("fanuc"));
   EXPECT_FALSE(verifyProgram(asFanuc, 200, diags)); // LD is no PMC instruction
   ProgramSource forced;
-  EXPECT_TRUE(readProgramFile(pmc, forced, error, "hnc8")) << error;
+  st = readProgramFile(pmc, forced, "hnc8");
+  EXPECT_TRUE(st.ok()) << st.message();
+}
+
+// The kinds of failure a caller can tell apart (ir/Status.h), each naming the file.
+TEST(Dialects, ReadProgramFileErrorsSayWhatKind) {
+  ProgramSource src;
+  const std::string missing = ::testing::TempDir() + "dialect_no_such_file.stl";
+  Status st = readProgramFile(missing, src);
+  EXPECT_EQ(st.code(), ErrorCode::NotFound);
+  EXPECT_EQ(st.loc().file, missing);
+  EXPECT_NE(st.message().find(missing), std::string::npos) << st.message();
+  // A .dit name is a container: without its magic line it is damaged, not STL.
+  const std::string dit = tempFile("dialect_damaged.dit", "LD X0.0\nOUT Y0.0\n");
+  st = readProgramFile(dit, src);
+  EXPECT_EQ(st.code(), ErrorCode::BadFormat);
+  EXPECT_EQ(st.loc().file, dit);
+  // A ladder JSON naming a dialect this build does not have.
+  const std::string json = tempFile("dialect_xyz.json", R"({"dialect":"xyz"})");
+  st = readProgramFile(json, src);
+  EXPECT_EQ(st.code(), ErrorCode::InvalidArgument);
+  EXPECT_EQ(st.message(), json + ": ladder JSON: unknown dialect 'xyz' (known: hnc8, fanuc, iec, "
+                                 "classicladder)");
 }
 
 } // namespace

@@ -179,7 +179,7 @@ TEST(DitCli, ProgramErrorsInAContainerExit1) {
   CliResult r = runCli({"check", path});
   EXPECT_EQ(r.exitCode, 1);
   // Line 10 of the container: magic, hash, 3 params lines, 2 symbols lines, [program], LD, OUT.
-  EXPECT_EQ(r.err, path + ":10:5: error: unknown symbol 'LAMP'\n");
+  EXPECT_EQ(r.err, path + ":10:5: error: unknown symbol 'LAMP' [LJ3004]\n");
 }
 
 TEST(DitCli, DitRefusesBadInputs) {

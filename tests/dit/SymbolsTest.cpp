@@ -107,8 +107,8 @@ TEST(Symbols, ResolveLikeTheAddress) {
 TEST(Symbols, UnknownSymbolIsLocated) {
   SymbolTable t = table();
   Result r = parse("LD START\nOUT NOPE\nMOV 1 主轴x\n", &t);
-  EXPECT_EQ(r.diags, "s.stl:2:5: error: unknown symbol 'NOPE'\n"
-                     "s.stl:3:7: error: unknown symbol '主轴x'\n");
+  EXPECT_EQ(r.diags, "s.stl:2:5: error: unknown symbol 'NOPE' [LJ3004]\n"
+                     "s.stl:3:7: error: unknown symbol '主轴x' [LJ3004]\n");
   EXPECT_EQ(r.prog.stmts.size(), 1u);
 }
 

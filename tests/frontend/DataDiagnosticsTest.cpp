@@ -28,9 +28,9 @@ TEST(DataDiagnostics, BmovDestinationRange) {
 // functions-2 2.3: the count is a constant (n <= 0 is rejected by the table's range).
 TEST(DataDiagnostics, BmovCountConstant) {
   EXPECT_EQ(diags("LDT\nBMOV D0 D10 0\n"),
-            "t.stl:2:13: error: constant '0' out of range for count of BMOV (1..1000)\n");
+            "t.stl:2:13: error: constant '0' out of range for count of BMOV (1..1000) [LJ3016]\n");
   EXPECT_EQ(diags("LDT\nBMOV D0 D10 D1\n"),
-            "t.stl:2:13: error: BMOV expects a constant as count, got register 'D1'\n");
+            "t.stl:2:13: error: BMOV expects a constant as count, got register 'D1' [LJ3017]\n");
 }
 
 // functions-2 2.4: start and end of FMOV in one area, start <= end (dialect-notes).
@@ -55,7 +55,7 @@ TEST(DataDiagnostics, ZrstBounds) {
             "t.stl:2:9: error: ZRST end R2 comes before start R3 [LJ1048]\n");
   EXPECT_EQ(diags("LDT\nZRST X1 R2\n"),
             "t.stl:2:6: error: X1 is read-only; ZRST cannot write its start (writable: Y, G, R, W, "
-            "D or B)\n");
+            "D or B) [LJ3010]\n");
 }
 
 // A one-element zone and a bit zone crossing an element boundary are fine.
@@ -68,8 +68,9 @@ TEST(DataDiagnostics, ZoneAccepted) {
 TEST(DataDiagnostics, TableRanges) {
   EXPECT_EQ(diags("LDT\nENCO D98 5 D1 D2\n"),
             "t.stl:2:6: error: ENCO table D98..D102 runs past the end of D (D0..D99) [LJ1045]\n");
-  EXPECT_EQ(diags("LDT\nENCO D0 33 D1 D2\n"),
-            "t.stl:2:9: error: constant '33' out of range for table length of ENCO (1..32)\n");
+  EXPECT_EQ(
+      diags("LDT\nENCO D0 33 D1 D2\n"),
+      "t.stl:2:9: error: constant '33' out of range for table length of ENCO (1..32) [LJ3016]\n");
   EXPECT_EQ(diags("LD X1.0\nCOD D95 8 D1 D2\n"),
             "t.stl:2:5: error: COD table D95..D102 runs past the end of D (D0..D99) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nSER W199 2 D1 D2\n"),
@@ -88,32 +89,33 @@ TEST(DataDiagnostics, PackAndParameterBlock) {
             "t.stl:2:6: error: ACVT parameter block P197..P200 runs past the end of P "
             "(P0..P199) [LJ1045]\n");
   EXPECT_EQ(diags("LD X1.0\nACVT P196 D0 D1\n"), "");
-  EXPECT_EQ(diags("LD X1.0\nACVT D0 D0 D1\n"),
-            "t.stl:2:6: error: area D is not allowed as parameter block of ACVT (allowed: P)\n");
+  EXPECT_EQ(
+      diags("LD X1.0\nACVT D0 D0 D1\n"),
+      "t.stl:2:6: error: area D is not allowed as parameter block of ACVT (allowed: P) [LJ3011]\n");
 }
 
 // functions-2 0.5 / 0.6: formats are constants 0..2, addresses registers of G R W D B.
 TEST(DataDiagnostics, IndirectOperands) {
   EXPECT_EQ(diags("LDT\nXMOV 3 D0 0 D1\n"),
-            "t.stl:2:6: error: constant '3' out of range for format 1 of XMOV (0..2)\n");
+            "t.stl:2:6: error: constant '3' out of range for format 1 of XMOV (0..2) [LJ3016]\n");
   EXPECT_EQ(diags("LDT\nXMOV 0 5 0 D1\n"),
-            "t.stl:2:8: error: XMOV expects a register as address 1, got constant '5'\n");
+            "t.stl:2:8: error: XMOV expects a register as address 1, got constant '5' [LJ3015]\n");
   EXPECT_EQ(diags("LDT\nXCH 0 D0 0 X1\n"),
             "t.stl:2:12: error: X1 is read-only; XCH cannot write its address 2 (writable: G, R, "
-            "W, D or B)\n");
+            "W, D or B) [LJ3010]\n");
   EXPECT_EQ(diags("LDT\nXMOV 0 P3 2 D1\n"),
             "t.stl:2:8: error: area P is not allowed as address 1 of XMOV (allowed: G, R, W, D "
-            "or B)\n");
+            "or B) [LJ3011]\n");
 }
 
 // functions-2 2.17-2.18: NTP's points are written; PTN needs all four pairs.
 TEST(DataDiagnostics, PointOperands) {
   EXPECT_EQ(diags("LDT\nNTP R0 0 X0.0 1 Y0.1 2 Y0.2 3 Y0.3\n"),
             "t.stl:2:10: error: X0.0 is read-only; NTP cannot write its point 1 (writable: Y, G, "
-            "R, W, D or B)\n");
+            "R, W, D or B) [LJ3010]\n");
   EXPECT_EQ(diags("LDT\nPTN R0 Y0.0 0 Y0.1 1 Y0.2\n"),
             "t.stl:2:1: error: PTN takes 9 operands (destination, point 1, number 1, point 2, "
-            "number 2, point 3, number 3, point 4, number 4), got 6\n");
+            "number 2, point 3, number 3, point 4, number 4), got 6 [LJ3003]\n");
 }
 
 // DIALECT.md 6: every error is reported, not only the first.

@@ -18,44 +18,45 @@ std::string diags(std::string_view text, VerifyOptions o = {}) { return compile(
 // --- errors, DIALECT.md 6, in the order listed there ---
 
 TEST(GoldenErrors, UnknownMnemonic) {
-  EXPECT_EQ(diags("LDX X1.0\n"), "t.stl:1:1: error: unknown mnemonic 'LDX'\n");
+  EXPECT_EQ(diags("LDX X1.0\n"), "t.stl:1:1: error: unknown mnemonic 'LDX' [LJ3001]\n");
 }
 
 TEST(GoldenErrors, WrongOperandCount) {
-  EXPECT_EQ(diags("LD X1.0\nOUT\n"), "t.stl:2:1: error: OUT takes 1 operand (coil), got 0\n");
+  EXPECT_EQ(diags("LD X1.0\nOUT\n"),
+            "t.stl:2:1: error: OUT takes 1 operand (coil), got 0 [LJ3003]\n");
 }
 
 TEST(GoldenErrors, WrongOperandKind) {
   EXPECT_EQ(diags("LD X1.0\nOUT 5\n"),
             "t.stl:2:5: error: OUT expects a bit address (like X1.0) as coil, got constant "
-            "'5'\n");
+            "'5' [LJ3013]\n");
 }
 
 TEST(GoldenErrors, BadAddress) {
   EXPECT_EQ(diags("LD X513.0\nOUT Y0.0\n"),
-            "t.stl:1:4: error: address 'X513.0' out of range (X0..X512)\n");
+            "t.stl:1:4: error: address 'X513.0' out of range (X0..X512) [LJ3012]\n");
 }
 
 TEST(GoldenErrors, BadBit) {
   EXPECT_EQ(diags("LD X2.8\nOUT Y0.0\n"),
-            "t.stl:1:4: error: bit number 8 out of range in 'X2.8' (X has bits 0..7)\n");
+            "t.stl:1:4: error: bit number 8 out of range in 'X2.8' (X has bits 0..7) [LJ3014]\n");
 }
 
 TEST(GoldenErrors, ConstantRange) {
   EXPECT_EQ(diags("LD X0.0\nTMRB 1 4 100\n"),
-            "t.stl:2:8: error: constant '4' out of range for time unit of TMRB (0..3)\n");
+            "t.stl:2:8: error: constant '4' out of range for time unit of TMRB (0..3) [LJ3016]\n");
 }
 
 TEST(GoldenErrors, AreaNotAllowed) {
   EXPECT_EQ(diags("LDT\nMOV T3 D0\n"),
             "t.stl:2:5: error: area T is not allowed as source of MOV (allowed: X, Y, F, G, R, "
-            "W, D, B or P)\n");
+            "W, D, B or P) [LJ3011]\n");
 }
 
 TEST(GoldenErrors, ReadOnlyArea) {
   EXPECT_EQ(diags("LD X1.0\nOUT F3.0\n"),
             "t.stl:2:5: error: F3.0 is read-only; OUT cannot write its coil (writable: Y, G, R, "
-            "W, D or B)\n");
+            "W, D or B) [LJ3010]\n");
 }
 
 TEST(GoldenErrors, StackUnderflowBlockPop) {
@@ -208,7 +209,7 @@ TEST(GoldenErrors, ProgramTooLarge) {
   EXPECT_FALSE(c.prog.has_value());
   EXPECT_EQ(c.errors, 1);
   EXPECT_NE(c.diags.find("t.stl:10001:1: error: program has 10002 statements, more than the "
-                         "limit of 10000\n"),
+                         "limit of 10000 [LJ3019]\n"),
             std::string::npos)
       << c.diags.substr(0, 300);
   VerifyOptions raised;
@@ -307,13 +308,14 @@ TEST(TenMistakes, TenLocatedErrors) {
   EXPECT_EQ(d.errorCount(), 10);
   EXPECT_EQ(
       d.render(),
-      "ten_mistakes.stl:3:1: error: unknown mnemonic 'OUTT'\n"
+      "ten_mistakes.stl:3:1: error: unknown mnemonic 'OUTT' [LJ3001]\n"
       "ten_mistakes.stl:4:1: error: stack underflow: ANB needs 2 entries on ST, found 1 [LJ1013]\n"
       "ten_mistakes.stl:5:5: error: X3.0 is read-only; OUT cannot write its coil "
-      "(writable: Y, G, R, W, D or B)\n"
+      "(writable: Y, G, R, W, D or B) [LJ3010]\n"
       "ten_mistakes.stl:6:1: error: ADD takes 3 operands (augend, addend, destination), "
-      "got 2\n"
-      "ten_mistakes.stl:7:4: error: bit number 9 out of range in 'X1.9' (X has bits 0..7)\n"
+      "got 2 [LJ3003]\n"
+      "ten_mistakes.stl:7:4: error: bit number 9 out of range in 'X1.9' (X has bits 0..7) "
+      "[LJ3014]\n"
       "ten_mistakes.stl:10:5: error: missing label L7 [LJ1010]\n"
       "ten_mistakes.stl:12:1: error: unclosed MPS: MS is not empty at the end of PLC1 [LJ1014]\n"
       "ten_mistakes.stl:19:6: error: timer T5 is used by both TMRB (line 16) and STMR [LJ1020]\n"

@@ -70,11 +70,11 @@ TEST(FanucSymbols, PlainFilesAreReadAsBefore) {
   // Without a symbol table a name is no address, as before.
   EXPECT_EQ(diags("RD KEY\nEND1\nEND2\nEND\n"),
             "t.pmc:1:4: error: unknown address 'KEY' (areas: X Y F G R E A T C K D; labels L, "
-            "subroutines P)\n");
+            "subroutines P) [LJ4017]\n");
   // A section line among plain mnemonic lines: the file does not start with a section.
   EXPECT_EQ(diags("RD X0.0\n%@3\nEND1\nEND2\nEND\n"),
             "t.pmc:2:1: error: '%@3' among mnemonic lines: a mnemonic file starts with %@A or a "
-            "section header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md\n");
+            "section header (%@3 the ladder, %@2-E the symbols), docs/fanuc-pmc.md [LJ4007]\n");
 }
 
 TEST(FanucSymbols, SectionsAndLineNumbersOfTheFile) {
@@ -86,7 +86,7 @@ TEST(FanucSymbols, SectionsAndLineNumbersOfTheFile) {
   EXPECT_EQ(p.prog.stmts[1].loc.line, 12);
   // A ladder error is reported at the file's line too.
   EXPECT_EQ(diags(file(kSymbols, "RD KEY\nAND.STK\nEND1\nEND2\nEND\n")),
-            "t.pmc:12:1: error: AND.STK needs two logic lines (ST1 and ST0), found 1\n");
+            "t.pmc:12:1: error: AND.STK needs two logic lines (ST1 and ST0), found 1 [LJ4034]\n");
   // Comment lines in the ladder section stay comments of the program at their lines.
   Parsed c = parse(file("KEY,X0.1\n", "; the key\nRD KEY\nWRT Y0.0\nEND1\nEND2\nEND\n"));
   EXPECT_EQ(c.diags, "");
@@ -109,35 +109,37 @@ TEST(FanucSymbols, AllFormatWrapper) {
             "");
   // A header also ends the section open before it.
   EXPECT_EQ(diags("%@A\n%@2-E\nKEY,X0.1\n%@3\nRD KEY\nWRT Y0.0\nEND1\nEND2\nEND\n%@E\n"), "");
-  EXPECT_EQ(diags(body + "%@E\n"),
-            "t.pmc:11:1: error: %@E without %@A (%@E ends ALL-format data that %@A starts)\n");
+  EXPECT_EQ(
+      diags(body + "%@E\n"),
+      "t.pmc:11:1: error: %@E without %@A (%@E ends ALL-format data that %@A starts) [LJ4089]\n");
   EXPECT_EQ(diags("%@A\n" + body),
-            "t.pmc:11:1: error: %@A (line 1) without %@E at the end of the file\n");
+            "t.pmc:11:1: error: %@A (line 1) without %@E at the end of the file [LJ4084]\n");
   EXPECT_EQ(diags(body + "%@A\n"),
             "t.pmc:11:1: error: %@A must be the first line of the file (it opens ALL-format "
-            "data)\n");
+            "data) [LJ4088]\n");
   EXPECT_EQ(diags("%@A\n" + body + "%@E\nRD X0.0\n"),
-            "t.pmc:13:1: error: text after %@E (the end of the mnemonic file)\n");
+            "t.pmc:13:1: error: text after %@E (the end of the mnemonic file) [LJ4005]\n");
 }
 
 TEST(FanucSymbols, SectionStructureErrors) {
   const std::string ladder = "%@3\nRD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n%\n";
   EXPECT_EQ(diags(ladder + "RD X0.1\n"),
             "t.pmc:8:1: error: text outside a section: 'RD X0.1' (mnemonic lines belong in a %@3 "
-            "section, symbols in a %@2-E section)\n");
-  EXPECT_EQ(diags(ladder + "%\n"),
-            "t.pmc:8:1: error: '%' closes no section (it ends the section a %@ line opens)\n");
+            "section, symbols in a %@2-E section) [LJ4004]\n");
+  EXPECT_EQ(
+      diags(ladder + "%\n"),
+      "t.pmc:8:1: error: '%' closes no section (it ends the section a %@ line opens) [LJ4086]\n");
   EXPECT_EQ(diags("%@3\nRD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n"),
             "t.pmc:1:1: error: section %@3 is not closed: the file ends inside it (a line "
-            "holding only '%' ends a section)\n");
+            "holding only '%' ends a section) [LJ4083]\n");
   EXPECT_EQ(diags("%@2-E\nKEY,X0.1\n%\n"),
             "t.pmc:1:1: error: this mnemonic file has no ladder section (%@3 holds the mnemonic "
-            "lines, docs/fanuc-pmc.md)\n");
+            "lines, docs/fanuc-pmc.md) [LJ4085]\n");
   EXPECT_EQ(diags(ladder + "%@3\nEND1\n%\n"),
-            "t.pmc:8:1: error: a second ladder section %@3 (the first is on line 1)\n");
+            "t.pmc:8:1: error: a second ladder section %@3 (the first is on line 1) [LJ4090]\n");
   EXPECT_EQ(diags(ladder + "%X\n"),
             "t.pmc:8:1: error: bad section line '%X': a section starts with %@ and its code "
-            "(%@3, %@2-E), a line holding only '%' ends it\n");
+            "(%@3, %@2-E), a line holding only '%' ends it [LJ4087]\n");
 }
 
 TEST(FanucSymbols, OtherSectionsAreSkippedWithOneWarningEach) {
@@ -153,15 +155,15 @@ TEST(FanucSymbols, OtherSectionsAreSkippedWithOneWarningEach) {
                            "%@E\n";
   EXPECT_EQ(
       diags(text),
-      "t.pmc:2:1: warning: section %@0 (system parameters) is not read by ladderjit\n"
-      "t.pmc:5:1: warning: section %@1 (title data) is not read by ladderjit\n"
+      "t.pmc:2:1: warning: section %@0 (system parameters) is not read by ladderjit [LJ4091]\n"
+      "t.pmc:5:1: warning: section %@1 (title data) is not read by ladderjit [LJ4091]\n"
       "t.pmc:8:1: warning: section %@2 (symbol and comment data, FORMAT-A/B; ladderjit reads "
-      "symbols from a %@2-E (CSV) section) is not read by ladderjit\n"
+      "symbols from a %@2-E (CSV) section) is not read by ladderjit [LJ4091]\n"
       "t.pmc:11:1: warning: section %@2-C (symbol and comment data, FORMAT-C; ladderjit reads "
-      "symbols from a %@2-E (CSV) section) is not read by ladderjit\n"
-      "t.pmc:21:1: warning: section %@4 (message data) is not read by ladderjit\n"
-      "t.pmc:25:1: warning: section %@5 (I/O module data) is not read by ladderjit\n"
-      "t.pmc:28:1: warning: section %@9 is not read by ladderjit\n");
+      "symbols from a %@2-E (CSV) section) is not read by ladderjit [LJ4091]\n"
+      "t.pmc:21:1: warning: section %@4 (message data) is not read by ladderjit [LJ4091]\n"
+      "t.pmc:25:1: warning: section %@5 (I/O module data) is not read by ladderjit [LJ4091]\n"
+      "t.pmc:28:1: warning: section %@9 is not read by ladderjit [LJ4091]\n");
   Diagnostics d("t.pmc");
   EXPECT_TRUE(pipeline::compilePmc(text, "t.pmc", VerifyOptions{}, d, nullptr)) << d.render();
 }
@@ -193,31 +195,35 @@ TEST(FanucSymbols, OptionGivesTheColumns) {
 TEST(FanucSymbols, OptionErrors) {
   const std::string ladder = "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n";
   auto with = [&](const std::string &header) { return diags(file("", ladder, header)); };
-  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2 CMT=3)"),
-            "t.pmc:1:19: error: unknown key 'CMT' in the %@2-E option (keys: SYM ADR CM1 CM2)\n");
+  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2 CMT=3)"), "t.pmc:1:19: error: unknown key 'CMT' in the %@2-E "
+                                              "option (keys: SYM ADR CM1 CM2) [LJ4096]\n");
   EXPECT_EQ(with("%@2-E(SYM=0 ADR=2)"),
-            "t.pmc:1:11: error: bad column number '0' for SYM (1..99)\n");
+            "t.pmc:1:11: error: bad column number '0' for SYM (1..99) [LJ4097]\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=x)"),
-            "t.pmc:1:17: error: bad column number 'x' for ADR (1..99)\n");
+            "t.pmc:1:17: error: bad column number 'x' for ADR (1..99) [LJ4097]\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=100)"),
-            "t.pmc:1:17: error: bad column number '100' for ADR (1..99)\n");
+            "t.pmc:1:17: error: bad column number '100' for ADR (1..99) [LJ4097]\n");
   // Many digits are a bad column, not an int overflow (found by fuzz_pmc under UBSan).
-  EXPECT_EQ(with("%@2-E(SYM=1 ADR=99999999999999999999)"),
-            "t.pmc:1:17: error: bad column number '99999999999999999999' for ADR (1..99)\n");
+  EXPECT_EQ(
+      with("%@2-E(SYM=1 ADR=99999999999999999999)"),
+      "t.pmc:1:17: error: bad column number '99999999999999999999' for ADR (1..99) [LJ4097]\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=2 SYM=3)"),
-            "t.pmc:1:19: error: SYM is given twice in the %@2-E option\n");
+            "t.pmc:1:19: error: SYM is given twice in the %@2-E option [LJ4098]\n");
   EXPECT_EQ(with("%@2-E(SYM=1 ADR=1)"),
-            "t.pmc:1:17: error: column 1 is given to both SYM and ADR\n");
+            "t.pmc:1:17: error: column 1 is given to both SYM and ADR [LJ4099]\n");
   EXPECT_EQ(with("%@2-E(SYM=1 CM1=2)"),
             "t.pmc:1:6: error: the %@2-E option gives no ADR column (a symbol needs SYM and "
-            "ADR)\n");
-  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2"), "t.pmc:1:6: error: the %@2-E option has no closing ')'\n");
-  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2) X"), "t.pmc:1:20: error: text after the %@2-E option: 'X'\n");
+            "ADR) [LJ4100]\n");
+  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2"),
+            "t.pmc:1:6: error: the %@2-E option has no closing ')' [LJ4093]\n");
+  EXPECT_EQ(with("%@2-E(SYM=1 ADR=2) X"),
+            "t.pmc:1:20: error: text after the %@2-E option: 'X' [LJ4094]\n");
   EXPECT_EQ(with("%@2-E(SYM ADR=2)"),
-            "t.pmc:1:7: error: expected KEY=COLUMN in the %@2-E option, got 'SYM'\n");
+            "t.pmc:1:7: error: expected KEY=COLUMN in the %@2-E option, got 'SYM' [LJ4095]\n");
   // The section is not read after such an error: its rows give no further errors.
   EXPECT_EQ(diags(file("1BAD,Q0\n", ladder, "%@2-E(SYM=1 ADR=2 CMT=3)")),
-            "t.pmc:1:19: error: unknown key 'CMT' in the %@2-E option (keys: SYM ADR CM1 CM2)\n");
+            "t.pmc:1:19: error: unknown key 'CMT' in the %@2-E option (keys: SYM ADR CM1 CM2) "
+            "[LJ4096]\n");
 }
 
 // ---- the symbol rules ----
@@ -227,30 +233,30 @@ TEST(FanucSymbols, NameRules) {
   EXPECT_EQ(diags(file(std::string(40, 'A') + ",X0.1\n_x1,X0.2\n主轴,X0.3\n", ladder)), "");
   EXPECT_EQ(diags(file(std::string(41, 'B') + ",X0.1\n", ladder)),
             "t.pmc:2:1: error: symbol name '" + std::string(41, 'B') +
-                "' is longer than 40 bytes\n");
+                "' is longer than 40 bytes [LJ4006]\n");
   EXPECT_EQ(diags(file("R100,X0.1\n", ladder)),
             "t.pmc:2:1: error: bad symbol name 'R100': a name starts with a letter, '_' or a "
             "non-ASCII character, continues with letters, digits, '_' or non-ASCII characters, "
-            "and is not an address like X10\n");
+            "and is not an address like X10 [LJ4006]\n");
   EXPECT_EQ(diags(file("X0,X0.1\n", ladder)),
             "t.pmc:2:1: error: bad symbol name 'X0': a name starts with a letter, '_' or a "
             "non-ASCII character, continues with letters, digits, '_' or non-ASCII characters, "
-            "and is not an address like X10\n");
+            "and is not an address like X10 [LJ4006]\n");
   EXPECT_EQ(diags(file("A-B,X0.1\n", ladder)),
             "t.pmc:2:1: error: bad symbol name 'A-B': a name starts with a letter, '_' or a "
             "non-ASCII character, continues with letters, digits, '_' or non-ASCII characters, "
-            "and is not an address like X10\n");
+            "and is not an address like X10 [LJ4006]\n");
 }
 
 TEST(FanucSymbols, NamesAreUniqueCaseInsensitively) {
   const std::string ladder = "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n";
   EXPECT_EQ(diags(file("Key,X0.1\nKEY,X0.2\n", ladder)),
             "t.pmc:3:1: error: duplicate symbol 'KEY' (already defined on line 2 as 'Key'; names "
-            "are case-insensitive)\n");
+            "are case-insensitive) [LJ4101]\n");
   // Across two %@2-E sections too.
   EXPECT_EQ(diags("%@2-E\nKEY,X0.1\n%\n%@2-E\n key ,X0.2\n%\n%@3\n" + ladder + "%\n"),
             "t.pmc:5:2: error: duplicate symbol 'key' (already defined on line 2 as 'KEY'; names "
-            "are case-insensitive)\n");
+            "are case-insensitive) [LJ4101]\n");
 }
 
 TEST(FanucSymbols, AddressRules) {
@@ -276,9 +282,9 @@ TEST(FanucSymbols, AddressRules) {
   };
   for (const auto &[row, msg] : bad)
     EXPECT_EQ(diags(file(std::string(row) + "\n", ladder)),
-              std::string("t.pmc:2:3: error: symbol 'A': ") + msg + "\n");
+              std::string("t.pmc:2:3: error: symbol 'A': ") + msg + " [LJ4006]\n");
   EXPECT_EQ(diags(file("A,,LAMP\n", ladder)),
-            "t.pmc:2:1: error: symbol 'A' has no address (column ADR = 2 is empty)\n");
+            "t.pmc:2:1: error: symbol 'A' has no address (column ADR = 2 is empty) [LJ4006]\n");
 }
 
 TEST(FanucSymbols, CommentsAreJoined) {
@@ -295,17 +301,18 @@ TEST(FanucSymbols, CommentsAreJoined) {
   // At most 255 bytes (the 0i-D extended comment), CM1 / CM2 joined.
   EXPECT_EQ(diags(file("A,X0.1," + std::string(255, 'c') + "\n", ladder)), "");
   EXPECT_EQ(diags(file("A,X0.1," + std::string(256, 'c') + "\n", ladder)),
-            "t.pmc:2:8: error: symbol 'A': comment longer than 255 bytes\n");
+            "t.pmc:2:8: error: symbol 'A': comment longer than 255 bytes [LJ4006]\n");
   EXPECT_EQ(
       diags(file("A,X0.1," + std::string(200, 'c') + "," + std::string(60, 'd') + "\n", ladder)),
-      "t.pmc:2:8: error: symbol 'A': comment longer than 255 bytes\n");
+      "t.pmc:2:8: error: symbol 'A': comment longer than 255 bytes [LJ4006]\n");
 }
 
 TEST(FanucSymbols, RowsWithoutANameGiveOneWarningPerSection) {
   const std::string ladder = "RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n";
   Parsed p = parse(file(",X0.1,E-STOP,\nKEY,X0.2\n,X0.3,DOOR,\n", ladder));
-  EXPECT_EQ(p.diags, "t.pmc:2:2: warning: 2 rows of section %@2-E give an address no symbol "
-                     "name: ladderjit keeps only named symbols, their comments are not shown\n");
+  EXPECT_EQ(p.diags,
+            "t.pmc:2:2: warning: 2 rows of section %@2-E give an address no symbol "
+            "name: ladderjit keeps only named symbols, their comments are not shown [LJ4092]\n");
   EXPECT_EQ(p.prog.symbols.size(), 1u);
 }
 
@@ -367,7 +374,7 @@ TEST(FanucSymbols, NamesInBitByteAndFunctionalOperands) {
 TEST(FanucSymbols, OperandRecordsItsSymbol) {
   Parsed p = parse(file(kSymbols, "RD KEY\nEQB MCODE 8\nWRT X0.0\nEND1\nEND2\nEND\n"));
   ASSERT_EQ(p.diags, "t.pmc:13:5: error: 'X0.0' is read-only (X is written by the machine or the "
-                     "CNC)\n");
+                     "CNC) [LJ4001]\n");
   ASSERT_GE(p.prog.stmts.size(), 2u);
   ASSERT_EQ(p.prog.symbols.size(), 7u);
   const Operand &key = p.prog.stmts[0].ops[0];
@@ -393,15 +400,16 @@ TEST(FanucSymbols, LookupIsCaseInsensitive) {
 
 TEST(FanucSymbols, UnknownSymbol) {
   EXPECT_EQ(diags(file(kSymbols, "RD KEY\nWRT NOPE\nEND1\nEND2\nEND\n")),
-            "t.pmc:12:5: error: unknown symbol 'NOPE'\n");
+            "t.pmc:12:5: error: unknown symbol 'NOPE' [LJ4016]\n");
   // A mnemonic file has a symbol table even without a %@2-E section.
   EXPECT_EQ(diags("%@3\nRD NOPE\nEND1\nEND2\nEND\n%\n"),
-            "t.pmc:2:4: error: unknown symbol 'NOPE'\n");
+            "t.pmc:2:4: error: unknown symbol 'NOPE' [LJ4016]\n");
   // The name of a rejected definition: the use points back at it.
-  EXPECT_EQ(diags(file("BAD,X999.0\n", "RD BAD\nEND1\nEND2\nEND\n")),
-            "t.pmc:2:5: error: symbol 'BAD': address 'X999.0' out of range (X0..X127, "
-            "X200..X327)\n"
-            "t.pmc:5:4: error: unknown symbol 'BAD' (its definition on line 2 has an error)\n");
+  EXPECT_EQ(
+      diags(file("BAD,X999.0\n", "RD BAD\nEND1\nEND2\nEND\n")),
+      "t.pmc:2:5: error: symbol 'BAD': address 'X999.0' out of range (X0..X127, "
+      "X200..X327) [LJ4006]\n"
+      "t.pmc:5:4: error: unknown symbol 'BAD' (its definition on line 2 has an error) [LJ4016]\n");
 }
 
 TEST(FanucSymbols, OperandErrorsNameTheSymbol) {
@@ -409,37 +417,37 @@ TEST(FanucSymbols, OperandErrorsNameTheSymbol) {
     return diags(file(kSymbols, ladder + "END1\nEND2\nEND\n"));
   };
   EXPECT_EQ(d("RD WORD\n"), "t.pmc:11:4: error: expected a bit address (like R0.0), got byte "
-                            "'WORD' (symbol 'WORD' = D100)\n");
+                            "'WORD' (symbol 'WORD' = D100) [LJ4019]\n");
   EXPECT_EQ(d("RD KEY\nMOVB KEY R0\n"),
             "t.pmc:12:6: error: expected a byte address (like D100), got 'KEY' (symbol 'KEY' = "
-            "X0.1)\n");
+            "X0.1) [LJ4024]\n");
   EXPECT_EQ(d("RD KEY\nWRT ESP_OK\n"),
             "t.pmc:12:5: error: 'ESP_OK' is read-only (X is written by the machine or the CNC) "
-            "(symbol 'ESP_OK' = X0.0)\n");
+            "(symbol 'ESP_OK' = X0.0) [LJ4001]\n");
   EXPECT_EQ(d("RD KEY\nMOVB R0 MCODE\n"),
             "t.pmc:12:9: error: 'MCODE' is read-only (F is written by the machine or the CNC) "
-            "(symbol 'MCODE' = F10)\n");
+            "(symbol 'MCODE' = F10) [LJ4001]\n");
   EXPECT_EQ(diags(file("LAST,D9999\n", "RD X0.0\nMOVW LAST R0\nEND1\nEND2\nEND\n")),
             "t.pmc:6:6: error: 'LAST' as 2 bytes runs past the end of D0..D9999 (symbol 'LAST' = "
-            "D9999)\n");
+            "D9999) [LJ4025]\n");
   // A check of the instruction after the operand was read names the symbol as well.
   EXPECT_EQ(diags(file("HEAD,R0\n", "RD X0.0\nRD.STK X0.1\nRD.STK X0.2\nDSCH 10 HEAD D0 D2\n"
                                     "END1\nEND2\nEND\n")),
             "t.pmc:8:9: error: table head 'HEAD': DSCH searches the data table only (a D "
-            "address, ref 6.7) (symbol 'HEAD' = R0)\n");
+            "address, ref 6.7) (symbol 'HEAD' = R0) [LJ4080]\n");
 }
 
 TEST(FanucSymbols, LabelsAndSubroutinesAreNotSymbols) {
   const std::string syms = "AT,R0\n";
   EXPECT_EQ(diags(file(syms, "RD X0.0\nJMPB AT\nLBL L1\nEND1\nEND2\nEND\n")),
             "t.pmc:6:6: error: expected a label (L1), got 'AT': labels and subroutines are not "
-            "symbols (symbol 'AT' = R0)\n");
+            "symbols (symbol 'AT' = R0) [LJ4026]\n");
   EXPECT_EQ(diags(file(syms, "END1\nRD X0.0\nCALL DO_IT\nEND2\nSP P1\nSPE\nEND\n")),
             "t.pmc:7:6: error: expected a subroutine (P1), got 'DO_IT': labels and subroutines "
-            "are not symbols\n");
+            "are not symbols [LJ4026]\n");
   EXPECT_EQ(diags(file(syms, "END1\nEND2\nSP AT\nSPE\nEND\n")),
             "t.pmc:7:4: error: expected a subroutine (P1), got 'AT': labels and subroutines are "
-            "not symbols (symbol 'AT' = R0)\n");
+            "not symbols (symbol 'AT' = R0) [LJ4026]\n");
 }
 
 // ---- symbols given with the program (compilePmc's table, e.g. a ladder JSON's) ----
@@ -464,13 +472,13 @@ TEST(FanucSymbols, GivenSymbolsAreMergedWithTheFilesOwn) {
   // A name in both is an error at the file's row.
   EXPECT_EQ(parse(file("pump,Y0.1\n", "RD X0.0\nWRT PUMP\nEND1\nEND2\nEND\n"), &given).diags,
             "t.pmc:2:1: error: duplicate symbol 'pump' (already defined in the symbols given with "
-            "the program as 'PUMP'; names are case-insensitive)\n");
+            "the program as 'PUMP'; names are case-insensitive) [LJ4101]\n");
   // Given symbols are checked under the FANUC rules (this one was made under HNC-8's).
   SymbolTable hnc8(hnc8::symbolRules());
   ASSERT_TRUE(hnc8.add("MODE", "W0", "", err)) << err;
   EXPECT_EQ(parse("END1\nEND2\nEND\n", &hnc8).diags,
             "t.pmc:0:0: error: symbols given with the program: symbol 'MODE': unknown address 'W0' "
-            "(areas: X Y F G R E A T C K D)\n");
+            "(areas: X Y F G R E A T C K D) [LJ4102]\n");
 }
 
 } // namespace

@@ -126,7 +126,10 @@ const char *servedName(Served s) {
 // library's shared object, signed with the test key) into a temporary file.
 std::string compileAot(const std::string &program, std::string &error) {
   pipeline::ProgramSource src;
-  if (!pipeline::readProgramFile(program, src, error, "")) return {};
+  if (Status st = pipeline::readProgramFile(program, src, ""); !st.ok()) {
+    error = st.message();
+    return {};
+  }
   const int32_t nvalue = pipeline::effectiveNvalue(src, 200, false);
   std::string diags;
   std::optional<VerifiedProgram> prog = pipeline::verifyProgram(src, nvalue, diags);

@@ -41,9 +41,11 @@ int runDit(const DitArgs &a) {
                       std::to_string(a.periodMs));
   std::string stl, error;
   // A plc.dit holds an HNC-8 program (docs/plc-dit.md): --dialect and the name must say hnc8.
-  const pipeline::Dialect *d = a.dialect.empty() ? pipeline::dialectForPath(a.program, error)
-                                                 : pipeline::dialectForOption(a.dialect, error);
-  if (!d) return usageError(error);
+  Result<const pipeline::Dialect *> dialect = a.dialect.empty()
+                                                  ? pipeline::dialectForPath(a.program)
+                                                  : pipeline::dialectForOption(a.dialect);
+  if (!dialect) return usageError(dialect.status().message());
+  const pipeline::Dialect *d = *dialect;
   if (d != &pipeline::defaultDialect())
     return usageError(std::string("a plc.dit holds an hnc8 program, not dialect '") + d->name +
                       "'");

@@ -24,9 +24,8 @@ int usageError(const std::string &msg) {
 
 bool readProgram(const std::string &path, ProgramSource &src, int &exitCode,
                  std::string_view dialect) {
-  std::string error;
-  if (!pipeline::readProgramFile(path, src, error, dialect)) {
-    exitCode = usageError(error);
+  if (Status st = pipeline::readProgramFile(path, src, dialect); !st.ok()) {
+    exitCode = usageError(st.message());
     return false;
   }
   exitCode = kOk;
@@ -98,10 +97,10 @@ int runEmitLlvm(const EmitArgs &a) {
 int runFuzz(const FuzzArgs &a) {
   // The generators write HNC-8 STL (gen/RandomProgram.cpp), FANUC PMC (gen/FanucProgram.cpp) and
   // IEC IL (gen/IlGenerator.cpp).
-  std::string error;
-  const pipeline::Dialect *d =
-      pipeline::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect, error);
-  if (!d) return usageError(error);
+  Result<const pipeline::Dialect *> dialect =
+      pipeline::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect);
+  if (!dialect) return usageError(dialect.status().message());
+  const pipeline::Dialect *d = *dialect;
   const bool fanuc = std::string_view(d->name) == "fanuc";
   const bool iec = std::string_view(d->name) == "iec";
   if (d != &pipeline::defaultDialect() && !fanuc && !iec)
