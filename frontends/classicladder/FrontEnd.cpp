@@ -74,6 +74,16 @@ const char *spell(Op op) {
     return "END_SCAN";
   case Op::EndSliced:
     return "END";
+  case Op::ClClock:
+    return "CLOCK";
+  case Op::ClTimer:
+    return "TIMER";
+  case Op::ClMonostable:
+    return "MONOSTABLE";
+  case Op::ClCounter:
+    return "COUNTER";
+  case Op::ClIecTimer:
+    return "TIMER_IEC";
   default:
     return nullptr;
   }
@@ -108,6 +118,8 @@ std::string formatOperand(const Operand &o) {
     return "SR" + std::to_string(o.index);
   case Area::ExtraRelay:
     return "cell" + std::to_string(n); // a rung cell's state, never written by a user
+  case Area::TimerData:
+    return "blk" + std::to_string(o.index); // a block's word (ir/ClBlocks.h)
   default:
     return "?";
   }
@@ -124,6 +136,51 @@ Operand bitOperand(Area a, int32_t n) {
   return o;
 }
 
+Operand blockWord(int32_t index) {
+  Operand o;
+  o.kind = Operand::Kind::Reg;
+  o.area = Area::TimerData;
+  o.index = index;
+  return o;
+}
+/// A block's flag word read as a bit (it holds 0 or 1).
+Operand blockFlag(int32_t index) {
+  Operand o = blockWord(index);
+  o.kind = Operand::Kind::Bit;
+  o.bit = 0;
+  return o;
+}
+/// The first word of block `n` of element `type` (10 %T, 11 %M, 12 %C, 13 %TM).
+int32_t blockAt(int32_t type, int32_t n) {
+  using namespace clblocks;
+  switch (type) {
+  case 10:
+    return kTimerAt + n * kTimerWords;
+  case 11:
+    return kMonoAt + n * kMonoWords;
+  case 12:
+    return kCounterAt + n * kCounterWords;
+  default:
+    return kIecAt + n * kIecWords;
+  }
+}
+/// How many blocks of element `type` the profile holds.
+int32_t blockCount(int32_t type) {
+  return type == 10 ? kOldTimers : type == 11 ? kMonostables : type == 12 ? kCounters : kIecTimers;
+}
+/// The time base in ms of old timer (10) or monostable (11) `n`: timers.csv / monostables.csv,
+/// else 1 s as classicladder_rt leaves a block without parameters.
+int32_t baseMsOf(const Project &p, int32_t type, int32_t n) {
+  const std::vector<TimerParams> &v = type == 10 ? p.timers : p.monostables;
+  return n >= 0 && static_cast<size_t>(n) < v.size() ? v[static_cast<size_t>(n)].baseMs : 1000;
+}
+/// Whether variable `type` is a block's output or value that only the block writes: a coil or
+/// an operate block on it does nothing (calc.c WriteVar has no case for it).
+bool readOnlyBlockVar(int32_t type) {
+  return type == 10 || type == 11 || type == 20 || type == 25 || type == 26 || type == 27 ||
+         type == 231 || type == 241;
+}
+
 /// ExtraRelay bits at the end of the cell bytes kept for the expression code (flag()).
 constexpr int32_t kScratchBits = 8;
 /// Labels (one per rung placed in a section) and sub-routines the profile holds
@@ -136,7 +193,9 @@ public:
       : p_(p), out_(out), diags_(diags) {}
 
   void run() {
+    powerUp();
     emit(Op::EndInit, {});
+    emit(Op::ClClock, {blockWord(kClockAt), konst(clblocks::kClockScan)});
     std::vector<const Section *> order;
     for (const Section &s : p_.sections) order.push_back(&s);
     std::stable_sort(order.begin(), order.end(),
@@ -170,6 +229,30 @@ public:
   }
 
 private:
+  /// The init part: the scan clock's first period and the blocks' presets as classicladder_rt
+  /// loads them (an old timer's remaining time starts at its preset: PrepareTimers).
+  void powerUp() {
+    using namespace clblocks;
+    emit(Op::ClClock, {blockWord(kClockAt), konst(kClockPowerUp)});
+    auto set = [&](int32_t word, int64_t v) {
+      if (v == 0) return;
+      emit(Op::LoadTrue, {});
+      emit(Op::Move, {konst(static_cast<int32_t>(static_cast<uint32_t>(v))), blockWord(word)});
+    };
+    for (size_t i = 0; i < p_.timers.size() && i < size_t{kOldTimers}; ++i) {
+      const int64_t ms = int64_t{p_.timers[i].preset} * p_.timers[i].baseMs;
+      set(blockAt(10, int32_t(i)) + kTimerPresetMs, ms);
+      set(blockAt(10, int32_t(i)) + kTimerValueMs, ms);
+    }
+    for (size_t i = 0; i < p_.monostables.size() && i < size_t{kMonostables}; ++i)
+      set(blockAt(11, int32_t(i)) + kMonoPresetMs,
+          int64_t{p_.monostables[i].preset} * p_.monostables[i].baseMs);
+    for (size_t i = 0; i < p_.counterPresets.size() && i < size_t{kCounters}; ++i)
+      set(blockAt(12, int32_t(i)) + kCounterPreset, p_.counterPresets[i]);
+    for (size_t i = 0; i < p_.timersIec.size() && i < size_t{kIecTimers}; ++i)
+      set(blockAt(13, int32_t(i)) + kIecPreset, p_.timersIec[i].preset);
+  }
+
   void refuse(const std::string &msg) {
     if (diags_.errorCount() < 50) diags_.error({}, msg);
   }
@@ -198,7 +281,8 @@ private:
 
   /// Whether a cell writes DynamicOutput (FREE, coils and the editor codes never do).
   static bool writesPower(const Cell &c) {
-    return c.type == 1 || c.type == 2 || c.type == 3 || c.type == 4 || c.type == 9 || c.type == 20;
+    return (c.type >= 1 && c.type <= 4) || (c.type >= 9 && c.type <= 13) || c.type == 20 ||
+           c.type == 99; // 99: the cells a timer or counter writes below its first row
   }
 
   Operand power(int x, int y) const { return bitOperand(Area::ExtraRelay, base_ + x * h_ + y); }
@@ -209,7 +293,7 @@ private:
   /// Pushes StateOnLeft(x, y): the rail in column 0, else the OR of the powers of the vertical
   /// group (column x's links) in column x - 1; 0 when no cell there writes its power.
   void loadLeft(const Rung &r, int x, int y) {
-    if (x == 0) {
+    if (x <= 0) {
       emit(Op::LoadTrue, {});
       return;
     }
@@ -230,8 +314,10 @@ private:
 
   std::optional<Operand> boolVar(int32_t rung, int x, int y, const Cell &c, bool write) {
     const Ele e = static_cast<Ele>(c.type);
-    const bool ok =
-        c.varType == 0 || c.varType == 60 || c.varType == 70 || (!write && c.varType == 50);
+    const bool blockOut = c.varType == 10 || c.varType == 11 || c.varType == 15 ||
+                          c.varType == 20 || (c.varType >= 25 && c.varType <= 27);
+    const bool ok = c.varType == 0 || c.varType == 60 || c.varType == 70 ||
+                    (!write && (c.varType == 50 || blockOut)) || (write && c.varType == 15);
     if (!ok) {
       refuseCell(rung, x, y,
                  std::string(elementName(c.type)) + " on " + varName(c.varType, c.varNum) +
@@ -313,6 +399,71 @@ private:
     emit(Op::Call, {sr});
   }
 
+  /// Old timer (2x2), monostable (2x1), counter (2x4) or IEC timer (2x2) at its top-right cell
+  /// (calc.c): inputs StateOnLeft(x - 1, row) of its rows, outputs the power of its right cells.
+  /// A block whose rows do not fit the rung does nothing, as in calc.c.
+  void block(const Rung &r, int x, int y, const Cell &c) {
+    using namespace clblocks;
+    const int rows = c.type == 10 ? 2 : c.type == 12 ? 4 : 1;
+    if (y + rows > h_) return;
+    if (c.varNum < 0 || c.varNum >= blockCount(c.type)) {
+      refuseCell(r.index, x, y,
+                 blockText(c) + " is beyond the " + std::to_string(blockCount(c.type)) +
+                     " of the classicladder profile");
+      return;
+    }
+    const int32_t at = blockAt(c.type, c.varNum);
+    const Operand clock = blockWord(kClockAt);
+    for (int k = 0; k < rows; ++k) loadLeft(r, x - 1, y + k);
+    switch (c.type) {
+    case 10:
+      emit(Op::ClTimer, {blockWord(at), clock});
+      emit(Op::Coil, {power(x, y)});
+      emit(Op::Load, {blockFlag(at + kTimerRunning)});
+      emit(Op::Coil, {power(x, y + 1)});
+      return;
+    case 11:
+      emit(Op::ClMonostable, {blockWord(at), clock});
+      emit(Op::Coil, {power(x, y)});
+      return;
+    case 12:
+      emit(Op::ClCounter, {blockWord(at)});
+      emit(Op::Coil, {power(x, y)});
+      emit(Op::Load, {blockFlag(at + kCounterDone)});
+      emit(Op::Coil, {power(x, y + 1)});
+      emit(Op::Load, {blockFlag(at + kCounterFull)});
+      emit(Op::Coil, {power(x, y + 2)});
+      return;
+    default: {
+      const bool known = static_cast<size_t>(c.varNum) < p_.timersIec.size();
+      const TimerIecParams t =
+          known ? p_.timersIec[static_cast<size_t>(c.varNum)] : TimerIecParams{};
+      emit(Op::ClIecTimer, {blockWord(at), clock, konst(static_cast<int32_t>(t.mode)),
+                            konst(known ? t.baseMs : 1000)});
+      emit(Op::Coil, {power(x, y)});
+      return;
+    }
+    }
+  }
+
+  /// %Tn.P %Tn.V %Mn.P %Mn.V (230, 231, 240, 241): the block's ms word, read as whole base units.
+  static bool scaledVar(int32_t type) {
+    return type == 230 || type == 231 || type == 240 || type == 241;
+  }
+  std::optional<Operand> scaledWord(int32_t type, int32_t num, std::string &why) const {
+    using namespace clblocks;
+    const int32_t kind = type < 240 ? 10 : 11;
+    if (num < 0 || num >= blockCount(kind)) {
+      why = "variable " + varName(type, num) + " is beyond the " +
+            std::to_string(blockCount(kind)) + " " + (kind == 10 ? "timers" : "monostables") +
+            " of the classicladder profile";
+      return std::nullopt;
+    }
+    const bool preset = type == 230 || type == 240;
+    return blockWord(blockAt(kind, num) + (kind == 10 ? (preset ? kTimerPresetMs : kTimerValueMs)
+                                                      : (preset ? kMonoPresetMs : kMonoValueMs)));
+  }
+
   void rung(int32_t index) {
     auto it = p_.rungs.find(index);
     if (it == p_.rungs.end()) return; // the reader checked the chains
@@ -369,6 +520,7 @@ private:
     case 51:
     case 52:
     case 53: {
+      if (readOnlyBlockVar(c.varType)) return; // calc.c WriteVar: nothing happens
       std::optional<Operand> v = boolVar(r.index, x, y, c, true);
       if (!v) return;
       loadLeft(r, x, y);
@@ -379,6 +531,12 @@ private:
       emit(op, {*v});
       return;
     }
+    case 10:
+    case 11:
+    case 12:
+    case 13:
+      block(r, x, y, c);
+      return;
     case 20:
       compare(r, x, y, c);
       return;
@@ -454,6 +612,17 @@ private:
         return false;
       }
       std::string why;
+      if (scaledVar(n.var.type)) { // ms / base, truncated as C divides
+        std::optional<Operand> w = scaledWord(n.var.type, n.var.num, why);
+        if (!w) {
+          refuse(where + ": " + why);
+          return false;
+        }
+        move(*w, t);
+        emit(Op::LoadTrue, {});
+        emit(Op::Divide, {t, konst(baseMsOf(p_, n.var.type < 240 ? 10 : 11, n.var.num)), t});
+        return true;
+      }
       std::optional<Operand> o = varOperand(n.var.type, n.var.num, why);
       if (!o) {
         refuse(where + ": " + why);
@@ -613,6 +782,22 @@ private:
       return;
     }
     std::string why;
+    if (readOnlyBlockVar(e.target.type)) return;        // calc.c WriteVar: nothing happens
+    if (e.target.type == 230 || e.target.type == 240) { // P := value x base (in ms)
+      std::optional<Operand> w = scaledWord(e.target.type, e.target.num, why);
+      if (!w) {
+        refuse(where + ": " + why);
+        return;
+      }
+      const Operand en = previous(x, y);
+      loadLeft(r, x - 2, y);
+      emit(Op::Coil, {en});
+      if (!value(*e.value, 0, where)) return;
+      emit(Op::Load, {en});
+      emit(Op::Multiply,
+           {word(0), konst(baseMsOf(p_, e.target.type == 230 ? 10 : 11, e.target.num)), *w});
+      return;
+    }
     std::optional<Operand> to = varOperand(e.target.type, e.target.num, why);
     if (!to || to->area == Area::Input || to->area == Area::Word ||
         to->area == Area::Param) { // %I, %IW: HAL copies them in
@@ -681,6 +866,33 @@ private:
 } // namespace
 
 std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
+  using namespace clblocks;
+  // the blocks' outputs (bits) and the values kept in whole units (words)
+  struct BlockVar {
+    int32_t type, kind, word;
+    bool bit;
+  };
+  static constexpr BlockVar kBlockVars[] = {{10, 10, kTimerDone, true},
+                                            {11, 10, kTimerRunning, true},
+                                            {20, 11, kMonoRunning, true},
+                                            {25, 12, kCounterDone, true},
+                                            {26, 12, kCounterEmpty, true},
+                                            {27, 12, kCounterFull, true},
+                                            {250, 12, kCounterPreset, false},
+                                            {251, 12, kCounterValue, false},
+                                            {15, 13, kIecQ, true},
+                                            {260, 13, kIecPreset, false},
+                                            {261, 13, kIecValue, false}};
+  for (const BlockVar &b : kBlockVars) {
+    if (b.type != type) continue;
+    if (num < 0 || num >= blockCount(b.kind)) {
+      why = "variable " + varName(type, num) + " is beyond the " +
+            std::to_string(blockCount(b.kind)) + " blocks of its kind in the classicladder profile";
+      return std::nullopt;
+    }
+    const int32_t w = blockAt(b.kind, num) + b.word;
+    return b.bit ? blockFlag(w) : blockWord(w);
+  }
   Area a;
   int32_t count;
   switch (type) {
