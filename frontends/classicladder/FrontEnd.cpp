@@ -460,8 +460,9 @@ private:
       return std::nullopt;
     }
     const bool preset = type == 230 || type == 240;
-    return blockWord(blockAt(kind, num) + (kind == 10 ? (preset ? kTimerPresetMs : kTimerValueMs)
-                                                      : (preset ? kMonoPresetMs : kMonoValueMs)));
+    const int32_t word = kind == 10 ? int32_t{preset ? kTimerPresetMs : kTimerValueMs}
+                                    : int32_t{preset ? kMonoPresetMs : kMonoValueMs};
+    return blockWord(blockAt(kind, num) + word);
   }
 
   void rung(int32_t index) {

@@ -65,6 +65,9 @@ std::optional<VerifiedProgram> compile(const std::string &text, const std::strin
   return p;
 }
 
+/// Output changes the reference scan made in agree() (how much the compared outputs moved).
+int64_t gOutputChanges = 0;
+
 /// Runs `text` on every engine and the reference scan for `periods` periods of 1 ms; returns
 /// the number of (period, output, engine) differences and records the first one.
 int64_t agree(const std::string &text, const std::string &name, uint64_t seed, int periods) {
@@ -100,6 +103,7 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
                fout = s32out + static_cast<size_t>(sz.s32out);
   std::mt19937_64 rng(seed);
   std::vector<int> hold(in.size(), 0);
+  std::vector<int64_t> last(out.size(), 0);
   int64_t diffs = 0;
   for (int period = 0; period < periods; ++period) {
     for (size_t i = 0; i < in.size(); ++i) {
@@ -126,6 +130,8 @@ int64_t agree(const std::string &text, const std::string &name, uint64_t seed, i
       const int64_t want = j >= fout ? static_cast<int64_t>(ref.floatOut[j - fout])
                            : word    ? ref.s32out[j - s32out]
                                      : ref.out[j];
+      gOutputChanges += want != last[j];
+      last[j] = want;
       for (auto &m : engines) {
         const int64_t got = formats::readAddress(m->state(), out[j]);
         if (got == want) continue;
@@ -537,6 +543,9 @@ TEST(ClAgree, GeneratedProjectsWithBlocks) {
     total += agree(gen::generateClp(seed, 6 + static_cast<int32_t>(seed % 8)),
                    "blk" + std::to_string(seed) + ".clp", seed, 6000);
   EXPECT_EQ(total, 0);
+  std::cout << "40 projects x 6,000 periods: " << gOutputChanges << " output changes, " << total
+            << " differences\n";
+  gOutputChanges = 0;
 }
 
 TEST(ClAgree, JumpAndCallAgainstTheReferenceScan) {
@@ -567,6 +576,7 @@ TEST(ClAgree, RealProjects) {
     if (e.is_regular_file() && e.path().extension() == ".clp") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   int accepted = 0;
+  gOutputChanges = 0;
   for (const fs::path &f : files) {
     const std::string text = slurp(f);
     std::string err;
@@ -577,7 +587,10 @@ TEST(ClAgree, RealProjects) {
     ++accepted;
     EXPECT_EQ(agree(text, f.string(), 7, 10000), 0) << f;
   }
-  std::cout << accepted << " of " << files.size() << " real projects accepted\n";
-  EXPECT_GE(accepted, 3); // blank, cl-estop/estop, tests/classicladder/estop
+  std::cout << accepted << " of " << files.size() << " real projects accepted, " << gOutputChanges
+            << " output changes\n";
+  // docs/classicladder.md: 24 of the 30 run; the 6 others use an indexed operand, a sequential
+  // section or master's character constant
+  EXPECT_GE(accepted, 24);
 }
 #endif
