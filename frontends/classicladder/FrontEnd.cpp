@@ -186,6 +186,8 @@ constexpr int32_t kScratchBits = 8;
 /// Labels (one per rung placed in a section) and sub-routines the profile holds
 /// (profiles/classicladder/Areas.cpp).
 constexpr int32_t kLabels = 4096, kSubroutines = 64;
+/// The label at the end of the cyclic part, where a stopped ladder goes (the last one).
+constexpr int32_t kEndLabel = kLabels - 1;
 
 class RungMapper {
 public:
@@ -196,6 +198,8 @@ public:
     powerUp();
     emit(Op::EndInit, {});
     emit(Op::ClClock, {blockWord(kClockAt), konst(clblocks::kClockScan)});
+    emit(Op::Load, {blockFlag(kStoppedAt)}); // a stopped ladder does nothing
+    emit(Op::Jump, {label(kEndLabel)});
     std::vector<const Section *> order;
     for (const Section &s : p_.sections) order.push_back(&s);
     std::stable_sort(order.begin(), order.end(),
@@ -208,8 +212,11 @@ public:
         continue;
       }
       if (s->subRoutine >= 0) continue; // runs only when a CALL coil calls it (below)
+      emit(Op::LoadTrue, {});           // a section pass counts its jumps from 0
+      emit(Op::Move, {konst(0), blockWord(kJumpsAt)});
       section(*s);
     }
+    emit(Op::Label, {label(kEndLabel)});
     emit(Op::EndCyclic, {});
     emit(Op::EndSliced, {});
     // sub-routine sections: a CALL coil runs the first section with its number (calc.c)
@@ -339,7 +346,7 @@ private:
     for (int32_t r : s.order) labels_[r] = nextLabel_++;
     for (size_t i = 0; i < s.order.size(); ++i) {
       position_ = static_cast<int32_t>(i);
-      if (labels_.at(s.order[i]) < kLabels) emit(Op::Label, {label(labels_.at(s.order[i]))});
+      if (labels_.at(s.order[i]) < kEndLabel) emit(Op::Label, {label(labels_.at(s.order[i]))});
       rung(s.order[i]);
     }
     section_ = nullptr;
@@ -352,27 +359,45 @@ private:
     return o;
   }
 
+  /// Leaves the scan when the ladder has stopped: from a main section to the end of the cyclic
+  /// part, from a sub-routine back to its caller (which checks again after its CALL).
+  void leaveIfStopped(const Operand &cond) {
+    emit(Op::Load, {cond});
+    if (section_ && section_->subRoutine >= 0)
+      emit(Op::Return, {});
+    else
+      emit(Op::Jump, {label(kEndLabel)});
+  }
+
   /// Jump coil: when powered, the rest of the rung is skipped and the section goes on at the
-  /// target rung along its chain (calc.c). A target later in this section's chain is a forward
-  /// IR jump; a target outside the chain or not after this rung (a loop) is refused.
+  /// target rung along its chain (calc.c), forward or back (a loop within the scan). Every jump
+  /// counts towards calc.c's MadLoopBreak: the jump that makes more than 99,999 in one section
+  /// pass stops the ladder for good instead. A target outside the section's chain is refused.
   void jump(const Rung &r, int x, int y, const Cell &c) {
     const auto at = std::find(section_->order.begin(), section_->order.end(), c.varNum);
-    const int32_t pos = static_cast<int32_t>(at - section_->order.begin());
-    if (at == section_->order.end() || pos <= position_) {
+    if (at == section_->order.end()) {
       refuseCell(r.index, x, y,
                  "jump coil to rung " + std::to_string(c.varNum) +
-                     (at == section_->order.end()
-                          ? ", which is not on this section's chain, is not supported yet"
-                          : " (back: a loop) is not supported yet") +
-                     " by the classicladder front end");
+                     ", which is not on this section's chain, is not supported yet by the "
+                     "classicladder front end");
       return;
     }
     const int32_t l = labels_.at(c.varNum);
-    if (l >= kLabels) {
+    if (l >= kEndLabel) {
       refuseCell(r.index, x, y, "the project has more rungs than the profile's labels");
       return;
     }
+    const Operand taken = previous(x, y); // a coil cell keeps no edge memory: the jump's bit
     loadLeft(r, x, y);
+    emit(Op::Coil, {taken});
+    emit(Op::Load, {taken});
+    emit(Op::Increment, {blockWord(kJumpsAt)});
+    test(Op::CompareLt, konst(kMaxJumps), blockWord(kJumpsAt));
+    emit(Op::Load, {taken});
+    emit(Op::And, {flag()});
+    emit(Op::Set, {blockFlag(kStoppedAt)});
+    leaveIfStopped(blockFlag(kStoppedAt));
+    emit(Op::Load, {taken});
     emit(Op::Jump, {label(l)});
   }
 
@@ -397,6 +422,7 @@ private:
     sr.index = c.varNum;
     loadLeft(r, x, y);
     emit(Op::Call, {sr});
+    leaveIfStopped(blockFlag(kStoppedAt)); // the sub-routine stopped the ladder
   }
 
   /// Old timer (2x2), monostable (2x1), counter (2x4) or IEC timer (2x2) at its top-right cell

@@ -45,6 +45,12 @@ constexpr int32_t kTimerAt = kClockAt + clblocks::kClockWords;
 constexpr int32_t kMonoAt = kTimerAt + clblocks::kTimerWords * kOldTimers;
 constexpr int32_t kCounterAt = kMonoAt + clblocks::kMonoWords * kMonostables;
 constexpr int32_t kIecAt = kCounterAt + clblocks::kCounterWords * kCounters;
-constexpr int32_t kBlockWords = kIecAt + clblocks::kIecWords * kIecTimers;
+/// The jumps of the current section pass and the stop flag (calc.c MadLoopBreak: more than
+/// 99,999 jumps in one section pass stop the ladder for good), then the end of the area.
+constexpr int32_t kJumpsAt = kIecAt + clblocks::kIecWords * kIecTimers;
+constexpr int32_t kStoppedAt = kJumpsAt + 1;
+constexpr int32_t kBlockWords = kStoppedAt + 1;
+/// More jumps than this in one section pass stop the ladder (calc.c).
+constexpr int32_t kMaxJumps = 99999;
 
 } // namespace lj::classicladder

@@ -336,6 +336,55 @@ TEST_P(ClEngines, JumpSkipsTheRestOfItsRungAndCallRunsTheSubRoutine) {
   EXPECT_EQ(get("%Q3"), 1); // SR0 not called: its coil keeps its value
 }
 
+/// One row: connections from the rail, an operate block (expression `e`) in column 9.
+std::vector<std::string> operateRow(int e) {
+  std::vector<std::string> row(10, "9-0-0/0");
+  row[7] = row[8] = "99-0-0/0";
+  row[9] = "60-0-0/" + std::to_string(e);
+  return row;
+}
+
+/// Rungs 0 -> 1 -> 2 -> 3: %W0 := 0; %W0 := %W0 + 1; a compare %W0 < %IW0 powering a jump
+/// back to rung 1; %QW0 := %W0. Within one scan %W0 counts up to %IW0.
+std::string loopProject() {
+  std::vector<std::string> cmp(10, "9-0-0/0");
+  cmp[0] = cmp[1] = "99-0-0/0";
+  cmp[2] = "20-0-0/2";
+  cmp[9] = "54-0-0/1";
+  return "_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n000,0,-1,0,3,0\n"
+         "_/FILE-sections.csv\n" +
+         rungFile(0, 1, {operateRow(0)}) + rungFile(1, 2, {operateRow(1)}) + rungFile(2, 3, {cmp}) +
+         rungFile(3, -1, {operateRow(3)}) +
+         "_FILE-arithmetic_expressions.csv\n#VER=2.0\n0000,@200/0@:=0\n0001,@200/0@:=@200/0@+1\n"
+         "0002,@200/0@<@270/0@\n0003,@280/0@:=@200/0@\n_/FILE-arithmetic_expressions.csv\n"
+         "_/FILES_CLASSICLADDER\n";
+}
+
+TEST_P(ClEngines, JumpBackLoopsWithinTheScanAndStopsTheLadderAfter99999Jumps) {
+  // reference 4.2: a backward jump loops within one scan; every jump counts toward
+  // MadLoopBreak, and after 99,999 jumps in one section pass the ladder is set to STOP and
+  // stays stopped (outputs keep their values).
+  std::string err;
+  std::optional<VerifiedProgram> p = compile(loopProject(), "loop.clp", err);
+  ASSERT_TRUE(p) << err;
+  auto m = test::Machine::create(*p, GetParam());
+  ASSERT_TRUE(m);
+  m->init();
+  auto set = [&](const char *a, int v) { formats::writeAddress(m->state(), address(a), v); };
+  auto get = [&](const char *a) { return formats::readAddress(m->state(), address(a)); };
+  set("%IW0", 10);
+  EXPECT_EQ(m->tick(), uint32_t{LJ_FAULT_NONE});
+  EXPECT_EQ(get("%QW0"), 10); // nine jumps back
+  set("%IW0", 200000);
+  EXPECT_EQ(m->tick(), uint32_t{LJ_FAULT_NONE});
+  EXPECT_EQ(get("%W0"), 100000); // jump 100,000 (at %W0 = 100000) stops instead
+  EXPECT_EQ(get("%QW0"), 10);    // rung 3 did not run
+  set("%IW0", 3);
+  m->tick();
+  EXPECT_EQ(get("%W0"), 100000); // stopped: nothing runs any more
+  EXPECT_EQ(get("%QW0"), 10);
+}
+
 /// `rows` with `csv` files (`_FILE-name` blocks) added.
 std::string withFiles(const std::vector<std::vector<std::string>> &rows,
                       const std::vector<std::pair<std::string, std::string>> &csv) {
@@ -527,9 +576,14 @@ TEST(ClAgree, RefusedElementsAreLocated) {
   EXPECT_FALSE(compile(oneRung({wire("1-0-50/600", "50-0-60/0")}), "t.clp", err));
   EXPECT_NE(err.find("rung 0 row 0 column 0: variable %I600 is beyond the 512"), std::string::npos)
       << err;
-  EXPECT_FALSE(compile(oneRung({wire("1-0-50/0", "54-0-0/0")}), "t.clp", err));
-  EXPECT_NE(err.find("rung 0 row 0 column 9: jump coil to rung 0 (back: a loop) is not "
-                     "supported yet"),
+  EXPECT_FALSE(compile("_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n000,0,-1,0,0,0\n"
+                       "001,0,-1,1,1,0\n_/FILE-sections.csv\n" +
+                           rungFile(0, -1, {wire("1-0-50/0", "54-0-0/1")}) +
+                           rungFile(1, -1, {wire("1-0-50/0", "50-0-60/0")}) +
+                           "_/FILES_CLASSICLADDER\n",
+                       "t.clp", err));
+  EXPECT_NE(err.find("rung 0 row 0 column 9: jump coil to rung 1, which is not on this "
+                     "section's chain"),
             std::string::npos)
       << err;
   EXPECT_FALSE(compile("_FILES_CLASSICLADDER\nrubbish\n", "bad.clp", err));
@@ -550,6 +604,8 @@ TEST(ClAgree, GeneratedProjectsWithBlocks) {
 
 TEST(ClAgree, JumpAndCallAgainstTheReferenceScan) {
   EXPECT_EQ(agree(jumpCallProject(), "jumpcall.clp", 3, 5000), 0);
+  for (uint64_t seed = 1; seed <= 3; ++seed) // loops, and a stop on a large %IW0
+    EXPECT_EQ(agree(loopProject(), "loop.clp", seed, 300), 0);
 }
 
 TEST(ClAgree, GeneratedProjects) {
