@@ -2,6 +2,7 @@
 // valid program and stimulus, interpreter and JIT in lock step; mismatches minimized and printed.
 #include "fuzz/Fuzz.h"
 
+#include "fuzz/ClpFuzz.h"
 #include "fuzz/Differential.h"
 #include "fuzz/RoundTrip.h"
 #include "gen/FanucProgram.h"
@@ -102,6 +103,7 @@ std::string where(const Outcome &o) {
 } // namespace
 
 FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate) {
+  if (opts.classicladder) return runClp(opts, out, candidate);
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   FuzzStats st;

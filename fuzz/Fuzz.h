@@ -45,6 +45,9 @@ struct FuzzOptions {
   bool fanuc = false;
   /// Generate IEC IL programs (gen/IlGenerator.h) instead of HNC-8 STL (`fuzz --dialect iec`).
   bool iec = false;
+  /// Generate ClassicLadder projects (gen/ClpGenerator.h, fuzz/ClpFuzz.h) instead
+  /// (`fuzz --dialect classicladder`).
+  bool classicladder = false;
   /// Called after every program with the counters so far and the programs done, and once more
   /// with `done` == 0 just before the summary (`ladderjit fuzz`'s progress line; null = none).
   std::function<void(const FuzzStats &, uint64_t done)> progress;

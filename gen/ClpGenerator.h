@@ -19,11 +19,10 @@ struct ClpGenSizes {
           floatIn = 2, floatOut = 2;
 };
 
-/// Which elements a generated project uses: all of the above, or only what ladderjit's
-/// classicladder front end maps today (docs/classicladder.md): Logic = contacts
-/// NO/NC/rising/falling on %I %Q %B, coils, negated, set and reset coils, connections and
-/// vertical links; Expressions = Logic plus compare and operate blocks on %W %IW %QW %IF %QF
-/// %I %B.
+/// Which elements a generated project uses (the classicladder front end maps all of them,
+/// docs/classicladder.md): All = everything above; Logic = contacts NO/NC/rising/falling on
+/// %I %Q %B, coils, negated, set and reset coils, connections and vertical links; Expressions =
+/// Logic plus compare and operate blocks on %W %IW %QW %IF %QF %I %B.
 enum class ClpElements : uint8_t { All, Logic, Expressions };
 
 /// A random project for `seed` with about `rungs` rungs (at least 1), as `.clp` text.

@@ -210,10 +210,11 @@ Flow Interpreter::Impl::runT(lj_state *s, Frame &f, int32_t begin, int32_t end) 
     default:
       if (c.wide >= 0) {
         BlockCall call{s, f, c, wide[c.wide].data(), prog.stmts[pc], prog.info[pc], *prog.profile};
-        bool done = opFamily(c.op) == Family::Data    ? runData(call)
-                    : opFamily(c.op) == Family::Nc    ? runNc(call)
-                    : opFamily(c.op) == Family::PmcTc ? runPmcTc(call)
-                                                      : runCnc(call);
+        bool done = opFamily(c.op) == Family::Data            ? runData(call)
+                    : opFamily(c.op) == Family::Nc            ? runNc(call)
+                    : opFamily(c.op) == Family::PmcTc         ? runPmcTc(call)
+                    : opFamily(c.op) == Family::ClassicLadder ? runClassicLadder(call)
+                                                              : runCnc(call);
         if (!done) unimplemented = c.op;
       } else {
         block(s, f, c);

@@ -223,6 +223,8 @@ bool runNc(const BlockCall &b);
 bool runCnc(const BlockCall &b);
 /// Family PmcTc (InterpPmcTc.cpp): FANUC TMR .. RNGx.
 bool runPmcTc(const BlockCall &b);
+/// Family ClassicLadder (InterpClassicLadder.cpp): the scan clock and ClassicLadder's blocks.
+bool runClassicLadder(const BlockCall &b);
 /// Family PmcTc, the FANUC arithmetic ADDB..DIVB, ADD..DIV, NUME (InterpFanucArith.cpp).
 bool runFanucArith(const BlockCall &b);
 

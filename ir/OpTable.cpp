@@ -2,10 +2,12 @@
 // function_registry_*.cc), assembled in Op order. OpRowsCore.h: the core rows every dialect
 // spells (hnc8-core.md); OpRowsHnc8Data.h / OpRowsHnc8Nc.h / OpRowsHnc8Cnc.h: HNC-8's data, NC
 // and chapter-6 rows (hnc8-functions-1/-2.md, hnc8-cnc-interface.md); OpRowsIec.h: the Neza
-// blocks; OpRowsFanuc.h: the FANUC PMC rows. Adding an instruction = one row in its file + its
-// spelling in the front ends that have it + its two semantics (interpreter, lowering) + tests.
+// blocks; OpRowsFanuc.h: the FANUC PMC rows; OpRowsClassicLadder.h: ClassicLadder's blocks. Adding
+// an instruction = one row in its file + its spelling in the front ends that have it + its two
+// semantics (interpreter, lowering) + tests.
 #include "ir/OpTable.h"
 
+#include "ir/OpRowsClassicLadder.h"
 #include "ir/OpRowsCore.h"
 #include "ir/OpRowsFanuc.h"
 #include "ir/OpRowsHnc8Cnc.h"
@@ -35,8 +37,9 @@ constexpr std::array<InstrInfo, (N + ...)> concat(const InstrInfo (&...parts)[N]
   return out;
 }
 
-constexpr auto kTable = concat(oprows::kCoreRows, oprows::kHnc8DataRows, oprows::kHnc8NcRows,
-                               oprows::kHnc8CncRows, oprows::kIecRows, oprows::kFanucRows);
+constexpr auto kTable =
+    concat(oprows::kCoreRows, oprows::kHnc8DataRows, oprows::kHnc8NcRows, oprows::kHnc8CncRows,
+           oprows::kIecRows, oprows::kFanucRows, oprows::kClassicLadderRows);
 
 static_assert(kTable.size() == kOpCount, "one row per Op");
 

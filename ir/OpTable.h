@@ -215,6 +215,12 @@ enum class Op : uint8_t {
   // ---- rot: FANUC PMC rotation control (docs/fanuc-pmc.md "Rotation control") ----
   BcdRotation,    ///< ROT: direction and goal/steps of a rotor, BCD positions (width by BYT)
   BinaryRotation, ///< ROTB: the same with binary positions and the position count in memory
+  // ---- cl31: ClassicLadder timers, monostables, counters (family ClassicLadder; ir/ClBlocks.h)
+  ClClock,      ///< the scan clock: the ms this scan advances ClassicLadder's timers
+  ClTimer,      ///< old timer %Tn (E, C inputs; D, R outputs)
+  ClMonostable, ///< monostable %Mn
+  ClCounter,    ///< counter %Cn (R, P, U, D inputs; E, D, F outputs)
+  ClIecTimer,   ///< IEC timer %TMn (TON, TOF, TP)
   Count_
 };
 
@@ -257,6 +263,7 @@ enum class Family : uint8_t {
   Nc,
   Cnc,
   PmcTc, ///< fanuc-a: FANUC timers/counters/compares (interp/InterpPmcTc.cpp, EmitPmcTc.cpp)
+  ClassicLadder, ///< cl31: ClassicLadder's blocks (InterpClassicLadder.cpp, EmitClassicLadder.cpp)
 };
 
 /// Most operands an instruction takes (PTN / NTP).

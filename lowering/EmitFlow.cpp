@@ -139,6 +139,8 @@ llvm::Error FunctionEmitter::emitStmtBody(int32_t i) {
     return emitCncBlock(i);
   case Family::PmcTc:
     return emitPmcTcBlock(i);
+  case Family::ClassicLadder:
+    return emitClassicLadderBlock(i);
   case Family::Core:
     break;
   }

@@ -268,6 +268,9 @@ private:
   std::pair<llvm::Value *, llvm::Value *> pmcOnDelay(int32_t slot, llvm::Value *act,
                                                      llvm::Value *presetMs);
 
+  // EmitClassicLadder.cpp: family ClassicLadder (the scan clock, %T, %M, %C, %TM).
+  llvm::Error emitClassicLadderBlock(int32_t i);
+
   // EmitFanucArith.cpp: the fanuc-c operations of family PmcTc (FANUC ADDB..DIVB, ADD..DIV,
   // NUME; they reuse the fd* helpers of EmitFanucData.cpp).
   llvm::Error emitFanucArith(int32_t i);

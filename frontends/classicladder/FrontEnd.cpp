@@ -74,6 +74,16 @@ const char *spell(Op op) {
     return "END_SCAN";
   case Op::EndSliced:
     return "END";
+  case Op::ClClock:
+    return "CLOCK";
+  case Op::ClTimer:
+    return "TIMER";
+  case Op::ClMonostable:
+    return "MONOSTABLE";
+  case Op::ClCounter:
+    return "COUNTER";
+  case Op::ClIecTimer:
+    return "TIMER_IEC";
   default:
     return nullptr;
   }
@@ -108,6 +118,8 @@ std::string formatOperand(const Operand &o) {
     return "SR" + std::to_string(o.index);
   case Area::ExtraRelay:
     return "cell" + std::to_string(n); // a rung cell's state, never written by a user
+  case Area::TimerData:
+    return "blk" + std::to_string(o.index); // a block's word (ir/ClBlocks.h)
   default:
     return "?";
   }
@@ -124,11 +136,58 @@ Operand bitOperand(Area a, int32_t n) {
   return o;
 }
 
+Operand blockWord(int32_t index) {
+  Operand o;
+  o.kind = Operand::Kind::Reg;
+  o.area = Area::TimerData;
+  o.index = index;
+  return o;
+}
+/// A block's flag word read as a bit (it holds 0 or 1).
+Operand blockFlag(int32_t index) {
+  Operand o = blockWord(index);
+  o.kind = Operand::Kind::Bit;
+  o.bit = 0;
+  return o;
+}
+/// The first word of block `n` of element `type` (10 %T, 11 %M, 12 %C, 13 %TM).
+int32_t blockAt(int32_t type, int32_t n) {
+  using namespace clblocks;
+  switch (type) {
+  case 10:
+    return kTimerAt + n * kTimerWords;
+  case 11:
+    return kMonoAt + n * kMonoWords;
+  case 12:
+    return kCounterAt + n * kCounterWords;
+  default:
+    return kIecAt + n * kIecWords;
+  }
+}
+/// How many blocks of element `type` the profile holds.
+int32_t blockCount(int32_t type) {
+  return type == 10 ? kOldTimers : type == 11 ? kMonostables : type == 12 ? kCounters : kIecTimers;
+}
+/// The time base in ms of old timer (10) or monostable (11) `n`: timers.csv / monostables.csv,
+/// else 1 s as classicladder_rt leaves a block without parameters.
+int32_t baseMsOf(const Project &p, int32_t type, int32_t n) {
+  const std::vector<TimerParams> &v = type == 10 ? p.timers : p.monostables;
+  return n >= 0 && static_cast<size_t>(n) < v.size() ? v[static_cast<size_t>(n)].baseMs : 1000;
+}
+/// Whether variable `type` is a block's output or value that only the block writes: a coil or
+/// an operate block on it does nothing (calc.c WriteVar has no case for it).
+bool readOnlyBlockVar(int32_t type) {
+  return type == 10 || type == 11 || type == 20 || type == 25 || type == 26 || type == 27 ||
+         type == 231 || type == 241;
+}
+
 /// ExtraRelay bits at the end of the cell bytes kept for the expression code (flag()).
 constexpr int32_t kScratchBits = 8;
 /// Labels (one per rung placed in a section) and sub-routines the profile holds
 /// (profiles/classicladder/Areas.cpp).
 constexpr int32_t kLabels = 4096, kSubroutines = 64;
+/// The label at the end of the cyclic part, where a stopped ladder goes (the last one).
+constexpr int32_t kEndLabel = kLabels - 1;
 
 class RungMapper {
 public:
@@ -136,7 +195,11 @@ public:
       : p_(p), out_(out), diags_(diags) {}
 
   void run() {
+    powerUp();
     emit(Op::EndInit, {});
+    emit(Op::ClClock, {blockWord(kClockAt), konst(clblocks::kClockScan)});
+    emit(Op::Load, {blockFlag(kStoppedAt)}); // a stopped ladder does nothing
+    emit(Op::Jump, {label(kEndLabel)});
     std::vector<const Section *> order;
     for (const Section &s : p_.sections) order.push_back(&s);
     std::stable_sort(order.begin(), order.end(),
@@ -149,8 +212,11 @@ public:
         continue;
       }
       if (s->subRoutine >= 0) continue; // runs only when a CALL coil calls it (below)
+      emit(Op::LoadTrue, {});           // a section pass counts its jumps from 0
+      emit(Op::Move, {konst(0), blockWord(kJumpsAt)});
       section(*s);
     }
+    emit(Op::Label, {label(kEndLabel)});
     emit(Op::EndCyclic, {});
     emit(Op::EndSliced, {});
     // sub-routine sections: a CALL coil runs the first section with its number (calc.c)
@@ -170,6 +236,30 @@ public:
   }
 
 private:
+  /// The init part: the scan clock's first period and the blocks' presets as classicladder_rt
+  /// loads them (an old timer's remaining time starts at its preset: PrepareTimers).
+  void powerUp() {
+    using namespace clblocks;
+    emit(Op::ClClock, {blockWord(kClockAt), konst(kClockPowerUp)});
+    auto set = [&](int32_t word, int64_t v) {
+      if (v == 0) return;
+      emit(Op::LoadTrue, {});
+      emit(Op::Move, {konst(static_cast<int32_t>(static_cast<uint32_t>(v))), blockWord(word)});
+    };
+    for (size_t i = 0; i < p_.timers.size() && i < size_t{kOldTimers}; ++i) {
+      const int64_t ms = int64_t{p_.timers[i].preset} * p_.timers[i].baseMs;
+      set(blockAt(10, int32_t(i)) + kTimerPresetMs, ms);
+      set(blockAt(10, int32_t(i)) + kTimerValueMs, ms);
+    }
+    for (size_t i = 0; i < p_.monostables.size() && i < size_t{kMonostables}; ++i)
+      set(blockAt(11, int32_t(i)) + kMonoPresetMs,
+          int64_t{p_.monostables[i].preset} * p_.monostables[i].baseMs);
+    for (size_t i = 0; i < p_.counterPresets.size() && i < size_t{kCounters}; ++i)
+      set(blockAt(12, int32_t(i)) + kCounterPreset, p_.counterPresets[i]);
+    for (size_t i = 0; i < p_.timersIec.size() && i < size_t{kIecTimers}; ++i)
+      set(blockAt(13, int32_t(i)) + kIecPreset, p_.timersIec[i].preset);
+  }
+
   void refuse(const std::string &msg) {
     if (diags_.errorCount() < 50) diags_.error({}, msg);
   }
@@ -198,7 +288,8 @@ private:
 
   /// Whether a cell writes DynamicOutput (FREE, coils and the editor codes never do).
   static bool writesPower(const Cell &c) {
-    return c.type == 1 || c.type == 2 || c.type == 3 || c.type == 4 || c.type == 9 || c.type == 20;
+    return (c.type >= 1 && c.type <= 4) || (c.type >= 9 && c.type <= 13) || c.type == 20 ||
+           c.type == 99; // 99: the cells a timer or counter writes below its first row
   }
 
   Operand power(int x, int y) const { return bitOperand(Area::ExtraRelay, base_ + x * h_ + y); }
@@ -209,7 +300,7 @@ private:
   /// Pushes StateOnLeft(x, y): the rail in column 0, else the OR of the powers of the vertical
   /// group (column x's links) in column x - 1; 0 when no cell there writes its power.
   void loadLeft(const Rung &r, int x, int y) {
-    if (x == 0) {
+    if (x <= 0) {
       emit(Op::LoadTrue, {});
       return;
     }
@@ -230,8 +321,10 @@ private:
 
   std::optional<Operand> boolVar(int32_t rung, int x, int y, const Cell &c, bool write) {
     const Ele e = static_cast<Ele>(c.type);
-    const bool ok =
-        c.varType == 0 || c.varType == 60 || c.varType == 70 || (!write && c.varType == 50);
+    const bool blockOut = c.varType == 10 || c.varType == 11 || c.varType == 15 ||
+                          c.varType == 20 || (c.varType >= 25 && c.varType <= 27);
+    const bool ok = c.varType == 0 || c.varType == 60 || c.varType == 70 ||
+                    (!write && (c.varType == 50 || blockOut)) || (write && c.varType == 15);
     if (!ok) {
       refuseCell(rung, x, y,
                  std::string(elementName(c.type)) + " on " + varName(c.varType, c.varNum) +
@@ -253,7 +346,7 @@ private:
     for (int32_t r : s.order) labels_[r] = nextLabel_++;
     for (size_t i = 0; i < s.order.size(); ++i) {
       position_ = static_cast<int32_t>(i);
-      if (labels_.at(s.order[i]) < kLabels) emit(Op::Label, {label(labels_.at(s.order[i]))});
+      if (labels_.at(s.order[i]) < kEndLabel) emit(Op::Label, {label(labels_.at(s.order[i]))});
       rung(s.order[i]);
     }
     section_ = nullptr;
@@ -266,27 +359,45 @@ private:
     return o;
   }
 
+  /// Leaves the scan when the ladder has stopped: from a main section to the end of the cyclic
+  /// part, from a sub-routine back to its caller (which checks again after its CALL).
+  void leaveIfStopped(const Operand &cond) {
+    emit(Op::Load, {cond});
+    if (section_ && section_->subRoutine >= 0)
+      emit(Op::Return, {});
+    else
+      emit(Op::Jump, {label(kEndLabel)});
+  }
+
   /// Jump coil: when powered, the rest of the rung is skipped and the section goes on at the
-  /// target rung along its chain (calc.c). A target later in this section's chain is a forward
-  /// IR jump; a target outside the chain or not after this rung (a loop) is refused.
+  /// target rung along its chain (calc.c), forward or back (a loop within the scan). Every jump
+  /// counts towards calc.c's MadLoopBreak: the jump that makes more than 99,999 in one section
+  /// pass stops the ladder for good instead. A target outside the section's chain is refused.
   void jump(const Rung &r, int x, int y, const Cell &c) {
     const auto at = std::find(section_->order.begin(), section_->order.end(), c.varNum);
-    const int32_t pos = static_cast<int32_t>(at - section_->order.begin());
-    if (at == section_->order.end() || pos <= position_) {
+    if (at == section_->order.end()) {
       refuseCell(r.index, x, y,
                  "jump coil to rung " + std::to_string(c.varNum) +
-                     (at == section_->order.end()
-                          ? ", which is not on this section's chain, is not supported yet"
-                          : " (back: a loop) is not supported yet") +
-                     " by the classicladder front end");
+                     ", which is not on this section's chain, is not supported yet by the "
+                     "classicladder front end");
       return;
     }
     const int32_t l = labels_.at(c.varNum);
-    if (l >= kLabels) {
+    if (l >= kEndLabel) {
       refuseCell(r.index, x, y, "the project has more rungs than the profile's labels");
       return;
     }
+    const Operand taken = previous(x, y); // a coil cell keeps no edge memory: the jump's bit
     loadLeft(r, x, y);
+    emit(Op::Coil, {taken});
+    emit(Op::Load, {taken});
+    emit(Op::Increment, {blockWord(kJumpsAt)});
+    test(Op::CompareLt, konst(kMaxJumps), blockWord(kJumpsAt));
+    emit(Op::Load, {taken});
+    emit(Op::And, {flag()});
+    emit(Op::Set, {blockFlag(kStoppedAt)});
+    leaveIfStopped(blockFlag(kStoppedAt));
+    emit(Op::Load, {taken});
     emit(Op::Jump, {label(l)});
   }
 
@@ -311,6 +422,73 @@ private:
     sr.index = c.varNum;
     loadLeft(r, x, y);
     emit(Op::Call, {sr});
+    leaveIfStopped(blockFlag(kStoppedAt)); // the sub-routine stopped the ladder
+  }
+
+  /// Old timer (2x2), monostable (2x1), counter (2x4) or IEC timer (2x2) at its top-right cell
+  /// (calc.c): inputs StateOnLeft(x - 1, row) of its rows, outputs the power of its right cells.
+  /// A block whose rows do not fit the rung does nothing, as in calc.c.
+  void block(const Rung &r, int x, int y, const Cell &c) {
+    using namespace clblocks;
+    const int rows = c.type == 10 ? 2 : c.type == 12 ? 4 : 1;
+    if (y + rows > h_) return;
+    if (c.varNum < 0 || c.varNum >= blockCount(c.type)) {
+      refuseCell(r.index, x, y,
+                 blockText(c) + " is beyond the " + std::to_string(blockCount(c.type)) +
+                     " of the classicladder profile");
+      return;
+    }
+    const int32_t at = blockAt(c.type, c.varNum);
+    const Operand clock = blockWord(kClockAt);
+    for (int k = 0; k < rows; ++k) loadLeft(r, x - 1, y + k);
+    switch (c.type) {
+    case 10:
+      emit(Op::ClTimer, {blockWord(at), clock});
+      emit(Op::Coil, {power(x, y)});
+      emit(Op::Load, {blockFlag(at + kTimerRunning)});
+      emit(Op::Coil, {power(x, y + 1)});
+      return;
+    case 11:
+      emit(Op::ClMonostable, {blockWord(at), clock});
+      emit(Op::Coil, {power(x, y)});
+      return;
+    case 12:
+      emit(Op::ClCounter, {blockWord(at)});
+      emit(Op::Coil, {power(x, y)});
+      emit(Op::Load, {blockFlag(at + kCounterDone)});
+      emit(Op::Coil, {power(x, y + 1)});
+      emit(Op::Load, {blockFlag(at + kCounterFull)});
+      emit(Op::Coil, {power(x, y + 2)});
+      return;
+    default: {
+      const bool known = static_cast<size_t>(c.varNum) < p_.timersIec.size();
+      const TimerIecParams t =
+          known ? p_.timersIec[static_cast<size_t>(c.varNum)] : TimerIecParams{};
+      emit(Op::ClIecTimer, {blockWord(at), clock, konst(static_cast<int32_t>(t.mode)),
+                            konst(known ? t.baseMs : 1000)});
+      emit(Op::Coil, {power(x, y)});
+      return;
+    }
+    }
+  }
+
+  /// %Tn.P %Tn.V %Mn.P %Mn.V (230, 231, 240, 241): the block's ms word, read as whole base units.
+  static bool scaledVar(int32_t type) {
+    return type == 230 || type == 231 || type == 240 || type == 241;
+  }
+  std::optional<Operand> scaledWord(int32_t type, int32_t num, std::string &why) const {
+    using namespace clblocks;
+    const int32_t kind = type < 240 ? 10 : 11;
+    if (num < 0 || num >= blockCount(kind)) {
+      why = "variable " + varName(type, num) + " is beyond the " +
+            std::to_string(blockCount(kind)) + " " + (kind == 10 ? "timers" : "monostables") +
+            " of the classicladder profile";
+      return std::nullopt;
+    }
+    const bool preset = type == 230 || type == 240;
+    const int32_t word = kind == 10 ? int32_t{preset ? kTimerPresetMs : kTimerValueMs}
+                                    : int32_t{preset ? kMonoPresetMs : kMonoValueMs};
+    return blockWord(blockAt(kind, num) + word);
   }
 
   void rung(int32_t index) {
@@ -369,6 +547,7 @@ private:
     case 51:
     case 52:
     case 53: {
+      if (readOnlyBlockVar(c.varType)) return; // calc.c WriteVar: nothing happens
       std::optional<Operand> v = boolVar(r.index, x, y, c, true);
       if (!v) return;
       loadLeft(r, x, y);
@@ -379,6 +558,12 @@ private:
       emit(op, {*v});
       return;
     }
+    case 10:
+    case 11:
+    case 12:
+    case 13:
+      block(r, x, y, c);
+      return;
     case 20:
       compare(r, x, y, c);
       return;
@@ -454,6 +639,17 @@ private:
         return false;
       }
       std::string why;
+      if (scaledVar(n.var.type)) { // ms / base, truncated as C divides
+        std::optional<Operand> w = scaledWord(n.var.type, n.var.num, why);
+        if (!w) {
+          refuse(where + ": " + why);
+          return false;
+        }
+        move(*w, t);
+        emit(Op::LoadTrue, {});
+        emit(Op::Divide, {t, konst(baseMsOf(p_, n.var.type < 240 ? 10 : 11, n.var.num)), t});
+        return true;
+      }
       std::optional<Operand> o = varOperand(n.var.type, n.var.num, why);
       if (!o) {
         refuse(where + ": " + why);
@@ -613,6 +809,22 @@ private:
       return;
     }
     std::string why;
+    if (readOnlyBlockVar(e.target.type)) return;        // calc.c WriteVar: nothing happens
+    if (e.target.type == 230 || e.target.type == 240) { // P := value x base (in ms)
+      std::optional<Operand> w = scaledWord(e.target.type, e.target.num, why);
+      if (!w) {
+        refuse(where + ": " + why);
+        return;
+      }
+      const Operand en = previous(x, y);
+      loadLeft(r, x - 2, y);
+      emit(Op::Coil, {en});
+      if (!value(*e.value, 0, where)) return;
+      emit(Op::Load, {en});
+      emit(Op::Multiply,
+           {word(0), konst(baseMsOf(p_, e.target.type == 230 ? 10 : 11, e.target.num)), *w});
+      return;
+    }
     std::optional<Operand> to = varOperand(e.target.type, e.target.num, why);
     if (!to || to->area == Area::Input || to->area == Area::Word ||
         to->area == Area::Param) { // %I, %IW: HAL copies them in
@@ -681,6 +893,33 @@ private:
 } // namespace
 
 std::optional<Operand> varOperand(int32_t type, int32_t num, std::string &why) {
+  using namespace clblocks;
+  // the blocks' outputs (bits) and the values kept in whole units (words)
+  struct BlockVar {
+    int32_t type, kind, word;
+    bool bit;
+  };
+  static constexpr BlockVar kBlockVars[] = {{10, 10, kTimerDone, true},
+                                            {11, 10, kTimerRunning, true},
+                                            {20, 11, kMonoRunning, true},
+                                            {25, 12, kCounterDone, true},
+                                            {26, 12, kCounterEmpty, true},
+                                            {27, 12, kCounterFull, true},
+                                            {250, 12, kCounterPreset, false},
+                                            {251, 12, kCounterValue, false},
+                                            {15, 13, kIecQ, true},
+                                            {260, 13, kIecPreset, false},
+                                            {261, 13, kIecValue, false}};
+  for (const BlockVar &b : kBlockVars) {
+    if (b.type != type) continue;
+    if (num < 0 || num >= blockCount(b.kind)) {
+      why = "variable " + varName(type, num) + " is beyond the " +
+            std::to_string(blockCount(b.kind)) + " blocks of its kind in the classicladder profile";
+      return std::nullopt;
+    }
+    const int32_t w = blockAt(b.kind, num) + b.word;
+    return b.bit ? blockFlag(w) : blockWord(w);
+  }
   Area a;
   int32_t count;
   switch (type) {

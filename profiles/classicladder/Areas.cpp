@@ -1,6 +1,6 @@
-// The ClassicLadder target profile: %I %Q %B %W and the rung cells' state laid in the
-// profile-laid byte region lj_state.mem (runtime_abi/include/ladderjit/abi.h), checked against it
-// at compile time. Bit variable n of an area is bit n % 8 of its byte n / 8.
+// The ClassicLadder target profile: %I %Q %B %W, the rung cells' state and the blocks' words laid
+// in the profile-laid byte region lj_state.mem (runtime_abi/include/ladderjit/abi.h), checked
+// against it at compile time. Bit variable n of an area is bit n % 8 of its byte n / 8.
 #include "profiles/classicladder/ClassicLadderProfile.h"
 
 #include "ladderjit/abi.h"
@@ -24,7 +24,8 @@ constexpr uint32_t kWordOutOff = kWordInOff + 4 * kWordInputs;        // %QW
 constexpr uint32_t kFloatInOff = kWordOutOff + 4 * kWordOutputs;      // %IF
 constexpr uint32_t kFloatOutOff = kFloatInOff + 4 * kFloatInputs;     // %QF
 constexpr uint32_t kCellOff = kFloatOutOff + 4 * kFloatOutputs;       // cell states
-constexpr uint32_t kEnd = kCellOff + kCellBytes;
+constexpr uint32_t kBlockOff = (kCellOff + kCellBytes + 3) / 4 * 4;   // the blocks' words
+constexpr uint32_t kEnd = kBlockOff + 4 * kBlockWords;
 
 constexpr uint32_t mem(uint32_t off) {
   return static_cast<uint32_t>(offsetof(lj_state, mem)) + off;
@@ -56,12 +57,12 @@ constexpr TargetProfile kClassicLadder{
         bits("%S", (kSystemBits + 7) / 8, true, kSysOff), // KeepRelay: %S (never retained)
         bits("%~", kCellBytes, true, kCellOff),           // ExtraRelay: cell states
         none(),                                           // MessageBits
-        none(),                                           // TimerData
-        none(),                                           // CounterData
-        none(),                                           // DataTable
-        none(),                                           // SystemBits
-        none(),                                           // SystemWords
-        none(),                                           // ConstWords
+        {"%~T", kBlockWords, 4, true, true, true, mem(kBlockOff)}, // TimerData: the blocks
+        none(),                                                    // CounterData
+        none(),                                                    // DataTable
+        none(),                                                    // SystemBits
+        none(),                                                    // SystemWords
+        none(),                                                    // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
     {{{0, -1}, {0, -1}}},

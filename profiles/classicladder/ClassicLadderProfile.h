@@ -4,6 +4,7 @@
 // reads the profile a program carries.
 #pragma once
 
+#include "ir/ClBlocks.h"
 #include "ir/Profile.h"
 
 #include <cstdint>
@@ -35,5 +36,21 @@ constexpr int32_t kTempWords = 64;
 /// (DynamicOutput) and one per edge contact for its previous value (DynamicVarBak), never
 /// named by a program (docs/classicladder.md "Rungs on the IR").
 constexpr int32_t kCellBytes = 40000;
+/// The blocks the profile holds (classicladder_rt's defaults are 10 of each): old timers %T,
+/// monostables %M, counters %C, IEC timers %TM. Their words (ir/ClBlocks.h) are the 32-bit
+/// elements of the block area (Area::TimerData): the scan clock first, then each kind's blocks.
+constexpr int32_t kOldTimers = 128, kMonostables = 128, kCounters = 128, kIecTimers = 128;
+constexpr int32_t kClockAt = 0;
+constexpr int32_t kTimerAt = kClockAt + clblocks::kClockWords;
+constexpr int32_t kMonoAt = kTimerAt + clblocks::kTimerWords * kOldTimers;
+constexpr int32_t kCounterAt = kMonoAt + clblocks::kMonoWords * kMonostables;
+constexpr int32_t kIecAt = kCounterAt + clblocks::kCounterWords * kCounters;
+/// The jumps of the current section pass and the stop flag (calc.c MadLoopBreak: more than
+/// 99,999 jumps in one section pass stop the ladder for good), then the end of the area.
+constexpr int32_t kJumpsAt = kIecAt + clblocks::kIecWords * kIecTimers;
+constexpr int32_t kStoppedAt = kJumpsAt + 1;
+constexpr int32_t kBlockWords = kStoppedAt + 1;
+/// More jumps than this in one section pass stop the ladder (calc.c).
+constexpr int32_t kMaxJumps = 99999;
 
 } // namespace lj::classicladder

@@ -3,6 +3,7 @@
 // can be emitted by the fuzzer's generator and has an entry in docs/instructions.md; every
 // table row is spelled by at least one dialect's front end, and the rows HNC-8 spells are
 // mnemonics of the manual.
+#include "frontends/classicladder/FrontEnd.h"
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/hnc8/InstrDocs.h"
@@ -103,7 +104,7 @@ TEST_P(Mnemonic, IsInTheInstructionTable) {
 
 /// The front ends whose spellings the catalogue knows (ir/OpTable.h "dialect-only rows").
 const DialectText *const kDialects[] = {&hnc8::dialectText(), &fanuc::dialectText(),
-                                        &iec::dialectText()};
+                                        &iec::dialectText(), &classicladder::dialectText()};
 
 TEST(Catalogue, EveryTableRowIsSpelledByADialect) {
   for (const InstrInfo &row : instrTable()) {

@@ -95,18 +95,23 @@ int runEmitLlvm(const EmitArgs &a) {
 }
 
 int runFuzz(const FuzzArgs &a) {
-  // The generators write HNC-8 STL (gen/RandomProgram.cpp), FANUC PMC (gen/FanucProgram.cpp) and
-  // IEC IL (gen/IlGenerator.cpp).
+  // The generators write HNC-8 STL (gen/RandomProgram.cpp), FANUC PMC (gen/FanucProgram.cpp),
+  // IEC IL (gen/IlGenerator.cpp) and ClassicLadder projects (gen/ClpGenerator.cpp).
   Result<const pipeline::Dialect *> dialect =
       pipeline::dialectForOption(a.dialect.empty() ? "hnc8" : a.dialect);
   if (!dialect) return usageError(dialect.status().message());
   const pipeline::Dialect *d = *dialect;
   const bool fanuc = std::string_view(d->name) == "fanuc";
   const bool iec = std::string_view(d->name) == "iec";
-  if (d != &pipeline::defaultDialect() && !fanuc && !iec)
+  const bool clp = std::string_view(d->name) == "classicladder";
+  if (d != &pipeline::defaultDialect() && !fanuc && !iec && !clp)
     return usageError(
-        std::string("fuzz generates only hnc8, fanuc and iec programs, not dialect '") + d->name +
-        "'");
+        std::string(
+            "fuzz generates only hnc8, fanuc, iec and classicladder programs, not dialect '") +
+        d->name + "'");
+  if (clp && (a.edit || a.roundTrip || a.switches || a.trace))
+    return usageError("fuzz --dialect classicladder takes no --edit, --round-trip, --switch or "
+                      "--trace");
   if (a.edit) {
     if (a.roundTrip || a.switches || a.trace)
       return usageError("--edit excludes --round-trip, --switch and --trace");
@@ -140,6 +145,7 @@ int runFuzz(const FuzzArgs &a) {
   fuzz::FuzzOptions opts;
   opts.fanuc = fanuc;
   opts.iec = iec;
+  opts.classicladder = clp;
   opts.seed = a.seed;
   opts.programs = a.programs;
   opts.ticks = a.ticks;
