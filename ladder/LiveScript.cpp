@@ -12,9 +12,15 @@ extern const char kLiveJs[];
 extern const std::size_t kLiveJsSize;
 extern const char kLiveCss[];
 extern const std::size_t kLiveCssSize;
+extern const char kEditorJs[];
+extern const std::size_t kEditorJsSize;
+extern const char kEditorCss[];
+extern const std::size_t kEditorCssSize;
 } // namespace web
 
 std::string liveCss() { return std::string(web::kLiveCss, web::kLiveCssSize); }
 std::string liveScript() { return std::string(web::kLiveJs, web::kLiveJsSize); }
+std::string editorCss() { return std::string(web::kEditorCss, web::kEditorCssSize); }
+std::string editorScript() { return std::string(web::kEditorJs, web::kEditorJsSize); }
 
 } // namespace lj::ladder

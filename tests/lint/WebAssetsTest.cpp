@@ -42,5 +42,7 @@ int main(int argc, char **argv) {
   int bad = 0;
   bad += compare(web + "live.js", lj::ladder::liveScript());
   bad += compare(web + "live.css", lj::ladder::liveCss());
+  bad += compare(web + "editor.js", lj::ladder::editorScript());
+  bad += compare(web + "editor.css", lj::ladder::editorCss());
   return bad ? 1 : 0;
 }
