@@ -115,11 +115,41 @@ struct Checker {
   }
 };
 
+/// The words a user types for `op`: a table word may name several (FANUC `MOVB/MOVW/MOVD`,
+/// `LEx/GEx` for B, W and D, `AND(SUB60)/MOVE`); each kept when the dialect reads it back as `op`.
+std::vector<std::string> wordsOf(const DialectText &t, Op op) {
+  std::vector<std::string> out;
+  const char *spelled = t.spell(op);
+  if (!spelled) return out;
+  const std::string all = spelled;
+  Op whole = Op::LoadTrue;
+  if (t.lookup && t.lookup(all, whole) && whole == op) return {all}; // one word (IL `/`)
+  size_t from = 0;
+  while (from <= all.size()) {
+    size_t to = all.find('/', from);
+    if (to == std::string::npos) to = all.size();
+    std::string w = all.substr(from, to - from);
+    if (size_t paren = w.find('('); paren != std::string::npos) w.erase(paren);
+    std::vector<std::string> cands{w};
+    if (!w.empty() && w.back() == 'x') {
+      w.pop_back();
+      cands = {w + "B", w + "W", w + "D"};
+    }
+    for (const std::string &c : cands) {
+      Op back = Op::LoadTrue;
+      if (!c.empty() && t.lookup && t.lookup(c, back) && back == op) out.push_back(c);
+    }
+    from = to + 1;
+  }
+  return out;
+}
+
 json catalogue(const DialectText &t) {
   json boxes = json::array();
   for (const InstrInfo &ii : instrTable()) {
-    const char *word = t.spell(ii.op);
-    if (!word || !editorBox(ii)) continue;
+    if (!editorBox(ii)) continue;
+    const std::vector<std::string> words = wordsOf(t, ii.op);
+    if (words.empty()) continue;
     json ops = json::array();
     for (int i = 0; i < ii.operandCount; ++i) {
       if (t.implied && t.implied(ii.op, i)) continue;
@@ -127,7 +157,8 @@ json catalogue(const DialectText &t) {
       ops.push_back(
           {{"role", os.role}, {"bit", os.isBit}, {"constant", os.constOk}, {"writes", os.writes}});
     }
-    boxes.push_back({{"instr", word}, {"operands", ops}, {"summary", ii.summary}});
+    for (const std::string &w : words)
+      boxes.push_back({{"instr", w}, {"operands", ops}, {"summary", ii.summary}});
   }
   return boxes;
 }
@@ -355,6 +386,7 @@ EditAnswer editGrid(const ProgramVersion *v, const json &body) {
              {"version", v->id},
              {"parts", parts},
              {"boxes", catalogue(text)},
+             // The edge contacts of the dialect (HNC-8 LDP/LDF, IL LDR/LDF; FANUC PMC has none).
              {"edges", text.spell(Op::LoadRise) != nullptr && text.spell(Op::LoadFall) != nullptr},
              {"symbols", syms}}};
   }

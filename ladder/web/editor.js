@@ -156,7 +156,9 @@
       dirty: false, errors: [], net: null, cells: null, pending: false
     };
   }
-  function open() {
+  // `keep`: stay on the rung shown (放弃修改), else start at the shown part's first rung.
+  function open(keep) {
+    const was = { p: E.p, r: E.r };
     say('opening the editor...', false);
     return Promise.all([api('api/edit'), api('api/edit/grid', { open: true })]).then(function (a) {
       const st = a[0], g = a[1];
@@ -190,9 +192,13 @@
       } else {
         say('editing ' + E.dialect + ' program, version ' + st.body.running.version, false);
       }
-      // Start at the first rung the grid can edit in the shown part.
-      const shown = Array.prototype.indexOf.call(document.querySelectorAll('.tab'), document.querySelector('.tab.sel'));
-      select(shown >= 0 ? shown : 0, 0, true);
+      if (keep && E.parts[was.p]) {
+        select(was.p, was.r);
+      } else {
+        // Start at the first rung the grid can edit in the shown part.
+        const shown = Array.prototype.indexOf.call(document.querySelectorAll('.tab'), document.querySelector('.tab.sel'));
+        select(shown >= 0 ? shown : 0, 0, true);
+      }
       return true;
     });
   }
@@ -951,7 +957,7 @@
   function discard() {
     const go = function () {
       E.loaded = false;
-      return open().then(function () {
+      return open(true).then(function () {
         say('放弃修改: the edits are dropped; the running program, its file and state are untouched', false);
         render();
       });
