@@ -100,6 +100,12 @@ class Page:
         self.shot += 1
         path = os.path.join(out, "%s_%d_%s.png" % (self.name, self.shot, what))
         self.d.save_screenshot(path)
+        # The editor panel (or the confirmation) alone: the small pictures of docs/ladder-edit.md.
+        for part in ("edconfirm", "editor"):
+            els = self.d.find_elements(By.ID, part)
+            if els and els[0].is_displayed():
+                els[0].screenshot(path[:-4] + "_" + part + ".png")
+                break
         print("     screenshot " + path)
 
     def click(self, el):
