@@ -1,14 +1,15 @@
 // The page editor's grid route (runtime/EditGrid.h).
 #include "runtime/EditGrid.h"
 
+#include "formats/Address.h"
 #include "ir/OpTable.h"
 #include "ladder/Grid.h"
 #include "ladder/Json.h"
 #include "ladder/Network.h"
 #include "pipeline/Dialects.h"
 
-#include <cctype>
 #include <charconv>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,15 +26,6 @@ EditAnswer bad(const std::string &why) { return {400, {{"error", why}}}; }
 /// A one-input box at the right rail: what the grid draws as 功能模块 (ladder/Grid.cpp's rule).
 bool editorBox(const InstrInfo &ii) { return ii.stack == StackRule::Block && ii.inputs <= 1; }
 
-bool sameName(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
-  return true;
-}
-
 /// What the page's operand texts are checked against: the dialect's address syntax, the
 /// program's symbols and, for a box, the operation's operand specs.
 struct Checker {
@@ -41,11 +33,9 @@ struct Checker {
   const DialectText &text;
   const VerifiedProgram &prog;
 
-  /// The symbol `name` stands for, or null.
+  /// The symbol `name` stands for (case-insensitive), or null.
   const Symbol *symbol(std::string_view name) const {
-    for (const Symbol &s : prog.symbols)
-      if (sameName(s.name, name)) return &s;
-    return nullptr;
+    return formats::findSymbol(prog.symbols, name);
   }
 
   /// A contact's or an output's operand: a bit address or a symbol of one.

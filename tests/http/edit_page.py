@@ -31,7 +31,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import httputil  # noqa: E402
 import serveutil  # noqa: E402
-from httputil import check  # noqa: E402
+from httputil import call, check  # noqa: E402
 
 from selenium import webdriver  # noqa: E402
 from selenium.webdriver.chrome.service import Service  # noqa: E402
@@ -42,21 +42,6 @@ from selenium.webdriver.common.keys import Keys  # noqa: E402
 exe, examples, out = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(out, ignore_errors=True)
 os.makedirs(out)
-
-
-def call(srv, path, body=None):
-    """GET (body None) or POST `path` with the token; (status, JSON answer or {})."""
-    data = b"" if body is None else json.dumps(body).encode()
-    lines = ["%s %s HTTP/1.1" % ("GET" if body is None else "POST", path),
-             "Host: 127.0.0.1:%d" % srv.port, "Connection: close",
-             "Authorization: Bearer " + srv.token]
-    if body is not None:
-        lines += ["Content-Type: application/json", "Content-Length: %d" % len(data)]
-    st, _, rest = httputil.request(srv.port, "\r\n".join(lines), data, timeout=60)
-    try:
-        return st, json.loads(rest)
-    except ValueError:
-        return st, {}
 
 
 def chrome():
@@ -258,6 +243,69 @@ def files_after_update(name, path, original, added):
           (name, [{k: r.get(k) for k in ("editor", "client", "old", "new")} for r in recs]))
 
 
+def typed(page, text):
+    """Into the input line once it has the focus, checked as typed, Enter."""
+    wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+    page.keys(text)
+    msg = wait("checked", lambda: (lambda t: t if " ok" in t else None)(page.text("edinmsg")), 10)
+    page.keys(Keys.ENTER)
+    return msg or page.text("edinmsg")
+
+
+def toolbar(page, row):
+    """The rest of the toolbar by keys on the rung, each checked by the server's grid: a row
+    (r), an NO contact on it (1) joined by a vertical line (|) is a parallel branch; undo to the
+    rung as it runs. A new rung (n) with a contact, lines (-) and a function box (9) from the
+    catalogue, and a comment (;); then 放弃修改."""
+    name = page.name
+    page.click(page.cell(row, 0))
+    page.keys("r")
+    g = page.grid()
+    check(g["grid"]["rows"] == 2, "%s: key r inserts a row: %d rows" % (name, g["grid"]["rows"]))
+    page.click(page.cell(row + 1, 0))
+    page.keys("1")
+    typed(page, "X480.2")
+    page.click(page.cell(row, 1))
+    page.keys("|")
+    wait("the parallel converted", lambda: page.grid()["net"], 20)
+    g = page.settled()
+    check(g and g["net"] and not g["errors"] and ["%d,1" % row] == list(g["grid"]["links"]),
+          "%s: an NO contact on the new row joined by a vertical line is a parallel branch, no error: %s" %
+          (name, g and g["errors"]))
+    page.screenshot("parallel")
+    for _ in range(3):
+        page.ctrl("z")
+    g = page.grid()
+    check(g["grid"]["rows"] == 1 and not g["dirty"], "%s: three Ctrl+Z give the running rung back" % name)
+    page.keys("n")
+    g = page.grid()
+    check(g["dirty"] and g["grid"]["rows"] == 1 and all(c["k"] == "empty" for c in g["grid"]["cells"]),
+          "%s: key n makes a new empty rung after it: %s" % (name, page.text("edwhere")))
+    cols = g["grid"]["cols"]
+    page.click(page.cell(0, 0))
+    page.keys("1")
+    typed(page, "X480.2")
+    for _ in range(cols - 2):
+        page.keys("-", Keys.ARROW_RIGHT)
+    page.keys("9")
+    msg = typed(page, "MOV 100 D5")
+    check("ok" in msg, "%s: the box MOV 100 D5 checked against the catalogue as typed: '%s'" % (name, msg))
+    page.keys(";")
+    typed(page, "set D5 | from the page")
+    wait("the new rung converted", lambda: page.grid()["net"], 20)
+    g = page.settled()
+    last = g["grid"]["cells"][cols - 1] if g else {}
+    check(g and g["net"] and not g["errors"] and last.get("k") == "box" and last.get("instr") == "MOV",
+          "%s: the new rung [X480.2]--[MOV 100 D5] with its comment converts with no error: %s %s" %
+          (name, last, g and g["errors"]))
+    page.screenshot("new_rung")
+    page.click(page.d.find_element(By.ID, "eddiscard"))
+    wait("discard", lambda: "放弃修改" in page.text("edstate"), 30)
+    page.click(page.d.find_element(By.CSS_SELECTOR, 'button[data-act="prev"]'))
+    g = page.grid()
+    check(not g["dirty"] and g["grid"]["rows"] == 1, "%s: after 放弃修改 no rung is edited" % name)
+
+
 def hnc8():
     name = "hnc8"
     srv, path = serve(name, os.path.join(examples, "lathe_panel.stl"), os.path.join(examples, "lathe_panel.stim"))
@@ -299,6 +347,8 @@ def hnc8():
               "%s: after 放弃修改 the editor shows the running rung again" % name)
         page.screenshot("discarded")
 
+        toolbar(page, row)
+
         # An element after an output: marked on its cell, nothing sent; undo.
         page.click(page.cell(row, 3))
         page.keys("5")
@@ -310,6 +360,8 @@ def hnc8():
         marks = page.errcells()
         check(g and g["errors"] and any(c > 3 and "after an output" in t for _, c, t in marks),
               "%s: a line after an output is marked on its cell: %s" % (name, marks))
+        check("Y0.2" in page.text("eddbl"),
+              "%s: 双线圈 lists Y0.2, now written by two outputs: '%s'" % (name, page.text("eddbl")))
         page.screenshot("invalid")
         page.click(drv.find_element(By.ID, "edupdate"))
         ok = wait("refused", lambda: "nothing was sent" in page.text("edstate"), 20)
