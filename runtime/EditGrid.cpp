@@ -337,7 +337,23 @@ json convert(const Checker &ck, const json &req) {
 
 } // namespace
 
+namespace {
+
+EditAnswer gridRoute(const ProgramVersion *v, const json &body);
+
+} // namespace
+
 EditAnswer editGrid(const ProgramVersion *v, const json &body) {
+  try {
+    return gridRoute(v, body);
+  } catch (const json::exception &e) { // a member of the wrong type ({"open":"yes"})
+    return bad(std::string("a member of the wrong type: ") + e.what());
+  }
+}
+
+namespace {
+
+EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
   if (!v || !v->prog) return {409, {{"error", "no program is running"}}};
   const VerifiedProgram &prog = *v->prog;
   const pipeline::Dialect *d =
@@ -371,7 +387,8 @@ EditAnswer editGrid(const ProgramVersion *v, const json &body) {
     json syms = json::object();
     for (const Symbol &s : prog.symbols) syms[s.name] = s.address;
     return {200,
-            {{"dialect", d->name},
+            {{"ok", true},
+             {"dialect", d->name},
              {"hash", v->hash},
              {"version", v->id},
              {"parts", parts},
@@ -388,7 +405,7 @@ EditAnswer editGrid(const ProgramVersion *v, const json &body) {
       if (!r.is_object()) return bad("rungs: each is an object {part, rung, grid}");
       out.push_back(convert(ck, r));
     }
-    return {200, {{"rungs", out}}};
+    return {200, {{"ok", true}, {"rungs", out}}};
   }
   if (body.contains("operand")) {
     if (!body["operand"].is_string()) return bad("operand: a string");
@@ -412,5 +429,7 @@ EditAnswer editGrid(const ProgramVersion *v, const json &body) {
   }
   return bad("POST /api/edit/grid takes {\"open\":true}, {\"rungs\":[...]} or {\"operand\":...}");
 }
+
+} // namespace
 
 } // namespace lj::rt

@@ -318,6 +318,14 @@ def hnc8():
               "%s: G2620.3 = 1 after the stimulus (increment mode)" % name)
         st, g0 = call(srv, "/api/edit")
         v0, h0 = g0["running"]["version"], g0["running"]["hash"]
+        # Bad bodies of the grid route: a clear 400 or a located refusal, never a crash.
+        for body, want in [({"open": "yes"}, 400), ({"bogus": 1}, 400), ({"rungs": "x"}, 400),
+                           ({"operand": 5}, 400), ({"rungs": [{"grid": {"rows": 100000, "cols": 1}}]}, 200),
+                           ({"rungs": [{"grid": {"rows": 1, "cols": 2, "cells": [{"k": "weird"}, {}]}}]}, 200)]:
+            st, a = call(srv, "/api/edit/grid", body)
+            errs = [e["message"] for r in a.get("rungs", []) for e in r.get("errors", [])]
+            check(st == want and (a.get("error") or errs),
+                  "%s: /api/edit/grid %s: %d %s" % (name, json.dumps(body)[:60], st, a.get("error") or errs))
         open_editor(page, srv.url, srv.token)
         p, r, row, col, orig = open_rung(page, "G2620.3")
         page.screenshot("opened")
