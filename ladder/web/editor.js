@@ -427,7 +427,7 @@
     }).join('') : 'none';
     const bad = [];
     E.parts.forEach(function (p, pi) {
-      p.rungs.forEach(function (r, ri) { if (r.dirty && r.errors.length) bad.push([pi, ri]); });
+      p.rungs.forEach(function (r, ri) { if (r.errors.length) bad.push([pi, ri]); });
     });
     document.getElementById('edbad').innerHTML = bad.length ? bad.map(function (x) {
       return '<div class="warn"><a data-go="' + x[0] + ',' + x[1] + '">' + h(E.parts[x[0]].name) + ' rung ' + (x[1] + 1) + '</a></div>';
@@ -851,9 +851,8 @@
       if (!r) return;
       const cell = r.cells && dg.element ? r.cells[dg.element - 1] : null;
       const e = { row: cell ? cell[0] : -1, col: cell ? cell[1] : -1, message: dg.message };
+      // The rung keeps its converted network: it stays refused until it is edited again.
       r.errors = r.errors.concat([e]);
-      r.net = null;
-      r.dirty = true;
       if (!first) first = r;
     });
     return first;
@@ -896,7 +895,9 @@
           if (c.status === 422) {
             const first = markDiagnostics(c.body.diagnostics, dr.where);
             if (first) goToRung(first);
-            say('更新修改 refused: the draft does not verify (' + (c.body.diagnostics || []).length + ' diagnostic(s)); the running program is unchanged', true);
+            const ds = (c.body.diagnostics || []).filter(function (dg) { return !dg.severity || dg.severity === 'error'; });
+            say('更新修改 refused: the draft does not verify (' + ds.length + ' error(s)' +
+              (ds.length ? ': ' + ds[0].message : '') + '); the running program is unchanged', true);
             return null;
           }
           if (c.status !== 200) return refused('check', c);

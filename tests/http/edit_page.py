@@ -38,6 +38,7 @@ from selenium.webdriver.chrome.service import Service  # noqa: E402
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
+from selenium.common.exceptions import StaleElementReferenceException  # noqa: E402
 
 exe, examples, out = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(out, ignore_errors=True)
@@ -103,6 +104,18 @@ class Page:
     def ctrl(self, k):
         ActionChains(self.d).key_down(Keys.CONTROL).send_keys(k).key_up(Keys.CONTROL).perform()
 
+    def click_cell(self, r, c):
+        """A click on cell (r, c); the grid is drawn anew when a check answers, so an element found
+        just before may be gone: found again."""
+        for attempt in range(5):
+            try:
+                self.click(self.cell(r, c))
+                return
+            except StaleElementReferenceException:
+                if attempt == 4:
+                    raise
+                time.sleep(0.2)
+
     def cell(self, r, c):
         return self.d.find_element(By.CSS_SELECTOR, '#edgridbox rect.hit[data-r="%d"][data-c="%d"]' % (r, c))
 
@@ -156,10 +169,10 @@ def insert_nc(page, row, col, address, via_arrow):
     """The cursor to (row, col) (a click, or a click left of it and the right arrow key), key 2
     (常闭), the address typed and checked as typed, Enter."""
     if via_arrow:
-        page.click(page.cell(row, col - 1))
+        page.click_cell(row, col - 1)
         page.keys(Keys.ARROW_RIGHT)
     else:
-        page.click(page.cell(row, col))
+        page.click_cell(row, col)
     g = page.grid()
     check(g["row"] == row and g["col"] == col, "%s: the cursor at row %d column %d (%s)" %
           (page.name, row + 1, col + 1, "mouse and arrow key" if via_arrow else "mouse"))
@@ -258,14 +271,14 @@ def toolbar(page, row):
     rung as it runs. A new rung (n) with a contact, lines (-) and a function box (9) from the
     catalogue, and a comment (;); then 放弃修改."""
     name = page.name
-    page.click(page.cell(row, 0))
+    page.click_cell(row, 0)
     page.keys("r")
     g = page.grid()
     check(g["grid"]["rows"] == 2, "%s: key r inserts a row: %d rows" % (name, g["grid"]["rows"]))
-    page.click(page.cell(row + 1, 0))
+    page.click_cell(row + 1, 0)
     page.keys("1")
     typed(page, "X480.2")
-    page.click(page.cell(row, 1))
+    page.click_cell(row, 1)
     page.keys("|")
     wait("the parallel converted", lambda: page.grid()["net"], 20)
     g = page.settled()
@@ -282,7 +295,7 @@ def toolbar(page, row):
     check(g["dirty"] and g["grid"]["rows"] == 1 and all(c["k"] == "empty" for c in g["grid"]["cells"]),
           "%s: key n makes a new empty rung after it: %s" % (name, page.text("edwhere")))
     cols = g["grid"]["cols"]
-    page.click(page.cell(0, 0))
+    page.click_cell(0, 0)
     page.keys("1")
     typed(page, "X480.2")
     for _ in range(cols - 2):
@@ -358,7 +371,7 @@ def hnc8():
         toolbar(page, row)
 
         # An element after an output: marked on its cell, nothing sent; undo.
-        page.click(page.cell(row, 3))
+        page.click_cell(row, 3)
         page.keys("5")
         wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
         page.keys("Y0.2")
@@ -376,14 +389,14 @@ def hnc8():
         st, g = call(srv, "/api/edit")
         check(ok and not g["draft"]["open"] and g["running"]["version"] == v0,
               "%s: 更新修改 refused before sending: '%s'; no draft, version %s" % (name, page.text("edstate"), g["running"]["version"]))
-        page.click(page.cell(row, 3))
+        page.click_cell(row, 3)
         page.ctrl("z")
         g = page.grid()
         check(g["grid"]["cells"][row * g["grid"]["cols"] + 3]["k"] == "line" and not page.errcells(),
               "%s: Ctrl+Z undoes it: the line is back, no mark" % name)
 
         # An output to an input: the grid takes it, the verifier does not (422 on the cell).
-        page.click(page.cell(row, col))
+        page.click_cell(row, col)
         page.keys(Keys.ENTER)
         wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
         page.ctrl("a")
@@ -400,7 +413,7 @@ def hnc8():
         st, g = call(srv, "/api/edit")
         check(g["running"]["version"] == v0 and open(path, "rb").read() == original,
               "%s: the running program and the file unchanged" % name)
-        page.click(page.cell(row, 0))
+        page.click_cell(row, 0)
         page.ctrl("z")
         g = page.grid()
         check(g["grid"]["cells"][row * g["grid"]["cols"] + col].get("op") == "G2620.3",
