@@ -73,5 +73,9 @@ std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
 /// The live view's CSS and JS (`serve --http`, docs/ladder-view.md "Live view").
 std::string liveCss();
 std::string liveScript();
+/// The ladder editor of the live page (docs/ladder-edit.md "The page editor"), sent after the
+/// live script when the page may edit (not under --http-read-only).
+std::string editorCss();
+std::string editorScript();
 
 } // namespace lj::ladder

@@ -5,6 +5,7 @@
 #include "ir/Trace.h"
 #include "ladder/Layout.h"
 #include "ladder/Network.h"
+#include "runtime/EditGrid.h"
 #include "runtime/EditSession.h"
 #include "services/HttpServer.h"
 
@@ -195,9 +196,13 @@ struct LiveView::Impl {
       ladder::Layout l = ladder::layout(ladder::fromProgram(*v.prog));
       json h = v.hash;
       json k = key;
-      page = ladder::renderLazyHtml(l, ladder::liveCss(),
-                                    "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() +
-                                        ";" + ladder::liveScript());
+      // The editor (docs/ladder-edit.md "The page editor") only where the page may change the
+      // program: under --http-read-only its script is not sent at all.
+      const bool editor = !cfg.readOnly;
+      page = ladder::renderLazyHtml(
+          l, ladder::liveCss() + (editor ? ladder::editorCss() : std::string()),
+          "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() + ";" + ladder::liveScript() +
+              (editor ? ";" + ladder::editorScript() : std::string()));
       pageHash = v.hash;
     }
     return page;
@@ -381,7 +386,10 @@ bool LiveView::start(std::string &error) {
   be.watchers = [im](int d) { im->watchers.fetch_add(d); };
   be.command = [im](const json &r) { return im->ctl.handle(r); };
   be.edit = [im](const std::string &action, const json &body, const std::string &client) {
-    EditAnswer a = action.empty() ? im->edits.status() : im->edits.post(action, body, client);
+    // The page editor's grids (runtime/EditGrid.h) read the running version only.
+    EditAnswer a = action == "grid" ? editGrid(im->exec.current().get(), body)
+                   : action.empty() ? im->edits.status()
+                                    : im->edits.post(action, body, client);
     return std::make_pair(a.status, std::move(a.body));
   };
   services::HttpConfig hc;

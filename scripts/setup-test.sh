@@ -4,9 +4,10 @@
 # test (tests/http/live_page.py); LinuxCNC (halrun, rtapi_app, classicladder_rt and the HAL
 # headers the HAL component is built against: tests/hal, docs/linuxcnc.md), the openssl tool
 # its tests re-sign a .so with, and sigrok-cli, which reads `run --vcd` files back
-# (tests/cli/vcd_sigrok.py, docs/trace.md). Idempotent; root or sudo.
+# (tests/cli/vcd_sigrok.py, docs/trace.md); eslint, which lints the live page's scripts
+# (tests/lint/web_js.py). Idempotent; root or sudo.
 set -euo pipefail
-PACKAGES=(chromium fonts-wqy-zenhei chromium-driver python3-selenium linuxcnc-uspace linuxcnc-uspace-dev openssl sigrok-cli)
+PACKAGES=(chromium fonts-wqy-zenhei chromium-driver python3-selenium eslint linuxcnc-uspace linuxcnc-uspace-dev openssl sigrok-cli)
 missing=()
 for pkg in "${PACKAGES[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)

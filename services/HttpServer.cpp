@@ -379,7 +379,8 @@ struct HttpServer::Impl {
     static const std::set<std::string> kApi = {
         "/api/model",      "/api/state",      "/api/locks",       "/api/events",
         "/api/force",      "/api/lock",       "/api/unlock",      "/api/edit",
-        "/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard"};
+        "/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard",
+        "/api/edit/grid"};
     const bool edit = p.rfind("/api/edit", 0) == 0;
     if (!kApi.count(p) || (edit && !be.edit)) {
       rq.answered = true;

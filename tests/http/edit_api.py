@@ -15,31 +15,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import httputil  # noqa: E402
 import serveutil  # noqa: E402
-from httputil import check  # noqa: E402
+from httputil import call, check  # noqa: E402
 
 exe, examples, out = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(out, ignore_errors=True)
 os.makedirs(out)
 
 ROUTES = ["/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard"]
-
-
-def call(srv, path, body=None, token=True, origin=None, host=None):
-    """GET (body None) or POST `path` with a JSON body; (status, JSON answer or {})."""
-    data = b"" if body is None else json.dumps(body).encode()
-    lines = ["%s %s HTTP/1.1" % ("GET" if body is None else "POST", path),
-             "Host: %s" % (host or "127.0.0.1:%d" % srv.port), "Connection: close"]
-    if token:
-        lines.append("Authorization: Bearer " + (srv.token if token is True else token))
-    if origin:
-        lines.append("Origin: " + origin)
-    if body is not None:
-        lines += ["Content-Type: application/json", "Content-Length: %d" % len(data)]
-    st, _, rest = httputil.request(srv.port, "\r\n".join(lines), data, timeout=60)
-    try:
-        return st, json.loads(rest)
-    except ValueError:
-        return st, {}
 
 
 def read(srv, addr):

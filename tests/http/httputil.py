@@ -149,3 +149,21 @@ def timed_state(srv, timeout=5.0):
 
 def overruns(stats):
     return stats.get("overruns", 0), stats.get("missed_deadlines", 0)
+
+
+def call(srv, path, body=None, token=True, origin=None, host=None):
+    """GET (body None) or POST `path` with a JSON body; (status, JSON answer or {})."""
+    data = b"" if body is None else json.dumps(body).encode()
+    lines = ["%s %s HTTP/1.1" % ("GET" if body is None else "POST", path),
+             "Host: %s" % (host or "127.0.0.1:%d" % srv.port), "Connection: close"]
+    if token:
+        lines.append("Authorization: Bearer " + (srv.token if token is True else token))
+    if origin:
+        lines.append("Origin: " + origin)
+    if body is not None:
+        lines += ["Content-Type: application/json", "Content-Length: %d" % len(data)]
+    st, _, rest = request(srv.port, "\r\n".join(lines), data, timeout=60)
+    try:
+        return st, json.loads(rest)
+    except ValueError:
+        return st, {}

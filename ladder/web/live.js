@@ -1,0 +1,386 @@
+// The live part of the ladder page (docs/ladder-view.md "Live view"), appended to renderHtml's
+// page by `serve --http`. It reads /api/model once per program version and the SSE stream
+// /api/events, colours elements by their trace words, writes box values, draws forces, offers
+// search, cross-reference, force on/off/restore, the lock list and the statistics plots. No
+// network beyond the serving process, no build step: this file is embedded into the binary as
+// it is (ladder/CMakeLists.txt) and linted (tests/lint/live_js.sh).
+(function () {
+  'use strict';
+  var L = window.ladder, model = null, hash = window.LJ_HASH || null, prev = [], lastMsg = null;
+  var hits = [], hitAt = -1;
+
+  // ---- lazy drawing: only rungs in or near the view are in the DOM ---------------------------
+  var R = JSON.parse(document.getElementById('ladder-rungs').textContent), byId = {}, nDrawn = 0;
+  function register(div, add) {
+    div.querySelectorAll('g.el[data-stmt]').forEach(function (g) {
+      var id = g.dataset.stmt;
+      if (add) {
+        (byId[id] = byId[id] || []).push(g);
+      } else if (byId[id]) {
+        byId[id] = byId[id].filter(function (x) { return x !== g; });
+        if (!byId[id].length) delete byId[id];
+      }
+    });
+  }
+  function draw(div) {
+    if (div.firstChild) return;
+    div.innerHTML = R[div.dataset.p][div.dataset.r];
+    register(div, true);
+    nDrawn++;
+    if (lastMsg && model) {
+      div.querySelectorAll('g.el[data-stmt]').forEach(function (g) { paintOne(g.dataset.stmt, lastMsg.w); });
+      forced(lastMsg);
+    }
+  }
+  function undraw(div) {
+    if (!div.firstChild) return;
+    register(div, false);
+    div.innerHTML = '';
+    nDrawn--;
+  }
+  var rgs = document.querySelectorAll('div.rg');
+  var io = new IntersectionObserver(function (es) {
+    es.forEach(function (e) {
+      if (e.isIntersecting) draw(e.target);
+      else undraw(e.target);
+    });
+  }, { rootMargin: '800px 400px' });
+  rgs.forEach(function (d) { io.observe(d); });
+  function rungDiv(p, k) {
+    return document.querySelector('div.rg[data-p="' + p + '"][data-r="' + k + '"]');
+  }
+
+  // The token is in an HttpOnly cookie (set when the page was opened with ?token=); the API also
+  // wants the page's key, which only a reader of this page has (no cross-site request can send it).
+  var KEY = window.LJ_KEY || '', HK = { 'X-Ladderjit-Key': KEY };
+  // Program text (addresses, symbols, part names) into markup only through h().
+  function h(s) {
+    return String(s).replace(/[&<>"']/g, function (c) { return '&#' + c.charCodeAt(0) + ';'; });
+  }
+  var bar = document.createElement('div');
+  bar.id = 'live';
+  bar.innerHTML = '<span class="st" id="conn">connecting</span><span id="ver"></span><span id="tick"></span>' +
+    '<label>search <input id="q" size="14" placeholder="address or symbol"></label><span id="qres"></span>' +
+    '<span id="msg"></span>';
+  document.body.insertBefore(bar, document.querySelector('nav'));
+  document.body.classList.add('live');
+  var side = document.createElement('div');
+  side.id = 'side';
+  side.innerHTML = '<h3>Statistics</h3><div id="counters"></div><div>scan time (us)</div>' +
+    '<canvas id="hscan" width="310" height="90"></canvas>' +
+    '<div>jitter (us)</div><canvas id="hjit" width="310" height="90"></canvas>' +
+    '<div>overruns + missed deadlines over time</div><canvas id="tser" width="310" height="70"></canvas>' +
+    '<h3>Forces</h3><div id="forces">none</div><h3>Lock list</h3><div id="locks">none</div>' +
+    '<h3>Cross-reference</h3><div id="xref">click an element or search an address</div>' +
+    '<h3>Double coils</h3><div id="dbl"></div>';
+  document.body.appendChild(side);
+  var menu = document.createElement('div');
+  menu.id = 'menu';
+  document.body.appendChild(menu);
+  function say(t, bad) {
+    var m = document.getElementById('msg');
+    m.textContent = t;
+    m.style.color = bad ? '#f99' : '#9f9';
+  }
+  function setConn(t, ok) {
+    var c = document.getElementById('conn');
+    c.textContent = t;
+    c.className = 'st ' + (ok ? 'ok' : 'bad');
+  }
+
+  // ---- the layout: where each address is used ------------------------------------------------
+  var uses = {}, cellOf = {};
+  L.layout.parts.forEach(function (p, pi) {
+    p.rungs.forEach(function (r, ri) {
+      r.cells.forEach(function (c) {
+        if (c.stmt >= 0) cellOf[c.stmt] = { part: pi, index: ri, name: p.name, rung: r.number, cell: c };
+        function use(a, role) {
+          if (!a) return;
+          a = a.replace(/\s*<.*>$/, '');
+          (uses[a] = uses[a] || []).push({ part: pi, name: p.name, rung: r.number, role: role, stmt: c.stmt });
+        }
+        if (/^contact/.test(c.kind)) {
+          use(c.text, 'read');
+        } else if (/^(coil|coil-not|set|rst)$/.test(c.kind)) {
+          use(c.text, c.kind === 'coil' || c.kind === 'coil-not' ? 'write (coil)' : 'write (' + c.kind + ')');
+        } else if (c.kind === 'box') {
+          (c.operands || []).forEach(function (o) { use(o, 'operand of ' + c.text); });
+        }
+      });
+    });
+  });
+  function coils(a) { return uses[a].filter(function (u) { return u.role === 'write (coil)'; }).length; }
+  var dbl = Object.keys(uses).filter(function (a) { return coils(a) > 1; });
+  document.getElementById('dbl').innerHTML = dbl.length ? dbl.map(function (a) {
+    return '<div class="warn">' + h(a) + ': ' + coils(a) + ' coils <a data-x="' + h(a) + '">where</a></div>';
+  }).join('') : 'none';
+  function goTo(stmt) {
+    var c = cellOf[stmt];
+    if (!c) return;
+    var b = document.querySelectorAll('.tab')[c.part];
+    if (b) b.click();
+    var d = rungDiv(c.part, c.index);
+    if (d) draw(d);
+    var g = (byId[stmt] || [])[0];
+    if (g) {
+      mark([g]);
+      g.scrollIntoView({ block: 'center', inline: 'center' });
+    }
+  }
+  L.goTo = goTo;
+  L.drawn = function () { return nDrawn; };
+  L.rungDiv = rungDiv;
+  L.drawRung = draw;
+  function mark(gs) {
+    document.querySelectorAll('g.hit').forEach(function (g) {
+      g.classList.remove('hit');
+      var r = g.querySelector('rect.hl');
+      if (r) r.remove();
+    });
+    gs.forEach(function (g) {
+      g.classList.add('hit');
+      var bb = g.getBBox(), r = document.createElementNS('http://www.w3.org/2000/svg', 'rect');
+      r.setAttribute('class', 'hl');
+      r.setAttribute('x', bb.x - 3);
+      r.setAttribute('y', bb.y - 3);
+      r.setAttribute('width', bb.width + 6);
+      r.setAttribute('height', bb.height + 6);
+      g.insertBefore(r, g.firstChild);
+    });
+  }
+  function xref(a) {
+    var u = uses[a] || [], d = document.getElementById('xref');
+    var w = u.filter(function (x) { return x.role === 'write (coil)'; }).length;
+    d.innerHTML = '<b>' + h(a) + '</b>: ' + u.length + ' use(s)' +
+      (w > 1 ? ' <span class="warn">double coil (' + w + ')</span>' : '') +
+      u.map(function (x) {
+        return '<div><a data-s="' + h(x.stmt) + '">' + h(x.name) + ' rung ' + h(x.rung) + '</a> ' +
+          h(x.role) + ' (id ' + h(x.stmt) + ')</div>';
+      }).join('');
+  }
+  side.addEventListener('click', function (e) {
+    var t = e.target;
+    if (t.dataset.s) goTo(t.dataset.s);
+    if (t.dataset.x) xref(t.dataset.x);
+  });
+  document.getElementById('q').addEventListener('keydown', function (e) {
+    if (e.key !== 'Enter') return;
+    var v = this.value.trim().toLowerCase();
+    if (!v) return;
+    hits = [];
+    L.layout.parts.forEach(function (p) {
+      p.rungs.forEach(function (r) {
+        r.cells.forEach(function (c) {
+          var t = (c.text || '').toLowerCase(), s = (c.symbol || '').toLowerCase();
+          var o = (c.operands || []).join(' ').toLowerCase();
+          if (c.stmt >= 0 && c.kind !== 'wire' &&
+              (t === v || s.indexOf(v) >= 0 || (' ' + o + ' ').indexOf(' ' + v) >= 0)) hits.push(c.stmt);
+        });
+      });
+    });
+    hitAt = (hitAt + 1) % Math.max(hits.length, 1);
+    document.getElementById('qres').textContent = hits.length ? (hitAt + 1) + '/' + hits.length : 'not found';
+    if (hits.length) {
+      goTo(hits[hitAt]);
+      var c = cellOf[hits[hitAt]].cell;
+      xref(c.text || v.toUpperCase());
+    }
+  });
+  document.getElementById('q').addEventListener('input', function () { hitAt = -1; });
+  document.addEventListener('click', function (e) {
+    menu.style.display = 'none';
+    var g = e.target.closest && e.target.closest('g.el[data-stmt]');
+    if (g && !e.target.closest('#side')) {
+      var c = cellOf[g.dataset.stmt];
+      if (c && c.cell.text) xref(c.cell.text);
+    }
+  });
+
+  // ---- force from the page (允许 on / 禁止 off / 恢复 restore) -------------------------------
+  document.addEventListener('contextmenu', function (e) {
+    var g = e.target.closest && e.target.closest('g.el[data-stmt]');
+    if (!g || !/contact-(no|nc|rise|fall)/.test(g.getAttribute('class'))) return;
+    e.preventDefault();
+    var id = g.dataset.stmt;
+    menu.innerHTML = '<div data-m="on">force on (允许)</div><div data-m="off">force off (禁止)</div>' +
+      '<div data-m="restore">restore (恢复)</div>';
+    menu.style.left = e.clientX + 'px';
+    menu.style.top = e.clientY + 'px';
+    menu.style.display = 'block';
+    menu.onclick = function (ev) {
+      var m = ev.target.dataset.m;
+      if (m) L.force(id, m);
+      menu.style.display = 'none';
+    };
+  });
+  L.force = function (id, mode) {
+    return fetch('api/force', {
+      method: 'POST',
+      headers: { 'Content-Type': 'application/json', 'X-Ladderjit-Key': KEY },
+      body: JSON.stringify({ id: +id, mode: mode })
+    }).then(function (r) {
+      return r.json().then(function (j) {
+        say(r.ok ? 'force ' + mode + ' on id ' + id + ': ok' : 'force refused (' + r.status + '): ' + j.error, !r.ok);
+        return { status: r.status, body: j };
+      });
+    });
+  };
+
+  // ---- live state ----------------------------------------------------------------------------
+  function loadModel() {
+    return fetch('api/model', { headers: HK })
+      .then(function (r) { return r.json(); })
+      .then(function (m) { model = m; prev = []; });
+  }
+  function boxVal(g, vals) {
+    var t = g.querySelector('text.val');
+    if (!t) {
+      var r = g.querySelector('rect.box');
+      if (!r) return;
+      t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+      t.setAttribute('class', 'val');
+      t.setAttribute('text-anchor', 'middle');
+      t.setAttribute('x', +r.getAttribute('x') + +r.getAttribute('width') / 2);
+      var by = +r.getAttribute('y'), vy = by + +r.getAttribute('height') - 4, ts = g.querySelectorAll('text.mn,text.op');
+      // A box whose operand lines fill it (a one-row EQB D0 8): its lines move closer so the
+      // values line covers none.
+      if (ts.length > 1 && +ts[ts.length - 1].getAttribute('y') > vy - 12) {
+        var s = (vy - 12 - (by + 12)) / (ts.length - 1);
+        ts.forEach(function (x, i) { x.setAttribute('y', by + 12 + i * s); });
+      }
+      t.setAttribute('y', vy);
+      g.appendChild(t);
+    }
+    t.textContent = vals.join('  ');
+  }
+  function paintOne(id, w) {
+    var d = model.stmts[id], gs = byId[id];
+    if (!d || !gs || !w) return;
+    var at = d[0], k = d[1], n = d[2], ns = w[at] === null;
+    var on = !ns && !!(k === 'box' ? w[at + 1] : w[at]);
+    gs.forEach(function (g) {
+      g.classList.toggle('on', on);
+      g.classList.toggle('off', !on && !ns);
+      g.classList.toggle('ns', ns);
+      if (k === 'box' && n > 2) {
+        boxVal(g, ns ? ['not scanned'] : w.slice(at + 2, at + n).map(function (x) { return x === null ? -2147483648 : x; }));
+      }
+    });
+  }
+  function paint(m) {
+    if (!model || !m.w) return;
+    var w = m.w;
+    for (var id in byId) {
+      var d = model.stmts[id];
+      if (!d) continue;
+      var at = d[0], n = d[2], ch = prev.length === 0;
+      for (var i = 0; i < n && !ch; i++) if (prev[at + i] !== w[at + i]) ch = true;
+      if (ch) paintOne(id, w);
+    }
+    prev = w;
+  }
+  function forced(m) {
+    document.querySelectorAll('g.forced-on,g.forced-off').forEach(function (g) {
+      g.classList.remove('forced-on', 'forced-off');
+      var t = g.querySelector('text.fmark');
+      if (t) t.remove();
+    });
+    var f = m.forced || {}, ids = Object.keys(f);
+    ids.forEach(function (id) {
+      (byId[id] || []).forEach(function (g) {
+        g.classList.add(f[id] ? 'forced-on' : 'forced-off');
+        var s = g.querySelectorAll('line.sym')[0], t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+        if (!s) return;
+        t.setAttribute('class', 'fmark');
+        t.setAttribute('x', +s.getAttribute('x1') - 4);
+        t.setAttribute('y', +s.getAttribute('y1') + 8);
+        t.setAttribute('text-anchor', 'end');
+        t.setAttribute('fill', f[id] ? '#00c853' : '#d50000');
+        t.textContent = f[id] ? 'F-ON' : 'F-OFF';
+        g.appendChild(t);
+      });
+    });
+    document.getElementById('forces').innerHTML = ids.length ? ids.map(function (id) {
+      var c = cellOf[id];
+      return '<div><a data-s="' + h(id) + '">' + h(c ? c.cell.text + ' (' + c.name + ' rung ' + c.rung + ')' : 'id ' + id) +
+        '</a> ' + (f[id] ? 'on' : 'off') + '</div>';
+    }).join('') : 'none';
+    var lk = m.locks || [];
+    document.getElementById('locks').innerHTML = lk.length ? lk.map(function (x) { return '<div>' + h(x) + '</div>'; }).join('') : 'none';
+  }
+  var series = [];
+  function bars(id, hist) {
+    var c = document.getElementById(id), x = c.getContext('2d');
+    x.clearRect(0, 0, c.width, c.height);
+    if (!hist || !hist.bins) return;
+    var mx = Math.max.apply(null, hist.bins.concat([1])), bw = (c.width - 2) / hist.bins.length;
+    x.fillStyle = '#1565c0';
+    hist.bins.forEach(function (v, i) {
+      var y = v ? Math.max(1, (c.height - 14) * Math.log(1 + v) / Math.log(1 + mx)) : 0;
+      x.fillRect(1 + i * bw, c.height - 12 - y, Math.max(1, bw - 1), y);
+    });
+    x.fillStyle = '#333';
+    x.font = '10px sans-serif';
+    x.fillText('0', 1, c.height - 2);
+    x.fillText(String(hist.binUs * hist.bins.length), c.width - 30, c.height - 2);
+    x.fillText('p99 ' + hist.p99_us + '  max ' + hist.max_us, 90, 10);
+  }
+  function stats(s) {
+    document.getElementById('counters').innerHTML = 'at tick ' + s.tick + ': ticks run ' + s.ticks +
+      ' &middot; overruns <b>' + s.overruns + '</b> &middot; missed deadlines <b>' + s.missed_deadlines +
+      '</b> &middot; period ' + (s.period_ns / 1e6) + ' ms';
+    bars('hscan', s.scan);
+    bars('hjit', s.jitter);
+    series.push(s.overruns + s.missed_deadlines);
+    if (series.length > 120) series.shift();
+    var c = document.getElementById('tser'), x = c.getContext('2d');
+    x.clearRect(0, 0, c.width, c.height);
+    var lo = series[0], hi = Math.max(series[series.length - 1], lo + 1);
+    x.strokeStyle = '#d50000';
+    x.beginPath();
+    series.forEach(function (v, i) {
+      var px = i * (c.width / 120), py = c.height - 4 - (c.height - 8) * (v - lo) / (hi - lo);
+      if (i) x.lineTo(px, py);
+      else x.moveTo(px, py);
+    });
+    x.stroke();
+    x.fillStyle = '#333';
+    x.font = '10px sans-serif';
+    x.fillText('+' + (hi - lo) + ' over ' + series.length / 2 + ' s', 4, 10);
+  }
+  function apply(m) {
+    lastMsg = m;
+    L.live.last = m;
+    if (hash && m.hash !== hash) {
+      // A new program version: the page of that version (an editor with unsent edits asks first).
+      if (L.beforeReload && !L.beforeReload(m)) return;
+      setConn('new program version: reloading', true);
+      location.reload();
+      return;
+    }
+    hash = m.hash;
+    document.getElementById('ver').textContent = 'version ' + m.v +
+      (m.traced ? '' : m.aot ? ' (AOT: untraced, no power flow)' : ' (waiting for the traced build)');
+    document.getElementById('tick').textContent = 'tick ' + m.tick + (m.w ? '' : ' (no trace)');
+    L.live.tick = m.tick;
+    var go = function () {
+      paint(m);
+      forced(m);
+      if (m.stats) stats(m.stats);
+    };
+    if (!model || model.version !== m.v || model.traced !== m.traced) loadModel().then(go);
+    else go();
+  }
+  L.live = { tick: -1, last: null };
+  L.say = say;
+  L.esc = h;
+  function connect() {
+    var es = new EventSource('api/events?k=' + encodeURIComponent(KEY));
+    es.addEventListener('state', function (e) {
+      setConn('live', true);
+      apply(JSON.parse(e.data));
+    });
+    es.onerror = function () { setConn('disconnected: retrying', false); };
+  }
+  connect();
+})();

@@ -1,0 +1,504 @@
+#!/usr/bin/python3
+"""The ladder editor of the live page as a technician uses it (docs/ladder-edit.md "The page
+editor", issue 30 scope 5), in headless Chromium with real mouse and keyboard events
+(python3-selenium + chromedriver, scripts/setup-test.sh). Each program is copied and served with
+its stimulus (`serve PROGRAM --http`, the stimulus file's steps written in order with
+`ladderjit monitor write`: serve has no --stimulus), an input locked through the live view:
+
+- examples/lathe_panel.stl (after the stimulus the panel is in increment mode: R0.3 = 1, so
+  `LD R0.3 / OUT G2620.3` writes 1): 编辑, a click on the rung in the view, a click on its first
+  cell and the arrow key to the next, key 2 (常闭) and `X482.1` typed, checked as typed, Enter;
+  更新修改 opens the confirmation, which names what the init part writes (R0.2, G2564); cancel,
+  then 放弃修改: version, hash, file, history, audit log and G2620.3 untouched, no draft open.
+  An output typed into the middle of the rung (an element after an output) is marked on its cell
+  and 更新修改 sends nothing; undo removes it. An output written to an input (X0.5, read-only)
+  passes the grid but not the verifier: the check's 422 is drawn on the output's cell, the
+  running version unchanged; undo. Then the NC contact again, 更新修改, confirmed: with X482.1
+  locked to 1, G2620.3 (read with `ladderjit monitor read`) goes 1 -> 0, and 1 again with X482.1
+  locked to 0; the file holds `ANI X482.1` in the rung and every other line as before, the
+  history folder the old file, the audit log one record with the page's editor name and the diff.
+- examples/fanuc_coolant.pmc (`RD.NOT X0.0 / WRT R0.7`, X0.0 locked to 0) and
+  examples/conveyor.il (`... ST %M5 / ST %Q0.0 / ST %Q0.1`, start, stop and box inputs locked):
+  an NC contact (X0.1, %I0.4, locked to 1) inserted just before the output by mouse and keys,
+  更新修改 confirmed, the output goes 1 -> 0, the file holds the new line (`AND.NOT X0.1`,
+  `ANDN %I0.4`).
+
+Screenshots of every step go to OUTDIR/*.png. Bounded: every wait has a deadline.
+Usage: edit_page.py LADDERJIT EXAMPLES OUTDIR"""
+import difflib, json, os, shutil, sys, tempfile, time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import httputil  # noqa: E402
+import serveutil  # noqa: E402
+from httputil import call, check  # noqa: E402
+
+from selenium import webdriver  # noqa: E402
+from selenium.webdriver.chrome.service import Service  # noqa: E402
+from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
+from selenium.webdriver.common.by import By  # noqa: E402
+from selenium.webdriver.common.keys import Keys  # noqa: E402
+from selenium.common.exceptions import StaleElementReferenceException  # noqa: E402
+
+exe, examples, out = sys.argv[1], sys.argv[2], sys.argv[3]
+shutil.rmtree(out, ignore_errors=True)
+os.makedirs(out)
+
+
+def chrome():
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = "/usr/bin/chromium"
+    for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+              "--disable-component-update", "--disable-sync", "--no-first-run",
+              "--window-size=1400,1000", "--user-data-dir=" + tempfile.mkdtemp(prefix="ljedit")]:
+        opts.add_argument(a)
+    d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+    d.set_script_timeout(20)
+    return d
+
+
+def wait(what, fn, seconds=30):
+    """fn() until truthy (its value) or None after `seconds`."""
+    end = time.time() + seconds
+    while time.time() < end:
+        try:
+            v = fn()
+        except Exception:  # noqa: BLE001 - an element between two renders
+            v = None
+        if v:
+            return v
+        time.sleep(0.1)
+    print("     (waited %d s for %s)" % (seconds, what))
+    return None
+
+
+class Page:
+    def __init__(self, drv, name):
+        self.d, self.name, self.shot = drv, name, 0
+
+    def js(self, script, *args):
+        return self.d.execute_script(script, *args)
+
+    def text(self, id_):
+        return self.js("var e=document.getElementById(arguments[0]);return e?e.textContent:''", id_)
+
+    def screenshot(self, what):
+        self.shot += 1
+        path = os.path.join(out, "%s_%d_%s.png" % (self.name, self.shot, what))
+        self.d.save_screenshot(path)
+        # The editor panel (or the confirmation) alone: the small pictures of docs/ladder-edit.md.
+        for part in ("edconfirm", "editor"):
+            els = self.d.find_elements(By.ID, part)
+            if els and els[0].is_displayed():
+                els[0].screenshot(path[:-4] + "_" + part + ".png")
+                break
+        print("     screenshot " + path)
+
+    def click(self, el):
+        self.js("arguments[0].scrollIntoView({block:'center',inline:'center'})", el)
+        ActionChains(self.d).move_to_element(el).click().perform()
+
+    def keys(self, *k):
+        ActionChains(self.d).send_keys(*k).perform()
+
+    def ctrl(self, k):
+        ActionChains(self.d).key_down(Keys.CONTROL).send_keys(k).key_up(Keys.CONTROL).perform()
+
+    def click_cell(self, r, c):
+        """A click on cell (r, c); the grid is drawn anew when a check answers, so an element found
+        just before may be gone: found again."""
+        for attempt in range(5):
+            try:
+                self.click(self.cell(r, c))
+                return
+            except StaleElementReferenceException:
+                if attempt == 4:
+                    raise
+                time.sleep(0.2)
+
+    def cell(self, r, c):
+        return self.d.find_element(By.CSS_SELECTOR, '#edgridbox rect.hit[data-r="%d"][data-c="%d"]' % (r, c))
+
+    def grid(self):
+        """The grid of the rung the editor shows (what is drawn), read from the page's state."""
+        return self.js("var E=window.ladder.editor.state(),r=E.parts[E.p].rungs[E.r];"
+                       "return {p:E.p,r:E.r,row:E.row,col:E.col,grid:r.grid,errors:r.errors,"
+                       "pending:r.pending,dirty:r.dirty,net:!!r.net}")
+
+    def errcells(self):
+        return self.js("return Array.prototype.map.call(document.querySelectorAll('#edgridbox g.errcell'),"
+                       "function(g){return [+g.dataset.r,+g.dataset.c,g.textContent]})")
+
+    def settled(self):
+        """The shown rung converted (checked by the server) or refused."""
+        return wait("the rung's check", lambda: (lambda g: g if not g["pending"] and (g["net"] or g["errors"] or not g["dirty"]) else None)(self.grid()), 30)
+
+
+def find_rung(page, coil):
+    """(part, rung, row, col) of the output `coil` in the editor's grids."""
+    return page.js("var E=window.ladder.editor.state();for(var p=0;p<E.parts.length;p++)"
+                   "for(var r=0;r<E.parts[p].rungs.length;r++){var g=E.parts[p].rungs[r].grid;if(!g)continue;"
+                   "for(var i=0;i<g.cells.length;i++){var c=g.cells[i];if(c.k==='coil'&&c.op===arguments[0])"
+                   "return [p,r,Math.floor(i/g.cols),i%g.cols,E.parts[p].rungs[r].orig]}}return null", coil)
+
+
+def open_editor(page, url, token):
+    page.d.get(url + "/?token=" + token)
+    check(wait("live", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 40),
+          "%s: the live page is live" % page.name)
+    page.click(page.d.find_element(By.ID, "edbtn"))
+    ok = wait("the editor", lambda: "editing" in page.text("edstate"), 30)
+    check(ok, "%s: 编辑 opens the editor: '%s'" % (page.name, page.text("edstate")))
+
+
+def open_rung(page, coil):
+    """A click on the rung of `coil` in the view opens it in the editor."""
+    at = find_rung(page, coil)
+    check(at is not None, "%s: the editor has a grid of the rung writing %s: %s" % (page.name, coil, at))
+    p, r, row, col, orig = at
+    tab = page.d.find_elements(By.CSS_SELECTOR, ".tab")[p]
+    page.click(tab)
+    div = page.d.find_element(By.CSS_SELECTOR, 'div.rg[data-p="%d"][data-r="%d"]' % (p, orig))
+    page.click(div)
+    g = wait("the rung selected", lambda: (lambda x: x if x["p"] == p and x["r"] == r else None)(page.grid()), 10)
+    check(g is not None, "%s: a click on the rung in the view opens it in the editor: %s" % (page.name, page.text("edwhere")))
+    return at
+
+
+def insert_nc(page, row, col, address, via_arrow):
+    """The cursor to (row, col) (a click, or a click left of it and the right arrow key), key 2
+    (常闭), the address typed and checked as typed, Enter."""
+    if via_arrow:
+        page.click_cell(row, col - 1)
+        page.keys(Keys.ARROW_RIGHT)
+    else:
+        page.click_cell(row, col)
+    g = page.grid()
+    check(g["row"] == row and g["col"] == col, "%s: the cursor at row %d column %d (%s)" %
+          (page.name, row + 1, col + 1, "mouse and arrow key" if via_arrow else "mouse"))
+    check(g["grid"]["cells"][row * g["grid"]["cols"] + col]["k"] == "line",
+          "%s: the cell is a line (直线) to put the contact on" % page.name)
+    page.keys("2")
+    check(wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5),
+          "%s: key 2 (常闭) asks for the address" % page.name)
+    page.keys(address[:2])
+    page.keys(address[2:])
+    msg = wait("the typed address checked", lambda: (lambda t: t if "ok" in t else None)(page.text("edinmsg")), 10)
+    check(msg is not None, "%s: %s checked as typed: '%s'" % (page.name, address, page.text("edinmsg")))
+    page.keys(Keys.ENTER)
+    wait("the contact in the grid", lambda: (lambda x: x["grid"]["cells"][row * x["grid"]["cols"] + col]["k"] == "nc")(page.grid()), 10)
+    g = page.settled()
+    cell = g["grid"]["cells"][row * g["grid"]["cols"] + col] if g else {}
+    check(g and cell.get("k") == "nc" and cell.get("op") == address and not g["errors"],
+          "%s: the NC contact %s in the grid, converted with no error: %s %s" %
+          (page.name, address, cell, g and g["errors"]))
+
+
+def update(page, confirm=True):
+    """更新修改; the confirmation's text, after confirming (or cancelling)."""
+    page.click(page.d.find_element(By.ID, "edupdate"))
+    box = wait("the confirmation", lambda: page.d.find_element(By.ID, "edconfirm").is_displayed(), 60)
+    check(box, "%s: 更新修改 verifies the draft and asks to confirm: '%s'" % (page.name, page.text("edstate")))
+    text = page.text("edconfirm")
+    page.screenshot("confirm")
+    if box:
+        page.click(page.d.find_element(By.ID, "edyes" if confirm else "edno"))
+    return text
+
+
+def serve(name, program, stim):
+    """PROGRAM copied to OUT/NAME and served; its stimulus (an operator session: `@TICK ADDR=VALUE
+    ...` lines, docs/CLI.md) played to it in order through `ladderjit monitor write`."""
+    d = os.path.join(out, name)
+    os.makedirs(d)
+    path = os.path.join(d, os.path.basename(program))
+    shutil.copy(program, path)
+    srv = httputil.Serve(exe, path, d, "serve", duration=280)
+    steps = 0
+    for line in open(stim):
+        items = line.split("#")[0].split()
+        if not items or not items[0].startswith("@"):
+            continue
+        rc, _, err = serveutil.monitor(exe, srv.sock, "write", *items[1:])
+        check(rc == 0, "%s: stimulus %s: monitor write %s: %s" % (name, items[0], " ".join(items[1:]), err.strip()))
+        steps += 1
+    print("     %s: %d stimulus steps played" % (name, steps))
+    return srv, path
+
+
+def lock(srv, name, item):
+    st, a = call(srv, "/api/lock", {"item": item})
+    check(st == 200, "%s: %s locked through the live view: %d %s" % (name, item, st, a.get("error", "")))
+
+
+def files_after_update(name, path, original, added):
+    now = open(path, "rb").read().decode()
+    old_lines, new_lines = original.decode().splitlines(True), now.splitlines(True)
+    # The edited rung is printed anew by the dialect (an IL line number may go); every line
+    # outside it is the old file's byte for byte.
+    ops = [o for o in difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False).get_opcodes()
+           if o[0] != "equal"]
+    lo, hi = (min(o[1] for o in ops), max(o[2] for o in ops)) if ops else (0, 0)
+    nlo, nhi = (min(o[3] for o in ops), max(o[4] for o in ops)) if ops else (0, 0)
+    region = [" ".join(l.split()) for l in new_lines[nlo:nhi]]
+    check(ops and hi - lo <= 10 and added in region and old_lines[:lo] == new_lines[:nlo] and
+          old_lines[hi:] == new_lines[nhi:],
+          "%s: the file gains '%s' in the edited rung (old lines %d-%d printed anew), every other "
+          "line byte for byte: %s" % (name, added, lo + 1, hi, region))
+    hist = path + ".history"
+    copies = sorted(os.listdir(hist)) if os.path.isdir(hist) else []
+    check(len(copies) == 1 and open(os.path.join(hist, copies[0]), "rb").read() == original,
+          "%s: the history holds the old file: %s" % (name, copies))
+    audit = path + ".edits.jsonl"
+    recs = [json.loads(l) for l in open(audit)] if os.path.exists(audit) else []
+    check(len(recs) == 1 and added.split()[-1] in recs[0].get("diff", "") and recs[0].get("editor", "").startswith("page-"),
+          "%s: the audit log has the change, by the page's editor: %s" %
+          (name, [{k: r.get(k) for k in ("editor", "client", "old", "new")} for r in recs]))
+
+
+def typed(page, text):
+    """Into the input line once it has the focus, checked as typed, Enter."""
+    wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+    page.keys(text)
+    msg = wait("checked", lambda: (lambda t: t if " ok" in t else None)(page.text("edinmsg")), 10)
+    page.keys(Keys.ENTER)
+    return msg or page.text("edinmsg")
+
+
+def toolbar(page, row):
+    """The rest of the toolbar by keys on the rung, each checked by the server's grid: a row
+    (r), an NO contact on it (1) joined by a vertical line (|) is a parallel branch; undo to the
+    rung as it runs. A new rung (n) with a contact, lines (-) and a function box (9) from the
+    catalogue, and a comment (;); then 放弃修改."""
+    name = page.name
+    page.click_cell(row, 0)
+    page.keys("r")
+    g = page.grid()
+    check(g["grid"]["rows"] == 2, "%s: key r inserts a row: %d rows" % (name, g["grid"]["rows"]))
+    page.click_cell(row + 1, 0)
+    page.keys("1")
+    typed(page, "X480.2")
+    page.click_cell(row, 1)
+    page.keys("|")
+    wait("the parallel converted", lambda: page.grid()["net"], 20)
+    g = page.settled()
+    check(g and g["net"] and not g["errors"] and ["%d,1" % row] == list(g["grid"]["links"]),
+          "%s: an NO contact on the new row joined by a vertical line is a parallel branch, no error: %s" %
+          (name, g and g["errors"]))
+    page.screenshot("parallel")
+    for _ in range(3):
+        page.ctrl("z")
+    g = page.grid()
+    check(g["grid"]["rows"] == 1 and not g["dirty"], "%s: three Ctrl+Z give the running rung back" % name)
+    page.keys("n")
+    g = page.grid()
+    check(g["dirty"] and g["grid"]["rows"] == 1 and all(c["k"] == "empty" for c in g["grid"]["cells"]),
+          "%s: key n makes a new empty rung after it: %s" % (name, page.text("edwhere")))
+    cols = g["grid"]["cols"]
+    page.click_cell(0, 0)
+    page.keys("1")
+    typed(page, "X480.2")
+    for _ in range(cols - 2):
+        page.keys("-", Keys.ARROW_RIGHT)
+    page.keys("9")
+    msg = typed(page, "MOV 100 D5")
+    check("ok" in msg, "%s: the box MOV 100 D5 checked against the catalogue as typed: '%s'" % (name, msg))
+    page.keys(";")
+    typed(page, "set D5 | from the page")
+    wait("the new rung converted", lambda: page.grid()["net"], 20)
+    g = page.settled()
+    last = g["grid"]["cells"][cols - 1] if g else {}
+    check(g and g["net"] and not g["errors"] and last.get("k") == "box" and last.get("instr") == "MOV",
+          "%s: the new rung [X480.2]--[MOV 100 D5] with its comment converts with no error: %s %s" %
+          (name, last, g and g["errors"]))
+    page.screenshot("new_rung")
+    page.click(page.d.find_element(By.ID, "eddiscard"))
+    wait("discard", lambda: "放弃修改" in page.text("edstate"), 30)
+    page.click(page.d.find_element(By.CSS_SELECTOR, 'button[data-act="prev"]'))
+    g = page.grid()
+    check(not g["dirty"] and g["grid"]["rows"] == 1, "%s: after 放弃修改 no rung is edited" % name)
+
+
+def hnc8():
+    name = "hnc8"
+    srv, path = serve(name, os.path.join(examples, "lathe_panel.stl"), os.path.join(examples, "lathe_panel.stim"))
+    original = open(path, "rb").read()
+    drv = chrome()
+    page = Page(drv, name)
+    try:
+        lock(srv, name, "X482.1=1")
+        check(serveutil.wait_value(exe, srv.sock, "G2620.3", 1, 20),
+              "%s: G2620.3 = 1 after the stimulus (increment mode)" % name)
+        st, g0 = call(srv, "/api/edit")
+        v0, h0 = g0["running"]["version"], g0["running"]["hash"]
+        # Bad bodies of the grid route: a clear 400 or a located refusal, never a crash.
+        for body, want in [({"open": "yes"}, 400), ({"bogus": 1}, 400), ({"rungs": "x"}, 400),
+                           ({"operand": 5}, 400), ({"rungs": [{"grid": {"rows": 100000, "cols": 1}}]}, 200),
+                           ({"rungs": [{"grid": {"rows": 1, "cols": 2, "cells": [{"k": "weird"}, {}]}}]}, 200)]:
+            st, a = call(srv, "/api/edit/grid", body)
+            errs = [e["message"] for r in a.get("rungs", []) for e in r.get("errors", [])]
+            check(st == want and (a.get("error") or errs),
+                  "%s: /api/edit/grid %s: %d %s" % (name, json.dumps(body)[:60], st, a.get("error") or errs))
+        open_editor(page, srv.url, srv.token)
+        p, r, row, col, orig = open_rung(page, "G2620.3")
+        page.screenshot("opened")
+
+        # The NC contact, 更新修改, cancel, 放弃修改: nothing changes.
+        insert_nc(page, row, 1, "X482.1", True)
+        page.screenshot("inserted")
+        text = update(page, confirm=False)
+        check("init part runs again" in text and "R0.2" in text and "G2564" in text and "+ANI X482.1" in text,
+              "%s: the confirmation says the init part runs again, what it writes (R0.2, G2564) and the diff" % name)
+        st, g = call(srv, "/api/edit")
+        check(g["draft"]["open"] and g["draft"]["editor"].startswith("page-"),
+              "%s: the draft is open on the server, held by the page: %s" % (name, g["draft"].get("editor")))
+        page.click(drv.find_element(By.ID, "eddiscard"))
+        ok = wait("discard", lambda: "放弃修改" in page.text("edstate"), 30)
+        check(ok, "%s: 放弃修改: '%s'" % (name, page.text("edstate")))
+        st, g = call(srv, "/api/edit")
+        check(not g["draft"]["open"] and g["running"]["version"] == v0 and g["running"]["hash"] == h0,
+              "%s: after 放弃修改: no draft, the same version and hash" % name)
+        check(open(path, "rb").read() == original and not os.path.exists(path + ".history") and
+              not os.path.exists(path + ".edits.jsonl"),
+              "%s: after 放弃修改: the file untouched, no history, no audit record" % name)
+        check(serveutil.read(exe, srv.sock, "G2620.3") == 1, "%s: after 放弃修改: G2620.3 still 1" % name)
+        g = page.settled()
+        check(g and g["p"] == p and g["r"] == r and
+              g["grid"]["cells"][row * g["grid"]["cols"] + 1]["k"] == "line" and not g["dirty"],
+              "%s: after 放弃修改 the editor shows the running rung again" % name)
+        page.screenshot("discarded")
+
+        toolbar(page, row)
+
+        # An element after an output: marked on its cell, nothing sent; undo.
+        page.click_cell(row, 3)
+        page.keys("5")
+        wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+        page.keys("Y0.2")
+        wait("checked", lambda: "ok" in page.text("edinmsg"), 10)
+        page.keys(Keys.ENTER)
+        g = page.settled()
+        marks = page.errcells()
+        check(g and g["errors"] and any(c > 3 and "after an output" in t for _, c, t in marks),
+              "%s: a line after an output is marked on its cell: %s" % (name, marks))
+        check("Y0.2" in page.text("eddbl"),
+              "%s: 双线圈 lists Y0.2, now written by two outputs: '%s'" % (name, page.text("eddbl")))
+        page.screenshot("invalid")
+        page.click(drv.find_element(By.ID, "edupdate"))
+        ok = wait("refused", lambda: "nothing was sent" in page.text("edstate"), 20)
+        st, g = call(srv, "/api/edit")
+        check(ok and not g["draft"]["open"] and g["running"]["version"] == v0,
+              "%s: 更新修改 refused before sending: '%s'; no draft, version %s" % (name, page.text("edstate"), g["running"]["version"]))
+        page.click_cell(row, 3)
+        page.ctrl("z")
+        g = page.grid()
+        check(g["grid"]["cells"][row * g["grid"]["cols"] + 3]["k"] == "line" and not page.errcells(),
+              "%s: Ctrl+Z undoes it: the line is back, no mark" % name)
+
+        # An output to an input: the grid takes it, the verifier does not (422 on the cell).
+        page.click_cell(row, col)
+        page.keys(Keys.ENTER)
+        wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+        page.ctrl("a")
+        page.keys("X0.5")
+        wait("checked", lambda: "ok" in page.text("edinmsg"), 10)
+        page.keys(Keys.ENTER)
+        page.settled()
+        page.click(drv.find_element(By.ID, "edupdate"))
+        ok = wait("the check's refusal", lambda: "does not verify" in page.text("edstate"), 60)
+        marks = page.errcells()
+        check(ok and any(c == col for _, c, _t in marks),
+              "%s: the verifier's error is drawn on the output's cell: %s" % (name, marks))
+        page.screenshot("refused")
+        st, g = call(srv, "/api/edit")
+        check(g["running"]["version"] == v0 and open(path, "rb").read() == original,
+              "%s: the running program and the file unchanged" % name)
+        page.click_cell(row, 0)
+        page.ctrl("z")
+        g = page.grid()
+        check(g["grid"]["cells"][row * g["grid"]["cols"] + col].get("op") == "G2620.3",
+              "%s: Ctrl+Z gives the output G2620.3 back" % name)
+
+        # The NC contact again, 更新修改 confirmed.
+        insert_nc(page, row, 1, "X482.1", True)
+        t0 = time.time()
+        update(page, confirm=True)
+        ok = wait("the new version", lambda: call(srv, "/api/edit")[1]["running"]["version"] > v0, 60)
+        check(ok, "%s: 更新修改: a new version runs (%.1f s after the click)" % (name, time.time() - t0))
+        check(serveutil.wait_value(exe, srv.sock, "G2620.3", 0, 20),
+              "%s: G2620.3 follows the new rung: 0 with X482.1 locked to 1" % name)
+        lock(srv, name, "X482.1=0")
+        check(serveutil.wait_value(exe, srv.sock, "G2620.3", 1, 20),
+              "%s: G2620.3 = 1 again with X482.1 locked to 0" % name)
+        files_after_update(name, path, original, "ANI X482.1")
+        wait("the page reloaded", lambda: page.js("return document.readyState") == "complete" and
+             page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
+        time.sleep(1)
+        page.screenshot("updated")
+        drawn = page.js("return Array.prototype.map.call(document.querySelectorAll('g.el.contact-nc title'),"
+                        "function(t){return t.textContent}).join(' | ')")
+        check("X482.1" in (drawn or ""), "%s: the reloaded page draws the new contact" % name)
+    finally:
+        drv.quit()
+        srv.stop()
+
+
+def other(name, program, stim, locks, coil, address, added):
+    srv, path = serve(name, os.path.join(examples, program), os.path.join(examples, stim))
+    original = open(path, "rb").read()
+    drv = chrome()
+    page = Page(drv, name)
+    try:
+        for item in locks:
+            lock(srv, name, item)
+        check(serveutil.wait_value(exe, srv.sock, coil, 1, 20), "%s: %s = 1 before the edit" % (name, coil))
+        st, g0 = call(srv, "/api/edit")
+        v0 = g0["running"]["version"]
+        open_editor(page, srv.url, srv.token)
+        p, r, row, col, orig = open_rung(page, coil)
+        insert_nc(page, row, col - 1, address, False)
+        page.screenshot("inserted")
+        update(page, confirm=True)
+        ok = wait("the new version", lambda: call(srv, "/api/edit")[1]["running"]["version"] > v0, 60)
+        check(ok, "%s: 更新修改: a new version runs" % name)
+        check(serveutil.wait_value(exe, srv.sock, coil, 0, 20),
+              "%s: %s follows the new rung: 0 with %s locked to 1" % (name, coil, address))
+        files_after_update(name, path, original, added)
+        wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
+        time.sleep(1)
+        page.screenshot("updated")
+    finally:
+        drv.quit()
+        srv.stop()
+
+
+def read_only():
+    """Under --http-read-only the page has no editor and the grid route is refused."""
+    name = "read-only"
+    d = os.path.join(out, name)
+    os.makedirs(d)
+    path = os.path.join(d, "lathe_panel.stl")
+    shutil.copy(os.path.join(examples, "lathe_panel.stl"), path)
+    srv = httputil.Serve(exe, path, d, "serve", extra=["--http-read-only"], duration=120)
+    drv = chrome()
+    page = Page(drv, name)
+    try:
+        page.d.get(srv.url + "/?token=" + srv.token)
+        live = wait("live", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 40)
+        check(live and not page.js("return !!document.getElementById('edbtn') || !!document.getElementById('editor')"),
+              "%s: the live page has no editor (no 编辑 button, no panel)" % name)
+        st, a = call(srv, "/api/edit/grid", {"open": True})
+        check(st == 403, "%s: POST /api/edit/grid refused: %d %s" % (name, st, a.get("error", "")))
+        page.screenshot("page")
+    finally:
+        drv.quit()
+        srv.stop()
+
+
+t_start = time.time()
+read_only()
+hnc8()
+other("fanuc", "fanuc_coolant.pmc", "fanuc_coolant.stim", ["X0.0=0", "X0.1=1"], "R0.7", "X0.1", "AND.NOT X0.1")
+other("iec", "conveyor.il", "conveyor.stim", ["%I0.0=1", "%I0.1=1", "%I0.3=1", "%I0.4=1"], "%Q0.0", "%I0.4", "ANDN %I0.4")
+print("%.0f s" % (time.time() - t_start))
+httputil.finish()
