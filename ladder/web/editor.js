@@ -37,7 +37,7 @@
   const E = {
     on: false, loaded: false, base: null, running: null, init: null, dialect: '', boxes: [],
     edges: false, symbols: {}, parts: [], p: 0, r: 0, row: 0, col: 0, undo: [], redo: [],
-    sent: false, posted: false, input: null, checkTimer: null
+    sent: false, posted: false, input: null, checkTimer: null, mark: null, clip: null
   };
 
   function api(path, body) {
@@ -225,6 +225,9 @@
     tb('del', '删除元件 delete', 'Del') + tb('delv', '删除竖线', 'Backspace') +
     tb('insrow', '插入行 row', 'r') + tb('delrow', '删除行', 'Shift+R') + tb('inscol', '插入列 column', 'c') +
     tb('newrung', '新网络 new rung', 'n') + tb('comment', '注释 comment', ';') + '</div>' +
+    '<div class="row" id="ednets">' + tb('selnet', '选择网络 select rungs', 's') + tb('copynet', '复制 copy', 'Ctrl+C') +
+    tb('cutnet', '剪切 cut', 'Ctrl+X') + tb('pastenet', '粘贴 paste', 'Ctrl+V') +
+    tb('delnet', '删除网络 delete rungs', 'Ctrl+Del') + '</div>' +
     '<div class="row"><label id="edinlab" for="edin">address</label><input id="edin" autocomplete="off" disabled>' +
     '<span id="edinmsg"></span></div>' +
     '<div id="edbody"><div id="edgridbox" tabindex="0"></div><div id="edside">' +
@@ -268,10 +271,24 @@
   });
 
   function cur() { return E.parts[E.p] && E.parts[E.p].rungs[E.r]; }
+  // Edited rungs, plus one per part whose rung list changed (a network deleted, cut or moved).
   function dirtyCount() {
     let n = 0;
-    E.parts.forEach(function (p) { p.rungs.forEach(function (r) { if (r.dirty) n++; }); });
+    E.parts.forEach(function (p, pi) {
+      p.rungs.forEach(function (r) { if (r.dirty) n++; });
+      const run = E.running && E.running.parts[pi];
+      if (run && (p.rungs.length !== run.rungs.length || p.rungs.some(function (r, i) { return r.orig !== i; }))) n++;
+    });
     return n;
+  }
+  // The selected networks of the shown part: from the mark (选择网络) to the shown rung.
+  function selRange() {
+    if (!E.mark || E.mark.p !== E.p) return [E.r, E.r];
+    return [Math.min(E.mark.r, E.r), Math.max(E.mark.r, E.r)];
+  }
+  function runningKind(pi, r) {
+    const run = E.running && E.running.parts[pi];
+    return r.orig >= 0 && run && run.rungs[r.orig] ? run.rungs[r.orig].kind : 'ladder';
   }
   function select(p, r, forward) {
     const part = E.parts[p];
@@ -355,7 +372,9 @@
     if (!E.on || !E.loaded) return;
     const rg = cur(), part = E.parts[E.p];
     document.getElementById('edwhere').textContent = part.name + ' rung ' + (E.r + 1) + ' of ' + part.rungs.length +
-      (rg.orig < 0 ? ' (new)' : '') + (rg.dirty ? ' (edited)' : '');
+      (rg.orig < 0 ? ' (new)' : '') + (rg.dirty ? ' (edited)' : '') +
+      (E.mark && E.mark.p === E.p ? ' · rungs ' + (selRange()[0] + 1) + '-' + (selRange()[1] + 1) + ' selected' : '') +
+      (E.clip ? ' · ' + E.clip.length + ' copied' : '');
     document.getElementById('ededges').style.display = E.edges ? '' : 'none';
     document.getElementById('edupdate').disabled = !dirtyCount();
     if (!rg.grid) {
@@ -494,6 +513,46 @@
       return null;
     }, (KINDS[kind] || kind) + (operand ? ' ' + operand : '') + ' at row ' + (E.row + 1) + ' column ' + (E.col + 1));
   }
+  // 复制: the selected networks to the editor's clipboard (their grids and comments).
+  function copyNets() {
+    const sr = selRange(), rungs = E.parts[E.p].rungs.slice(sr[0], sr[1] + 1);
+    const bad = rungs.findIndex(function (r) { return !r.grid; });
+    if (bad >= 0) {
+      say('rung ' + (sr[0] + bad + 1) + ' is not a ladder network the editor can copy: ' +
+        (rungs[bad].why || 'statements without a grid') + '; nothing copied', true);
+      return false;
+    }
+    E.clip = rungs.map(function (r) { return { grid: copyGrid(r.grid), comment: r.comment.slice() }; });
+    E.mark = null;
+    say('复制网络: ' + E.clip.length + ' rung(s) copied; 粘贴 (Ctrl+V) puts them after the shown rung', false);
+    render();
+    return true;
+  }
+  // 删除网络: the selected networks leave the draft; a marker (END1, SP, a label) is the
+  // program's structure, not a network, and stays.
+  function deleteNets(what) {
+    const sr = selRange(), part = E.parts[E.p];
+    for (let k = sr[0]; k <= sr[1]; k++) {
+      if (runningKind(E.p, part.rungs[k]) === 'marker') {
+        say('rung ' + (k + 1) + ' is a marker of the program\'s structure (' + (part.rungs[k].why || 'not a network') +
+          '): it is not deleted; nothing deleted', true);
+        return false;
+      }
+    }
+    if (sr[1] - sr[0] + 1 >= part.rungs.length) {
+      say('a part keeps at least one rung: nothing deleted', true);
+      return false;
+    }
+    E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: part.rungs.slice() });
+    E.redo = [];
+    part.rungs = part.rungs.slice(0, sr[0]).concat(part.rungs.slice(sr[1] + 1));
+    E.mark = null;
+    E.r = Math.min(sr[0], part.rungs.length - 1);
+    say(what + ' ' + (sr[1] - sr[0] + 1) + ' rung(s) from ' + part.name + ' (更新修改 puts it live)', false);
+    closeInput();
+    render();
+    return true;
+  }
   const actions = {
     line: function () { place('line'); },
     vline: function () {
@@ -558,6 +617,36 @@
     },
     comment: function () { openInput('comment'); },
     box: function () { openInput('box', 'box'); },
+    selnet: function () {
+      if (E.mark && E.mark.p === E.p) {
+        E.mark = null;
+        say('选择网络: selection cleared', false);
+      } else {
+        E.mark = { p: E.p, r: E.r };
+        say('选择网络: rung ' + (E.r + 1) + ' marked; PgUp/PgDn select up to the shown rung', false);
+      }
+      render();
+    },
+    copynet: function () { copyNets(); },
+    cutnet: function () { if (copyNets()) deleteNets('剪切网络: cut'); },
+    pastenet: function () {
+      if (!E.clip) {
+        say('nothing copied: 复制 (Ctrl+C) a rung first', true);
+        return;
+      }
+      E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: E.parts[E.p].rungs.slice() });
+      E.redo = [];
+      const add = E.clip.map(function (c) {
+        return { orig: -1, grid: copyGrid(c.grid), why: '', comment: c.comment.slice(), dirty: true, errors: [], net: null, cells: null, pending: false };
+      });
+      Array.prototype.splice.apply(E.parts[E.p].rungs, [E.r + 1, 0].concat(add));
+      E.r += 1;
+      E.mark = null;
+      say('粘贴网络: ' + add.length + ' rung(s) pasted after rung ' + E.r, false);
+      render();
+      scheduleCheck();
+    },
+    delnet: function () { deleteNets('删除网络: deleted'); },
     undo: function () { undo(E.undo, E.redo); },
     redo: function () { undo(E.redo, E.undo); },
     prev: function () { select(E.p, E.r - 1, false); },
@@ -711,8 +800,9 @@
   const KEYS = {
     '-': 'line', '|': 'vline', '1': 'no', '2': 'nc', '3': 'rise', '4': 'fall', '5': 'coil', '6': 'coil-not',
     '7': 'set', '8': 'reset', '9': 'box', Delete: 'del', Backspace: 'delv', r: 'insrow', R: 'delrow',
-    c: 'inscol', n: 'newrung', ';': 'comment', PageUp: 'prev', PageDown: 'next'
+    c: 'inscol', n: 'newrung', ';': 'comment', PageUp: 'prev', PageDown: 'next', s: 'selnet'
   };
+  const CTRL_KEYS = { c: 'copynet', x: 'cutnet', v: 'pastenet', Delete: 'delnet' };
   gridBox.addEventListener('keydown', function (e) {
     const rg = cur();
     if (!rg) return;
@@ -724,6 +814,12 @@
     if (e.ctrlKey && (e.key === 'y' || e.key === 'Y')) {
       e.preventDefault();
       actions.redo();
+      return;
+    }
+    const ck = e.ctrlKey && !e.altKey && !e.metaKey && CTRL_KEYS[e.key.length === 1 ? e.key.toLowerCase() : e.key];
+    if (ck) {
+      e.preventDefault();
+      actions[ck]();
       return;
     }
     if (e.ctrlKey || e.altKey || e.metaKey) return;
@@ -740,6 +836,12 @@
       const c = at(g, E.row, E.col);
       if (c.k === 'box') openInput('box', 'box');
       else if (CONTACTS.indexOf(c.k) >= 0 || OUTPUTS.indexOf(c.k) >= 0) openInput('operand', c.k);
+      return;
+    }
+    if (e.key === 'Escape' && E.mark) {
+      E.mark = null;
+      say('选择网络: selection cleared', false);
+      render();
       return;
     }
     const act = KEYS[e.key];
@@ -942,7 +1044,7 @@
       api('api/edit/update', { editor: EDITOR }).then(function (u) {
         if (u.status === 422) {
           markDiagnostics(u.body.diagnostics, makeDraft().where);
-          say('更新修改 refused: the draft does not verify; the running program is unchanged', true);
+          say('更新修改 refused: ' + (u.body.error || 'the draft does not verify') + '; the running program is unchanged', true);
           render();
           return;
         }
@@ -985,6 +1087,7 @@
   };
   L.editor = {
     state: function () { return E; },
+    go: function (p, r) { select(p, r); },
     name: function () { return EDITOR; }
   };
   // The catalogue as the input's suggestions, once loaded.

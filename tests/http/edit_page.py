@@ -313,10 +313,99 @@ def toolbar(page, row):
           (name, last, g and g["errors"]))
     page.screenshot("new_rung")
     page.click(page.d.find_element(By.ID, "eddiscard"))
-    wait("discard", lambda: "放弃修改" in page.text("edstate"), 30)
+    wait("discard", lambda: "放弃修改: the edits are dropped" in page.text("edstate"), 30)
     page.click(page.d.find_element(By.CSS_SELECTOR, 'button[data-act="prev"]'))
     g = page.grid()
     check(not g["dirty"] and g["grid"]["rows"] == 1, "%s: after 放弃修改 no rung is edited" % name)
+
+
+def rungs_len(page):
+    return page.js("var E=window.ladder.editor.state();return E.parts[E.p].rungs.length")
+
+
+def update_disabled(page):
+    return page.js("return document.getElementById('edupdate').disabled")
+
+
+def focus_grid(page):
+    page.js("document.getElementById('edgridbox').focus()")
+
+
+def go(page, p, r):
+    """The editor to rung r of part p (as a link of its side lists does), the grid focused."""
+    page.js("window.ladder.editor.go(arguments[0], arguments[1])", p, r)
+    focus_grid(page)
+
+
+def networks(page):
+    """选择/复制/剪切/粘贴/删除网络 on the rung of G2620.3 and its neighbours, all undone: a copy
+    pasted after it is a new rung with the same grid, converted with no error, and makes G2620.3
+    a double coil (双线圈); Ctrl+Del deletes it and nothing is left to update; a cut rung pasted
+    one rung up is a move (更新修改 enabled), two Ctrl+Z give the running order back; two rungs
+    selected (s, PgDn) are copied and pasted together; a marker is refused."""
+    name = page.name
+    p, r, row, col, orig = open_rung(page, "G2620.3")
+    focus_grid(page)
+    n0 = rungs_len(page)
+    cells0 = page.grid()["grid"]["cells"]
+    check(update_disabled(page), "%s: nothing edited: 更新修改 disabled" % name)
+    page.ctrl("c")
+    check("1 rung(s) copied" in page.text("edstate"), "%s: Ctrl+C copies the rung: '%s'" % (name, page.text("edstate")))
+    page.ctrl("v")
+    g = page.settled()
+    st = page.js("var E=window.ladder.editor.state(),x=E.parts[E.p].rungs[E.r];return [E.r,x.orig]")
+    check(g and g["net"] and not g["errors"] and g["grid"]["cells"] == cells0 and st == [r + 1, -1] and
+          rungs_len(page) == n0 + 1,
+          "%s: Ctrl+V pastes a new rung after it with the same grid, converted with no error: rung %s, %d rungs" %
+          (name, st, rungs_len(page)))
+    dbl = page.text("eddbl")
+    check("G2620.3" in dbl and dbl.count("rung") >= 2, "%s: 双线圈 lists G2620.3 written by both: '%s'" % (name, dbl))
+    check(not update_disabled(page), "%s: a pasted rung is an edit: 更新修改 enabled" % name)
+    page.screenshot("pasted")
+    page.ctrl(Keys.DELETE)
+    check(rungs_len(page) == n0 and update_disabled(page) and "G2620.3" not in page.text("eddbl"),
+          "%s: Ctrl+Del deletes the pasted rung: %d rungs, nothing to update: '%s'" % (name, rungs_len(page), page.text("edstate")))
+    go(page, p, r)
+    page.ctrl("x")
+    check(rungs_len(page) == n0 - 1 and not update_disabled(page),
+          "%s: Ctrl+X cuts the rung: %d rungs, 更新修改 enabled" % (name, rungs_len(page)))
+    # Pasted after rung r-2 (r-1 is now the rung before it): it lands one place up (one down
+    # when it was among the first two).
+    go(page, p, r - 2 if r >= 2 else r)
+    page.ctrl("v")
+    order = page.js("return window.ladder.editor.state().parts[arguments[0]].rungs.map(function(x){return x.orig})", p)
+    moved = (sorted(o for o in order if o >= 0) == [o for o in range(n0) if o != orig] and
+             order.index(-1) == (r - 1 if r >= 2 else r + 1))
+    check(rungs_len(page) == n0 and moved and not update_disabled(page),
+          "%s: pasted one rung up: the rung moved (%s), 更新修改 enabled" % (name, order))
+    page.settled()
+    page.ctrl("z")
+    page.ctrl("z")
+    order = page.js("return window.ladder.editor.state().parts[arguments[0]].rungs.map(function(x){return x.orig})", p)
+    check(order == list(range(n0)) and update_disabled(page),
+          "%s: two Ctrl+Z give the running order back, nothing to update: %s" % (name, order))
+    # Two neighbouring rungs with grids: s marks the first, PgDn selects the second.
+    i = page.js("var R=window.ladder.editor.state().parts[arguments[0]].rungs;for(var i=0;i+1<R.length;i++)"
+                "if(R[i].grid&&R[i+1].grid)return i;return -1", p)
+    check(i >= 0, "%s: two neighbouring ladder rungs to select" % name)
+    go(page, p, i)
+    page.keys("s", Keys.PAGE_DOWN)
+    check("rungs %d-%d selected" % (i + 1, i + 2) in page.text("edwhere"),
+          "%s: s and PgDn select two rungs: '%s'" % (name, page.text("edwhere")))
+    page.ctrl("c")
+    page.ctrl("v")
+    check("2 rung(s) pasted" in page.text("edstate") and rungs_len(page) == n0 + 2,
+          "%s: the two rungs copied and pasted: %d rungs, '%s'" % (name, rungs_len(page), page.text("edstate")))
+    page.screenshot("pasted_two")
+    page.ctrl("z")
+    check(rungs_len(page) == n0 and update_disabled(page), "%s: Ctrl+Z removes both" % name)
+    m = page.js("var E=window.ladder.editor.state();for(var p=0;p<E.parts.length;p++){var R=E.running.parts[p].rungs;"
+                "for(var r=0;r<R.length;r++)if(R[r].kind==='marker')return [p,r]}return null")
+    if m:
+        go(page, m[0], m[1])
+        page.ctrl(Keys.DELETE)
+        check("marker" in page.text("edstate") and update_disabled(page),
+              "%s: a marker is not deleted: '%s'" % (name, page.text("edstate")))
 
 
 def hnc8():
@@ -353,7 +442,7 @@ def hnc8():
         check(g["draft"]["open"] and g["draft"]["editor"].startswith("page-"),
               "%s: the draft is open on the server, held by the page: %s" % (name, g["draft"].get("editor")))
         page.click(drv.find_element(By.ID, "eddiscard"))
-        ok = wait("discard", lambda: "放弃修改" in page.text("edstate"), 30)
+        ok = wait("discard", lambda: "放弃修改: the edits are dropped" in page.text("edstate"), 30)
         check(ok, "%s: 放弃修改: '%s'" % (name, page.text("edstate")))
         st, g = call(srv, "/api/edit")
         check(not g["draft"]["open"] and g["running"]["version"] == v0 and g["running"]["hash"] == h0,
@@ -365,10 +454,13 @@ def hnc8():
         g = page.settled()
         check(g and g["p"] == p and g["r"] == r and
               g["grid"]["cells"][row * g["grid"]["cols"] + 1]["k"] == "line" and not g["dirty"],
-              "%s: after 放弃修改 the editor shows the running rung again" % name)
+              "%s: after 放弃修改 the editor shows the running rung again: %s" %
+              (name, g and {k: g[k] for k in ("p", "r", "dirty")}))
         page.screenshot("discarded")
 
         toolbar(page, row)
+        networks(page)
+        p, r, row, col, orig = open_rung(page, "G2620.3")
 
         # An element after an output: marked on its cell, nothing sent; undo.
         page.click_cell(row, 3)
@@ -443,7 +535,52 @@ def hnc8():
         srv.stop()
 
 
-def other(name, program, stim, locks, coil, address, added):
+def delete_update(page, srv, path, coil, symbol, on, off):
+    """删除网络 put live: the rung of `coil` (written as `symbol`) deleted with Ctrl+Del and
+    更新修改 confirmed. Before, the writes `on` make `coil` 1 and `off` 0 again; after, no rung
+    writes it and `on` leaves it 0. The file loses exactly the rung's lines (its statements and
+    the comment lines before it), the history holds both older files, the audit log two records."""
+    name = page.name
+    for w, want in ((on, 1), (off, 0)):
+        rc, _, err = serveutil.monitor(exe, srv.sock, "write", *w)
+        check(rc == 0 and serveutil.wait_value(exe, srv.sock, coil, want, 20),
+              "%s: before the deletion, %s gives %s = %d" % (name, " ".join(w), coil, want))
+    before = open(path, "rb").read().decode()
+    st, g = call(srv, "/api/edit")
+    v1 = g["running"]["version"]
+    open_editor(page, srv.url, srv.token)
+    open_rung(page, coil)
+    focus_grid(page)
+    n = rungs_len(page)
+    page.ctrl(Keys.DELETE)
+    check(rungs_len(page) == n - 1 and "删除网络" in page.text("edstate"),
+          "%s: Ctrl+Del deletes the rung of %s: '%s'" % (name, coil, page.text("edstate")))
+    text = update(page, confirm=True)
+    ok = wait("the new version", lambda: call(srv, "/api/edit")[1]["running"]["version"] > v1, 60)
+    check(ok and ("-WRT " + symbol) in text,
+          "%s: 更新修改 of the deletion: a new version runs (%s); the confirmation's diff has -WRT %s" %
+          (name, page.text("edstate"), symbol))
+    rc, _, err = serveutil.monitor(exe, srv.sock, "write", *on)
+    check(rc == 0 and not serveutil.wait_value(exe, srv.sock, coil, 1, 3),
+          "%s: %s is written by no rung: %s leaves it 0" % (name, coil, " ".join(on)))
+    now = open(path, "rb").read().decode()
+    old_lines, new_lines = before.splitlines(True), now.splitlines(True)
+    ops = [o for o in difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False).get_opcodes()
+           if o[0] != "equal"]
+    gone = [" ".join(l.split()) for o in ops for l in old_lines[o[1]:o[2]]]
+    stmts = [l for l in gone if not l.startswith(";")]
+    check(ops and all(o[0] == "delete" for o in ops) and len(stmts) <= 4 and
+          any(l.startswith("WRT " + symbol) for l in stmts),
+          "%s: the file loses the rung's lines and nothing else: %s" % (name, gone))
+    hist = path + ".history"
+    recs = [json.loads(l) for l in open(path + ".edits.jsonl")]
+    check(len(os.listdir(hist)) == 2 and len(recs) == 2,
+          "%s: the history holds both older files, the audit log two records: %s, %d" %
+          (name, sorted(os.listdir(hist)), len(recs)))
+    page.screenshot("deleted")
+
+
+def other(name, program, stim, locks, coil, address, added, delete=False):
     srv, path = serve(name, os.path.join(examples, program), os.path.join(examples, stim))
     original = open(path, "rb").read()
     drv = chrome()
@@ -467,6 +604,8 @@ def other(name, program, stim, locks, coil, address, added):
         wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
         time.sleep(1)
         page.screenshot("updated")
+        if delete:
+            delete_update(page, srv, path, *delete)
     finally:
         drv.quit()
         srv.stop()
@@ -498,7 +637,8 @@ def read_only():
 t_start = time.time()
 read_only()
 hnc8()
-other("fanuc", "fanuc_coolant.pmc", "fanuc_coolant.stim", ["X0.0=0", "X0.1=1"], "R0.7", "X0.1", "AND.NOT X0.1")
+other("fanuc", "fanuc_coolant.pmc", "fanuc_coolant.stim", ["X0.0=0", "X0.1=1"], "R0.7", "X0.1", "AND.NOT X0.1",
+      delete=("R1.0", "M08_ON", ["F10=8", "F7.0=1"], ["F7.0=0"]))
 other("iec", "conveyor.il", "conveyor.stim", ["%I0.0=1", "%I0.1=1", "%I0.3=1", "%I0.4=1"], "%Q0.0", "%I0.4", "ANDN %I0.4")
 print("%.0f s" % (time.time() - t_start))
 httputil.finish()
