@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -400,6 +401,9 @@ bool LiveView::start(std::string &error) {
   hc.hosts = im->cfg.hosts;
   hc.tokenFile = im->cfg.tokenFile;
   hc.readOnly = im->cfg.readOnly;
+  // Debian's libjs-dygraphs for the trace panel; elsewhere (or to test its absence) another
+  // folder holding dygraph.min.js and dygraph.min.css.
+  if (const char *d = std::getenv("LADDERJIT_DYGRAPHS_DIR"); d && *d) hc.dygraphsDir = d;
   hc.log = im->log;
   im->http = std::make_unique<services::HttpServer>(hc, std::move(be));
   if (!im->http->start(error)) return false;
