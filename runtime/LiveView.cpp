@@ -200,10 +200,14 @@ struct LiveView::Impl {
       // The editor (docs/ladder-edit.md "The page editor") only where the page may change the
       // program: under --http-read-only its script is not sent at all.
       const bool editor = !cfg.readOnly;
-      page = ladder::renderLazyHtml(
-          l, ladder::liveCss() + (editor ? ladder::editorCss() : std::string()),
-          "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() + ";" + ladder::liveScript() +
-              (editor ? ";" + ladder::editorScript() : std::string()));
+      // The trace panel (docs/trace.md "Page") in every page: under --http-read-only it shows
+      // the trace and its captures, and its buttons are refused.
+      page = ladder::renderLazyHtml(l,
+                                    ladder::liveCss() + ladder::traceCss() +
+                                        (editor ? ladder::editorCss() : std::string()),
+                                    "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() +
+                                        ";" + ladder::liveScript() + ";" + ladder::traceScript() +
+                                        (editor ? ";" + ladder::editorScript() : std::string()));
       pageHash = v.hash;
     }
     return page;
