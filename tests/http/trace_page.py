@@ -21,8 +21,8 @@ recorded: R10.0, Y0.3, T2, Y0.4 = R20.0, D12; the last row against `ladderjit mo
 once the sequence is over; the trigger tick drawn in the trigger's red at its x; two clicks on the
 plot set cursors A and B and the panel shows B - A in ticks and in ms (ticks x 10); the values
 at cursor A; a click on R10.0's name marks its first contact in the ladder (PLC1 rung 2, `LD
-R10.0 / STMR ...`) with its three uses in the cross-reference. Screenshots go to OUTDIR; the panel's
-is docs/images/trace-panel.png. Bounded: every wait has a deadline.
+R10.0 / STMR ...`) with its three uses in the cross-reference. Screenshots go to OUTDIR; its trace-panel.png (the page
+at the end) is docs/images/trace-panel.png. Bounded: every wait has a deadline.
 
 Usage: trace_page.py LADDERJIT EXAMPLES OUTDIR"""
 import os, shutil, sys, tempfile, time
@@ -241,8 +241,7 @@ def main():
                 line = [v for v in vals if v[0].startswith(name)]
                 w = {"R10.0": req, "Y0.3": y03, "T2": t2}[name][rowa]
                 check(line and line[0][1] == str(w), "the value of %s at cursor A is %s: %s" % (name, w, line))
-        panel_png = os.path.join(out, "trace-panel.png")
-        drv.find_element(By.ID, "trace").screenshot(panel_png)
+        drv.find_element(By.ID, "trace").screenshot(os.path.join(out, "trace-panel-only.png"))
         screenshot("cursors")
         # A click on the name R10.0 beside its lane: its first contact in the ladder.
         link = drv.find_element(By.CSS_SELECTOR, '#trbits a.trname[data-sig="R10.0"]')
@@ -253,6 +252,8 @@ def main():
         check(hit is not None and "contact" in hit[0] and "R10.0" in hit[1] and hit[3] == "2",
               "R10.0's name marks its first contact, PLC1 rung 2: %s" % (hit,))
         check(hit is not None and "R10.0: 3 use(s)" in hit[4], "the cross-reference lists its 3 uses: %s" % (hit and hit[4][:120]))
+        # The page with the panel beside the ladder, the contact marked: docs/images/trace-panel.png.
+        drv.save_screenshot(os.path.join(out, "trace-panel.png"))
         screenshot("find")
         # The log names the page's trace commands.
         log = srv.log().decode(errors="replace")
