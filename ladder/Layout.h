@@ -77,5 +77,8 @@ std::string liveScript();
 /// live script when the page may edit (not under --http-read-only).
 std::string editorCss();
 std::string editorScript();
+/// The signal trace panel of the live page (docs/trace.md "Page"), sent after the live script.
+std::string traceCss();
+std::string traceScript();
 
 } // namespace lj::ladder

@@ -16,11 +16,17 @@ extern const char kEditorJs[];
 extern const std::size_t kEditorJsSize;
 extern const char kEditorCss[];
 extern const std::size_t kEditorCssSize;
+extern const char kTraceJs[];
+extern const std::size_t kTraceJsSize;
+extern const char kTraceCss[];
+extern const std::size_t kTraceCssSize;
 } // namespace web
 
 std::string liveCss() { return std::string(web::kLiveCss, web::kLiveCssSize); }
 std::string liveScript() { return std::string(web::kLiveJs, web::kLiveJsSize); }
 std::string editorCss() { return std::string(web::kEditorCss, web::kEditorCssSize); }
 std::string editorScript() { return std::string(web::kEditorJs, web::kEditorJsSize); }
+std::string traceCss() { return std::string(web::kTraceCss, web::kTraceCssSize); }
+std::string traceScript() { return std::string(web::kTraceJs, web::kTraceJsSize); }
 
 } // namespace lj::ladder

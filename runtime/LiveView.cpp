@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <mutex>
@@ -199,10 +200,14 @@ struct LiveView::Impl {
       // The editor (docs/ladder-edit.md "The page editor") only where the page may change the
       // program: under --http-read-only its script is not sent at all.
       const bool editor = !cfg.readOnly;
-      page = ladder::renderLazyHtml(
-          l, ladder::liveCss() + (editor ? ladder::editorCss() : std::string()),
-          "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() + ";" + ladder::liveScript() +
-              (editor ? ";" + ladder::editorScript() : std::string()));
+      // The trace panel (docs/trace.md "Page") in every page: under --http-read-only it shows
+      // the trace and its captures, and its buttons are refused.
+      page = ladder::renderLazyHtml(l,
+                                    ladder::liveCss() + ladder::traceCss() +
+                                        (editor ? ladder::editorCss() : std::string()),
+                                    "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() +
+                                        ";" + ladder::liveScript() + ";" + ladder::traceScript() +
+                                        (editor ? ";" + ladder::editorScript() : std::string()));
       pageHash = v.hash;
     }
     return page;
@@ -400,6 +405,9 @@ bool LiveView::start(std::string &error) {
   hc.hosts = im->cfg.hosts;
   hc.tokenFile = im->cfg.tokenFile;
   hc.readOnly = im->cfg.readOnly;
+  // Debian's libjs-dygraphs for the trace panel; elsewhere (or to test its absence) another
+  // folder holding dygraph.min.js and dygraph.min.css.
+  if (const char *d = std::getenv("LADDERJIT_DYGRAPHS_DIR"); d && *d) hc.dygraphsDir = d;
   hc.log = im->log;
   im->http = std::make_unique<services::HttpServer>(hc, std::move(be));
   if (!im->http->start(error)) return false;

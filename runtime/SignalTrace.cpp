@@ -496,7 +496,57 @@ bool TraceControl::disarm(std::string &error) {
 
 void TraceControl::collect() {
   TraceCapture c;
-  if (trace_ && trace_->take(c)) last_ = std::move(c);
+  if (trace_ && trace_->take(c)) {
+    last_ = std::move(c);
+    ++lastId_;
+  }
+}
+
+namespace {
+
+/// One column (captureJson): run-length coded when that is shorter than the plain values.
+nlohmann::json column(const std::vector<int64_t> &v) {
+  size_t runs = 0;
+  for (size_t i = 0; i < v.size(); ++i)
+    if (i == 0 || v[i] != v[i - 1]) ++runs;
+  if (2 * runs >= v.size()) return v;
+  nlohmann::json rle = nlohmann::json::array();
+  for (size_t i = 0; i < v.size();) {
+    size_t j = i;
+    while (j < v.size() && v[j] == v[i]) ++j;
+    rle.push_back(v[i]);
+    rle.push_back(j - i);
+    i = j;
+  }
+  return {{"rle", std::move(rle)}};
+}
+
+} // namespace
+
+nlohmann::json captureJson(const TraceCapture &c, uint64_t id) {
+  using nlohmann::json;
+  const size_t rows = c.ticks.size(), n = c.signals.size();
+  json signals = json::array();
+  for (const formats::SignalInfo &s : c.signals)
+    signals.push_back({{"name", s.name}, {"bits", s.bits}});
+  std::vector<int64_t> col(rows > 0 ? rows - 1 : 0);
+  for (size_t r = 1; r < rows; ++r) col[r - 1] = static_cast<int64_t>(c.ticks[r] - c.ticks[r - 1]);
+  json ticks = {{"from", rows ? c.ticks[0] : 0}, {"steps", column(col)}};
+  json columns = json::array();
+  col.resize(rows);
+  for (size_t k = 0; k < n; ++k) {
+    for (size_t r = 0; r < rows; ++r) col[r] = c.values[r * n + k];
+    columns.push_back(column(col));
+  }
+  return {{"id", id},
+          {"capture", c.sequence},
+          {"period_ns", c.periodNs},
+          {"trigger_tick", c.triggerTick},
+          {"trigger_row", c.preTicks},
+          {"rows", rows},
+          {"signals", std::move(signals)},
+          {"ticks", std::move(ticks)},
+          {"columns", std::move(columns)}};
 }
 
 bool TraceControl::defineAndArm(const std::string &text, const std::string &file,
@@ -544,8 +594,11 @@ nlohmann::json TraceControl::handle(const nlohmann::json &req, const AddressPars
             {"trigger_tick", last_->triggerTick},
             {"ticks", last_->ticks.size()},
             {"capture", last_->sequence}};
+  } else if (action == "capture") {
+    collect();
   } else if (action != "status") {
-    return fail("unknown action '" + action + "' (define, arm, trigger, stop, status, save)");
+    return fail("unknown action '" + action +
+                "' (define, arm, trigger, stop, status, save, capture)");
   }
   json st = {{"ok", true}, {"armed", armed_}};
   if (def_) st["definition"] = formatTraceDefinition(*def_);
@@ -554,8 +607,16 @@ nlohmann::json TraceControl::handle(const nlohmann::json &req, const AddressPars
   st["samples"] = ts.samples;
   st["captures"] = ts.captures;
   st["dropped"] = ts.dropped;
-  if (last_)
-    st["last_capture"] = {{"capture", last_->sequence}, {"trigger_tick", last_->triggerTick}};
+  if (last_) {
+    st["last_capture"] = {
+        {"capture", last_->sequence}, {"trigger_tick", last_->triggerTick}, {"id", lastId_}};
+    if (action == "capture") {
+      const auto have = req.find("have");
+      if (have == req.end() || !have->is_number_unsigned() || have->get<uint64_t>() != lastId_)
+        st["capture"] = captureJson(*last_, lastId_);
+    }
+  }
+  st["period_ns"] = periodNs;
   return st;
 }
 

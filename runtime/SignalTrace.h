@@ -175,6 +175,8 @@ public:
   ///   stop    stop sampling
   ///   status  state, definition, samples, captures, dropped
   ///   save    "format": "vcd" | "csv", "bits": true for --vcd-bits: the last capture's text
+  ///   capture status plus "capture", the last capture as JSON (captureJson), unless its "id"
+  ///           is "have" (the page polls with the id it holds and gets the rows only once)
   /// `parse`: the running program's address syntax; `periodNs`: the tick.
   nlohmann::json handle(const nlohmann::json &req, const AddressParser &parse, uint64_t periodNs);
   /// serve --trace FILE: define from `text` and arm. False with `error`.
@@ -196,6 +198,15 @@ private:
   std::unique_ptr<SignalTrace> trace_; ///< the current trace (armed_: in the executive)
   bool armed_ = false;
   std::optional<TraceCapture> last_;
+  uint64_t lastId_ = 0; ///< 1, 2, ... per capture collected, over every trace of this server
 };
+
+/// A capture as the live page's trace panel reads it (GET /api/trace, docs/trace.md "Page"):
+/// `{"id","capture","period_ns","trigger_tick","trigger_row","rows","signals":[{"name","bits"}],
+/// "ticks":{"from":T0,"steps":COLUMN},"columns":[COLUMN...]}`, one column per signal. A COLUMN
+/// is a plain array of values, or `{"rle":[v,n,v,n,...]}` (value v repeated n times) when that
+/// is shorter: a bit that changes a few times in 60,000 rows costs a few numbers. `steps` are
+/// the rows' tick differences (rows - 1 of them; 1 except after ticks that did not run).
+nlohmann::json captureJson(const TraceCapture &c, uint64_t id);
 
 } // namespace lj::rt

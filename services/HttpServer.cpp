@@ -9,12 +9,15 @@
 #include <microhttpd.h>
 
 #include <arpa/inet.h>
+#include <fcntl.h>
 #include <netdb.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
@@ -84,12 +87,12 @@ struct Stream {
 
 /// Blocking work for the worker thread.
 struct Job {
-  enum Kind { Page, Model, Locks, Command, Edit } kind = Page;
+  enum Kind { Page, Model, Locks, Command, Edit, Asset } kind = Page;
   MHD_Connection *c = nullptr;
   json req;
   std::string line;        // for the log: "POST /api/force {..} from ADDR"
   std::string action = {}; // Edit: "" for GET /api/edit, else the POST's action
-  std::string client = {}; // Edit: the client, "ADDR:PORT"
+  std::string client = {}; // Edit: the client, "ADDR:PORT"; Asset: the file's name
 };
 
 struct Reply {
@@ -125,6 +128,26 @@ Reply error(unsigned status, const std::string &why, bool close = false) {
   r.body = jsonText({{"ok", false}, {"error", why}});
   r.close = close;
   return r;
+}
+
+/// The whole of a regular file of at most `max` bytes; false when it is missing or other.
+bool readSmallFile(const std::string &path, size_t max, std::string &out) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st {};
+  bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<size_t>(st.st_size) <= max;
+  if (ok) {
+    out.resize(static_cast<size_t>(st.st_size));
+    size_t got = 0;
+    while (got < out.size()) {
+      const ssize_t n = ::read(fd, out.data() + got, out.size() - got);
+      if (n <= 0) break;
+      got += static_cast<size_t>(n);
+    }
+    ok = got == out.size();
+  }
+  ::close(fd);
+  return ok;
 }
 
 void addrOf(const sockaddr *sa, std::string &ip, std::string &client) {
@@ -376,11 +399,21 @@ struct HttpServer::Impl {
       if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
       return defer(c, rq, Job{Job::Page, c, {}, {}});
     }
+    if (p == "/dygraph.min.js" || p == "/dygraph.min.css") {
+      // The trace panel's charting library (Debian's libjs-dygraphs), read at each request.
+      if (!get) return refuse(c, rq, MHD_HTTP_METHOD_NOT_ALLOWED, "bad method", p + " takes GET");
+      const int cred = credential(c, false);
+      if (cred == 0)
+        return refuse(c, rq, MHD_HTTP_UNAUTHORIZED, "missing token",
+                      "missing token: open the page with ?token=TOKEN first");
+      if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
+      return defer(c, rq, Job{Job::Asset, c, {}, {}, "", p.substr(1)});
+    }
     static const std::set<std::string> kApi = {
         "/api/model",      "/api/state",      "/api/locks",       "/api/events",
         "/api/force",      "/api/lock",       "/api/unlock",      "/api/edit",
         "/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard",
-        "/api/edit/grid"};
+        "/api/edit/grid",  "/api/trace"};
     const bool edit = p.rfind("/api/edit", 0) == 0;
     if (!kApi.count(p) || (edit && !be.edit)) {
       rq.answered = true;
@@ -393,8 +426,9 @@ struct HttpServer::Impl {
                     "missing token: send 'Authorization: Bearer TOKEN' (the token is in the file "
                     "serve named at start), or open the page with ?token=TOKEN");
     if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
-    const bool post =
-        p == "/api/force" || p == "/api/lock" || p == "/api/unlock" || (edit && p != "/api/edit");
+    // GET /api/trace reads the trace's status and last capture; POST /api/trace drives it.
+    const bool post = p == "/api/force" || p == "/api/lock" || p == "/api/unlock" ||
+                      (edit && p != "/api/edit") || (p == "/api/trace" && !get);
     // A whole program's network JSON is larger than a command.
     rq.maxBody = p == "/api/edit/draft" ? cfg.maxEditBody : cfg.maxBody;
     if (post) {
@@ -429,6 +463,9 @@ struct HttpServer::Impl {
       } else if (p == "/api/lock") {
         rq.cmd = "lock";
         rq.keys = {"item"};
+      } else if (p == "/api/trace") {
+        rq.cmd = "trace";
+        rq.keys = {"action", "text", "file"};
       } else {
         rq.cmd = "unlock";
         rq.keys = {"addr"};
@@ -450,6 +487,23 @@ struct HttpServer::Impl {
     if (p == "/api/model") return defer(c, rq, Job{Job::Model, c, {}, {}});
     if (p == "/api/edit") return defer(c, rq, Job{Job::Edit, c, {}, {}, "", rq.client});
     if (p == "/api/locks") return defer(c, rq, Job{Job::Locks, c, {{"cmd", "locks"}}, {}});
+    if (p == "/api/trace") {
+      // ?have=ID: the id of the capture the page holds; the rows are sent only when newer.
+      json q{{"cmd", "trace"}, {"action", "capture"}};
+      if (const char *hv = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "have")) {
+        char *end = nullptr;
+        errno = 0;
+        const unsigned long long id = std::strtoull(hv, &end, 10);
+        if (!*hv || *end || errno || hv[0] == '-') {
+          rq.answered = true;
+          responding(c);
+          return queue(c, error(400, "have must be a capture id (a decimal number), got '" +
+                                         clientText(hv) + "'"));
+        }
+        q["have"] = static_cast<uint64_t>(id);
+      }
+      return defer(c, rq, Job{Job::Locks, c, std::move(q), {}});
+    }
     return openStream(c, rq);
   }
 
@@ -498,6 +552,17 @@ struct HttpServer::Impl {
                        rq.method + " " + rq.path + " (" + std::to_string(rq.body.size()) +
                            " bytes) from " + rq.client,
                        rq.edit, rq.client});
+    if (rq.cmd == "trace") {
+      // The page drives the trace; GET /api/trace reads it (status, capture).
+      static const std::set<std::string> kTrace = {"define", "arm", "trigger", "stop"};
+      const auto a = b.find("action");
+      if (a == b.end() || !a->is_string() || !kTrace.count(a->get<std::string>())) {
+        rq.answered = true;
+        responding(c);
+        return queue(c, error(400, "POST /api/trace needs \"action\": define (with \"text\"), "
+                                   "arm, trigger or stop; GET /api/trace reads the status"));
+      }
+    }
     json r{{"cmd", rq.cmd}};
     for (const auto &[k, v] : b.items()) {
       if (std::find(rq.keys.begin(), rq.keys.end(), k) == rq.keys.end()) {
@@ -555,9 +620,33 @@ struct HttpServer::Impl {
           case Job::Model:
             r.body = jsonText(be.model());
             break;
-          case Job::Locks:
-            r.body = jsonText(be.command(j.req));
+          case Job::Locks: {
+            json ans = be.command(j.req);
+            if (j.req.value("cmd", std::string()) == "trace") {
+              ans["read_only"] = cfg.readOnly; // the panel shows what it may do
+              if (!ans.value("ok", false)) r.status = 400;
+            }
+            r.body = jsonText(ans);
             break;
+          }
+          case Job::Asset: {
+            // A regular file of at most 4 MiB (dygraph.min.js is about 120 KiB).
+            const std::string path = cfg.dygraphsDir + "/" + j.client;
+            std::string text;
+            if (!readSmallFile(path, size_t{4} << 20, text)) {
+              r.status = MHD_HTTP_NOT_FOUND;
+              r.type = "text/plain; charset=utf-8";
+              r.body = "dygraphs is not installed: cannot read " + path +
+                       " (Debian package libjs-dygraphs; scripts/setup.sh installs it). The "
+                       "trace panel needs it to plot.\n";
+              break;
+            }
+            r.type = j.client.size() > 3 && j.client.substr(j.client.size() - 3) == ".js"
+                         ? "text/javascript; charset=utf-8"
+                         : "text/css; charset=utf-8";
+            r.body = std::move(text);
+            break;
+          }
           case Job::Edit: {
             auto [status, ans] = be.edit(j.action, j.req, j.client);
             if (!j.action.empty())

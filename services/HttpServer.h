@@ -1,7 +1,8 @@
 // The live ladder view's HTTP server for `ladderjit serve --http` (docs/serve.md "Live view",
 // docs/security.md "The live view's HTTP port"): libmicrohttpd (Debian libmicrohttpd-dev) with
-// the page, the model, a Server-Sent Events stream of trace snapshots, and POST commands (force,
-// lock, unlock). Every request needs the token and a Host of this server; what a client may make
+// the page, the model, a Server-Sent Events stream of trace snapshots, POST commands (force,
+// lock, unlock), the signal trace (GET / POST /api/trace) and Debian's dygraphs for the trace
+// panel. Every request needs the token and a Host of this server; what a client may make
 // the server hold (header bytes, body bytes, connections, streams, time) is bounded before it is
 // read. It only calls the backend's functions; it never touches the scan thread.
 #pragma once
@@ -51,6 +52,9 @@ struct HttpConfig {
   std::vector<std::string> hosts;
   std::string tokenFile; ///< named in the 401 answer (where the token is)
   bool readOnly = false;
+  /// Where GET /dygraph.min.js and /dygraph.min.css are read from, at each request (the trace
+  /// panel's charting library, Debian's libjs-dygraphs; docs/trace.md "Page"). Missing: 404.
+  std::string dygraphsDir = "/usr/share/javascript/dygraphs";
   int maxStreams = 32;                 ///< SSE streams at once; more get 503 (and are closed)
   int maxStreamsPerClient = 20;        ///< SSE streams of one client address at once
   int maxConnections = 256;            ///< open TCP connections; more are closed at once

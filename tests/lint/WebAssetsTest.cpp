@@ -44,5 +44,7 @@ int main(int argc, char **argv) {
   bad += compare(web + "live.css", lj::ladder::liveCss());
   bad += compare(web + "editor.js", lj::ladder::editorScript());
   bad += compare(web + "editor.css", lj::ladder::editorCss());
+  bad += compare(web + "trace.js", lj::ladder::traceScript());
+  bad += compare(web + "trace.css", lj::ladder::traceCss());
   return bad ? 1 : 0;
 }
