@@ -102,7 +102,8 @@ std::string where(const Outcome &o) {
 
 } // namespace
 
-FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate) {
+FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate,
+                  const std::function<void(bool)> &minimizing) {
   if (opts.classicladder) return runClp(opts, out, candidate);
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -170,8 +171,10 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
     if (o.kind == Outcome::Kind::Mismatch) out << ' ' << where(o);
     out << "\n  " << o.detail << "\n";
     if (opts.minimize && o.kind != Outcome::Kind::NotVerified) {
+      if (minimizing) minimizing(true);
       Case m = minimize(c, o.kind, candidate, opts.minimizeBudget);
       Outcome mo = runCase(m, candidate);
+      if (minimizing) minimizing(false);
       out << "minimized " << c.lines.size() << " -> " << m.lines.size() << " statements, "
           << c.stim.ticks() << " -> " << m.stim.ticks() << " ticks; " << kindName(mo.kind)
           << (mo.kind == Outcome::Kind::Mismatch ? " " + where(mo) : "")
@@ -209,17 +212,26 @@ FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactor
 uint64_t run(const FuzzOptions &opts, std::ostream &out) {
   if (opts.roundTrip) {
     out << (opts.fanuc || opts.iec
-                ? "round trip: each program's networks -> JSON -> networks must hold exactly its "
-                  "statements (a FANUC / IEC JSON is read back through its program text)\n"
+                ? "round trip: interpreter on each program against the interpreter on its "
+                  "round trip (program -> networks -> JSON -> networks -> program text in the "
+                  "dialect -> front end), whose networks must hold the same statements\n"
                 : "round trip: interpreter on each program against the interpreter on its ladder "
                   "round trip (STL -> networks -> JSON -> networks -> STL)\n");
     auto counts = std::make_shared<ladder::RungCounts>();
-    FuzzStats st = runWith(opts, out, roundTripFactory(counts));
+    ladder::RungCounts saved;
+    FuzzStats st = runWith(opts, out, roundTripFactory(counts), [&](bool start) {
+      if (start)
+        saved = *counts; // the minimizer's runs are not programs of the campaign
+      else
+        *counts = saved;
+    });
     out << "round trip rungs: ladder " << counts->ladder << ", stl " << counts->stl << ", marker "
         << counts->marker << "\n";
-    if (counts->printed + counts->unprinted > 0)
-      out << "round trip printed in the dialect: " << counts->printed << " programs, "
-          << counts->unprinted << " with a statement that has no text form of its own\n";
+    if (opts.fanuc || opts.iec)
+      out << "round trip: printed " << counts->printed << " of " << st.programs
+          << " programs in the dialect (program text -> front end -> verified -> interpreter); "
+          << counts->asWritten << " of their " << counts->statements
+          << " statements printed as the instruction they were made from was written\n";
     return st.failures();
   }
   if (opts.switches)

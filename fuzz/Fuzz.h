@@ -86,6 +86,9 @@ EngineFactory jitFactory();
 uint64_t run(const FuzzOptions &opts, std::ostream &out);
 
 /// The campaign against any engine (tests inject faulty engines to check the harness).
-FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate);
+/// `minimizing`, if set, is called with true before a failing program is minimized and with
+/// false after (the round trip leaves the minimizer's runs out of its counts).
+FuzzStats runWith(const FuzzOptions &opts, std::ostream &out, const EngineFactory &candidate,
+                  const std::function<void(bool)> &minimizing = nullptr);
 
 } // namespace lj::fuzz

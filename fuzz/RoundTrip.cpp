@@ -2,7 +2,9 @@
 // text, networks again, program text of its dialect (HNC-8 STL, FANUC mnemonics, IEC IL: every
 // rung printed), verified anew and run on the interpreter, as the engine under test against the
 // interpreter on the original (program -> networks -> program). The networks of the new program
-// must hold the statements of the networks it was printed from (networks -> program -> networks).
+// must hold the statements of the networks it was printed from, and the same instructions
+// recorded as written (networks -> program -> networks). No fallback: a program that cannot be
+// printed is an error.
 #include "fuzz/RoundTrip.h"
 
 #include "ladder/Json.h"
@@ -26,6 +28,23 @@ private:
   std::unique_ptr<Engine> inner_;
 };
 
+/// Whether `a` and `b` record the same instructions as written (ladder::Element::role and
+/// written) on the same statements.
+bool sameWritten(const ladder::Networks &a, const ladder::Networks &b, std::string &error) {
+  std::vector<ladder::Element> x, y;
+  std::vector<std::string> where;
+  if (!ladder::toStatements(a, x, error, &where) || !ladder::toStatements(b, y, error))
+    return false;
+  for (size_t i = 0; i < x.size() && i < y.size(); ++i)
+    if (x[i].role != y[i].role || x[i].written != y[i].written) {
+      error = where[i] + ": written as '" + x[i].written + "', read back as '" + y[i].written +
+              "' (roles " + std::to_string(static_cast<int>(x[i].role)) + ", " +
+              std::to_string(static_cast<int>(y[i].role)) + ")";
+      return false;
+    }
+  return true;
+}
+
 } // namespace
 
 EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
@@ -42,8 +61,10 @@ EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
     const std::string dialect = prog.dialect ? prog.dialect->name : "hnc8";
     if (dialect != "hnc8") {
       // A FANUC / IEC JSON: networks -> JSON -> networks hold exactly this program's
-      // statements; then every rung printed in the dialect (ladder::programText) and read by
-      // the dialect's front end is the twin (docs/ladder-json.md "Other dialects").
+      // statements; then every rung printed in the dialect (ladder::programText; an instruction
+      // the front end recorded as written printed as written) and read by the dialect's front
+      // end is the twin (docs/ladder-json.md "Other dialects"). A program that cannot be printed,
+      // or whose text does not verify or reads back as other statements, is an error.
       ladder::Networks back;
       if (!ladder::readJson(json, back, error, *prog.dialect) ||
           !ladder::sameStatementsAs(back, nets, error)) {
@@ -52,16 +73,8 @@ EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
       }
       std::string text;
       if (!ladder::programText(back, prog, "", text, error, true)) {
-        // A statement the front end made on its own (no text form): the networks -> JSON ->
-        // networks check above is what holds; the twin is the program itself.
-        if (error.find("no FANUC mnemonic form") == std::string::npos &&
-            error.find("has no IL form") == std::string::npos) {
-          error = "round trip: " + error;
-          return nullptr;
-        }
-        if (counts) ++counts->unprinted;
-        error.clear();
-        return std::make_unique<OwningEngine>(std::make_unique<VerifiedProgram>(prog));
+        error = "round trip: networks -> program text: " + error;
+        return nullptr;
       }
       if (dialect == "fanuc") text += "END\n"; // the source's last line, not a statement
       Diagnostics diags("roundtrip");
@@ -70,17 +83,25 @@ EngineFactory roundTripFactory(std::shared_ptr<ladder::RungCounts> counts) {
       std::optional<VerifiedProgram> twin =
           dialect == "fanuc" ? pipeline::compilePmc(text, "roundtrip.pmc", vo, diags, nullptr)
                              : pipeline::compileIl(text, "roundtrip.il", vo, diags);
-      // Known gaps of the printers (docs/ladder-json.md "Other dialects"): a FANUC functional
-      // instruction whose written parameters differ from its IR operands, an IL expansion's
-      // scratch bits. The front end refuses such text, or it reads back as other statements
-      // (refused for an edited JSON too), so it never runs; counted, the twin is the program.
-      if (!twin || diags.hasErrors() ||
-          !ladder::sameStatementsAs(back, ladder::fromProgram(*twin), error, false)) {
-        if (counts) ++counts->unprinted;
-        error.clear();
-        return std::make_unique<OwningEngine>(std::make_unique<VerifiedProgram>(prog));
+      if (!twin || diags.hasErrors()) {
+        error = "round trip: the printed program text does not verify:\n" + diags.render() +
+                "--- printed program text ---\n" + text;
+        return nullptr;
       }
-      if (counts) ++counts->printed;
+      // networks -> program -> networks: the twin's networks hold the statements they were
+      // printed from, with the same instructions recorded as written.
+      const ladder::Networks again = ladder::fromProgram(*twin);
+      if (!ladder::sameStatementsAs(back, again, error, false) ||
+          !sameWritten(back, again, error)) {
+        error = "round trip: the printed program text reads back as other statements: " + error +
+                "\n--- printed program text ---\n" + text;
+        return nullptr;
+      }
+      if (counts) {
+        ++counts->printed;
+        counts->statements += static_cast<int64_t>(prog.stmts.size());
+        for (const WrittenInstr &w : prog.written) counts->asWritten += w.count;
+      }
       return std::make_unique<OwningEngine>(std::make_unique<VerifiedProgram>(std::move(*twin)));
     }
     ladder::StlFromJson src;

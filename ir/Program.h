@@ -65,6 +65,27 @@ struct Comment {
   std::string text;
 };
 
+/// A statement's part in an instruction the front end records as written (WrittenInstr).
+enum class WrittenRole : uint8_t {
+  None,  ///< printed from the statement itself
+  First, ///< the first statement of a written instruction: printed as its written text
+  Part,  ///< a later statement of one: printed by the first's text, nothing of its own
+};
+
+/// One instruction (or a run of source lines) as the user wrote it, where the dialect's printer
+/// could not give the same statements back from the statements alone: an expansion the front end
+/// made (FANUC CS/CM/CE, CALLU's (ON), IL N / XOR / END with their scratch bits, a BLK block),
+/// or a FANUC functional instruction whose written parameters differ from its IR operands (DEC,
+/// GTB, MOVE...). Statements [first, first + count) came from `text` (its lines, no comments;
+/// several lines joined by '\n'; empty: the front end makes them on its own, such as IL block
+/// presets). Networks carry it so that networks -> program text prints it back
+/// (docs/ladder-json.md "Other dialects"). Not read by the engines.
+struct WrittenInstr {
+  int32_t first = 0;
+  int32_t count = 0;
+  std::string text;
+};
+
 /// One statement of a network as text, for DialectText::printStmts: the operation (which fixes
 /// the stack behaviour), the word it is written with (`instr`, empty: the dialect's spelling of
 /// `op`), its operands as written (a symbol's name where one was used) and its comments.
@@ -76,6 +97,10 @@ struct StmtText {
   std::vector<std::string> before; ///< comment lines before it
   std::string comment;             ///< trailing comment
   bool hasComment = false;
+  /// First: print `written` (WrittenInstr::text) instead of this statement and the Part ones
+  /// after it; Part: printed by the First before it.
+  WrittenRole role = WrittenRole::None;
+  std::string written;
 };
 
 /// How the core words an operation or an operand in a message: in the dialect the program was
@@ -131,9 +156,10 @@ struct ParsedProgram {
   const DialectText *dialect = nullptr;   ///< the front end that read it
   const TargetProfile *profile = nullptr; ///< the target it was written for (set by the front end)
   std::vector<Stmt> stmts;
-  std::vector<DroppedStmt> dropped; ///< in source order (`before` non-decreasing)
-  std::vector<Comment> comments;    ///< in source order
-  std::vector<Symbol> symbols;      ///< the symbol table the program was parsed with
+  std::vector<DroppedStmt> dropped;  ///< in source order (`before` non-decreasing)
+  std::vector<Comment> comments;     ///< in source order
+  std::vector<Symbol> symbols;       ///< the symbol table the program was parsed with
+  std::vector<WrittenInstr> written; ///< by `first`, disjoint (WrittenInstr)
 };
 
 /// A half-open range of statement indices [begin, end).
@@ -199,8 +225,9 @@ struct VerifiedProgram {
   int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
   int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)
   int32_t maxMsDepth = 0;
-  std::vector<Comment> comments; ///< as parsed
-  std::vector<Symbol> symbols;   ///< as parsed (Operand::symbol indexes it)
+  std::vector<Comment> comments;     ///< as parsed
+  std::vector<Symbol> symbols;       ///< as parsed (Operand::symbol indexes it)
+  std::vector<WrittenInstr> written; ///< as parsed
   /// Every statement in exactly one rung, in order (Rungs.cpp). A slice boundary is always a
   /// rung boundary.
   std::vector<RungRange> rungs;

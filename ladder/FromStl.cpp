@@ -375,6 +375,12 @@ Networks fromProgram(const VerifiedProgram &prog) {
   std::vector<Element> elems;
   elems.reserve(prog.stmts.size());
   for (int32_t i = 0; i < n; ++i) elems.push_back(elementOf(prog, i));
+  for (const WrittenInstr &w : prog.written) {
+    if (w.count <= 0 || w.first < 0 || w.first + w.count > n) continue;
+    for (int32_t i = w.first; i < w.first + w.count; ++i)
+      elems[static_cast<size_t>(i)].role = i == w.first ? WrittenRole::First : WrittenRole::Part;
+    elems[static_cast<size_t>(w.first)].written = w.text;
+  }
   // Comments: the block before a rung's first statement is the rung comment; others stay with
   // their statement.
   // A comment line holds no line break (the JSON and text forms are line based): a lone CR in a

@@ -42,6 +42,16 @@ json elemJson(const Element &e, bool withInstr, const DialectText *d) {
   j["operands"] = ops;
   if (e.hasComment) j["comment"] = e.comment;
   if (!e.before.empty()) j["before"] = e.before;
+  if (e.role == WrittenRole::First) { // its lines (none: text the front end makes itself)
+    json lines = json::array();
+    for (size_t p = 0; p < e.written.size();) {
+      size_t nl = std::min(e.written.find('\n', p), e.written.size());
+      lines.push_back(e.written.substr(p, nl - p));
+      p = nl + 1;
+    }
+    j["written"] = lines;
+  }
+  if (e.role == WrittenRole::Part) j["in_written"] = true;
   return j;
 }
 
@@ -202,6 +212,9 @@ public:
           return false;
         e.operands.push_back(text);
         e.symbols.push_back(sym);
+        // An operand the front end implies (a FANUC timer's time unit): as fromProgram marks it.
+        if (needInstr && d_ && d_->implied && i < 32 && d_->implied(e.op, static_cast<int>(i)))
+          e.implied |= 1u << i;
       }
     }
     if (e.drawn.size() > 1 && e.drawn.back() == ':' && e.operands.size() == 1) {
@@ -211,6 +224,20 @@ public:
     if (j.contains("comment")) {
       e.hasComment = true;
       if (!str(j, "comment", path, e.comment)) return false;
+    }
+    if (j.contains("written")) {
+      std::vector<std::string> lines;
+      if (!strings(j, "written", path, lines)) return false;
+      e.role = WrittenRole::First;
+      for (size_t k = 0; k < lines.size(); ++k) e.written += (k ? "\n" : "") + lines[k];
+    }
+    if (auto w = j.find("in_written"); w != j.end()) {
+      if (!w->is_boolean()) return fail(path + ".in_written", "expected true or false");
+      if (w->get<bool>()) {
+        if (e.role == WrittenRole::First)
+          return fail(path, "\"written\" and \"in_written\" on one statement");
+        e.role = WrittenRole::Part;
+      }
     }
     return strings(j, "before", path, e.before);
   }

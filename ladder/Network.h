@@ -29,6 +29,11 @@ struct Element {
   /// Bit k: operand k is implied by the front end, not in the source (DialectText::implied);
   /// drawings leave it out, the JSON and text forms keep it (an IL label drawn whole excepted).
   uint32_t implied = 0;
+  /// Its part in an instruction the front end recorded as written (ir/Program.h WrittenInstr):
+  /// First holds the instruction's text in `written`, which networks -> program text prints for
+  /// it and the Part statements after it (docs/ladder-json.md "written").
+  WrittenRole role = WrittenRole::None;
+  std::string written;
 };
 
 enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };
@@ -122,9 +127,12 @@ extern const char *const kFanWords[3];
 /// Counts for reports: ladder / stl / marker rungs.
 struct RungCounts {
   int64_t ladder = 0, stl = 0, marker = 0;
-  /// fuzz --round-trip of FANUC / IEC: programs printed back in the dialect, and those with a
-  /// statement the dialect prints no text for (a front end's own expansion, e.g. a FANUC MPS).
-  int64_t printed = 0, unprinted = 0;
+  /// fuzz --round-trip of FANUC / IEC: programs printed back in the dialect and read again
+  /// (every program is: one that is not is a mismatch).
+  int64_t printed = 0;
+  /// Of their statements: how many, and how many an instruction recorded as written stands for
+  /// (ir/Program.h WrittenInstr; the rest printed by the dialect's printer from the statement).
+  int64_t statements = 0, asWritten = 0;
 };
 RungCounts countRungs(const Networks &nets);
 

@@ -15,7 +15,8 @@ namespace {
 
 bool sameElement(const Element &a, const Element &b) {
   return a.op == b.op && a.operands == b.operands && a.symbols == b.symbols && a.id == b.id &&
-         a.before == b.before && a.hasComment == b.hasComment && a.comment == b.comment;
+         a.before == b.before && a.hasComment == b.hasComment && a.comment == b.comment &&
+         a.role == b.role && a.written == b.written;
 }
 
 /// A run of whole source lines holding whole rungs: statements [begin, end) of the program,
@@ -69,6 +70,8 @@ StmtText stmtTextOf(const Element &e) {
   t.before = e.before;
   t.comment = e.comment;
   t.hasComment = e.hasComment;
+  t.role = e.role;
+  t.written = e.written;
   return t;
 }
 
@@ -182,8 +185,29 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     }
     return true;
   };
-  std::unordered_map<StmtId, size_t> posA;
+  std::unordered_map<StmtId, size_t> posA, posB;
   for (size_t i = 0; i < a.size(); ++i) posA.emplace(a[i].id, i);
+  for (size_t i = 0; i < b.size(); ++i) posB.emplace(b[i].id, i);
+  // An instruction printed as written (WrittenRole) whose statements the networks changed is
+  // printed from its statements: its text is the one they were made from.
+  for (size_t i = 0; i < a.size();) {
+    size_t e = i + 1;
+    while (e < a.size() && a[e].role == WrittenRole::Part) ++e;
+    bool same = true;
+    for (size_t k = i; k < e && same; ++k) {
+      auto it = posB.find(a[k].id);
+      const Element *m = it == posB.end() ? nullptr : &b[it->second];
+      same = m && m->op == a[k].op && m->operands == a[k].operands && m->symbols == a[k].symbols &&
+             m->role == a[k].role && m->written == a[k].written;
+    }
+    if (!same)
+      for (size_t k = i; k < e; ++k)
+        if (a[k].role != WrittenRole::None) {
+          a[k].role = WrittenRole::None;
+          a[k].written.clear();
+        }
+    i = e;
+  }
   copy(1, groups.empty() ? tailFrom : groups[0].from);
   size_t i = 0, g = printAll ? groups.size() : 0;
   while (i < a.size() || g < groups.size()) {

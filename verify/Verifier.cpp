@@ -220,6 +220,7 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   verifier::planSlices(cx);
   prog.comments = parsed.comments;
   prog.symbols = parsed.symbols;
+  prog.written = parsed.written;
   return prog;
 }
 

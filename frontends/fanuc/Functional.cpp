@@ -287,6 +287,12 @@ void selectCall(Emitter &e, Fn fn, const std::string &what, SourceLoc at,
 
 } // namespace
 
+const char *functionalName(int64_t sub) {
+  for (const FnRow &r : kRows)
+    if (r.sub == sub && sub >= 0) return r.name;
+  return nullptr;
+}
+
 void closeSelect(Emitter &e, std::string_view marker, SourceLoc at) {
   FlowRegions &rg = e.regions();
   if (rg.csLine > 0)

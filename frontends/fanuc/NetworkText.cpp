@@ -99,6 +99,29 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
   int32_t depth = 0;
   for (size_t i = 0; i < stmts.size(); ++i) {
     const StmtText &s = stmts[i];
+    if (s.role != WrittenRole::None) {
+      // An instruction as written (ir/Program.h WrittenInstr): its text stands for this
+      // statement and the Part ones after it (a Part alone: its First printed it).
+      size_t last = i;
+      while (s.role == WrittenRole::First && last + 1 < stmts.size() &&
+             stmts[last + 1].role == WrittenRole::Part)
+        ++last;
+      std::string comment;
+      bool hasComment = false;
+      for (size_t k = i; k <= last; ++k) {
+        for (const std::string &c : stmts[k].before) out += ";" + (c.empty() ? c : " " + c) + "\n";
+        if (stmts[k].hasComment) {
+          comment += (hasComment ? " " : "") + stmts[k].comment;
+          hasComment = true;
+        }
+        depth = stackEffect(instrInfo(stmts[k].op), depth).after(depth);
+      }
+      if (s.role == WrittenRole::First && !s.written.empty())
+        out += s.written + (hasComment ? " ;" + (comment.empty() ? comment : " " + comment) : "") +
+               "\n";
+      i = last;
+      continue;
+    }
     for (const std::string &c : s.before) out += ";" + (c.empty() ? c : " " + c) + "\n";
     std::string word = s.instr.empty() ? spelling(&dialectText(), s.op) : s.instr;
     switch (s.op) {

@@ -76,6 +76,8 @@ bool readAddress(std::string_view s, bool labels, Operand &out, int64_t &bit, st
 }
 } // namespace detail
 
+bool implied(Op op, int k); // below: the dialect's implied operands
+
 namespace {
 
 /// The basic instructions (reference 5) and how each changes ST.
@@ -165,8 +167,12 @@ public:
     }
     if (const Basic *b = basicNamed(head)) {
       basic(*b, toks);
+      // A WRT inside COM..COME is the IR's CommonCoil: printed back as written.
+      const int32_t n = stmtCount() - next;
+      record(next, joined(toks), n > 1 || (n == 1 && prog_.stmts.back().op != b->op));
     } else if (isMarkerName(head)) {
       marker(head, toks);
+      record(next, joined(toks), false);
     } else if (head == "SUB" || detail::isFunctionalName(head)) {
       detail::Functional f;
       f.head = toks[0];
@@ -197,9 +203,71 @@ public:
     detail::Functional f = std::move(*pending_);
     pending_.reset();
     detail::emitFunctional(*this, f);
+    std::string text(f.head.text);
+    if (!f.number.text.empty()) text += " " + std::string(f.number.text);
+    for (const Token &t : f.params) text += " " + std::string(t.text);
+    record(pendingFirst_, std::move(text), !printsAsWritten(f, pendingFirst_));
     if (pendingComment_ && static_cast<int32_t>(prog_.stmts.size()) > pendingFirst_)
       prog_.comments.push_back({f.head.loc.line, pendingFirst_, true, *pendingComment_});
     pendingComment_.reset();
+  }
+
+  /// The words of a line as written, one blank between them.
+  static std::string joined(const std::vector<Token> &toks) {
+    std::string t;
+    for (const Token &k : toks) t += (t.empty() ? "" : " ") + std::string(k.text);
+    return t;
+  }
+
+  /// Whether the statements from `first` on, of functional instruction `f`, are one statement
+  /// the dialect's printer (NetworkText.cpp) gives back as `f` is written: its name (a `SUB n`
+  /// by the name of SUB n) and its parameters as written. Otherwise the instruction is
+  /// recorded as written (ir/Program.h WrittenInstr): DEC's packed specification, GTB's
+  /// swapped operands, CALLU's (ON), CS/CM/CE's branch statements.
+  bool printsAsWritten(const detail::Functional &f, int32_t first) const {
+    if (stmtCount() - first != 1) return false;
+    std::string want(f.head.text);
+    if (!f.number.text.empty()) {
+      const std::string digits(f.number.text);
+      const char *name =
+          digits.size() <= 4 && digits.find_first_not_of("0123456789") == std::string::npos
+              ? detail::functionalName(std::stoll(digits))
+              : nullptr;
+      if (!name) return false;
+      want = name;
+    }
+    for (const Token &t : f.params) want += " " + std::string(t.text);
+    const Stmt &s = prog_.stmts[static_cast<size_t>(first)];
+    StmtText t;
+    t.op = s.op;
+    t.instr = detail::spellStatement(s);
+    for (int k = 0; k < s.operandCount; ++k) {
+      const Operand &o = s.ops[static_cast<size_t>(k)];
+      t.operands.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < prog_.symbols.size()
+                               ? prog_.symbols[static_cast<size_t>(o.symbol)].name
+                               : formatOperand(o));
+      if (implied(s.op, k)) t.implied |= 1u << k;
+    }
+    std::string out, err;
+    return detail::printStatements({&t, 1}, out, err) &&
+           detail::upper(out) == detail::upper(want) + "\n";
+  }
+
+  /// The statements from `first` on came from the instruction written `text`: recorded as
+  /// written when `need`. An instruction with no statement of its own (COME, NOP) goes with
+  /// the next one that has statements, which is then recorded as written.
+  void record(int32_t first, std::string text, bool need) {
+    const int32_t n = stmtCount() - first;
+    if (n <= 0) {
+      pendingWritten_ += (pendingWritten_.empty() ? "" : "\n") + text;
+      return;
+    }
+    if (!pendingWritten_.empty()) {
+      text = pendingWritten_ + "\n" + text;
+      pendingWritten_.clear();
+      need = true;
+    }
+    if (need) prog_.written.push_back({first, n, std::move(text)});
   }
 
   void finish(int32_t lastLine) {
@@ -525,6 +593,7 @@ private:
   bool sawEnd1_ = false, sawEnd2_ = false, afterEnd_ = false, inSub_ = false;
   std::optional<detail::Functional> pending_;
   std::optional<std::string> pendingComment_;
+  std::string pendingWritten_; ///< instructions without statements so far (record())
   int32_t pendingFirst_ = 0;
   std::map<std::pair<char, int64_t>, SourceLoc> numbers_;
   detail::FlowRegions regions_;
@@ -633,12 +702,6 @@ bool implied(Op op, int k) {
   return ((op == Op::OnDelayTimer || op == Op::OffDelayTimer) && k == 1) ||
          (op == Op::PmcCounter && k == 2);
 }
-
-namespace detail { // NetworkText.cpp: the dialect text of networks
-std::string spellStatement(const Stmt &s);
-bool lookupWord(std::string_view w, Op &op);
-bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
-} // namespace detail
 
 const DialectText &dialectText() {
   static constexpr DialectText kText{"fanuc",

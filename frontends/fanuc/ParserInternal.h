@@ -106,6 +106,17 @@ void closeSelect(Emitter &e, std::string_view marker, SourceLoc at);
 /// and it is not a CM or CE line: an error (true).
 bool insideSelect(Emitter &e, std::string_view head, int64_t sub, SourceLoc at);
 
+/// The name of the functional instruction `SUB sub` (reference 6.1), nullptr for none.
+const char *functionalName(int64_t sub);
+
+// ---- networks as mnemonic text (NetworkText.cpp) ----
+/// The instruction of `s` as a FANUC user writes it (DialectText::spellStmt).
+std::string spellStatement(const Stmt &s);
+/// The operation a mnemonic names (DialectText::lookup).
+bool lookupWord(std::string_view w, Op &op);
+/// Statements as mnemonic lines (DialectText::printStmts).
+bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+
 /// `s` in upper case.
 std::string upper(std::string_view s);
 

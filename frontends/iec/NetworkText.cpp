@@ -3,8 +3,8 @@
 // network JSON is read back with, and statements as IL lines: a chain that starts while a value
 // is live is a parenthesis (`AND(` / `OR(` by the block that closes it, `)`), a comparison block
 // is the bracketed operand of its LD / AND, an arithmetic block is `[dst := a + b]`, comments are
-// `(* ... *)`. Statements the front end makes from other IL (N, XOR, END and their scratch bits)
-// have no IL form of their own.
+// `(* ... *)`. Statements the front end makes from other IL (N, XOR, END and their scratch bits,
+// a BLK block's) are printed as the lines they were made from (ir/Program.h WrittenInstr).
 #include "frontends/iec/FrontEnd.h"
 #include "frontends/iec/Objects.h"
 #include "profiles/iec/IecProfile.h"
@@ -140,13 +140,32 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
   int32_t depth = 0;
   for (size_t i = 0; i < n; ++i) {
     const StmtText &s = stmts[i];
+    if (s.role != WrittenRole::None) {
+      // Lines as written (ir/Program.h WrittenInstr: an N / XOR / END expansion, a BLK block's
+      // lines): they stand for this statement and the Part ones after it (a Part alone: its
+      // First printed it); empty: statements the front end makes on its own (block presets).
+      size_t last = i;
+      while (s.role == WrittenRole::First && last + 1 < n &&
+             stmts[last + 1].role == WrittenRole::Part)
+        ++last;
+      std::string comments;
+      for (size_t k = i; k <= last; ++k) {
+        for (const std::string &c : stmts[k].before) out += "(* " + commentText(c) + " *)\n";
+        if (stmts[k].hasComment) comments += " (* " + commentText(stmts[k].comment) + " *)";
+        depth = stackEffect(instrInfo(stmts[k].op), depth).after(depth);
+      }
+      if (s.role == WrittenRole::First && !s.written.empty()) out += s.written + comments + "\n";
+      i = last;
+      continue;
+    }
     for (const std::string &c : s.before) out += "(* " + commentText(c) + " *)\n";
     std::string line;
     size_t last = i; // the last statement this line writes
     const Op op = s.op;
-    // What the front end adds on its own: the init part's end (IL has no init part) and the
+    // What the front end adds on its own: the init part's end (IL has no init part), a
+    // subroutine's end (at the next SRi : or the end of the text; IL's RET is a Return) and the
     // label END jumps to (after the main program). Not written; the front end adds them again.
-    if (op == Op::EndInit ||
+    if (op == Op::EndInit || op == Op::SubEnd ||
         (op == Op::Label && s.operands.size() == 1 &&
          s.operands[0] ==
              formatOperand(
@@ -154,7 +173,8 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
       depth = 0;
       continue;
     }
-    const bool nextCompare = i + 1 < n && isCompare(stmts[i + 1].op);
+    const bool nextCompare =
+        i + 1 < n && isCompare(stmts[i + 1].op) && stmts[i + 1].role == WrittenRole::None;
     if (isLoad(op)) {
       std::string head;
       if (depth == 0) {
@@ -171,8 +191,11 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
                c.operands[1] + "]";
         last = i + 1;
       } else if (op == Op::LoadTrue && i + 1 < n && depth == 0 &&
-                 (stmts[i + 1].op == Op::Jump || stmts[i + 1].op == Op::Return) && !s.hasComment &&
-                 stmts[i + 1].before.empty()) {
+                 (stmts[i + 1].op == Op::Jump ||
+                  // RET ends the sequence; LD 1 RETC leaves it open for what follows
+                  (stmts[i + 1].op == Op::Return && (i + 2 == n || isLoad(stmts[i + 2].op)))) &&
+                 !s.hasComment && stmts[i + 1].before.empty() &&
+                 stmts[i + 1].role == WrittenRole::None) {
         const StmtText &j = stmts[i + 1];
         line = j.op == Op::Jump ? "JMP " + (j.operands.empty() ? "" : j.operands[0]) : "RET";
         last = i + 1;
@@ -224,9 +247,6 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
       }
       case Op::Return:
         line = "RETC";
-        break;
-      case Op::SubEnd:
-        line = "RET";
         break;
       case Op::Call:
         if (!operand(i, 0)) return fail(i, "no subroutine");

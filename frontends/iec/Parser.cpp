@@ -27,6 +27,15 @@ void IlParser::run(std::string_view text) {
     if (nl == std::string_view::npos) break;
     pos = nl + 1;
   }
+  // Lines without statements at the end (an END_BLK after OUT_BLK) go with the last line that
+  // has statements.
+  if (!pendingWritten_.empty() && lastFirst_ < prog_.stmts.size()) {
+    if (prog_.written.empty() || prog_.written.back().first != static_cast<int32_t>(lastFirst_))
+      prog_.written.push_back({static_cast<int32_t>(lastFirst_),
+                               static_cast<int32_t>(prog_.stmts.size() - lastFirst_), lastText_});
+    prog_.written.back().text += "\n" + pendingWritten_;
+    pendingWritten_.clear();
+  }
   const SourceLoc end{lineNo, 1};
   if (inComment_) diags_.error(commentLoc_, "LJ2022", "comment '(*' is not closed by '*)'");
   blocks_.mustBeClosed(end, "the end of the program");
@@ -36,9 +45,39 @@ void IlParser::run(std::string_view text) {
   insertPresets();
 }
 
+void IlParser::record(size_t first, std::string_view code) {
+  const size_t n = prog_.stmts.size() - first;
+  while (!code.empty() && blank(code.front())) code.remove_prefix(1);
+  while (!code.empty() && blank(code.back())) code.remove_suffix(1);
+  if (n == 0) {
+    pendingWritten_ += (pendingWritten_.empty() ? "" : "\n") + std::string(code);
+    return;
+  }
+  lastFirst_ = first;
+  lastText_ = code;
+  bool need = !pendingWritten_.empty();
+  for (size_t i = first; i < prog_.stmts.size() && !need; ++i) {
+    const Stmt &s = prog_.stmts[i];
+    need = s.op == Op::IecTimer || s.op == Op::IecCounter;
+    for (int k = 0; k < s.operandCount && !need; ++k) {
+      const Operand &o = s.ops[static_cast<size_t>(k)];
+      need = o.area == Area::ExtraRelay ||
+             (s.op == Op::Jump && o.area == Area::Label && o.index == kEndLabel);
+    }
+  }
+  if (!need) return;
+  std::string text =
+      pendingWritten_.empty() ? std::string(code) : pendingWritten_ + "\n" + std::string(code);
+  pendingWritten_.clear();
+  prog_.written.push_back({static_cast<int32_t>(first), static_cast<int32_t>(n), std::move(text)});
+}
+
 void IlParser::insertPresets() {
   std::vector<Stmt> pre = blocks_.presets({1, 1});
   if (pre.empty()) return;
+  // Made from the blocks' configuration on every read: written as nothing of their own.
+  for (WrittenInstr &w : prog_.written) w.first += static_cast<int32_t>(pre.size());
+  prog_.written.insert(prog_.written.begin(), {0, static_cast<int32_t>(pre.size()), {}});
   prog_.stmts.insert(prog_.stmts.begin(), pre.begin(), pre.end());
   for (size_t i = 0; i < prog_.stmts.size(); ++i) prog_.stmts[i].id = static_cast<StmtId>(i);
   for (Comment &c : prog_.comments) c.stmt += static_cast<int32_t>(pre.size());
@@ -73,7 +112,10 @@ void IlParser::handleLine(std::string_view line, int32_t lineNo) {
   bool hasCode = false;
   for (char c : code)
     if (!blank(c)) hasCode = true;
-  if (hasCode) statement(code, lineNo);
+  if (hasCode) {
+    statement(code, lineNo);
+    record(before, code);
+  }
   if (hadComment) {
     while (!comment.empty() && blank(comment.back())) comment.pop_back();
     size_t b = 0;

@@ -13,6 +13,7 @@
 #include "ir/Program.h"
 
 #include <cctype>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -76,6 +77,12 @@ private:
   /// and comment positions move with them.
   void insertPresets();
   void handleLine(std::string_view line, int32_t lineNo);
+  /// The statements from `first` on came from the line `code` (comments blanked): recorded as
+  /// written (ir/Program.h WrittenInstr) when the IL printer could not give them back (scratch
+  /// bits of N / XOR / OPEN / SHORT / JMPCN / RETCN and the block inputs, END's jump, a block's
+  /// run). A line without statements (BLK, OUT_BLK, END_BLK, CONFIG, NOP) goes with the next line
+  /// that has statements, which is then recorded as written.
+  void record(size_t first, std::string_view code);
   void statement(const std::string &code, int32_t lineNo);
   void instruction(const std::string &mnem, std::optional<char> paren, std::string_view text,
                    SourceLoc loc, SourceLoc opLoc);
@@ -153,6 +160,9 @@ private:
   int32_t stmtCount_ = 0;
   bool inComment_ = false;
   SourceLoc commentLoc_;
+  std::string pendingWritten_;  ///< lines without statements so far (record())
+  size_t lastFirst_ = SIZE_MAX; ///< the first statement of the last line that had statements
+  std::string lastText_;        ///< that line as written
 };
 
 } // namespace lj::iec::detail

@@ -167,8 +167,9 @@ int mainImpl(int argc, char **argv) {
                   "too (ir/Trace.h, the live ladder view)");
   cFuzz->add_flag("--round-trip", fz.roundTrip,
                   "each program against its ladder round trip (STL -> networks -> JSON -> STL), "
-                  "on the interpreter; fanuc / iec: networks -> JSON -> networks must hold the "
-                  "program's statements");
+                  "on the interpreter; fanuc / iec: program -> networks -> JSON -> networks -> "
+                  "program text in the dialect -> front end, whose networks must hold the same "
+                  "statements (every program printed)");
   cFuzz->add_flag("--switch", fz.switches,
                   "switch engines (interp, JIT fast, JIT optimizing) at random ticks on one "
                   "state, against an unswitched interpreter run (docs/serve.md \"Tiering\")");
