@@ -638,6 +638,7 @@ namespace detail { // NetworkText.cpp: the dialect text of networks
 std::string spellStatement(const Stmt &s);
 bool lookupWord(std::string_view w, Op &op);
 bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+bool drawStatements(std::span<const Stmt> stmts, size_t i, DrawnInstr &out);
 } // namespace detail
 
 const DialectText &dialectText() {
@@ -648,7 +649,8 @@ const DialectText &dialectText() {
                                      &detail::spellStatement,
                                      &detail::lookupWord,
                                      &detail::printStatements,
-                                     &symbolRules};
+                                     &symbolRules,
+                                     &detail::drawStatements};
   return kText;
 }
 
