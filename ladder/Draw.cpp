@@ -326,8 +326,11 @@ std::string scriptSafe(const std::string &data) {
 }
 
 std::string tabOf(const PartLayout &p, size_t i) {
+  // The rungs drawn: a hidden one (only what the front end added) is not counted.
+  const auto drawn = std::count_if(p.rungs.begin(), p.rungs.end(),
+                                   [](const RungLayout &r) { return r.kind != "hidden"; });
   return "<button class=\"tab\" data-for=\"part-" + n(static_cast<int>(i)) + "\">" + esc(p.name) +
-         " <small>(" + n(static_cast<int>(p.rungs.size())) + ")</small></button>";
+         " <small>(" + n(static_cast<int>(drawn)) + ")</small></button>";
 }
 
 /// The page around the parts: header, tabs, the sections, the layout JSON, the tab script.
