@@ -103,6 +103,35 @@ struct StmtText {
   std::string written;
 };
 
+/// How a drawing shows an instruction as its user wrote it where the front end made it into
+/// other statements (docs/ladder-view.md "Dialects"; DialectText::drawStmts).
+enum class DrawAs : uint8_t {
+  Plain,   ///< the statement's own element (no written form of its own)
+  Hidden,  ///< a statement the front end added on its own (a label END jumps to): drawn by nothing
+  Contact, ///< a contact-like element in a series, labelled as written (`XOR %M2`, `N`)
+  Compare, ///< a comparison contact with its expression as written (`%MW0 > 5`)
+  Operate, ///< an operation block with its expression as written (`%MW1 := %MW1 + 1`)
+  Jump,    ///< a jump to a label (`JMPC %L1`)
+  Call,    ///< a subroutine call (`SR0`)
+  End,     ///< the end of the scan (`END`, `ENDC`)
+  Return,  ///< the return of a subroutine (`RET`, `RETC`)
+  Marker,  ///< a marker rung's word as written (FANUC `JMPE`, not the label it became)
+};
+
+/// One written instruction as the drawing shows it: the statements [i, i + count) it became, the
+/// one whose id the drawn element carries, where it sits in the network and its text.
+struct DrawnInstr {
+  DrawAs as = DrawAs::Plain;
+  int32_t count = 1; ///< statements from i the instruction became (>= 1)
+  int32_t main = 0;  ///< offset from i of the statement whose id the element carries
+  /// Its place in the network, as one statement of this operation would have it: Load starts a
+  /// series, And / Or continue it in series / in parallel, Jump ends it (an output).
+  Op op = Op::LoadTrue;
+  bool fromRail = false; ///< an output without a condition (END, JMP, RET): drawn from the rail
+  std::string text;      ///< as written, operands included (`XOR %M2`, `%MW0 > 5`, `ENDC`)
+  std::string operand;   ///< its bit or label operand as written (`%M2`, `%L1`), or empty
+};
+
 /// How the core words an operation or an operand in a message: in the dialect the program was
 /// written in. Set by the front end (frontends/hnc8/Mnemonics.cpp: hnc8::dialectText()).
 struct DialectText {
@@ -131,6 +160,15 @@ struct DialectText {
   /// What this dialect's symbol table accepts (ir/SymbolTable.h): how a ladder JSON's symbols
   /// are read back. nullptr: the dialect has no symbol table.
   const SymbolRules &(*symbolRules)() = nullptr;
+  /// The instruction written at statement `i` of `stmts` (a part of a program, in order) where
+  /// the drawing shows it other than as the statements' own elements: the statements the front
+  /// end made of one written instruction (IL `XOR`, `END`, `RET`, `[%MW0 > 5]`) or added on its
+  /// own. False: statement `i` is drawn as itself. nullptr: every statement is.
+  bool (*drawStmts)(std::span<const Stmt> stmts, size_t i, DrawnInstr &out) = nullptr;
+  /// A comment as the dialect writes it, for drawings: opening and closing (IL `(*`, `*)`).
+  /// nullptr: `;` to the end of the line (HNC-8, FANUC).
+  const char *commentOpen = nullptr;
+  const char *commentClose = nullptr;
 };
 
 /// Whether dialect `d` spells `op`.

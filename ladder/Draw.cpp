@@ -57,6 +57,7 @@ class Svg {
 public:
   std::string out;
   int width = 0;
+  std::string commentOpen = ";", commentClose; ///< the dialect's (Layout::commentOpen)
 
   void line(int x1, int y1, int x2, int y2, const char *cls = nullptr) {
     out += "<line x1=\"" + n(x1) + "\" y1=\"" + n(y1) + "\" x2=\"" + n(x2) + "\" y2=\"" + n(y2) +
@@ -124,9 +125,42 @@ public:
       int ly = top + 4 + c.row * kStlRH;
       out += "<rect class=\"stl\" x=\"" + n(x + 6) + "\" y=\"" + n(ly) + "\" width=\"" + n(w - 12) +
              "\" height=\"" + n(kStlRH) + "\"/>";
-      text(x + 14, ly + 14, c.text + (c.comment.empty() ? "" : "  ; " + c.comment), "code",
-           "start");
-    } else if (c.kind == "marker") {
+      text(x + 14, ly + 14,
+           c.text +
+               (c.comment.empty() ? "" : "  " + commentLine(commentOpen, commentClose, c.comment)),
+           "code", "start");
+    } else if (c.kind == "compare" || c.kind == "operate") {
+      // A comparison contact / an operation block (modicon-neza.md 9 rule 7): a block with the
+      // expression as written, 2 / 4 cells wide; wires on both sides.
+      int bt = top + c.row * kRH + 16, bh = kRH - 32;
+      line(x, y, x + 6, y, "w");
+      line(x + w - 6, y, x + w, y, "w");
+      out += "<rect class=\"box\" x=\"" + n(x + 6) + "\" y=\"" + n(bt) + "\" width=\"" + n(w - 12) +
+             "\" height=\"" + n(bh) + "\"/>";
+      text(mx, y + 4, c.text, "code");
+      if (!c.symbol.empty()) text(mx, y + 27, c.symbol, "symb");
+    } else if (c.kind == "jump" || c.kind == "call" || c.kind == "end" || c.kind == "return") {
+      // An action at the right rail: a wire into a tag with its mark (`>>` for a jump as the Neza
+      // ladder draws `>>%L6`), the instruction as written above it.
+      line(x, y, mx - 22, y, "w");
+      out += "<path class=\"sym\" d=\"M" + n(mx - 22) + "," + n(y - 10) + " L" + n(mx + 14) + "," +
+             n(y - 10) + " L" + n(mx + 24) + "," + n(y) + " L" + n(mx + 14) + "," + n(y + 10) +
+             " L" + n(mx - 22) + "," + n(y + 10) + " Z\"/>";
+      const char *mark = c.kind == "jump"   ? ">>"
+                         : c.kind == "call" ? "()"
+                         : c.kind == "end"  ? "END"
+                                            : "RET";
+      text(mx, y + 4, mark, "mark");
+      text(mx, y - 15, c.text, "addr");
+    } else if (c.kind == "contact-instr") {
+      // A contact-like element labelled with the instruction as written (`XOR %M2`, `N`).
+      line(x, y, mx - 10, y, "w");
+      line(mx + 10, y, x + w, y, "w");
+      line(mx - 10, y - 12, mx - 10, y + 12, "sym");
+      line(mx + 10, y - 12, mx + 10, y + 12, "sym");
+      text(mx, y - 17, c.text, "addr");
+      if (!c.symbol.empty()) text(mx, y + 27, c.symbol, "symb");
+    } else { // a marker, and any kind this renderer does not know: its text
       text(x + w / 2, y + 5, c.text, "mn");
     }
     out += "</g>";
@@ -140,10 +174,11 @@ public:
         "<g class=\"rung\" data-part=\"" + esc(partName) + "\" data-rung=\"" + n(r.number) + "\">";
     for (const std::string &c : r.comment) {
       y += kCommentH;
-      text(kLM + 4, y - 3, "; " + c, "cm", "start");
+      text(kLM + 4, y - 3, commentLine(commentOpen, commentClose, c), "cm", "start");
     }
     int h = r.kind == "stl" ? std::max(1, r.rows) * kStlRH + 8 : std::max(1, r.rows) * kRH;
-    text(kLM - 10, r.kind == "stl" ? y + 18 : y + kRH / 2 + 5, n(r.number), "num", "end");
+    if (r.number > 0) // markers have no number
+      text(kLM - 10, r.kind == "stl" ? y + 18 : y + kRH / 2 + 5, n(r.number), "num", "end");
     if (r.kind == "ladder") {
       line(kLM, y + 4, kLM, y + h - 4, "rail");
       int rx = kLM + r.cols * kCW;
@@ -163,7 +198,8 @@ public:
       text(8, y + 20, p.name, "part", "start");
       y += kTitleH;
     }
-    for (const RungLayout &r : p.rungs) y += rung(r, p.name, y) + kGap;
+    for (const RungLayout &r : p.rungs)
+      if (r.kind != "hidden") y += rung(r, p.name, y) + kGap; // hidden: nothing to draw
     return y - top;
   }
 
@@ -190,6 +226,14 @@ private:
     if (!c.symbol.empty()) text(mx, y + 27, c.symbol, "symb");
   }
 };
+
+/// A renderer with the layout's comment syntax.
+Svg svgOf(const Layout &l) {
+  Svg s;
+  s.commentOpen = l.commentOpen;
+  s.commentClose = l.commentClose;
+  return s;
+}
 
 const char *kStyle =
     ".lad line.w,.lad path.sym,.lad line.sym{stroke:#222;stroke-width:1.6;fill:none}"
@@ -233,14 +277,13 @@ std::string layoutJson(const Layout &l, bool compact) {
         if (!c.pins.empty()) jc["pins"] = c.pins;
         if (!c.comment.empty()) jc["comment"] = c.comment;
         if (c.stmt >= 0) jc["stmt"] = c.stmt;
+        if (!c.covers.empty()) jc["covers"] = c.covers;
         cells.push_back(jc);
       }
-      rungs.push_back({{"number", r.number},
-                       {"kind", r.kind},
-                       {"comment", r.comment},
-                       {"cols", r.cols},
-                       {"rows", r.rows},
-                       {"cells", cells}});
+      json rung{{"number", r.number}, {"kind", r.kind}, {"comment", r.comment},
+                {"cols", r.cols},     {"rows", r.rows}, {"cells", cells}};
+      if (!r.hidden.empty()) rung["hidden"] = r.hidden;
+      rungs.push_back(std::move(rung));
     }
     parts.push_back({{"name", p.name}, {"rungs", rungs}});
   }
@@ -249,7 +292,7 @@ std::string layoutJson(const Layout &l, bool compact) {
 }
 
 std::string renderSvg(const Layout &l) {
-  Svg s;
+  Svg s = svgOf(l);
   int y = 8;
   for (const PartLayout &p : l.parts) y += s.part(p, y, true) + kGap;
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svgDoc(s.out, std::max(s.width, 200), y) +
@@ -283,8 +326,11 @@ std::string scriptSafe(const std::string &data) {
 }
 
 std::string tabOf(const PartLayout &p, size_t i) {
+  // The rungs drawn: a hidden one (only what the front end added) is not counted.
+  const auto drawn = std::count_if(p.rungs.begin(), p.rungs.end(),
+                                   [](const RungLayout &r) { return r.kind != "hidden"; });
   return "<button class=\"tab\" data-for=\"part-" + n(static_cast<int>(i)) + "\">" + esc(p.name) +
-         " <small>(" + n(static_cast<int>(p.rungs.size())) + ")</small></button>";
+         " <small>(" + n(static_cast<int>(drawn)) + ")</small></button>";
 }
 
 /// The page around the parts: header, tabs, the sections, the layout JSON, the tab script.
@@ -332,7 +378,7 @@ std::string renderHtml(const Layout &l, const std::string &liveHead,
   std::string tabs, sections;
   for (size_t i = 0; i < l.parts.size(); ++i) {
     const PartLayout &p = l.parts[i];
-    Svg s;
+    Svg s = svgOf(l);
     int h = s.part(p, 8, false) + 8;
     tabs += tabOf(p, i);
     sections += "<section class=\"part\" id=\"part-" + n(static_cast<int>(i)) + "\" data-part=\"" +
@@ -354,7 +400,7 @@ std::string renderLazyHtml(const Layout &l, const std::string &liveHead,
                 esc(p.name) + "\">";
     json part = json::array();
     for (size_t k = 0; k < p.rungs.size(); ++k) {
-      Svg s;
+      Svg s = svgOf(l);
       int h = s.rung(p.rungs[k], p.name, 0);
       int w = std::max(s.width, 200);
       std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"lad\" width=\"" + n(w) +

@@ -76,8 +76,17 @@ public:
 
   /// The network of statements [r.begin, r.end) with their elements, or false.
   bool build(StmtRange r, const std::vector<Element> &elems, Node &out) {
+    std::vector<char> in;
     for (int32_t i = r.begin; i < r.end; ++i)
-      if (!step(i, elems[static_cast<size_t>(i - r.begin)])) return false;
+      in.push_back(p_.info[static_cast<size_t>(i)].hasInput);
+    return build(elems, in, out);
+  }
+
+  /// The network of elements in order (each with the operation it stands for; `hasInput`:
+  /// whether a block of them reads ST0), or false.
+  bool build(const std::vector<Element> &elems, const std::vector<char> &hasInput, Node &out) {
+    for (size_t i = 0; i < elems.size(); ++i)
+      if (!step(elems[i], hasInput[i] != 0)) return false;
     if (!ms_.empty()) return false;
     if (st_.empty()) {
       if (!zeroDepth_) return false;
@@ -146,12 +155,11 @@ private:
     return true;
   }
 
-  bool step(int32_t i, const Element &el) {
-    const Stmt &s = p_.stmts[static_cast<size_t>(i)];
-    const InstrInfo &ii = instrInfo(s.op);
+  bool step(const Element &el, bool hasInput) {
+    const InstrInfo &ii = instrInfo(el.op);
     switch (ii.stack) {
     case StackRule::Push: {
-      if (isLoadContact(s.op)) {
+      if (isLoadContact(el.op)) {
         st_.push_back({series({leaf(NodeKind::Contact, el)})});
         return true;
       }
@@ -165,7 +173,7 @@ private:
       Ent &e = st_.back();
       Node c = leaf(NodeKind::Contact, el);
       c.join = Join::Inline;
-      if (!isOrForm(s.op)) {
+      if (!isOrForm(el.op)) {
         int hops = 0;
         open(e.net, hops).children.push_back(std::move(c));
         return true;
@@ -179,7 +187,7 @@ private:
       b.join = Join::Block;
       b.link = el;
       Ent &a = st_.back();
-      if (s.op == Op::AndBlock) {
+      if (el.op == Op::AndBlock) {
         int hops = 0;
         open(a.net, hops).children.push_back(std::move(b));
         return true;
@@ -217,7 +225,7 @@ private:
     case StackRule::Structural:
       return false;
     case StackRule::Block:
-      return block(i, ii, el);
+      return block(hasInput, ii, el);
     }
     return false;
   }
@@ -238,9 +246,8 @@ private:
     return true;
   }
 
-  bool block(int32_t i, const InstrInfo &ii, const Element &el) {
+  bool block(bool hasInput, const InstrInfo &ii, const Element &el) {
     Node b = leaf(NodeKind::Box, el);
-    const bool hasInput = p_.info[static_cast<size_t>(i)].hasInput;
     if (ii.inputs > 1) {
       if (st_.size() < ii.inputs) return false;
       for (size_t k = st_.size() - ii.inputs; k < st_.size(); ++k) {
@@ -363,6 +370,83 @@ std::string partOf(const VerifiedProgram &p, int32_t i) {
   return "PLC1";
 }
 
+/// The rung of `rr` as its user wrote it (Rung::drawing), where the dialect draws an instruction
+/// of it otherwise than as the statements the front end made of it (DialectText::drawStmts):
+/// those statements become one element with the written form and the operation it stands for,
+/// the ones the front end added on its own are left out. Nothing is set when every statement
+/// is drawn as itself. For drawings only: no statement is read back from it.
+void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vector<Element> &mine,
+                 Rung &rung) {
+  if (!p.dialect || !p.dialect->drawStmts) return;
+  const StmtRange r = rr.range;
+  const std::span<const Stmt> part(p.stmts.data() + r.begin, static_cast<size_t>(r.end - r.begin));
+  Rung::Drawing dr;
+  std::vector<Element> drawn;
+  std::vector<char> in;
+  bool changed = false;
+  for (size_t i = 0; i < part.size();) {
+    DrawnInstr w;
+    if (!p.dialect->drawStmts(part, i, w) || w.as == DrawAs::Plain) {
+      drawn.push_back(mine[i]);
+      in.push_back(p.info[static_cast<size_t>(r.begin) + i].hasInput);
+      ++i;
+      continue;
+    }
+    changed = true;
+    const size_t n =
+        std::clamp<size_t>(static_cast<size_t>(std::max(w.count, 1)), 1, part.size() - i);
+    if (w.as == DrawAs::Hidden) {
+      for (size_t k = 0; k < n; ++k) dr.hidden.push_back(mine[i + k].id);
+      i += n;
+      continue;
+    }
+    const size_t m = std::min(static_cast<size_t>(std::max(w.main, 0)), n - 1);
+    Element e = mine[i + m];
+    e.op = w.op;
+    e.form = w.as;
+    e.drawn = w.text;
+    e.drawnWhole = true;
+    e.implied = 0;
+    e.operands.clear();
+    e.symbols.clear();
+    e.before = mine[i].before;
+    e.comment.clear();
+    e.hasComment = false;
+    if (!w.operand.empty()) {
+      e.operands.push_back(w.operand);
+      e.symbols.emplace_back();
+    }
+    for (size_t k = i; k < i + n; ++k) {
+      const Element &g = mine[k];
+      if (k != i + m) e.covers.push_back(g.id);
+      if (k != i) e.before.insert(e.before.end(), g.before.begin(), g.before.end());
+      if (g.hasComment) {
+        e.comment += (e.hasComment ? " " : "") + g.comment;
+        e.hasComment = true;
+      }
+      if (!e.operands.empty() && !g.operands.empty() && g.operands[0] == e.operands[0] &&
+          !g.symbols.empty() && !g.symbols[0].empty())
+        e.symbols[0] = g.symbols[0];
+    }
+    drawn.push_back(std::move(e));
+    in.push_back(w.fromRail ? 0 : 1);
+    i += n;
+  }
+  if (!changed) return;
+  Node net;
+  if (rr.kind == RungRange::Kind::Marker || drawn.empty()) {
+    dr.kind = Rung::Kind::Marker;
+    dr.stmts = std::move(drawn);
+  } else if (Builder(p).build(drawn, in, net)) {
+    dr.kind = Rung::Kind::Ladder;
+    dr.network = std::move(net);
+  } else {
+    dr.kind = Rung::Kind::Stl;
+    dr.stmts = std::move(drawn);
+  }
+  rung.drawing.push_back(std::move(dr));
+}
+
 } // namespace
 
 Networks fromProgram(const VerifiedProgram &prog) {
@@ -410,6 +494,7 @@ Networks fromProgram(const VerifiedProgram &prog) {
     for (int32_t i = r.begin + 1; i < r.end; ++i)
       elems[static_cast<size_t>(i)].before = std::move(before[static_cast<size_t>(i)]);
     std::vector<Element> mine(elems.begin() + r.begin, elems.begin() + r.end);
+    drawWritten(prog, rr, mine, rung);
     if (rr.kind == RungRange::Kind::Marker) {
       rung.kind = Rung::Kind::Marker;
       rung.stmts = std::move(mine);

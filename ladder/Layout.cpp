@@ -12,6 +12,41 @@ namespace {
 
 constexpr int kBoxWidth = 2;
 
+/// The cell kind of an instruction drawn as written (Layout.h), or nullptr: drawn as itself.
+const char *formKind(DrawAs as) {
+  switch (as) {
+  case DrawAs::Contact:
+    return "contact-instr";
+  case DrawAs::Compare:
+    return "compare";
+  case DrawAs::Operate:
+    return "operate";
+  case DrawAs::Jump:
+    return "jump";
+  case DrawAs::Call:
+    return "call";
+  case DrawAs::End:
+    return "end";
+  case DrawAs::Return:
+    return "return";
+  case DrawAs::Plain:
+  case DrawAs::Hidden:
+  case DrawAs::Marker: // a marker rung's statement: drawn as its text
+    break;
+  }
+  return nullptr;
+}
+
+/// Cells an instruction drawn as written takes: a comparison block 1 row x 2 columns, an
+/// operation block 1 x 4, the others 1 (modicon-neza.md 9 rule 7).
+int formWidth(DrawAs as) { return as == DrawAs::Compare ? 2 : as == DrawAs::Operate ? 4 : 1; }
+
+/// Cells an output takes at the right rail.
+int outputWidth(const Node &n) {
+  if (formKind(n.elem.form)) return formWidth(n.elem.form);
+  return n.kind == NodeKind::Box ? kBoxWidth : 1;
+}
+
 class Placer {
 public:
   Placer(RungLayout &out, const std::vector<Symbol> &symbols) : out_(out), symbols_(symbols) {}
@@ -25,9 +60,12 @@ public:
     case NodeKind::Parallel:
     case NodeKind::FanOut:
       return branches(n, row, col);
-    case NodeKind::Contact:
-      add(contactCell(n, row, col));
-      return {1, 1};
+    case NodeKind::Contact: {
+      Cell c = contactCell(n, row, col);
+      const int w = c.width;
+      add(std::move(c));
+      return {w, 1};
+    }
     case NodeKind::Coil:
       outputs_.push_back({&n, row, col, {}, {}});
       return {0, 1};
@@ -39,13 +77,12 @@ public:
 
   void finish() {
     int outW = 0;
-    for (const Output &o : outputs_)
-      outW = std::max(outW, o.node->kind == NodeKind::Box ? kBoxWidth : 1);
+    for (const Output &o : outputs_) outW = std::max(outW, outputWidth(*o.node));
     int inputs = std::max(kMinInputCols, maxCol_);
     for (const Output &o : outputs_) inputs = std::max(inputs, o.col);
     out_.cols = inputs + outW;
     for (const Output &o : outputs_) {
-      int w = o.node->kind == NodeKind::Box ? kBoxWidth : 1;
+      int w = outputWidth(*o.node);
       int at = out_.cols - w;
       std::vector<int> rows = o.pins.empty() ? std::vector<int>{o.row} : o.pins;
       for (size_t i = 0; i < rows.size(); ++i) {
@@ -120,13 +157,27 @@ private:
     return c;
   }
 
+  /// An instruction drawn as written: its text as written, its bit or label operand (for the
+  /// cross-reference), the statements it stands for.
+  Cell formCell(const Element &e, int row, int col) const {
+    Cell c = elemCell(e, formKind(e.form), row, col);
+    c.text = drawnText(e);
+    c.symbol = e.operands.empty() ? std::string() : symbolOf(e, 0);
+    c.operands = e.operands;
+    c.width = formWidth(e.form);
+    c.covers = e.covers;
+    return c;
+  }
+
   Cell contactCell(const Node &n, int row, int col) const {
     static const char *const kKind[] = {"contact-no", "contact-nc", "contact-rise", "contact-fall",
                                         "contact-true"};
+    if (formKind(n.elem.form)) return formCell(n.elem, row, col);
     return elemCell(n.elem, kKind[static_cast<int>(n.contact)], row, col);
   }
 
   Cell coilCell(const Node &n, int row, int col) const {
+    if (formKind(n.elem.form)) return formCell(n.elem, row, col);
     const char *kind = n.elem.op == Op::Set       ? "set"
                        : n.elem.op == Op::Reset   ? "rst"
                        : n.elem.op == Op::CoilNot ? "coil-not"
@@ -135,12 +186,18 @@ private:
   }
 
   static int boxHeight(const Node &n, int pins) {
+    if (formKind(n.elem.form)) return std::max(1, pins);
     int lines = 1 + static_cast<int>(n.elem.operands.size()) -
                 std::popcount(n.elem.implied); // mnemonic + one line per drawn operand
     return std::max({1, pins, (lines + 2) / 3});
   }
 
   Cell boxCell(const Node &n, int row, int col, int height) const {
+    if (formKind(n.elem.form)) {
+      Cell c = formCell(n.elem, row, col);
+      c.height = height;
+      return c;
+    }
     Cell c = elemCell(n.elem, "box", row, col);
     c.text = drawnText(n.elem);
     c.symbol.clear();
@@ -233,8 +290,9 @@ private:
       if (w < inW) wire(br, col + w, inW - w);
     Cell b = boxCell(n, row, col + inW, std::max(h, boxHeight(n, pins)));
     for (auto [br, w] : bands) b.pins.push_back(br - row);
+    const int bw = b.width;
     add(b);
-    return {inW + kBoxWidth, h};
+    return {inW + bw, h};
   }
 
   RungLayout &out_;
@@ -253,41 +311,66 @@ std::string stmtLine(const Element &e) {
 
 } // namespace
 
+bool numbered(const Rung &rung) {
+  const Rung::Kind k = rung.drawing.empty() ? rung.kind : rung.drawing[0].kind;
+  return k != Rung::Kind::Marker;
+}
+
+std::string commentLine(const std::string &open, const std::string &close,
+                        const std::string &text) {
+  return open + " " + text + (close.empty() ? "" : " " + close);
+}
+
 RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &symbols) {
   RungLayout r;
   r.number = number;
   r.comment = rung.comment;
-  if (rung.kind == Rung::Kind::Ladder) {
+  // As the user wrote it where the dialect says so (Rung::drawing), else as the statements are.
+  const Rung::Drawing *d = rung.drawing.empty() ? nullptr : &rung.drawing[0];
+  const Rung::Kind kind = d ? d->kind : rung.kind;
+  const std::vector<Element> &stmts = d ? d->stmts : rung.stmts;
+  if (d) r.hidden = d->hidden;
+  if (kind == Rung::Kind::Ladder) {
     r.kind = "ladder";
     Placer p(r, symbols);
-    p.place(rung.network, 0, 0, true);
+    p.place(d ? d->network : rung.network, 0, 0, true);
     p.finish();
     return r;
   }
-  r.kind = rung.kind == Rung::Kind::Stl ? "stl" : "marker";
+  if (kind == Rung::Kind::Marker && stmts.empty()) {
+    r.kind = "hidden"; // only what the front end added on its own
+    return r;
+  }
+  r.kind = kind == Rung::Kind::Stl ? "stl" : "marker";
   r.cols = kMinInputCols + 1;
-  for (size_t i = 0; i < rung.stmts.size(); ++i) {
+  for (size_t i = 0; i < stmts.size(); ++i) {
     Cell c;
     c.kind = r.kind;
     c.row = static_cast<int>(i);
     c.width = r.cols;
-    c.text = stmtLine(rung.stmts[i]);
-    c.comment = rung.stmts[i].hasComment ? rung.stmts[i].comment : std::string();
-    c.stmt = rung.stmts[i].id;
+    c.text = stmtLine(stmts[i]);
+    c.comment = stmts[i].hasComment ? stmts[i].comment : std::string();
+    c.stmt = stmts[i].id;
+    c.covers = stmts[i].covers;
     r.cells.push_back(c);
   }
-  r.rows = static_cast<int>(rung.stmts.size());
+  r.rows = static_cast<int>(stmts.size());
   return r;
 }
 
 Layout layout(const Networks &nets) {
   Layout l;
   l.file = nets.file;
+  if (nets.text && nets.text->commentOpen) {
+    l.commentOpen = nets.text->commentOpen;
+    l.commentClose = nets.text->commentClose ? nets.text->commentClose : "";
+  }
   for (const Part &p : nets.parts) {
     PartLayout pl;
     pl.name = p.name;
-    for (size_t i = 0; i < p.rungs.size(); ++i)
-      pl.rungs.push_back(layoutRung(p.rungs[i], static_cast<int>(i + 1), nets.symbols));
+    int number = 0; // ladder and STL rungs from 1 in each part; markers have none
+    for (const Rung &rung : p.rungs)
+      pl.rungs.push_back(layoutRung(rung, numbered(rung) ? ++number : 0, nets.symbols));
     l.parts.push_back(std::move(pl));
   }
   return l;

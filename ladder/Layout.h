@@ -16,7 +16,11 @@ namespace lj::ladder {
 /// Kinds: contact-no|nc|rise|fall|true, coil, coil-not, set, rst, box, wire (horizontal, from
 /// `col` over `width` cells on `row`), vlink (vertical line on the boundary left of `col`, from
 /// the middle of `row` down `height` rows), join (an ANB: no drawing of its own), stl (one
-/// statement of a rung with no drawable form), marker (END1, SUB, RET...).
+/// statement of a rung with no drawable form), marker (END1, SUB, RET...). An instruction the
+/// front end made into other statements is drawn as written (Rung::drawing, DrawAs):
+/// contact-instr (`XOR %M2`, `N` in a series), compare (`%MW0 > 5`, 2 cells), operate
+/// (`%MW1 := %MW1 + 1`, 4 cells), jump (`JMPC %L1`), call (`SR0`), end (`ENDC`), return
+/// (`RETC`); `text` is the instruction as written.
 struct Cell {
   int row = 0, col = 0, width = 1, height = 1;
   std::string kind;
@@ -26,14 +30,21 @@ struct Cell {
   std::vector<int> pins;             ///< box with inputs: each input pin's row, from `row`
   std::string comment;               ///< the element's trailing comment
   StmtId stmt = -1;
+  /// The other statements the front end made of the instruction this cell draws as written.
+  std::vector<StmtId> covers;
 };
 
 struct RungLayout {
-  int number = 0;                   ///< 1-based within the part
-  std::string kind;                 ///< ladder | stl | marker
+  /// 1-based within the part, counting ladder and stl rungs only; 0: a marker or hidden rung
+  /// (END1, `%L1:`, `SR0:`), which has no number.
+  int number = 0;
+  /// ladder | stl | marker | hidden (only statements the front end added on its own: nothing
+  /// drawn, their ids in `hidden`)
+  std::string kind;
   std::vector<std::string> comment; ///< the rung comment block
   int cols = 0, rows = 0;           ///< grid size between the rails
   std::vector<Cell> cells;
+  std::vector<StmtId> hidden; ///< statements the front end added on its own: drawn by no cell
 };
 
 struct PartLayout {
@@ -44,13 +55,21 @@ struct PartLayout {
 struct Layout {
   std::string file;
   std::vector<PartLayout> parts;
+  /// How a comment is drawn: in the dialect's syntax (DialectText::commentOpen / commentClose).
+  std::string commentOpen = ";", commentClose;
 };
+
+/// A comment line as the dialect writes it (`; text`, `(* text *)`).
+std::string commentLine(const std::string &open, const std::string &close, const std::string &text);
 
 /// Columns left for inputs before the output column(s), at least (the editor's fixed grid).
 constexpr int kMinInputCols = 7;
 
 Layout layout(const Networks &nets);
+/// `rung` drawn (as its user wrote it: Rung::drawing when set), numbered `number`.
 RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &symbols);
+/// Whether `rung` is drawn with a number (a ladder or STL rung as drawn, not a marker).
+bool numbered(const Rung &rung);
 
 /// The layout JSON (docs/ladder-view.md "Layout JSON"): per part and rung, the cells. `compact`:
 /// on one line (the live page), else indented.

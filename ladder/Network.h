@@ -34,6 +34,10 @@ struct Element {
   /// it and the Part statements after it (docs/ladder-json.md "written").
   WrittenRole role = WrittenRole::None;
   std::string written;
+  /// In a rung's drawing (Rung::drawing): how the element shows its written instruction, and
+  /// the ids of the other statements the front end made of it (drawn by this element).
+  DrawAs form = DrawAs::Plain;
+  std::vector<StmtId> covers;
 };
 
 enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };
@@ -72,6 +76,18 @@ struct Rung {
   std::vector<std::string> comment; ///< the comment block before the rung
   Node network;                     ///< Ladder: a Series
   std::vector<Element> stmts;       ///< Stl and Marker: the statements verbatim
+  /// The rung as its user wrote it, for drawings only (layout, text form; docs/ladder-view.md
+  /// "Dialects"), where the dialect draws a written instruction other than as the statements
+  /// the front end made of it (DialectText::drawStmts): their elements merged into one with
+  /// the written form, the statements the front end added on its own left out (`hidden`). Not
+  /// set: drawn as the rung itself. The JSON and the statements never use it.
+  struct Drawing {
+    Kind kind = Kind::Ladder;
+    Node network;
+    std::vector<Element> stmts;
+    std::vector<StmtId> hidden;
+  };
+  std::vector<Drawing> drawing; ///< none or one
 };
 
 /// A program part: "init", "PLC1", "PLC2" or a subroutine "S<n>".

@@ -2,6 +2,8 @@
 // network as an indented series/parallel drawing (docs/ladder-json.md "Text form").
 #include "ladder/Text.h"
 
+#include "ladder/Layout.h"
+
 #include <vector>
 
 namespace lj::ladder {
@@ -16,6 +18,10 @@ bool isLeaf(const Node &n) {
 /// The symbol table of the networks being rendered (renderText), to name operands written as
 /// plain addresses.
 thread_local const std::vector<Symbol> *gSymbols = nullptr;
+/// The dialect's comment syntax (DialectText::commentOpen / commentClose).
+thread_local std::string gOpen = ";", gClose;
+
+std::string comment(const std::string &c) { return commentLine(gOpen, gClose, c); }
 
 std::string operandText(const Element &e, size_t k) {
   std::string t = e.operands[k];
@@ -29,7 +35,11 @@ std::string operandText(const Element &e, size_t k) {
 std::string leafText(const Node &n) {
   const Element &e = n.elem;
   std::string t;
-  if (n.kind == NodeKind::Contact) {
+  if (e.form != DrawAs::Plain) { // an instruction drawn as written (Rung::drawing)
+    t = (n.kind == NodeKind::Contact ? "-[" : "[") + drawnText(e) +
+        (n.kind == NodeKind::Contact ? "]-" : "]");
+    if (n.rail) t = "|rail| " + t;
+  } else if (n.kind == NodeKind::Contact) {
     static const char *const kGlyph[] = {"-[ ]-", "-[/]-", "-[P]-", "-[N]-", "-[T]-"};
     t = kGlyph[static_cast<int>(n.contact)];
     if (!e.operands.empty()) t += " " + operandText(e, 0);
@@ -54,7 +64,7 @@ std::string leafText(const Node &n) {
     t += "]";
     if (n.rail) t = "|rail| " + t;
   }
-  if (e.hasComment) t += "  ; " + e.comment;
+  if (e.hasComment) t += "  " + comment(e.comment);
   return t;
 }
 
@@ -82,7 +92,7 @@ Lines series(const Node &s) {
   for (const Node &c : s.children) {
     for (const std::string &b : c.elem.before) {
       flush();
-      out.push_back("; " + b);
+      out.push_back(comment(b));
     }
     if (isLeaf(c)) {
       run += (run.empty() ? "" : " -- ") + leafText(c);
@@ -135,7 +145,7 @@ Lines render(const Node &n) {
 std::string stmtText(const Element &e) {
   std::string t = drawnText(e);
   for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k) t += " " + operandText(e, k);
-  if (e.hasComment) t += "  ; " + e.comment;
+  if (e.hasComment) t += "  " + comment(e.comment);
   return t;
 }
 
@@ -144,29 +154,34 @@ std::string stmtText(const Element &e) {
 std::string renderText(const Networks &nets) {
   std::string out;
   gSymbols = &nets.symbols;
+  gOpen = nets.text && nets.text->commentOpen ? nets.text->commentOpen : ";";
+  gClose = nets.text && nets.text->commentClose ? nets.text->commentClose : "";
   for (const Part &p : nets.parts) {
     out += "=== " + p.name + " ===\n";
-    for (size_t r = 0; r < p.rungs.size(); ++r) {
-      const Rung &rung = p.rungs[r];
-      if (rung.kind == Rung::Kind::Marker) {
-        for (const std::string &c : rung.comment) out += "; " + c + "\n";
-        for (const Element &e : rung.stmts) out += "--- " + stmtText(e) + " ---\n";
+    int number = 0; // ladder and STL rungs from 1 in each part (as the layout numbers them)
+    for (const Rung &rung : p.rungs) {
+      // As the user wrote it where the dialect says so (Rung::drawing).
+      const Rung::Drawing *d = rung.drawing.empty() ? nullptr : &rung.drawing[0];
+      const Rung::Kind kind = d ? d->kind : rung.kind;
+      const std::vector<Element> &stmts = d ? d->stmts : rung.stmts;
+      if (kind == Rung::Kind::Marker) {
+        for (const std::string &c : rung.comment) out += comment(c) + "\n";
+        for (const Element &e : stmts) out += "--- " + stmtText(e) + " ---\n";
         continue;
       }
-      out +=
-          "rung " + std::to_string(r + 1) + (rung.kind == Rung::Kind::Stl ? " (STL)" : "") + "\n";
-      for (const std::string &c : rung.comment) out += "  ; " + c + "\n";
-      if (rung.kind == Rung::Kind::Ladder) {
-        for (const std::string &l : render(rung.network)) out += "  " + l + "\n";
+      out += "rung " + std::to_string(++number) + (kind == Rung::Kind::Stl ? " (STL)" : "") + "\n";
+      for (const std::string &c : rung.comment) out += "  " + comment(c) + "\n";
+      if (kind == Rung::Kind::Ladder) {
+        for (const std::string &l : render(d ? d->network : rung.network)) out += "  " + l + "\n";
       } else {
-        for (const Element &e : rung.stmts) {
-          for (const std::string &b : e.before) out += "  ; " + b + "\n";
+        for (const Element &e : stmts) {
+          for (const std::string &b : e.before) out += "  " + comment(b) + "\n";
           out += "  | " + stmtText(e) + "\n";
         }
       }
     }
   }
-  for (const std::string &c : nets.trailingComments) out += "; " + c + "\n";
+  for (const std::string &c : nets.trailingComments) out += comment(c) + "\n";
   gSymbols = nullptr;
   return out;
 }

@@ -95,6 +95,35 @@ bool lookupWord(std::string_view w, Op &op) {
   return false;
 }
 
+bool drawStatements(std::span<const Stmt> s, size_t i, DrawnInstr &out) {
+  if (i >= s.size()) return false;
+  const Stmt &st = s[i];
+  // JMP .. JMPE (SUB 10 / SUB 30, fanuc-pmc.md 6.11): the front end jumps to a label of its own
+  // (L10000 and up) where JMPE stands; drawn as the JMP and the JMPE the user wrote.
+  const bool ownLabel = st.operandCount == 1 && st.ops[0].area == Area::Label &&
+                        st.ops[0].index >= FlowRegions{}.nextLabel;
+  out.count = 1;
+  out.main = 0;
+  out.op = st.op;
+  if (st.op == Op::Label && ownLabel) {
+    out.as = DrawAs::Marker;
+    out.text = "JMPE";
+    return true;
+  }
+  if (st.op == Op::Jump || st.op == Op::JumpOut || st.op == Op::Call) {
+    out.as = st.op == Op::Call ? DrawAs::Call : DrawAs::Jump;
+    out.text = spellStatement(st);
+    if (!ownLabel && st.operandCount == 1) {
+      out.operand = formatOperand(st.ops[0]);
+      out.text += " " + out.operand;
+    } else if (ownLabel) {
+      out.text = "JMP";
+    }
+    return true;
+  }
+  return false;
+}
+
 bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error) {
   int32_t depth = 0;
   for (size_t i = 0; i < stmts.size(); ++i) {

@@ -703,6 +703,10 @@ bool implied(Op op, int k) {
          (op == Op::PmcCounter && k == 2);
 }
 
+namespace detail { // NetworkText.cpp: how a statement is drawn
+bool drawStatements(std::span<const Stmt> stmts, size_t i, DrawnInstr &out);
+} // namespace detail
+
 const DialectText &dialectText() {
   static constexpr DialectText kText{"fanuc",
                                      &spell,
@@ -711,7 +715,8 @@ const DialectText &dialectText() {
                                      &detail::spellStatement,
                                      &detail::lookupWord,
                                      &detail::printStatements,
-                                     &symbolRules};
+                                     &symbolRules,
+                                     &detail::drawStatements};
   return kText;
 }
 

@@ -11,6 +11,7 @@ namespace detail { // NetworkText.cpp
 std::string spellStatement(const Stmt &s);
 bool lookupWord(std::string_view w, Op &op);
 bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error);
+bool drawStatements(std::span<const Stmt> stmts, size_t i, DrawnInstr &out);
 } // namespace detail
 
 void Emitter::emit(Op op, SourceLoc loc, std::initializer_list<Operand> operands) {
@@ -168,7 +169,11 @@ const DialectText kText{"iec",
                         nullptr,
                         detail::spellStatement,
                         detail::lookupWord,
-                        detail::printStatements};
+                        detail::printStatements,
+                        nullptr,
+                        detail::drawStatements,
+                        "(*",
+                        "*)"};
 
 } // namespace
 

@@ -112,6 +112,144 @@ bool lookupWord(std::string_view w, Op &op) {
   return false;
 }
 
+namespace {
+
+bool isScratch(const Operand &o) {
+  return o.kind == Operand::Kind::Bit && o.area == Area::ExtraRelay;
+}
+
+bool sameBit(const Operand &a, const Operand &b) {
+  return a.kind == b.kind && a.area == b.area && a.index == b.index && a.bit == b.bit;
+}
+
+bool is(std::span<const Stmt> s, size_t i, Op op) { return i < s.size() && s[i].op == op; }
+
+/// Statement `i` and on is the front end's N (Emitter::negate): `ST t; ANDN t; ORN t`.
+bool negation(std::span<const Stmt> s, size_t i) {
+  return is(s, i, Op::Coil) && is(s, i + 1, Op::AndNot) && is(s, i + 2, Op::OrNot) &&
+         isScratch(s[i].ops[0]) && sameBit(s[i].ops[0], s[i + 1].ops[0]) &&
+         sameBit(s[i].ops[0], s[i + 2].ops[0]);
+}
+
+/// Statement `i` and on is the front end's XOR (Emitter::exclusiveOr): `ST a; LD x; ST b; ORB;
+/// LDN a; ORN b; ANB`.
+bool exclusiveOr(std::span<const Stmt> s, size_t i) {
+  if (!is(s, i, Op::Coil) || !isScratch(s[i].ops[0]) || i + 6 >= s.size()) return false;
+  const Op push = s[i + 1].op;
+  const Operand &a = s[i].ops[0], &b = s[i + 2].ops[0];
+  return (push == Op::Load || push == Op::LoadNot || push == Op::LoadRise ||
+          push == Op::LoadFall) &&
+         is(s, i + 2, Op::Coil) && isScratch(b) && is(s, i + 3, Op::OrBlock) &&
+         is(s, i + 4, Op::LoadNot) && sameBit(s[i + 4].ops[0], a) && is(s, i + 5, Op::OrNot) &&
+         sameBit(s[i + 5].ops[0], b) && is(s, i + 6, Op::AndBlock);
+}
+
+/// Statement `i` and on is the front end's constant (Emitter::constant): `ST t; ANDN t` (acc :=
+/// 0, AND 0) or `ST t; ORN t` (acc := 1, OR 1); not the start of an N.
+bool constantAt(std::span<const Stmt> s, size_t i, bool &value) {
+  if (!is(s, i, Op::Coil) || !isScratch(s[i].ops[0]) || negation(s, i)) return false;
+  if (!(is(s, i + 1, Op::AndNot) || is(s, i + 1, Op::OrNot)) ||
+      !sameBit(s[i].ops[0], s[i + 1].ops[0]))
+    return false;
+  value = s[i + 1].op == Op::OrNot;
+  return true;
+}
+
+bool isEndLabel(const Operand &o) { return o.area == Area::Label && o.index == kEndLabel; }
+
+/// A comparison as written: the IR keeps `a > b` as `b < a`; drawn with the object first when
+/// one side is a constant (`%MW0 > 5`, not `5 < %MW0`). `negated`: `<>` (an `=` and an N).
+std::string comparisonText(const Stmt &c, bool negated) {
+  std::string a = formatOperand(c.ops[0]), b = formatOperand(c.ops[1]);
+  const bool swap = c.ops[0].kind == Operand::Kind::Const && c.ops[1].kind != Operand::Kind::Const;
+  std::string rel = negated ? "<>" : relation(c.op);
+  if (swap && !negated) rel = c.op == Op::CompareLt ? ">" : c.op == Op::CompareLe ? ">=" : "=";
+  return swap ? b + " " + rel + " " + a : a + " " + rel + " " + b;
+}
+
+/// `out` for statements [i, i + count) drawn `as` with `text`, standing for one statement `op`.
+bool form(DrawnInstr &out, DrawAs as, int32_t count, int32_t main, Op op, std::string text,
+          std::string operand = {}, bool fromRail = false) {
+  out.as = as;
+  out.count = count;
+  out.main = main;
+  out.op = op;
+  out.text = std::move(text);
+  out.operand = std::move(operand);
+  out.fromRail = fromRail;
+  return true;
+}
+
+} // namespace
+
+bool drawStatements(std::span<const Stmt> s, size_t i, DrawnInstr &out) {
+  if (i >= s.size()) return false;
+  const Stmt &st = s[i];
+  // What the front end adds on its own: the label END jumps to, the end of a subroutine (the
+  // user wrote RET or nothing), the end of the init part IL does not have.
+  if ((st.op == Op::Label && isEndLabel(st.ops[0])) || st.op == Op::SubEnd || st.op == Op::EndInit)
+    return form(out, DrawAs::Hidden, 1, 0, st.op, {});
+  auto flow = [&](const Stmt &f, const char *cond) {
+    const bool end = f.op == Op::Jump && isEndLabel(f.ops[0]);
+    const std::string label = f.op == Op::Jump && !end ? formatOperand(f.ops[0]) : std::string();
+    const DrawAs as = f.op == Op::Return ? DrawAs::Return : end ? DrawAs::End : DrawAs::Jump;
+    const char *word = as == DrawAs::Return ? "RET" : as == DrawAs::End ? "END" : "JMP";
+    return std::make_pair(as, std::string(word) + cond + (label.empty() ? "" : " " + label));
+  };
+  auto isFlow = [&](size_t k) { return is(s, k, Op::Jump) || is(s, k, Op::Return); };
+  const auto label = [&](size_t k) {
+    return is(s, k, Op::Jump) && !isEndLabel(s[k].ops[0]) ? formatOperand(s[k].ops[0])
+                                                          : std::string();
+  };
+  // JMP / END / RET: `LD 1` and the jump, drawn from the rail.
+  if (st.op == Op::LoadTrue && isFlow(i + 1)) {
+    auto [as, text] = flow(s[i + 1], "");
+    return form(out, as, 2, 1, s[i + 1].op, text, label(i + 1), true);
+  }
+  // JMPCN / ENDCN / RETCN: N, the conditional form, N.
+  if (negation(s, i) && isFlow(i + 3) && negation(s, i + 4)) {
+    auto [as, text] = flow(s[i + 3], "CN");
+    return form(out, as, 7, 3, s[i + 3].op, text, label(i + 3));
+  }
+  if (isFlow(i)) { // JMPC / ENDC / RETC
+    auto [as, text] = flow(st, "C");
+    return form(out, as, 1, 0, st.op, text, label(i));
+  }
+  if (st.op == Op::Call) // SRi: the call as written
+    return form(out, DrawAs::Call, 1, 0, st.op, formatOperand(st.ops[0]), formatOperand(st.ops[0]));
+  // Comparisons: `LD [a < b]` (LD 1 and the block), `AND [a < b]` (the block), `<>` with an N.
+  if (st.op == Op::LoadTrue && i + 1 < s.size() && isCompare(s[i + 1].op)) {
+    const bool neg = negation(s, i + 2);
+    if (neg && is(s, i + 5, Op::AndBlock)) // AND [a <> b]
+      return form(out, DrawAs::Compare, 6, 1, Op::And, comparisonText(s[i + 1], true));
+    return form(out, DrawAs::Compare, neg ? 5 : 2, 1, Op::Load, comparisonText(s[i + 1], neg));
+  }
+  if (isCompare(st.op) && st.operandCount == 2)
+    return form(out, DrawAs::Compare, 1, 0, Op::And, comparisonText(st, false));
+  // Operation blocks: `[dst := a]`, `[dst := a + b]`.
+  if (st.op == Op::Move && st.operandCount == 2)
+    return form(out, DrawAs::Operate, 1, 0, st.op,
+                formatOperand(st.ops[1]) + " := " + formatOperand(st.ops[0]));
+  if (const char *a = arith(st.op); a && st.operandCount == 3)
+    return form(out, DrawAs::Operate, 1, 0, st.op,
+                formatOperand(st.ops[2]) + " := " + formatOperand(st.ops[0]) + " " + a + " " +
+                    formatOperand(st.ops[1]));
+  // XOR x (XORN, XORR, XORF by the contact form of x): one element in the series.
+  if (exclusiveOr(s, i)) {
+    const std::string x = formatOperand(s[i + 1].ops[0]);
+    return form(out, DrawAs::Contact, 7, 1, Op::And,
+                std::string("XOR") + modifier(s[i + 1].op) + " " + x, x);
+  }
+  if (negation(s, i)) return form(out, DrawAs::Contact, 3, 0, Op::And, "N");
+  // LD 0 (LD 1 and AND 0), AND 0 / OPEN, OR 1 / SHORT.
+  bool value = false;
+  if (st.op == Op::LoadTrue && constantAt(s, i + 1, value) && !value)
+    return form(out, DrawAs::Contact, 3, 0, Op::Load, "LD 0");
+  if (constantAt(s, i, value))
+    return form(out, DrawAs::Contact, 2, 0, value ? Op::Or : Op::And, value ? "OR 1" : "AND 0");
+  return false;
+}
+
 bool printStatements(std::span<const StmtText> stmts, std::string &out, std::string &error) {
   const size_t n = stmts.size();
   // Which parenthesis each load on a live value opens: the block statement that closes it.

@@ -212,8 +212,8 @@ void IlParser::pushTest(const std::string &mnem, Mod mod, std::string_view text,
 
 void IlParser::nonReversible(SourceLoc loc, const std::string &mnem) {
   diags_.warning(loc, "LJ2068",
-                 mnem + " is not reversible: the ladder view shows it as IL expanded into "
-                        "contacts (modicon-neza.md 9 rule 3, L462-473)");
+                 mnem + " is not reversible: the Neza cannot edit it as ladder; the ladder view "
+                        "draws it as written (modicon-neza.md 9 rule 3, L462-473)");
 }
 
 void IlParser::combine(const std::string &fam, Mod mod, const std::string &mnem,

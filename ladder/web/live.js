@@ -99,7 +99,10 @@
           a = a.replace(/\s*<.*>$/, '');
           (uses[a] = uses[a] || []).push({ part: pi, name: p.name, rung: r.number, role: role, stmt: c.stmt });
         }
-        if (/^contact/.test(c.kind)) {
+        if (c.kind === 'contact-instr' || c.kind === 'compare' || c.kind === 'operate') {
+          // drawn as written (XOR %M2, %MW0 > 5): its operands are the addresses it uses
+          (c.operands || []).forEach(function (o) { use(o, 'operand of ' + c.text); });
+        } else if (/^contact/.test(c.kind)) {
           use(c.text, 'read');
         } else if (/^(coil|coil-not|set|rst)$/.test(c.kind)) {
           use(c.text, c.kind === 'coil' || c.kind === 'coil-not' ? 'write (coil)' : 'write (' + c.kind + ')');
