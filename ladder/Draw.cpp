@@ -70,12 +70,15 @@ public:
 
   void cell(const Cell &c, int top) {
     int x = kLM + c.col * kCW, y = top + c.row * kRH + kRH / 2, w = c.width * kCW;
+    // Wires and links name the grid point at their left end / top (`data-at="row,col"`), so the
+    // live page colours each by whether power reaches that point (docs/ladder-view.md).
     if (c.kind == "wire") {
-      line(x, y, x + w, y, "w");
+      out += "<line x1=\"" + n(x) + "\" y1=\"" + n(y) + "\" x2=\"" + n(x + w) + "\" y2=\"" + n(y) +
+             "\" class=\"w\"" + atAttr(c) + "/>";
       return;
     }
     if (c.kind == "vlink") {
-      out += "<g class=\"vlink off\"" + stmtAttr(c) + ">";
+      out += "<g class=\"vlink off\"" + stmtAttr(c) + atAttr(c) + ">";
       line(x, y, x, y + c.height * kRH, "w");
       out += "</g>";
       return;
@@ -213,6 +216,9 @@ private:
   }
   static std::string stmtAttr(const Cell &c) {
     return c.stmt >= 0 ? " data-stmt=\"" + n(c.stmt) + "\"" : std::string();
+  }
+  static std::string atAttr(const Cell &c) {
+    return " data-at=\"" + n(c.row) + "," + n(c.col) + "\"";
   }
   static std::string title(const Cell &c) {
     std::string t = c.kind + " " + c.text;

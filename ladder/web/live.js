@@ -11,6 +11,7 @@
 
   // ---- lazy drawing: only rungs in or near the view are in the DOM ---------------------------
   var R = JSON.parse(document.getElementById('ladder-rungs').textContent), byId = {}, nDrawn = 0;
+  var drawn = new Set();
   function register(div, add) {
     div.querySelectorAll('g.el[data-stmt]').forEach(function (g) {
       var id = g.dataset.stmt;
@@ -27,8 +28,10 @@
     div.innerHTML = R[div.dataset.p][div.dataset.r];
     register(div, true);
     nDrawn++;
+    drawn.add(div);
     if (lastMsg && model) {
       div.querySelectorAll('g.el[data-stmt]').forEach(function (g) { paintOne(g.dataset.stmt, lastMsg.w); });
+      paintFlow(div, lastMsg.w);
       forced(lastMsg);
     }
   }
@@ -37,6 +40,7 @@
     register(div, false);
     div.innerHTML = '';
     nDrawn--;
+    drawn.delete(div);
   }
   var rgs = document.querySelectorAll('div.rg');
   var io = new IntersectionObserver(function (es) {
@@ -270,6 +274,75 @@
       }
     });
   }
+  // ---- power flow along the wires (docs/ladder-view.md "Power flow") -------------------------
+  // Relay logic over the drawn grid, from the traced values of the same frame: the left rail
+  // powers column 0 of every row; a vertical link joins the grid points it spans; an element
+  // passes power from its left point to its right one when it conducts (a contact or compare:
+  // its traced value; a box: its traced output; a wire: always); an output ends its path. Power
+  // only flows rightwards, so one pass over the cells by column settles every point.
+  var CONTACT = /^(contact|compare$)/;
+  function traced(id, w) {
+    var d = model.stmts[id];
+    if (!d) return null;
+    var x = w[d[0] + (d[1] === 'box' ? 1 : 0)];
+    return x === null || x === undefined ? null : x ? 1 : 0;
+  }
+  function flowOf(rung, w) {
+    var up = {}, pw = {}, el = {}, ns = false;
+    function find(k) {
+      while (up[k] !== undefined) k = up[k];
+      return k;
+    }
+    function at(r, c) { return find(r + ',' + c); }
+    var cells = rung.cells.slice().sort(function (a, b) { return a.col - b.col; });
+    cells.forEach(function (c) {
+      for (var k = 0; c.kind === 'vlink' && k < (c.height || 1); k++) {
+        var a = at(c.row + k, c.col), b = at(c.row + k + 1, c.col);
+        if (a !== b) up[a] = b;
+      }
+    });
+    for (var r = 0; r < rung.rows; r++) pw[at(r, 0)] = true;
+    cells.forEach(function (c) {
+      if (c.kind === 'vlink' || c.kind === 'join') return;
+      var i = !!pw[at(c.row, c.col)], o = false, v = null;
+      if (c.kind === 'wire') {
+        o = i;
+      } else if (c.stmt >= 0) {
+        v = traced(c.stmt, w);
+        if (v === null) ns = true;
+        if (CONTACT.test(c.kind)) o = i && v === 1;
+        else if (c.kind === 'box') o = v === 1;
+        el[c.stmt] = { i: i, o: o, v: v, pins: (c.pins || []).filter(function (p) { return p > 0; }).map(function (p) {
+          return !!pw[at(c.row + p, c.col)];
+        }), sink: !CONTACT.test(c.kind) && c.kind !== 'box' };
+      }
+      if (o) pw[at(c.row, c.col + c.width)] = true;
+    });
+    return { on: function (row, col) { return !!pw[at(row, col)]; }, el: el, ns: ns };
+  }
+  // Wires and links by the point they start at, each element's input and output stubs by its
+  // own input and output (an output's stub to the rail by its traced input), and a contact that
+  // conducts with no power reaching it marked apart from the live path (class cnp).
+  function paintFlow(div, w) {
+    var rung = L.layout.parts[div.dataset.p].rungs[div.dataset.r];
+    if (!rung || rung.kind !== 'ladder' || !w) return;
+    var f = flowOf(rung, w);
+    div.querySelectorAll('[data-at]').forEach(function (e) {
+      var a = e.getAttribute('data-at').split(',');
+      e.classList.toggle('p', !f.ns && f.on(+a[0], +a[1]));
+    });
+    div.querySelectorAll('g.el[data-stmt]').forEach(function (g) {
+      var s = f.el[g.dataset.stmt], ws = g.querySelectorAll('line.w');
+      if (!s) return;
+      g.classList.toggle('pwi', !f.ns && s.i);
+      g.classList.toggle('cnp', !f.ns && !s.sink && s.v === 1 && !s.i);
+      ws.forEach(function (l, k) {
+        var p = k === 0 ? s.i : k === ws.length - 1 ? (s.sink ? s.v === 1 : s.o) : s.pins[k - 1];
+        l.classList.toggle('p', !f.ns && !!p);
+      });
+    });
+  }
+  L.flowOf = function (p, r) { return lastMsg && model ? flowOf(L.layout.parts[p].rungs[r], lastMsg.w) : null; };
   function paint(m) {
     if (!model || !m.w) return;
     var w = m.w;
@@ -280,6 +353,7 @@
       for (var i = 0; i < n && !ch; i++) if (prev[at + i] !== w[at + i]) ch = true;
       if (ch) paintOne(id, w);
     }
+    drawn.forEach(function (div) { paintFlow(div, w); });
     prev = w;
   }
   function forced(m) {
