@@ -89,6 +89,28 @@ const char *kindName(TraceKind k) {
   return "none";
 }
 
+/// What a box's value words are (docs/ladder-view.md "Box values"), after its EN and output
+/// words: each recorded operand as the dialect spells it (null for a constant: the page does not
+/// echo constants), then "elapsed ms" or "count" for a block owning a timer or counter. Empty
+/// when the statement records no values.
+json valueLabels(const VerifiedProgram &prog, const TraceLayout &tl, size_t i, int32_t words) {
+  json labels = json::array();
+  const Stmt &st = prog.stmts[i];
+  for (int o = 0; o < st.operandCount && o < 8; ++o) {
+    if (!(tl.operand[i] & (1u << o))) continue;
+    if (st.ops[o].kind == Operand::Kind::Const)
+      labels.push_back(nullptr);
+    else
+      labels.push_back(prog.dialect ? prog.dialect->formatOperand(st.ops[o]) : std::string("?"));
+  }
+  const InstrInfo &r = instrInfo(st.op);
+  if (r.family == Family::Core && r.state == StateKind::Timer) labels.push_back("elapsed ms");
+  if (r.family == Family::Core && r.state == StateKind::Counter) labels.push_back("count");
+  // The table and this reading of it must agree; a mismatch gives no labels, not wrong ones.
+  if (static_cast<int32_t>(labels.size()) != words - 2) return json::array();
+  return labels;
+}
+
 } // namespace
 
 std::string newHttpToken() {
@@ -227,8 +249,10 @@ struct LiveView::Impl {
               end = tl.at[k];
               break;
             }
-          stmts[std::to_string(v.prog->stmts[i].id)] = {tl.at[i], kindName(tl.kind[i]),
-                                                        end - tl.at[i]};
+          json entry = {tl.at[i], kindName(tl.kind[i]), end - tl.at[i]};
+          if (tl.kind[i] == TraceKind::Box && end - tl.at[i] > 2)
+            entry.push_back(valueLabels(*v.prog, tl, i, end - tl.at[i]));
+          stmts[std::to_string(v.prog->stmts[i].id)] = entry;
         }
       }
       model = {{"version", v.id},

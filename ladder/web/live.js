@@ -239,26 +239,59 @@
       .then(function (r) { return r.json(); })
       .then(function (m) { model = m; prev = []; });
   }
-  function boxVal(g, vals) {
+  // A box's values (docs/ladder-view.md "Box values"): each register operand's value after its
+  // own operand line ("F2560 = 2"), constants not echoed, and the rest (a timer's elapsed ms, a
+  // counter's count, an operand the box does not draw as written) on the values line, labelled.
+  function valLine(g) {
     var t = g.querySelector('text.val');
-    if (!t) {
-      var r = g.querySelector('rect.box');
-      if (!r) return;
-      t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
-      t.setAttribute('class', 'val');
-      t.setAttribute('text-anchor', 'middle');
-      t.setAttribute('x', +r.getAttribute('x') + +r.getAttribute('width') / 2);
-      var by = +r.getAttribute('y'), vy = by + +r.getAttribute('height') - 4, ts = g.querySelectorAll('text.mn,text.op');
-      // A box whose operand lines fill it (a one-row EQB D0 8): its lines move closer so the
-      // values line covers none.
-      if (ts.length > 1 && +ts[ts.length - 1].getAttribute('y') > vy - 12) {
-        var s = (vy - 12 - (by + 12)) / (ts.length - 1);
-        ts.forEach(function (x, i) { x.setAttribute('y', by + 12 + i * s); });
-      }
-      t.setAttribute('y', vy);
-      g.appendChild(t);
+    if (t) return t;
+    var r = g.querySelector('rect.box');
+    if (!r) return null;
+    t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+    t.setAttribute('class', 'val');
+    t.setAttribute('text-anchor', 'middle');
+    t.setAttribute('x', +r.getAttribute('x') + +r.getAttribute('width') / 2);
+    var by = +r.getAttribute('y'), vy = by + +r.getAttribute('height') - 4, ts = g.querySelectorAll('text.mn,text.op');
+    // A box whose operand lines fill it (a one-row EQB D0 8): its lines move closer so the
+    // values line covers none.
+    if (ts.length > 1 && +ts[ts.length - 1].getAttribute('y') > vy - 12) {
+      var s = (vy - 12 - (by + 12)) / (ts.length - 1);
+      ts.forEach(function (x, i) { x.setAttribute('y', by + 12 + i * s); });
     }
-    t.textContent = vals.join('  ');
+    t.setAttribute('y', vy);
+    g.appendChild(t);
+    return t;
+  }
+  function boxVal(g, vals, labels) {
+    var t = valLine(g);
+    if (!t) return;
+    var ops = Array.prototype.slice.call(g.querySelectorAll('text.op')), rest = [];
+    ops.forEach(function (o) {
+      var v = o.querySelector('tspan.v');
+      if (v) v.remove();
+    });
+    if (!vals) {
+      t.textContent = 'not scanned';
+      return;
+    }
+    if (!labels) {
+      t.textContent = vals.join('  ');
+      return;
+    }
+    vals.forEach(function (x, k) {
+      var name = labels[k];
+      if (name === null || name === undefined) return;
+      var o = ops.filter(function (e) { return e.firstChild && e.firstChild.nodeValue === name && !e.querySelector('tspan.v'); })[0];
+      if (o) {
+        var s = document.createElementNS('http://www.w3.org/2000/svg', 'tspan');
+        s.setAttribute('class', 'v');
+        s.textContent = ' = ' + x;
+        o.appendChild(s);
+      } else {
+        rest.push(name + ' = ' + x);
+      }
+    });
+    t.textContent = rest.join('  ');
   }
   function paintOne(id, w) {
     var d = model.stmts[id], gs = byId[id];
@@ -270,7 +303,7 @@
       g.classList.toggle('off', !on && !ns);
       g.classList.toggle('ns', ns);
       if (k === 'box' && n > 2) {
-        boxVal(g, ns ? ['not scanned'] : w.slice(at + 2, at + n).map(function (x) { return x === null ? -2147483648 : x; }));
+        boxVal(g, ns ? null : w.slice(at + 2, at + n).map(function (x) { return x === null ? -2147483648 : x; }), d[3]);
       }
     });
   }
@@ -281,10 +314,12 @@
   // its traced value; a box: its traced output; a wire: always); an output ends its path. Power
   // only flows rightwards, so one pass over the cells by column settles every point.
   var CONTACT = /^(contact|compare$)/;
-  function traced(id, w) {
+  // The traced value of statement `id`: a box's output (its first word, EN, when `input`), else
+  // its first word (a contact's conduction, a coil's input, a jump's EN).
+  function traced(id, w, input) {
     var d = model.stmts[id];
     if (!d) return null;
-    var x = w[d[0] + (d[1] === 'box' ? 1 : 0)];
+    var x = w[d[0] + (d[1] === 'box' && !input ? 1 : 0)];
     return x === null || x === undefined ? null : x ? 1 : 0;
   }
   function flowOf(rung, w) {
@@ -308,13 +343,14 @@
       if (c.kind === 'wire') {
         o = i;
       } else if (c.stmt >= 0) {
-        v = traced(c.stmt, w);
+        var sink = !CONTACT.test(c.kind) && c.kind !== 'box';
+        v = traced(c.stmt, w, sink); // an output (a coil, END drawn as written...): its input
         if (v === null) ns = true;
         if (CONTACT.test(c.kind)) o = i && v === 1;
         else if (c.kind === 'box') o = v === 1;
         el[c.stmt] = { i: i, o: o, v: v, pins: (c.pins || []).filter(function (p) { return p > 0; }).map(function (p) {
           return !!pw[at(c.row + p, c.col)];
-        }), sink: !CONTACT.test(c.kind) && c.kind !== 'box' };
+        }), sink: sink };
       }
       if (o) pw[at(c.row, c.col + c.width)] = true;
     });

@@ -30,14 +30,14 @@ def read_token(path):
         return f.read().strip()
 
 
-def start_serve(exe, program, sock, errfile, duration, wait=20, modbus=True):
+def start_serve(exe, program, sock, errfile, duration, wait=20, modbus=True, extra=()):
     """serve PROGRAM --http 127.0.0.1:0 --modbus 0 --modbus-write-inputs (without the Modbus
     options when `modbus` is false); (proc, url, token, modbus port or None), or exit 1 when it
-    did not print the addresses within `wait` seconds."""
+    did not print the addresses within `wait` seconds. `extra`: more serve options."""
     import time
     mb = ["--modbus", "0", "--modbus-write-inputs"] if modbus else []
     serve = subprocess.Popen([exe, "serve", program, "--http", "127.0.0.1:0"] + mb +
-                             ["--control", sock, "--duration", str(duration)],
+                             ["--control", sock, "--duration", str(duration)] + list(extra),
                              stdout=subprocess.PIPE, stderr=open(errfile, "w"), text=True)
     url = token = mport = None
     deadline = time.time() + wait

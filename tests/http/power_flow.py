@@ -166,7 +166,8 @@ def other(name):
 
 
 lathe()
-for prog in ("fanuc_coolant.pmc", "fanuc_tool_change.pmc", "conveyor.il", "pump_station.il"):
+for prog in ("catalogue.stl", "tool_change.stl", "fanuc_coolant.pmc", "fanuc_tool_change.pmc",
+             "fanuc_magazine.pmc", "conveyor.il", "pump_station.il", "filler.il"):
     other(prog)
 print("%d failed" % len(liveutil.failures))
 sys.exit(1 if liveutil.failures else 0)
