@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <vector>
 
 namespace lj::ladder {
 
@@ -189,8 +190,10 @@ public:
     }
     for (const Cell &c : r.cells) cell(c, y);
     if (r.kind == "stl") text(kLM + r.cols * kCW - 10, y + 18, "STL", "tag", "end"); // on top
+    int right = kLM + r.cols * kCW + kRM;
+    if (r.kind == "ladder") right = std::max(right, trailingComments(r, y));
     out += "</g>";
-    width = std::max(width, kLM + r.cols * kCW + kRM);
+    width = std::max(width, right);
     return y + h - top;
   }
 
@@ -207,6 +210,33 @@ public:
   }
 
 private:
+  /// The statements' trailing comments right of the right rail, one line per row as the HNC-8
+  /// editor shows them: the comments of the row's elements in column order. Returns the right
+  /// edge of the widest line (an estimate: 6.5 px per ASCII character, 11 px otherwise).
+  int trailingComments(const RungLayout &r, int y) {
+    std::vector<const Cell *> cs;
+    for (const Cell &c : r.cells)
+      if (!c.comment.empty()) cs.push_back(&c);
+    std::stable_sort(cs.begin(), cs.end(), [](const Cell *a, const Cell *b) {
+      return a->row != b->row ? a->row < b->row : a->col < b->col;
+    });
+    const int x = kLM + r.cols * kCW + 10;
+    int right = 0;
+    for (size_t i = 0; i < cs.size();) {
+      std::string line;
+      const int row = cs[i]->row;
+      for (; i < cs.size() && cs[i]->row == row; ++i)
+        line += (line.empty() ? "" : "  ") + cs[i]->comment;
+      line = commentLine(commentOpen, commentClose, line);
+      text(x, y + row * kRH + kRH / 2 + 4, line, "tc", "start");
+      double w = 0;
+      for (unsigned char ch : line)
+        if ((ch & 0xC0) != 0x80) w += ch < 0x80 ? 6.5 : 11; // one per code point
+      right = std::max(right, x + static_cast<int>(w) + kRM);
+    }
+    return right;
+  }
+
   /// The mark drawn inside an element of `kind`: the first letter of its table entry.
   static const char *markOf(const std::string &kind,
                             std::initializer_list<std::pair<const char *, const char *>> table) {
@@ -251,6 +281,7 @@ const char *kStyle =
     ".lad text.mark{font-weight:bold;font-size:13px}.lad text.mn{font-weight:bold}"
     ".lad text.op{font-size:11px}.lad text.code{font-family:'DejaVu Sans Mono',monospace}"
     ".lad text.cm{fill:#2e7d32;font-style:italic}.lad text.num{fill:#666}"
+    ".lad text.tc{fill:#2e7d32;font-style:italic;font-size:11px}"
     ".lad text.part{font-size:16px;font-weight:bold}.lad text.tag{fill:#999;font-size:10px}"
     ".lad g.on line.w,.lad g.on line.sym,.lad g.on path.sym{stroke:#0a0;stroke-width:2.6}"
     ".lad g.el:hover line,.lad g.el:hover path,.lad g.el:hover rect{stroke:#d35400}";
@@ -364,8 +395,10 @@ std::string page(const Layout &l, const std::string &tabs, const std::string &se
          "tabs.forEach(function(t){t.addEventListener('click',function(){show(t.dataset.for);"
          "if(history.replaceState)history.replaceState(null,'','#'+t.dataset.for)})});"
          "var "
-         "h=location.hash.slice(1);show(document.getElementById(h)?h:(tabs[0]?tabs[0].dataset.for:'"
-         "'));"
+         // the page opens on the part named in its address, else on PLC1 (the first level, not
+         // the init part), else on the first part
+         "h=location.hash.slice(1),p1=document.querySelector('section.part[data-part=\"PLC1\"]');"
+         "show(document.getElementById(h)?h:p1?p1.id:(tabs[0]?tabs[0].dataset.for:''));"
          "window.ladder={layout:JSON.parse(document.getElementById('ladder-layout').textContent),"
          "setState:function(id,on){document.querySelectorAll('[data-stmt=\"'+id+'\"]').forEach("
          "function(e){e.classList.toggle('on',!!on);e.classList.toggle('off',!on)})}};"

@@ -81,10 +81,16 @@
   var menu = document.createElement('div');
   menu.id = 'menu';
   document.body.appendChild(menu);
+  // The status line: a message stays readable for 6 s (a refusal 20 s), then fades; the text
+  // stays in place until the next one.
+  var sayTimer = null;
   function say(t, bad) {
     var m = document.getElementById('msg');
     m.textContent = t;
     m.style.color = bad ? '#f99' : '#9f9';
+    m.classList.remove('old');
+    clearTimeout(sayTimer);
+    sayTimer = setTimeout(function () { m.classList.add('old'); }, bad ? 20000 : 6000);
   }
   function setConn(t, ok) {
     var c = document.getElementById('conn');
@@ -116,6 +122,12 @@
       });
     });
   });
+  // An element as a technician names it: its address (or instruction), part and rung.
+  function named(id) {
+    var c = cellOf[id];
+    return c ? (c.cell.text || c.cell.kind) + ' (' + c.name + ' rung ' + c.rung + ')' : 'statement ' + id;
+  }
+  L.named = named;
   function coils(a) { return uses[a].filter(function (u) { return u.role === 'write (coil)'; }).length; }
   var dbl = Object.keys(uses).filter(function (a) { return coils(a) > 1; });
   document.getElementById('dbl').innerHTML = dbl.length ? dbl.map(function (a) {
@@ -227,7 +239,8 @@
       body: JSON.stringify({ id: +id, mode: mode })
     }).then(function (r) {
       return r.json().then(function (j) {
-        say(r.ok ? 'force ' + mode + ' on id ' + id + ': ok' : 'force refused (' + r.status + '): ' + j.error, !r.ok);
+        var what = { on: 'forced ON (允许)', off: 'forced OFF (禁止)', restore: 'restored (恢复)' }[mode] || mode;
+        say(r.ok ? named(id) + ' ' + what : 'force of ' + named(id) + ' refused (' + r.status + '): ' + j.error, !r.ok);
         return { status: r.status, body: j };
       });
     });
@@ -404,10 +417,13 @@
         g.classList.add(f[id] ? 'forced-on' : 'forced-off');
         var s = g.querySelectorAll('line.sym')[0], t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
         if (!s) return;
+        // Right of the glyph above the wire: clear of the address above it and of the left rail
+        // a contact in column 0 stands on.
+        var s2 = g.querySelectorAll('line.sym')[1] || s;
         t.setAttribute('class', 'fmark');
-        t.setAttribute('x', +s.getAttribute('x1') - 4);
-        t.setAttribute('y', +s.getAttribute('y1') + 8);
-        t.setAttribute('text-anchor', 'end');
+        t.setAttribute('x', +s2.getAttribute('x1') + 3);
+        t.setAttribute('y', +s.getAttribute('y1') + 9);
+        t.setAttribute('text-anchor', 'start');
         t.setAttribute('fill', f[id] ? '#00c853' : '#d50000');
         t.textContent = f[id] ? 'F-ON' : 'F-OFF';
         g.appendChild(t);
