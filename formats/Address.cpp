@@ -162,6 +162,14 @@ int64_t readAddress(const lj_state &s, const CliAddress &addr) {
   return readElement(c);
 }
 
+int addressBits(const CliAddress &addr) {
+  if (addr.isBit()) return 1;
+  if (addr.area == Area::Timer || addr.area == Area::Counter) return 32;
+  if (addr.area == Area::None && addr.profile) return 8; // a system-parameter byte
+  const int bytes = addr.width ? addr.width : profileOf(addr).area(addr.area).bytes;
+  return bytes * 8;
+}
+
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {
   if (addr.area == Area::Counter) {
     lj_counter &k = s.C[profileOf(addr).tcSlot(addr.area, addr.index)];

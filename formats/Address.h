@@ -60,6 +60,10 @@ bool checkWritable(const CliAddress &addr, int64_t value, std::string &error);
 /// `Tn` = elapsed_ms, `Cn` = count, `Tn.0` / `Cn.0` = output bit.
 int64_t readAddress(const lj_state &s, const CliAddress &addr);
 
+/// What `addr` reads: 1 for a bit, 8/16/32 for an element (its width), 32 for a timer's elapsed
+/// ms or a counter's count. The watch table formats a value (hex, BCD, unsigned) by it.
+int addressBits(const CliAddress &addr);
+
 /// Write `value` to `addr`: a bit sets only that bit, an element keeps the low 8/16/32 bits.
 /// `Cn` sets the count, `Cn.0` the output bit. Call checkWritable first.
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value);

@@ -525,9 +525,12 @@ json Controller::doRead(const json &req) {
   auto s = std::make_unique<lj_state>();
   uint64_t tick = 0;
   if (!ex_.snapshot(*s, &tick)) return fail("no state published yet");
-  json values = json::array();
-  for (const formats::CliAddress &a : addrs) values.push_back(formats::readAddress(*s, a));
-  return {{"ok", true}, {"tick", tick}, {"values", values}};
+  json values = json::array(), bits = json::array();
+  for (const formats::CliAddress &a : addrs) {
+    values.push_back(formats::readAddress(*s, a));
+    bits.push_back(formats::addressBits(a));
+  }
+  return {{"ok", true}, {"tick", tick}, {"values", values}, {"bits", bits}};
 }
 
 json Controller::doWrite(const json &req) {

@@ -224,12 +224,12 @@ struct LiveView::Impl {
       const bool editor = !cfg.readOnly;
       // The trace panel (docs/trace.md "Page") in every page: under --http-read-only it shows
       // the trace and its captures, and its buttons are refused.
-      page = ladder::renderLazyHtml(l,
-                                    ladder::liveCss() + ladder::traceCss() +
-                                        (editor ? ladder::editorCss() : std::string()),
-                                    "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() +
-                                        ";" + ladder::liveScript() + ";" + ladder::traceScript() +
-                                        (editor ? ";" + ladder::editorScript() : std::string()));
+      page = ladder::renderLazyHtml(
+          l,
+          ladder::liveCss() + ladder::traceCss() + (editor ? ladder::editorCss() : std::string()),
+          "window.LJ_HASH=" + h.dump() + ";window.LJ_KEY=" + k.dump() + ";window.LJ_RO=" +
+              (cfg.readOnly ? "true" : "false") + ";" + ladder::liveScript() + ";" +
+              ladder::traceScript() + (editor ? ";" + ladder::editorScript() : std::string()));
       pageHash = v.hash;
     }
     return page;

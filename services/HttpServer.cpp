@@ -413,7 +413,7 @@ struct HttpServer::Impl {
         "/api/model",      "/api/state",      "/api/locks",       "/api/events",
         "/api/force",      "/api/lock",       "/api/unlock",      "/api/edit",
         "/api/edit/draft", "/api/edit/check", "/api/edit/update", "/api/edit/discard",
-        "/api/edit/grid",  "/api/trace"};
+        "/api/edit/grid",  "/api/trace",      "/api/read",        "/api/write"};
     const bool edit = p.rfind("/api/edit", 0) == 0;
     if (!kApi.count(p) || (edit && !be.edit)) {
       rq.answered = true;
@@ -428,7 +428,8 @@ struct HttpServer::Impl {
     if (cred < 0) return refuse(c, rq, MHD_HTTP_FORBIDDEN, "wrong token", "wrong token");
     // GET /api/trace reads the trace's status and last capture; POST /api/trace drives it.
     const bool post = p == "/api/force" || p == "/api/lock" || p == "/api/unlock" ||
-                      (edit && p != "/api/edit") || (p == "/api/trace" && !get);
+                      p == "/api/write" || (edit && p != "/api/edit") ||
+                      (p == "/api/trace" && !get);
     // A whole program's network JSON is larger than a command.
     rq.maxBody = p == "/api/edit/draft" ? cfg.maxEditBody : cfg.maxBody;
     if (post) {
@@ -463,6 +464,9 @@ struct HttpServer::Impl {
       } else if (p == "/api/lock") {
         rq.cmd = "lock";
         rq.keys = {"item"};
+      } else if (p == "/api/write") { // the watch table's write: monitor write's command
+        rq.cmd = "write";
+        rq.keys = {"writes"};
       } else if (p == "/api/trace") {
         rq.cmd = "trace";
         rq.keys = {"action", "text", "file"};
@@ -487,6 +491,26 @@ struct HttpServer::Impl {
     if (p == "/api/model") return defer(c, rq, Job{Job::Model, c, {}, {}});
     if (p == "/api/edit") return defer(c, rq, Job{Job::Edit, c, {}, {}, "", rq.client});
     if (p == "/api/locks") return defer(c, rq, Job{Job::Locks, c, {{"cmd", "locks"}}, {}});
+    if (p == "/api/read") {
+      // ?a=ADDR,ADDR...: the watch table's values, as monitor read (addresses or symbols in
+      // the program's dialect), at most 64 of them.
+      const char *a = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "a");
+      json addrs = json::array();
+      for (std::string_view rest = a ? a : ""; !rest.empty();) {
+        const size_t comma = rest.find(',');
+        std::string_view item = rest.substr(0, comma);
+        if (!item.empty()) addrs.push_back(std::string(item));
+        rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+      }
+      if (addrs.empty() || addrs.size() > 64) {
+        rq.answered = true;
+        responding(c);
+        return queue(c, error(400, "GET /api/read?a=ADDR,ADDR... takes 1 to 64 addresses or "
+                                   "symbols, got " +
+                                       std::to_string(addrs.size())));
+      }
+      return defer(c, rq, Job{Job::Locks, c, {{"cmd", "read"}, {"addrs", std::move(addrs)}}, {}});
+    }
     if (p == "/api/trace") {
       // ?have=ID: the id of the capture the page holds; the rows are sent only when newer.
       json q{{"cmd", "trace"}, {"action", "capture"}};
@@ -622,10 +646,9 @@ struct HttpServer::Impl {
             break;
           case Job::Locks: {
             json ans = be.command(j.req);
-            if (j.req.value("cmd", std::string()) == "trace") {
-              ans["read_only"] = cfg.readOnly; // the panel shows what it may do
-              if (!ans.value("ok", false)) r.status = 400;
-            }
+            const std::string cmd = j.req.value("cmd", std::string());
+            if (cmd == "trace") ans["read_only"] = cfg.readOnly; // what the panel may do
+            if ((cmd == "trace" || cmd == "read") && !ans.value("ok", false)) r.status = 400;
             r.body = jsonText(ans);
             break;
           }

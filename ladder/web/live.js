@@ -75,6 +75,7 @@
     '<div>jitter (us)</div><canvas id="hjit" width="310" height="90"></canvas>' +
     '<div>overruns + missed deadlines over time</div><canvas id="tser" width="310" height="70"></canvas>' +
     '<h3>Forces</h3><div id="forces">none</div><h3>Lock list</h3><div id="locks">none</div>' +
+    '<h3>Watch table (状态显示)</h3><div id="watch"></div>' +
     '<h3>Cross-reference</h3><div id="xref">click an element or search an address</div>' +
     '<h3>Double coils</h3><div id="dbl"></div>';
   document.body.appendChild(side);
@@ -216,19 +217,30 @@
   });
 
   // ---- force from the page (允许 on / 禁止 off / 恢复 restore) -------------------------------
+  // The addresses an element names: a contact's or coil's address, a box's register operands.
+  function addressesOf(c) {
+    if (!c) return [];
+    if (/^(contact-(no|nc|rise|fall)|coil|coil-not|set|rst)$/.test(c.kind)) return [c.text];
+    return (c.operands || []).filter(function (o) { return /[A-Za-z%]/.test(o) && !/^[-+]?(0x)?[0-9A-Fa-f]+$/.test(o); });
+  }
   document.addEventListener('contextmenu', function (e) {
     var g = e.target.closest && e.target.closest('g.el[data-stmt]');
-    if (!g || !/contact-(no|nc|rise|fall)/.test(g.getAttribute('class'))) return;
+    if (!g) return;
+    var id = g.dataset.stmt, contact = /contact-(no|nc|rise|fall)/.test(g.getAttribute('class'));
+    var watch = addressesOf((cellOf[id] || {}).cell);
+    if (!contact && !watch.length) return;
     e.preventDefault();
-    var id = g.dataset.stmt;
-    menu.innerHTML = '<div data-m="on">force on (允许)</div><div data-m="off">force off (禁止)</div>' +
-      '<div data-m="restore">restore (恢复)</div>';
+    menu.innerHTML = (contact ? '<div data-m="on">force on (允许)</div><div data-m="off">force off (禁止)</div>' +
+      '<div data-m="restore">restore (恢复)</div>' : '') + watch.map(function (a) {
+      return '<div data-w="' + h(a) + '">watch ' + h(a) + ' (状态显示)</div>';
+    }).join('');
     menu.style.left = e.clientX + 'px';
     menu.style.top = e.clientY + 'px';
     menu.style.display = 'block';
     menu.onclick = function (ev) {
       var m = ev.target.dataset.m;
       if (m) L.force(id, m);
+      if (ev.target.dataset.w) L.watch.add(ev.target.dataset.w);
       menu.style.display = 'none';
     };
   });
@@ -245,6 +257,152 @@
       });
     });
   };
+
+  // ---- the watch table (诊断→状态显示, docs/ladder-view.md "Watch table") ------------------------
+  // Addresses or symbols in the program's dialect, read through GET /api/read (monitor read's
+  // command) four times a second, each shown in the format chosen for its row; written through
+  // POST /api/write with the token (refused under --http-read-only). The rows are kept in the
+  // browser per program file.
+  L.watch = (function () {
+    var key = 'ladderjit-watch:' + L.layout.file, rows = [], box = document.getElementById('watch');
+    var FMT = ['dec', 'unsigned', 'hex', 'bin', 'BCD'];
+    try { rows = JSON.parse(localStorage.getItem(key) || '[]'); } catch (e) { rows = []; }
+    function save() { localStorage.setItem(key, JSON.stringify(rows.map(function (r) { return { a: r.a, f: r.f }; }))); }
+    function mask(bits) { return bits >= 32 ? 4294967296 : Math.pow(2, bits); }
+    function unsigned(v, bits) { return ((v % mask(bits)) + mask(bits)) % mask(bits); }
+    // A value in a format: bits 1 as 0/1; BCD digit by digit (a nibble over 9 is not BCD).
+    function shown(v, bits, f) {
+      if (v === undefined || v === null) return '';
+      if (bits === 1) return String(v);
+      var u = unsigned(v, bits);
+      if (f === 'unsigned') return String(u);
+      if (f === 'hex') return '0x' + ('00000000' + u.toString(16).toUpperCase()).slice(-bits / 4);
+      if (f === 'bin') return ('0'.repeat(bits) + u.toString(2)).slice(-bits).replace(/(\d{4})(?=\d)/g, '$1 ');
+      if (f === 'BCD') {
+        var x = u.toString(16);
+        return /^[0-9]+$/.test(x) ? String(+x) : 'not BCD (0x' + x.toUpperCase() + ')';
+      }
+      return String(v);
+    }
+    // What a typed value writes: BCD digits as their nibbles, else the text (decimal or 0x hex).
+    function typed(t, f) {
+      t = t.trim();
+      if (f === 'BCD') return /^[0-9]{1,8}$/.test(t) ? '0x' + t : null;
+      if (f === 'bin') return /^[01 ]+$/.test(t) ? String(parseInt(t.replace(/ /g, ''), 2)) : null;
+      return /^([-+]?[0-9]+|0x[0-9A-Fa-f]+)$/.test(t) ? t : null;
+    }
+    function render() {
+      var rw = !window.LJ_RO; // a --http-read-only page shows no write controls
+      box.innerHTML = '<div><input id="wadd" size="12" placeholder="address or symbol"> <button id="waddb">add</button>' +
+        ' <span id="werr" class="warn"></span></div>' + (rows.length ? '<div class="wscroll"><table id="wt"><tr><th>address</th><th>value</th>' +
+        '<th>format</th>' + (rw ? '<th>write</th>' : '') + '<th></th></tr>' + rows.map(function (r, i) {
+          return '<tr data-i="' + i + '"><td><a data-x="' + h(r.a) + '">' + h(r.a) + '</a></td><td class="wv">' +
+            h(shown(r.v, r.bits, r.f)) + '</td><td>' + (r.bits === 1 ? 'bit' : '<select>' + FMT.map(function (f) {
+              return '<option' + (f === r.f ? ' selected' : '') + '>' + f + '</option>';
+            }).join('') + '</select>') + '</td>' + (rw ? '<td>' + (r.bits === 1 ? '<button data-b="1">1</button><button data-b="0">0</button>'
+            : '<input size="5" class="wi"><button data-b="w">set</button>') + '</td>' : '') +
+            '<td><button data-b="x" title="remove">×</button></td></tr>';
+        }).join('') + '</table></div>' : '');
+    }
+    function paintValues() {
+      box.querySelectorAll('tr[data-i]').forEach(function (tr) {
+        var r = rows[+tr.dataset.i];
+        tr.querySelector('td.wv').textContent = shown(r.v, r.bits, r.f);
+      });
+    }
+    function read(list) {
+      return fetch('api/read?a=' + list.map(encodeURIComponent).join(','), { headers: HK }).then(function (r) {
+        return r.json().then(function (j) { return { ok: r.ok, body: j }; });
+      });
+    }
+    var busy = false, known = false;
+    function poll() {
+      if (busy || !rows.length) return;
+      busy = true;
+      read(rows.map(function (r) { return r.a; })).then(function (a) {
+        busy = false;
+        if (!a.ok) return;
+        a.body.values.forEach(function (v, i) {
+          if (rows[i]) {
+            rows[i].v = v;
+            rows[i].bits = a.body.bits[i];
+          }
+        });
+        if (!known) render(); // the rows kept from an earlier visit learn their widths
+        else paintValues();
+        known = true;
+      }, function () { busy = false; });
+    }
+    setInterval(poll, 250);
+    function add(a) {
+      a = String(a).trim();
+      var err = document.getElementById('werr');
+      if (!a) return Promise.resolve(false);
+      if (rows.some(function (r) { return r.a.toLowerCase() === a.toLowerCase(); })) return Promise.resolve(true);
+      return read([a]).then(function (res) {
+        if (!res.ok) {
+          document.getElementById('werr').textContent = res.body.error || 'refused';
+          return false;
+        }
+        rows.push({ a: a, f: 'dec', v: res.body.values[0], bits: res.body.bits[0] });
+        save();
+        render();
+        return true;
+      }, function () {
+        if (err) err.textContent = 'no answer';
+        return false;
+      });
+    }
+    function write(i, text) {
+      var r = rows[i], v = r.bits === 1 ? text : typed(text, r.f);
+      if (v === null) {
+        say('not a ' + r.f + ' value for ' + r.a + ': ' + text, true);
+        return Promise.resolve(false);
+      }
+      return fetch('api/write', {
+        method: 'POST',
+        headers: { 'Content-Type': 'application/json', 'X-Ladderjit-Key': KEY },
+        body: JSON.stringify({ writes: [r.a + '=' + v] })
+      }).then(function (res) {
+        return res.json().then(function (j) {
+          say(res.ok ? r.a + ' := ' + text + ' written' : 'write of ' + r.a + ' refused (' + res.status + '): ' + j.error, !res.ok);
+          poll();
+          return res.ok;
+        });
+      });
+    }
+    box.addEventListener('click', function (e) {
+      var t = e.target, tr = t.closest('tr[data-i]');
+      if (t.id === 'waddb') add(document.getElementById('wadd').value);
+      if (!tr || !t.dataset.b) return;
+      var i = +tr.dataset.i;
+      if (t.dataset.b === 'x') {
+        rows.splice(i, 1);
+        save();
+        render();
+      } else if (t.dataset.b === 'w') {
+        write(i, tr.querySelector('input.wi').value);
+      } else {
+        write(i, t.dataset.b);
+      }
+    });
+    box.addEventListener('keydown', function (e) {
+      if (e.key !== 'Enter') return;
+      if (e.target.id === 'wadd') add(e.target.value);
+      var tr = e.target.closest('tr[data-i]');
+      if (tr && e.target.classList.contains('wi')) write(+tr.dataset.i, e.target.value);
+    });
+    box.addEventListener('change', function (e) {
+      var tr = e.target.closest('tr[data-i]');
+      if (!tr || e.target.tagName !== 'SELECT') return;
+      rows[+tr.dataset.i].f = e.target.value;
+      save();
+      paintValues();
+    });
+    render();
+    poll();
+    return { add: add, write: write, rows: function () { return rows; }, shown: shown };
+  })();
 
   // ---- live state ----------------------------------------------------------------------------
   function loadModel() {
