@@ -111,6 +111,33 @@ json valueLabels(const VerifiedProgram &prog, const TraceLayout &tl, size_t i, i
   return labels;
 }
 
+/// Where each statement's operands are in memory, for a cross-reference that sees overlapping
+/// addresses (docs/ladder-view.md "Cross-reference"): per statement id, one entry per register
+/// or bit operand of an image area, [the operand as the dialect spells it, its byte offset in
+/// lj_state, its bytes, its bit (-1: the element), 1 when the instruction writes it]. Timers,
+/// counters, labels and subroutines have no image bytes and no entry.
+json memOf(const VerifiedProgram &prog) {
+  json mem = json::object();
+  const TargetProfile &tp = *prog.profile;
+  for (const Stmt &st : prog.stmts) {
+    json ops = json::array();
+    const InstrInfo &r = instrInfo(st.op);
+    for (int o = 0; o < st.operandCount; ++o) {
+      const Operand &op = st.ops[o];
+      if (op.kind != Operand::Kind::Reg && op.kind != Operand::Kind::Bit) continue;
+      const AreaInfo &info = tp.area(op.area);
+      if (info.bytes == 0) continue;
+      const int bytes = (op.kind == Operand::Kind::Reg && op.width ? op.width : info.bytes) *
+                        (op.kind == Operand::Kind::Reg ? std::max<int>(r.operands[o].span, 1) : 1);
+      ops.push_back({prog.dialect ? prog.dialect->formatOperand(op) : std::string("?"),
+                     tp.elementOffset(op.area, op.index), bytes,
+                     op.kind == Operand::Kind::Bit ? op.bit : -1, r.operands[o].writes ? 1 : 0});
+    }
+    if (!ops.empty()) mem[std::to_string(st.id)] = std::move(ops);
+  }
+  return mem;
+}
+
 } // namespace
 
 std::string newHttpToken() {
@@ -256,6 +283,7 @@ struct LiveView::Impl {
         }
       }
       model = {{"version", v.id},
+               {"mem", memOf(*v.prog)},
                {"hash", v.hash},
                {"file", v.path},
                {"engine", cfg.engine},

@@ -29,6 +29,7 @@
     register(div, true);
     nDrawn++;
     drawn.add(div);
+    markDouble(div);
     if (lastMsg && model) {
       div.querySelectorAll('g.el[data-stmt]').forEach(function (g) { paintOne(g.dataset.stmt, lastMsg.w); });
       paintFlow(div, lastMsg.w);
@@ -64,7 +65,9 @@
   var bar = document.createElement('div');
   bar.id = 'live';
   bar.innerHTML = '<span class="st" id="conn">connecting</span><span id="ver"></span><span id="tick"></span>' +
-    '<label>search <input id="q" size="14" placeholder="address or symbol"></label><span id="qres"></span>' +
+    '<label>search <input id="q" size="18" placeholder="address, symbol, text or #rung"></label>' +
+    '<button id="qup" title="previous hit (Shift+Enter, 向上查找)">▲</button>' +
+    '<button id="qdn" title="next hit (Enter, 向下查找)">▼</button><span id="qres"></span>' +
     '<span id="msg"></span>';
   document.body.insertBefore(bar, document.querySelector('nav'));
   document.body.classList.add('live');
@@ -129,6 +132,22 @@
     return c ? (c.cell.text || c.cell.kind) + ' (' + c.name + ' rung ' + c.rung + ')' : 'statement ' + id;
   }
   L.named = named;
+  // A coil whose address another coil also writes (双线圈) is drawn marked: red glyph, "2×".
+  function markDouble(div) {
+    div.querySelectorAll('g.el.coil[data-stmt], g.el.coil-not[data-stmt]').forEach(function (g) {
+      var c = cellOf[g.dataset.stmt];
+      if (!c || !uses[c.cell.text] || coils(c.cell.text) < 2 || g.querySelector('text.dblm')) return;
+      g.classList.add('dbl');
+      var s = g.querySelector('path.sym'), t = document.createElementNS('http://www.w3.org/2000/svg', 'text');
+      var bb = s.getBBox();
+      t.setAttribute('class', 'dblm'); // left of the glyph above the wire: clear of the rail
+      t.setAttribute('x', bb.x - 4);
+      t.setAttribute('y', bb.y + 3);
+      t.setAttribute('text-anchor', 'end');
+      t.textContent = coils(c.cell.text) + '× 双线圈';
+      g.appendChild(t);
+    });
+  }
   function coils(a) { return uses[a].filter(function (u) { return u.role === 'write (coil)'; }).length; }
   var dbl = Object.keys(uses).filter(function (a) { return coils(a) > 1; });
   document.getElementById('dbl').innerHTML = dbl.length ? dbl.map(function (a) {
@@ -168,45 +187,143 @@
       g.insertBefore(r, g.firstChild);
     });
   }
-  function xref(a) {
-    var u = uses[a] || [], d = document.getElementById('xref');
-    var w = u.filter(function (x) { return x.role === 'write (coil)'; }).length;
-    d.innerHTML = '<b>' + h(a) + '</b>: ' + u.length + ' use(s)' +
-      (w > 1 ? ' <span class="warn">double coil (' + w + ')</span>' : '') +
-      u.map(function (x) {
-        return '<div><a data-s="' + h(x.stmt) + '">' + h(x.name) + ' rung ' + h(x.rung) + '</a> ' +
-          h(x.role) + ' (id ' + h(x.stmt) + ')</div>';
-      }).join('');
+  // The cross-reference of an address (docs/ladder-view.md "Cross-reference"): its uses as
+  // drawn, then the statements whose operands overlap it in memory (R0.2 is written by
+  // `WAND R0 0xE0 R0`), from the model's operand extents; the current values of it and of each
+  // overlapping operand, read when it opens.
+  function overlap(x, y) {
+    if (x[1] + x[2] <= y[1] || y[1] + y[2] <= x[1]) return false;
+    return x[3] < 0 || y[3] < 0 || x[1] * 8 + x[3] === y[1] * 8 + y[3];
   }
+  function overlapping(a, u) {
+    var mem = (model && model.mem) || {}, A = a.toLowerCase(), mine = {}, targets = [], out = [];
+    u.forEach(function (x) {
+      mine[x.stmt] = true;
+      var es = mem[x.stmt] || [];
+      es.forEach(function (e) { if (es.length === 1 || e[0].toLowerCase() === A) targets.push(e); });
+    });
+    Object.keys(mem).forEach(function (id) {
+      if (mine[id]) return;
+      mem[id].forEach(function (e) {
+        if (!targets.some(function (t) { return overlap(t, e); }) || !cellOf[id]) return;
+        var same = out.filter(function (x) { return x.stmt === +id && x.text === e[0]; })[0];
+        if (same) {
+          same.r = same.r || !e[4];
+          same.w = same.w || !!e[4];
+        } else {
+          out.push({ stmt: +id, text: e[0], w: !!e[4], r: !e[4] });
+        }
+      });
+    });
+    return out;
+  }
+  function readAddrs(list) {
+    return fetch('api/read?a=' + list.map(encodeURIComponent).join(','), { headers: HK }).then(function (r) {
+      return r.json().then(function (j) { return { ok: r.ok, body: j }; });
+    });
+  }
+  function xref(a) {
+    var u = uses[a] || [], d = document.getElementById('xref'), o = overlapping(a, u);
+    var w = u.filter(function (x) { return x.role === 'write (coil)'; }).length;
+    var where = function (id) {
+      var c = cellOf[id];
+      return '<a data-s="' + h(id) + '">' + h(c.name) + ' rung ' + h(c.rung) + '</a> ';
+    };
+    d.innerHTML = '<b>' + h(a) + '</b> <span class="xv" data-a="' + h(a) + '"></span>: ' + u.length + ' use(s)' +
+      (w > 1 ? ' <span class="warn">double coil (' + w + ')</span>' : '') +
+      u.map(function (x) { return '<div>' + where(x.stmt) + h(x.role) + '</div>'; }).join('') +
+      (o.length ? '<div class="xo">overlapping in memory:</div>' + o.map(function (x) {
+        var c = cellOf[x.stmt].cell;
+        return '<div>' + where(x.stmt) + (x.w ? (x.r ? 'reads and writes ' : 'writes ') : 'reads ') + h(x.text) + ' <span class="xv" data-a="' +
+          h(x.text) + '"></span> in ' + h(c.text + (c.operands ? ' ' + c.operands.join(' ') : '')) + '</div>';
+      }).join('') : '');
+    var names = [a].concat(o.map(function (x) { return x.text; })).filter(function (x, i, l) { return l.indexOf(x) === i; });
+    readAddrs(names.slice(0, 64)).then(function (r) {
+      if (!r.ok) return;
+      d.querySelectorAll('span.xv').forEach(function (sp) {
+        var k = names.indexOf(sp.dataset.a);
+        if (k >= 0) sp.textContent = '= ' + L.watch.shown(r.body.values[k], r.body.bits[k], r.body.bits[k] > 1 ? 'hex' : 'dec');
+      });
+    }, function () {});
+  }
+  L.xref = xref;
   side.addEventListener('click', function (e) {
     var t = e.target;
     if (t.dataset.s) goTo(t.dataset.s);
     if (t.dataset.x) xref(t.dataset.x);
   });
-  document.getElementById('q').addEventListener('keydown', function (e) {
-    if (e.key !== 'Enter') return;
-    var v = this.value.trim().toLowerCase();
-    if (!v) return;
-    hits = [];
+  // Search as on the HNC-8 screen (docs/ladder-view.md "Search"): Enter or ▼ the next hit,
+  // Shift+Enter or ▲ the previous one (向下/向上查找). A hit is an element whose address or
+  // symbol is the text (or whose symbol holds it), a box or written instruction whose mnemonic
+  // is it (TMRB, CALL), or an element or rung whose comment holds it. `#N` or `rung N` goes to
+  // rung N of the shown part, `PLC2#N` / `PLC2 rung N` of that part.
+  function findHits(v) {
+    var out = [];
     L.layout.parts.forEach(function (p) {
       p.rungs.forEach(function (r) {
+        var first = null, inRung = (r.comment || []).join(' ').toLowerCase().indexOf(v) >= 0;
         r.cells.forEach(function (c) {
-          var t = (c.text || '').toLowerCase(), s = (c.symbol || '').toLowerCase();
-          var o = (c.operands || []).join(' ').toLowerCase();
-          if (c.stmt >= 0 && c.kind !== 'wire' &&
-              (t === v || s.indexOf(v) >= 0 || (' ' + o + ' ').indexOf(' ' + v) >= 0)) hits.push(c.stmt);
+          if (c.stmt < 0 || c.stmt === undefined || c.kind === 'wire' || c.kind === 'vlink' || c.kind === 'join') return;
+          if (first === null) first = c.stmt;
+          var t = (c.text || '').toLowerCase(), sy = (c.symbol || '').toLowerCase();
+          var o = (c.operands || []).join(' ').toLowerCase(), cm = (c.comment || '').toLowerCase();
+          if (t === v || t.split(' ')[0] === v || sy.indexOf(v) >= 0 || (' ' + o + ' ').indexOf(' ' + v + ' ') >= 0 ||
+              cm.indexOf(v) >= 0) out.push(c.stmt);
         });
+        if (inRung && first !== null && out.indexOf(first) < 0) out.push(first);
       });
     });
-    hitAt = (hitAt + 1) % Math.max(hits.length, 1);
-    document.getElementById('qres').textContent = hits.length ? (hitAt + 1) + '/' + hits.length : 'not found';
+    return out;
+  }
+  function goToRung(part, n) {
+    var sel = document.querySelector('section.part.sel'), pi = -1;
+    L.layout.parts.forEach(function (p, k) {
+      if (part ? p.name.toLowerCase() === part.toLowerCase() : sel && p.name === sel.dataset.part) pi = k;
+    });
+    if (pi < 0) return false;
+    var ri = -1;
+    L.layout.parts[pi].rungs.forEach(function (r, k) { if (r.number === n) ri = k; });
+    if (ri < 0) return false;
+    var b = document.querySelectorAll('.tab')[pi];
+    if (b) b.click();
+    var d = rungDiv(pi, ri);
+    draw(d);
+    d.scrollIntoView({ block: 'center' });
+    var c = L.layout.parts[pi].rungs[ri].cells.filter(function (x) { return x.stmt >= 0 && byId[x.stmt]; })[0];
+    mark(c ? byId[c.stmt].slice(0, 1) : []);
+    return true;
+  }
+  var lastQ = '';
+  function search(dir) {
+    var raw = document.getElementById('q').value.trim(), v = raw.toLowerCase(), res = document.getElementById('qres');
+    if (!v) return;
+    var m = /^(?:(\S+?)\s*)?(?:#|rung\s+)(\d+)$/i.exec(raw);
+    if (m) {
+      res.textContent = goToRung(m[1], +m[2]) ? 'rung ' + m[2] : 'no rung ' + m[2];
+      return;
+    }
+    if (v !== lastQ) {
+      hits = findHits(v);
+      hitAt = dir > 0 ? -1 : 0;
+      lastQ = v;
+    }
+    var n = Math.max(hits.length, 1);
+    hitAt = ((hitAt + dir) % n + n) % n;
+    res.textContent = hits.length ? (hitAt + 1) + '/' + hits.length : 'not found';
     if (hits.length) {
       goTo(hits[hitAt]);
       var c = cellOf[hits[hitAt]].cell;
-      xref(c.text || v.toUpperCase());
+      if (c.text && /^(contact|coil|set|rst)/.test(c.kind)) xref(c.text);
+      else if (uses[raw] || uses[raw.toUpperCase()]) xref(uses[raw] ? raw : raw.toUpperCase());
     }
+  }
+  L.search = search;
+  document.getElementById('q').addEventListener('keydown', function (e) {
+    if (e.key === 'Enter') search(e.shiftKey ? -1 : 1);
   });
-  document.getElementById('q').addEventListener('input', function () { hitAt = -1; });
+  document.getElementById('qup').addEventListener('click', function () { search(-1); });
+  document.getElementById('qdn').addEventListener('click', function () { search(1); });
+  document.getElementById('q').addEventListener('input', function () { lastQ = ''; });
   document.addEventListener('click', function (e) {
     menu.style.display = 'none';
     var g = e.target.closest && e.target.closest('g.el[data-stmt]');
@@ -310,11 +427,7 @@
         tr.querySelector('td.wv').textContent = shown(r.v, r.bits, r.f);
       });
     }
-    function read(list) {
-      return fetch('api/read?a=' + list.map(encodeURIComponent).join(','), { headers: HK }).then(function (r) {
-        return r.json().then(function (j) { return { ok: r.ok, body: j }; });
-      });
-    }
+    var read = readAddrs;
     var busy = false, known = false;
     function poll() {
       if (busy || !rows.length) return;
