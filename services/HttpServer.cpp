@@ -514,6 +514,21 @@ struct HttpServer::Impl {
     if (p == "/api/trace") {
       // ?have=ID: the id of the capture the page holds; the rows are sent only when newer.
       json q{{"cmd", "trace"}, {"action", "capture"}};
+      // ?save=vcd|csv (&bits=1): the last capture as a file to download, as monitor trace save.
+      if (const char *sv = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "save")) {
+        const std::string f = sv;
+        if (f != "vcd" && f != "csv") {
+          rq.answered = true;
+          responding(c);
+          return queue(c, error(400, "save must be vcd or csv, got '" + clientText(f) + "'"));
+        }
+        const char *bits = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "bits");
+        q = {{"cmd", "trace"},
+             {"action", "save"},
+             {"format", f},
+             {"bits", bits && std::string(bits) == "1"}};
+        return defer(c, rq, Job{Job::Locks, c, std::move(q), {}});
+      }
       if (const char *hv = MHD_lookup_connection_value(c, MHD_GET_ARGUMENT_KIND, "have")) {
         char *end = nullptr;
         errno = 0;
@@ -650,6 +665,16 @@ struct HttpServer::Impl {
             if (cmd == "trace") ans["read_only"] = cfg.readOnly; // what the panel may do
             if ((cmd == "trace" || cmd == "read") && !ans.value("ok", false)) r.status = 400;
             r.body = jsonText(ans);
+            if (j.req.value("action", std::string()) == "save" && ans.value("ok", false)) {
+              // a download: the file's text itself, named after the capture
+              const std::string f = j.req.value("format", std::string("vcd"));
+              r.body = ans.value("data", std::string());
+              r.type = f == "vcd" ? "text/plain; charset=utf-8" : "text/csv; charset=utf-8";
+              r.headers.push_back(
+                  {"Content-Disposition", "attachment; filename=\"capture-" +
+                                              std::to_string(ans.value("capture", uint64_t{0})) +
+                                              "." + f + "\""});
+            }
             break;
           }
           case Job::Asset: {

@@ -62,6 +62,8 @@
     '<span style="flex:1"></span><button data-act="arm" id="trarm">启动 arm</button>' +
     '<button data-act="trigger" id="trtrig">触发 trigger</button><button data-act="stop" id="trstop">停止 stop</button></div>' +
     '<div class="row" id="trmsg"></div>' +
+    '<div class="row" id="trdl" hidden>download the last capture: <a id="trvcd" download>VCD</a>' +
+    '<a id="trvcdb" download>VCD (bit wires, PulseView)</a><a id="trcsv" download>CSV</a></div>' +
     '<div id="trplots"><div id="trbits"></div><div id="trwords"></div></div>' +
     '<div class="row" id="trcur">click the plot: cursor A; a second click (or shift-click): cursor B. ' +
     'Drag: zoom; shift-drag: pan; double-click: all.</div>' +
@@ -256,6 +258,12 @@
     T.haveId = c.id;
     T.a = T.b = null;
     msg('capture ' + c.capture + ': ' + rows + ' ticks, trigger at tick ' + c.trigger_tick);
+    // Downloads through GET api/trace?save= (the server's VCD / CSV writer, as monitor trace save).
+    const k = '&k=' + encodeURIComponent(KEY);
+    $('trvcd').href = 'api/trace?save=vcd' + k;
+    $('trvcdb').href = 'api/trace?save=vcd&bits=1' + k;
+    $('trcsv').href = 'api/trace?save=csv' + k;
+    $('trdl').hidden = false;
     loadLib().then(function (ok) { if (ok) plot(); });
   }
   /// The value of signal k at tick t: the last row at or before t (a tick that did not run has
