@@ -7,7 +7,8 @@ POST /api/edit/update (更新修改) from the request to its answer, which comes
 runs (docs/ladder-edit.md, step 4: the online change has swapped it in). Serve's own statistics
 give the online change's latency (requested -> new code running) and the scan's overruns and
 missed deadlines around the swaps, which must not grow. Not a CTest test (timing).
-Usage: bench/edit_update_latency.py BUILD_DIR WORK_DIR [CHANGES]"""
+Usage: bench/edit_update_latency.py BUILD_DIR WORK_DIR [CHANGES] [SERVE_OPTIONS]
+(SERVE_OPTIONS: one argument, e.g. "--rt-priority 50 --cpu 1", added to serve's command line)"""
 import http.client
 import json
 import os
@@ -19,6 +20,7 @@ import time
 
 build, work = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 changes = int(sys.argv[3]) if len(sys.argv) > 3 else 20
+extra = sys.argv[4].split() if len(sys.argv) > 4 else []
 lj = os.path.join(build, "tools", "ladderjit")
 os.makedirs(work, exist_ok=True)
 prog = os.path.join(work, "p10k.stl")
@@ -31,7 +33,7 @@ sock = os.path.join(work, "c.sock")
 if os.path.exists(sock):
     os.unlink(sock)
 serve = subprocess.Popen([lj, "serve", prog, "--http", "127.0.0.1:0", "--control", sock,
-                          "--duration", "900"], stdout=subprocess.PIPE,
+                          "--duration", "900"] + extra, stdout=subprocess.PIPE,
                          stderr=open(os.path.join(work, "serve.err"), "w"), text=True)
 port = token = None
 deadline = time.time() + 60
