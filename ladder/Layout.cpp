@@ -358,6 +358,53 @@ RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &s
   return r;
 }
 
+namespace {
+
+/// One grid per program (docs/ladder-view.md "Layout rules"): every ladder rung of the program
+/// gets the same right rail, the widest of the rungs up to a 2-cell box at the output column
+/// (kMinInputCols + 2), so the rail does not move between coil rungs and box rungs; a rung
+/// wider than that keeps its own width and scrolls. The outputs at the right rail move right
+/// with it, each row they occupy (a box's input pins too) continued by wire to them.
+void oneGrid(Layout &l) {
+  int cols = 0;
+  for (const PartLayout &p : l.parts)
+    for (const RungLayout &r : p.rungs)
+      if (r.kind == "ladder" && r.cols <= kMinInputCols + 2) cols = std::max(cols, r.cols);
+  for (PartLayout &p : l.parts)
+    for (RungLayout &r : p.rungs) {
+      if (r.kind != "ladder" || r.cols >= cols) continue;
+      const int delta = cols - r.cols;
+      std::vector<Cell> wires;
+      for (Cell &c : r.cells) {
+        if (c.kind == "wire" || c.kind == "vlink" || c.kind == "join" || c.col + c.width != r.cols)
+          continue;
+        std::vector<int> rows{c.row};
+        for (int pin : c.pins)
+          if (pin > 0) rows.push_back(c.row + pin);
+        for (int row : rows) {
+          auto w = std::find_if(r.cells.begin(), r.cells.end(), [&](const Cell &x) {
+            return x.kind == "wire" && x.row == row && x.col + x.width == c.col;
+          });
+          if (w != r.cells.end()) {
+            w->width += delta;
+          } else {
+            Cell nw;
+            nw.kind = "wire";
+            nw.row = row;
+            nw.col = c.col;
+            nw.width = delta;
+            wires.push_back(nw);
+          }
+        }
+        c.col += delta;
+      }
+      r.cells.insert(r.cells.end(), wires.begin(), wires.end());
+      r.cols = cols;
+    }
+}
+
+} // namespace
+
 Layout layout(const Networks &nets) {
   Layout l;
   l.file = nets.file;
@@ -373,6 +420,7 @@ Layout layout(const Networks &nets) {
       pl.rungs.push_back(layoutRung(rung, numbered(rung) ? ++number : 0, nets.symbols));
     l.parts.push_back(std::move(pl));
   }
+  oneGrid(l);
   return l;
 }
 

@@ -2,6 +2,8 @@
 """The live page's layout (issue 32, page item 5; docs/ladder-view.md "Live view"), in headless
 Chromium on examples/lathe_panel.stl:
 - the page opens on PLC1 (the first level), not on the init part that comes first in the file;
+- one grid per program: PLC2's rung ending in the 2-cell box `WAND F2560 15 W0` and its coil
+  rungs share one right rail;
 - trailing comments are shown right of the right rail, on their element's row, as the HNC-8
   editor does (`AND X484.2 ; +X` in rung 9: "; +X" right of the rail at X484.2's row);
 - a force mark on a contact standing on the left rail (R0.2 at column 0 of rung 9) lies right of
@@ -27,6 +29,16 @@ try:
     parts = driver.execute_script("return window.ladder.layout.parts.map(function(p){return p.name})")
     sel = driver.execute_script("var s=document.querySelector('section.part.sel');return s&&s.dataset.part")
     check(parts[0] == "init" and sel == "PLC1", "the page opens on PLC1 (parts %s, shown %s)" % (parts, sel))
+    # one grid per program: PLC2's WAND rung (a 2-cell box at the rail) and its coil rungs share
+    # one right rail
+    driver.execute_script("document.querySelectorAll('.tab')[2].click()")
+    time.sleep(0.5)
+    rails = driver.execute_script(
+        "return Array.from(document.querySelectorAll('section.part.sel g.rung')).map(function(g){"
+        "var r=g.querySelectorAll('line.rail');return r.length>1?+r[1].getAttribute('x1'):null})"
+        ".filter(function(x){return x!==null})")
+    check(len(rails) >= 7 and len(set(rails)) == 1, "PLC2: one right rail for box and coil rungs (%s)" % rails)
+    driver.execute_script("document.querySelectorAll('.tab')[1].click()")
     # rung 9 of PLC1: its R0.2 contact (column 0) and X484.2 with its trailing comment
     ids = driver.execute_script(
         "var r={};window.ladder.layout.parts[1].rungs.forEach(function(g){if(g.number===9)g.cells.forEach("

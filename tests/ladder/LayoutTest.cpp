@@ -160,3 +160,43 @@ TEST(LadderLayout, StlRungIsAnStlBoxKeepingEveryStatement) {
 
 } // namespace
 } // namespace lj::ladder
+
+namespace lj::ladder {
+namespace {
+
+// One grid per program (docs/ladder-view.md "Layout rules"): a coil rung beside a rung ending in
+// a 2-cell box (MOV) gets the box rung's right rail; its coil moves to the rail's column and the
+// wire to it grows by the difference, so power still reaches it; a 40-contact rung keeps its own
+// width (it scrolls) and does not widen the others.
+TEST(LadderLayout, OneRightRailPerProgram) {
+  Diagnostics d("t.stl");
+  std::string wide;
+  for (int i = 0; i < 40; ++i)
+    wide += (i ? "AND X" : "LD X") + std::to_string(i / 8) + "." + std::to_string(i % 8) + "\n";
+  std::optional<VerifiedProgram> p = pipeline::compileStl(
+      "LD X1.0\nOUT Y1.0\nLD X1.1\nMOV 5 D1\n" + wide + "OUT Y2.0\n", "t.stl", VerifyOptions{}, d);
+  ASSERT_TRUE(p) << d.render();
+  Layout l = layout(fromProgram(*p));
+  ASSERT_EQ(l.parts.size(), 1u);
+  ASSERT_EQ(l.parts[0].rungs.size(), 3u);
+  const RungLayout &coil = l.parts[0].rungs[0], &box = l.parts[0].rungs[1],
+                   &w = l.parts[0].rungs[2];
+  EXPECT_EQ(box.cols, kMinInputCols + 2); // the box at the output column takes two cells
+  EXPECT_EQ(coil.cols, box.cols);
+  EXPECT_EQ(w.cols, 41);
+  int wires = 0;
+  for (const Cell &c : coil.cells) {
+    if (c.kind == "coil") {
+      EXPECT_EQ(c.col, box.cols - 1) << "the coil stands at the right rail";
+    }
+    if (c.kind == "wire") {
+      ++wires;
+      EXPECT_EQ(c.col, 1);
+      EXPECT_EQ(c.col + c.width, box.cols - 1) << "the wire reaches the moved coil";
+    }
+  }
+  EXPECT_EQ(wires, 1);
+}
+
+} // namespace
+} // namespace lj::ladder
