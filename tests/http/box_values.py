@@ -11,7 +11,7 @@ counter's count is on the box's values line with its label. Each value is checke
   D11 = 250 from its init): `TMRB 11 0 D10` shows "D10 = 100" on D10's line, no value on the
   constants 11 and 0, and "elapsed ms = N" on the values line with 0 <= N.
 Usage: box_values.py LADDERJIT EXAMPLES OUTDIR"""
-import os, re, subprocess, sys, time
+import os, re, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liveutil  # noqa: E402
@@ -44,9 +44,7 @@ def box(driver, want, seconds=10):
 
 
 def read(sock, addr):
-    r = subprocess.run([exe, "monitor", "--control", sock, "read", addr], capture_output=True, text=True, timeout=10)
-    m = re.search(re.escape(addr) + r"\D+?(-?\d+)\s*$", r.stdout.strip())
-    return int(m.group(1)) if m else None
+    return liveutil.monitor_read(exe, sock, addr)
 
 
 def agrees(driver, sock, want, addr, seconds=5):
@@ -63,11 +61,7 @@ def agrees(driver, sock, want, addr, seconds=5):
 
 
 def serve(program, name, *extra):
-    sock = os.path.join(out, name + ".sock")
-    srv, url, token, _ = liveutil.start_serve(exe, program, sock, os.path.join(out, name + ".err"), 60,
-                                              modbus=False, extra=list(extra))
-    driver = liveutil.chrome()
-    driver.get(url + "?token=" + token)
+    srv, driver, _, _, sock, _ = liveutil.open_page(exe, program, out, name, extra=list(extra))
     return srv, driver, sock
 
 

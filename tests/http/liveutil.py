@@ -2,7 +2,7 @@
 write written out by hand (no client library), `serve` started with its live view and Modbus
 server and their addresses read from its output (the token from the file serve names), and
 headless Chromium through selenium."""
-import re, socket, struct, subprocess, sys
+import os, re, socket, struct, subprocess, sys
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -76,3 +76,23 @@ def stop(driver, serve):
         serve.wait(timeout=10)
     except subprocess.TimeoutExpired:
         serve.kill()
+
+
+def open_page(exe, program, out, name, duration=60, modbus=False, extra=()):
+    """serve PROGRAM with its live view (start_serve; control socket and log named after `name`
+    in `out`) and headless Chromium on its page, the token taken: (serve, driver, url, token,
+    control socket, Modbus port or None)."""
+    sock = os.path.join(out, name + ".sock")
+    serve, url, token, mport = start_serve(exe, program, sock, os.path.join(out, name + ".err"),
+                                           duration, modbus=modbus, extra=extra)
+    driver = chrome()
+    driver.get(url + "?token=" + token)
+    return serve, driver, url, token, sock, mport
+
+
+def monitor_read(exe, sock, addr):
+    """`ladderjit monitor read ADDR`'s value, or None."""
+    r = subprocess.run([exe, "monitor", "--control", sock, "read", addr], capture_output=True,
+                       text=True, timeout=10)
+    m = re.search(r"=\s*(-?\d+)\s*$", r.stdout.strip())
+    return int(m.group(1)) if m else None

@@ -20,12 +20,8 @@ exe, examples, out = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(out, exist_ok=True)
 check = liveutil.check
 
-serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, "lathe_panel.stl"),
-                                            os.path.join(out, "lathe.sock"), os.path.join(out, "lathe.err"),
-                                            60, modbus=False)
-driver = liveutil.chrome()
+serve, driver, _, _, _, _ = liveutil.open_page(exe, os.path.join(examples, "lathe_panel.stl"), out, "lathe")
 try:
-    driver.get(url + "?token=" + token)
     parts = driver.execute_script("return window.ladder.layout.parts.map(function(p){return p.name})")
     sel = driver.execute_script("var s=document.querySelector('section.part.sel');return s&&s.dataset.part")
     check(parts[0] == "init" and sel == "PLC1", "the page opens on PLC1 (parts %s, shown %s)" % (parts, sel))

@@ -88,12 +88,9 @@ def stubs(driver, stmt):
 
 
 def lathe():
-    program = os.path.join(examples, "lathe_panel.stl")
-    serve, url, token, mport = liveutil.start_serve(exe, program, os.path.join(out, "lathe.sock"),
-                                                    os.path.join(out, "lathe.err"), 90)
-    driver = liveutil.chrome()
+    serve, driver, _, _, _, mport = liveutil.open_page(exe, os.path.join(examples, "lathe_panel.stl"), out,
+                                                       "lathe", 90, modbus=True)
     try:
-        driver.get(url + "?token=" + token)
         check(live(driver), "lathe_panel: the page receives traced frames")
         ids, where = driver.execute_script(
             "var ids={},w={};window.ladder.layout.parts.forEach(function(p,pi){p.rungs.forEach(function(r,ri){"
@@ -153,12 +150,8 @@ def lathe():
 
 
 def other(name):
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, name),
-                                                os.path.join(out, name + ".sock"),
-                                                os.path.join(out, name + ".err"), 60, modbus=False)
-    driver = liveutil.chrome()
+    serve, driver, _, _, _, _ = liveutil.open_page(exe, os.path.join(examples, name), out, name)
     try:
-        driver.get(url + "?token=" + token)
         check(live(driver), name + ": the page receives traced frames")
         consistent(driver, name)
     finally:

@@ -11,7 +11,7 @@ examples/lathe_panel.stl:
 - `#12` with PLC1 shown highlights its rung 12; `PLC2#3` switches to PLC2 and rung 3.
 tests/http/xref.stl: the double coil Y0.0 is marked on both coils ("2× 双线圈").
 Usage: search_xref.py LADDERJIT EXAMPLES OUTDIR"""
-import os, re, subprocess, sys, time
+import os, re, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liveutil  # noqa: E402
@@ -26,9 +26,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 
 
 def mread(sock, addr):
-    r = subprocess.run([exe, "monitor", "--control", sock, "read", addr], capture_output=True, text=True, timeout=10)
-    m = re.search(r"=\s*(-?\d+)\s*$", r.stdout.strip())
-    return int(m.group(1)) if m else None
+    return liveutil.monitor_read(exe, sock, addr)
 
 
 def query(driver, text, keys=Keys.ENTER):
@@ -48,12 +46,9 @@ def hit_rung(driver):
 
 
 def lathe():
-    sock = os.path.join(out, "lathe.sock")
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, "lathe_panel.stl"), sock,
-                                                os.path.join(out, "lathe.err"), 60, modbus=False)
-    driver = liveutil.chrome()
+    serve, driver, _, _, sock, _ = liveutil.open_page(exe, os.path.join(examples, "lathe_panel.stl"),
+                                                            out, "lathe")
     try:
-        driver.get(url + "?token=" + token)
         time.sleep(1.5)
         r1 = query(driver, "R0.2")
         n = int(r1.split("/")[1]) if "/" in r1 else 0
@@ -89,11 +84,8 @@ def lathe():
 
 
 def double_coil():
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(here, "xref.stl"), os.path.join(out, "x.sock"),
-                                                os.path.join(out, "x.err"), 60, modbus=False)
-    driver = liveutil.chrome()
+    serve, driver, _, _, _, _ = liveutil.open_page(exe, os.path.join(here, "xref.stl"), out, "x")
     try:
-        driver.get(url + "?token=" + token)
         time.sleep(1.5)
         marks = driver.execute_script(
             "return Array.from(document.querySelectorAll('g.el.coil')).map(function(g){"

@@ -11,7 +11,7 @@ headless Chromium with real clicks and keys:
 - under --http-read-only the table reads but shows no write control, and POST /api/write is
   refused with 403; GET /api/read without the token is refused with 401.
 Usage: watch_table.py LADDERJIT EXAMPLES OUTDIR"""
-import json, os, re, subprocess, sys, time, urllib.request, urllib.error
+import json, os, re, sys, time, urllib.request, urllib.error
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liveutil  # noqa: E402
@@ -26,9 +26,7 @@ check = liveutil.check
 
 
 def mread(sock, addr):
-    r = subprocess.run([exe, "monitor", "--control", sock, "read", addr], capture_output=True, text=True, timeout=10)
-    m = re.search(r"=\s*(-?\d+)\s*$", r.stdout.strip())
-    return int(m.group(1)) if m else None
+    return liveutil.monitor_read(exe, sock, addr)
 
 
 def rows(driver):
@@ -87,12 +85,9 @@ def http(url, path, token=None, body=None):
 
 
 def lathe():
-    sock = os.path.join(out, "lathe.sock")
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, "lathe_panel.stl"), sock,
-                                                os.path.join(out, "lathe.err"), 90, modbus=False)
-    driver = liveutil.chrome()
+    serve, driver, url, token, sock, _ = liveutil.open_page(exe, os.path.join(examples, "lathe_panel.stl"),
+                                                            out, "lathe", 90)
     try:
-        driver.get(url + "?token=" + token)
         driver.execute_script("localStorage.clear()")
         driver.get(url)
         time.sleep(1)
@@ -150,12 +145,9 @@ def lathe():
 
 
 def fanuc_symbol():
-    sock = os.path.join(out, "fanuc.sock")
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, "fanuc_coolant.pmc"), sock,
-                                                os.path.join(out, "fanuc.err"), 60, modbus=False)
-    driver = liveutil.chrome()
+    serve, driver, _, _, sock, _ = liveutil.open_page(exe, os.path.join(examples, "fanuc_coolant.pmc"),
+                                                      out, "fanuc")
     try:
-        driver.get(url + "?token=" + token)
         time.sleep(1)
         add(driver, "M08_ON")
         v = row_value(driver, "M08_ON")
@@ -165,13 +157,9 @@ def fanuc_symbol():
 
 
 def read_only():
-    sock = os.path.join(out, "ro.sock")
-    serve, url, token, _ = liveutil.start_serve(exe, os.path.join(examples, "lathe_panel.stl"), sock,
-                                                os.path.join(out, "ro.err"), 60, modbus=False,
-                                                extra=["--http-read-only"])
-    driver = liveutil.chrome()
+    serve, driver, url, token, sock, _ = liveutil.open_page(exe, os.path.join(examples, "lathe_panel.stl"),
+                                                            out, "ro", extra=["--http-read-only"])
     try:
-        driver.get(url + "?token=" + token)
         time.sleep(1)
         add(driver, "W0")
         v = row_value(driver, "W0")
