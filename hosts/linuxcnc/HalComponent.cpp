@@ -1,6 +1,8 @@
 // The LinuxCNC HAL real-time component `ladderjit` (docs/linuxcnc.md):
 //   loadrt ladderjit program=PATH.so [source=PROGRAM] [map=FILE] [trust=KEY.pub[,KEY.pub]]
-//                    [params=FILE] [retain=FILE] [plc2_nvalue=N]
+//                    [params=FILE] [retain=FILE] [plc2_nvalue=N] [numPhysInputs=N ...]
+// A ClassicLadder source (.clp) exports classicladder_rt's pins and `classicladder.0.refresh`
+// (the drop-in, docs/linuxcnc.md).
 // rtapi_app_main (not real-time) reads and verifies the program source, loads the signed AOT
 // .so through the project's trusted loader (engines/AotLoader: signer, identity, ABI, state
 // size, ELF checks, sealed memfd), builds the pin plan (HalPlan.h), creates the pins and exports
@@ -39,6 +41,33 @@ static char *retain = nullptr;
 RTAPI_MP_STRING(retain, "retentive store file (B, T300..T427, C300..C427; docs/retain.md)");
 static int plc2_nvalue = lj::hal::Options::kNvalueUnset; // not given: the container's, else 200
 RTAPI_MP_INT(plc2_nvalue, "PLC2 nvalue the .so was built with (default: container's, else 200)");
+
+// The ClassicLadder drop-in (docs/linuxcnc.md "ClassicLadder drop-in"): classicladder_rt's
+// loadrt parameters. The six pin sizes size the classicladder.0.* pins of a .clp source (a value
+// > 0 overrides the default, as classicladder_rt reads them); the others size ClassicLadder's own
+// tables, which ladderjit sizes from the program: they are accepted so that a classicladder_rt
+// loadrt line can be kept as it is.
+static int numPhysInputs = 0, numPhysOutputs = 0, numS32in = 0, numS32out = 0, numFloatIn = 0,
+           numFloatOut = 0;
+RTAPI_MP_INT(numPhysInputs, "ClassicLadder source: classicladder.0.in-NN pins (default 15)");
+RTAPI_MP_INT(numPhysOutputs, "ClassicLadder source: classicladder.0.out-NN pins (default 15)");
+RTAPI_MP_INT(numS32in, "ClassicLadder source: classicladder.0.s32in-NN pins (default 10)");
+RTAPI_MP_INT(numS32out, "ClassicLadder source: classicladder.0.s32out-NN pins (default 10)");
+RTAPI_MP_INT(numFloatIn, "ClassicLadder source: classicladder.0.floatin-NN pins (default 10)");
+RTAPI_MP_INT(numFloatOut, "ClassicLadder source: classicladder.0.floatout-NN pins (default 10)");
+static int numRungs = 0, numBits = 0, numWords = 0, numTimers = 0, numMonostables = 0,
+           numCounters = 0, numTimersIec = 0, numArithmExpr = 0, numSections = 0, numSymbols = 0;
+RTAPI_MP_INT(numRungs, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numBits, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numWords, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numTimers, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numMonostables,
+             "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numCounters, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numTimersIec, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numArithmExpr, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numSections, "accepted for classicladder_rt compatibility (sized from the program)");
+RTAPI_MP_INT(numSymbols, "accepted for classicladder_rt compatibility (sized from the program)");
 }
 
 namespace {
@@ -72,6 +101,8 @@ struct Status {
   hal_bit_t *reload;         ///< rising edge: online change (load program= again)
   hal_u32_t *reloads;        ///< online changes swapped in
   hal_u32_t *reloadFailures; ///< online changes refused (RTAPI log says why)
+  hal_bit_t *hideGui;        ///< drop-in: classicladder.0.hide_gui (no GUI here: unused)
+  hal_s32_t ladderState;     ///< drop-in: the parameter classicladder.ladder-state (2 = RUN)
 };
 
 HalPtr *halPins = nullptr;
@@ -138,18 +169,19 @@ void refresh(void *arg, long period) {
   *status->reloadFailures = inst->reloadFailures();
 }
 
-int makePin(const lj::hal::PinSpec &p, HalPtr &ptr) {
+/// `prefix.name`: `ladderjit.x484.5`, or classicladder_rt's `classicladder.0.in-00`.
+int makePin(const lj::hal::PinSpec &p, HalPtr &ptr, const char *prefix) {
   hal_pin_dir_t dir = p.out ? HAL_OUT : HAL_IN;
   const char *n = p.name.c_str();
   switch (p.type) {
   case lj::hal::PinType::Bit:
-    return hal_pin_bit_newf(dir, &ptr.b, compId, "%s.%s", kName, n);
+    return hal_pin_bit_newf(dir, &ptr.b, compId, "%s.%s", prefix, n);
   case lj::hal::PinType::S32:
-    return hal_pin_s32_newf(dir, &ptr.s, compId, "%s.%s", kName, n);
+    return hal_pin_s32_newf(dir, &ptr.s, compId, "%s.%s", prefix, n);
   case lj::hal::PinType::U32:
-    return hal_pin_u32_newf(dir, &ptr.u, compId, "%s.%s", kName, n);
+    return hal_pin_u32_newf(dir, &ptr.u, compId, "%s.%s", prefix, n);
   case lj::hal::PinType::Float:
-    return hal_pin_float_newf(dir, &ptr.f, compId, "%s.%s", kName, n);
+    return hal_pin_float_newf(dir, &ptr.f, compId, "%s.%s", prefix, n);
   }
   return -1;
 }
@@ -172,6 +204,7 @@ int start() {
   opt.params = str(params);
   opt.retain = str(retain);
   opt.plc2Nvalue = plc2_nvalue;
+  opt.classic = {numPhysInputs, numPhysOutputs, numS32in, numS32out, numFloatIn, numFloatOut};
   opt.log = logLine;
   std::string error;
   instance = lj::hal::Instance::create(opt, kName, error);
@@ -184,10 +217,14 @@ int start() {
       static_cast<HalPtr *>(hal_malloc(static_cast<long>(sizeof(HalPtr) * (pins.size() + 1))));
   status = static_cast<Status *>(hal_malloc(sizeof(Status)));
   if (!halPins || !status) return fail("hal_malloc failed (HAL shared memory full)");
+  // A ClassicLadder source: classicladder_rt's pin and function names (the drop-in); the
+  // status pins keep ladderjit's.
+  const bool classic = instance->classicLadder();
+  const std::string prefix = classic ? lj::hal::kClassicPrefix : kName;
   for (size_t i = 0; i < pins.size(); ++i)
-    if (int r = makePin(pins[i], halPins[i]); r != 0)
-      return fail("cannot create pin " + std::string(kName) + "." + pins[i].name + " (" +
-                  std::to_string(r) + ")");
+    if (int r = makePin(pins[i], halPins[i], prefix.c_str()); r != 0)
+      return fail("cannot create pin " + prefix + "." + pins[i].name + " (" + std::to_string(r) +
+                  ")");
   int r = hal_pin_u32_newf(HAL_OUT, &status->scanNs, compId, "%s.scan-time-ns", kName);
   if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->scanMaxNs, compId, "%s.scan-time-max-ns", kName);
   if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->ticks, compId, "%s.ticks", kName);
@@ -198,6 +235,12 @@ int start() {
   if (!r) r = hal_pin_u32_newf(HAL_OUT, &status->reloads, compId, "%s.reloads", kName);
   if (!r)
     r = hal_pin_u32_newf(HAL_OUT, &status->reloadFailures, compId, "%s.reload-failures", kName);
+  if (!r && classic) {
+    r = hal_pin_bit_newf(HAL_IN, &status->hideGui, compId, "%s.hide_gui", prefix.c_str());
+    if (!r)
+      r = hal_param_s32_newf(HAL_RO, &status->ladderState, compId, "classicladder.ladder-state");
+    if (!r) status->ladderState = 2; // RUN: the program runs from the first refresh
+  }
   if (r) return fail("cannot create the status pins (" + std::to_string(r) + ")");
   *status->reload = 0;
   *status->reloads = 0;
@@ -208,7 +251,7 @@ int start() {
   *status->fault = 0;
   *status->watchdog = 0;
   *status->resetMax = 0;
-  std::string fn = std::string(kName) + ".refresh";
+  std::string fn = prefix + ".refresh"; // classicladder.0.refresh for the drop-in
   // uses_fp: float pins are converted; not reentrant (one state).
   if (int e = hal_export_funct(fn.c_str(), refresh, instance, 1, 0, compId); e != 0)
     return fail("cannot export " + fn + " (" + std::to_string(e) + ")");

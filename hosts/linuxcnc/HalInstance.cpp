@@ -81,19 +81,26 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
   if (!out.engine) return false;
   out.entries = out.engine->entries();
   out.profile = prog->profile;
-  out.pins = defaultPins(*prog, *src.dialect);
+  // A ClassicLadder project gets classicladder_rt's pins (docs/linuxcnc.md "ClassicLadder
+  // drop-in"), so its HAL file keeps its nets; other programs their X / Y bits.
+  out.classic = src.dialect == pipeline::dialectNamed("classicladder");
+  if (out.classic) {
+    if (!classicLadderPins(opt.classic, *src.dialect, out.pins, error)) return false;
+  } else {
+    out.pins = defaultPins(*prog, *src.dialect);
+  }
   if (!opt.map.empty()) {
     std::string text;
     if (!formats::readFile(opt.map, text, error)) return false;
     if (!applyMap(text, opt.map, out.pins, error, *src.dialect)) return false;
   }
-  return checkPins(out.pins, prefix, error);
+  return checkPins(out.pins, out.classic ? kClassicPrefix : prefix, error);
 }
 
 std::string sourceBeside(const std::string &soPath) {
   std::string base = soPath;
   if (base.size() > 3 && base.compare(base.size() - 3, 3, ".so") == 0) base.resize(base.size() - 3);
-  for (const char *ext : {".dit", ".stl", ".json", ".pmc", ".il"})
+  for (const char *ext : {".dit", ".stl", ".json", ".pmc", ".il", ".clp"})
     if (exists(base + ext)) return base + ext;
   return {};
 }
@@ -119,6 +126,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   inst->engine_ = std::move(first.engine);
   inst->entries_ = first.entries;
   inst->pins_ = std::move(first.pins);
+  inst->classic_ = first.classic;
   inst->profile_ = first.profile;
   inst->programHash_ = first.hash;
 

@@ -31,6 +31,7 @@ struct Options {
   std::string params;                ///< P values file
   std::string retain;                ///< retentive store file
   int32_t plc2Nvalue = kNvalueUnset; ///< plc2_nvalue=N (0..2^31-1), or unset
+  ClassicSizes classic;              ///< a ClassicLadder source: classicladder_rt's pin sizes
   static constexpr int32_t kNvalueUnset = INT32_MIN;
   std::function<void(const std::string &)> log; ///< RTAPI log (one line per call)
 };
@@ -42,6 +43,8 @@ struct Loaded {
   std::vector<PinSpec> pins;
   const TargetProfile *profile = nullptr;
   std::string hash; ///< "sha256:..." of the program source
+  /// A ClassicLadder source: the pins are classicladder_rt's (prefix kClassicPrefix).
+  bool classic = false;
 };
 
 /// Read and verify `sourcePath`, load `opt.program` through the trusted AOT loader, and plan
@@ -53,7 +56,7 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
 bool samePins(const std::vector<PinSpec> &a, const std::vector<PinSpec> &b);
 
 /// The source beside an AOT .so: PATH without `.so` plus `.dit`, `.stl`, `.json`, `.pmc` or
-/// `.il`, the first that exists; empty when none does.
+/// `.il` or `.clp`, the first that exists; empty when none does.
 std::string sourceBeside(const std::string &soPath);
 
 class Instance {
@@ -74,9 +77,12 @@ public:
   /// thread period: tick n (from 0) runs at floor(n * period_ns / 1e6) ms.
   uint32_t tick(uint64_t periodNs);
 
-  /// Float input pin `i` as the element value: lround(pin / scale), saturated to int32.
+  /// Whether the pins are classicladder_rt's (a ClassicLadder source: the drop-in).
+  bool classicLadder() const { return classic_; }
+  /// Float input pin `i` as the element value: lround(pin / scale), or truncated toward zero
+  /// (PinSpec::truncate), saturated to int32.
   int64_t fromFloat(size_t i, double v) const {
-    double x = v / pins_[i].scale;
+    double x = pins_[i].truncate ? std::trunc(v) : v / pins_[i].scale;
     if (!(x == x)) return 0;
     if (x > 2147483647.0) return 2147483647;
     if (x < -2147483648.0) return -2147483648LL;
@@ -107,6 +113,7 @@ private:
   lj_state *state_ = nullptr;
   std::vector<PinSpec> pins_;
   const TargetProfile *profile_ = nullptr; ///< the program's target (system bits)
+  bool classic_ = false;
   std::unique_ptr<services::RetainStore> retain_;
   std::string soPath_, sourcePath_, programHash_;
   uint64_t ticks_ = 0;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -191,6 +192,45 @@ bool applyMap(std::string_view text, const std::string &file, std::vector<PinSpe
       replaced[i] = true;
     } else {
       pins.push_back(std::move(m));
+    }
+  }
+  return true;
+}
+
+bool classicLadderPins(const ClassicSizes &sizes, const pipeline::Dialect &dialect,
+                       std::vector<PinSpec> &pins, std::string &error) {
+  struct Kind {
+    const char *param, *pin, *var;
+    int32_t size, byDefault;
+    PinType type;
+    bool out;
+  };
+  const Kind kinds[] = {
+      {"numPhysInputs", "in", "%I", sizes.physInputs, 15, PinType::Bit, false},
+      {"numPhysOutputs", "out", "%Q", sizes.physOutputs, 15, PinType::Bit, true},
+      {"numS32in", "s32in", "%IW", sizes.s32in, 10, PinType::S32, false},
+      {"numS32out", "s32out", "%QW", sizes.s32out, 10, PinType::S32, true},
+      {"numFloatIn", "floatin", "%IF", sizes.floatIn, 10, PinType::Float, false},
+      {"numFloatOut", "floatout", "%QF", sizes.floatOut, 10, PinType::Float, true}};
+  pins.clear();
+  for (const Kind &k : kinds) {
+    const int32_t n = k.size > 0 ? k.size : k.byDefault;
+    for (int32_t i = 0; i < n; ++i) {
+      std::string why;
+      std::optional<formats::CliAddress> a = dialect.parseAddress(k.var + std::to_string(i), why);
+      if (!a) {
+        error = std::string(k.param) + "=" + std::to_string(n) + ": " + why;
+        return false;
+      }
+      char name[32];
+      std::snprintf(name, sizeof name, "%s-%02d", k.pin, static_cast<int>(i));
+      PinSpec p;
+      p.name = name;
+      p.type = k.type;
+      p.out = k.out;
+      p.addr = *a;
+      p.truncate = k.type == PinType::Float && !k.out;
+      pins.push_back(std::move(p));
     }
   }
   return true;

@@ -24,8 +24,27 @@ struct PinSpec {
   PinType type = PinType::Bit;
   bool out = false; ///< HAL_OUT: program -> HAL; else HAL_IN: HAL -> program, before each tick
   formats::CliAddress addr;
-  double scale = 1.0; ///< float pins: pin = element * scale (in: element = lround(pin / scale))
+  double scale = 1.0;    ///< float pins: pin = element * scale (in: element = lround(pin / scale))
+  bool truncate = false; ///< float input: element = the pin truncated toward zero (ClassicLadder)
 };
+
+/// The sizes of classicladder_rt's HAL pins, its loadrt parameters (docs/linuxcnc.md
+/// "ClassicLadder drop-in"): as classicladder_rt reads them, a value > 0 overrides the default
+/// (15 bit inputs and outputs, 10 s32 and 10 float inputs and outputs).
+struct ClassicSizes {
+  int32_t physInputs = 0, physOutputs = 0, s32in = 0, s32out = 0, floatIn = 0, floatOut = 0;
+};
+
+/// The prefix of the drop-in's pins and function: classicladder_rt's names.
+inline constexpr const char *kClassicPrefix = "classicladder.0";
+
+/// The pins classicladder_rt exports for its sizes, in its order: in-NN (%In, bit in), out-NN
+/// (%Qn, bit out), s32in-NN (%IWn), s32out-NN (%QWn), floatin-NN (%IFn, truncated toward zero
+/// as ClassicLadder reads a float input), floatout-NN (%QFn); NN is printf's %02d. `dialect`
+/// (ClassicLadder's) reads the variables. False with `error` naming the parameter when a size
+/// is beyond the classicladder profile (%I0..%I511, %IW0..%IW255, %IF0..%IF63...).
+bool classicLadderPins(const ClassicSizes &sizes, const pipeline::Dialect &dialect,
+                       std::vector<PinSpec> &pins, std::string &error);
 
 /// The longest pin name HAL accepts (HAL_NAME_LEN in hal.h), prefix and dot included.
 inline constexpr size_t kHalNameLen = 47;

@@ -225,16 +225,15 @@
   function xref(a) {
     var u = uses[a] || [], d = document.getElementById('xref'), o = overlapping(a, u);
     var w = u.filter(function (x) { return x.role === 'write (coil)'; }).length;
-    var where = function (id) {
-      var c = cellOf[id];
-      return '<a data-s="' + h(id) + '">' + h(c.name) + ' rung ' + h(c.rung) + '</a> ';
+    var where = function (id, name, rung) {
+      return '<a data-s="' + h(id) + '">' + h(name) + ' rung ' + h(rung) + '</a> ';
     };
     d.innerHTML = '<b>' + h(a) + '</b> <span class="xv" data-a="' + h(a) + '"></span>: ' + u.length + ' use(s)' +
       (w > 1 ? ' <span class="warn">double coil (' + w + ')</span>' : '') +
-      u.map(function (x) { return '<div>' + where(x.stmt) + h(x.role) + '</div>'; }).join('') +
+      u.map(function (x) { return '<div>' + where(x.stmt, x.name, x.rung) + h(x.role) + '</div>'; }).join('') +
       (o.length ? '<div class="xo">overlapping in memory:</div>' + o.map(function (x) {
-        var c = cellOf[x.stmt].cell;
-        return '<div>' + where(x.stmt) + (x.w ? (x.r ? 'reads and writes ' : 'writes ') : 'reads ') + h(x.text) + ' <span class="xv" data-a="' +
+        var cc = cellOf[x.stmt], c = cc.cell;
+        return '<div>' + where(x.stmt, cc.name, cc.rung) + (x.w ? (x.r ? 'reads and writes ' : 'writes ') : 'reads ') + h(x.text) + ' <span class="xv" data-a="' +
           h(x.text) + '"></span> in ' + h(c.text + (c.operands ? ' ' + c.operands.join(' ') : '')) + '</div>';
       }).join('') : '');
     var names = [a].concat(o.map(function (x) { return x.text; })).filter(function (x, i, l) { return l.indexOf(x) === i; });

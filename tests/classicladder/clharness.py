@@ -23,6 +23,9 @@ Usage:
   clharness.py compare CLP_TOOL PROJECT OUTDIR --other 'CMD {project} {stimulus} {trace}'
   clharness.py real    CLP_TOOL ROOT OUTDIR [--periods N]     every .clp under ROOT, a table
   clharness.py gen     CLP_TOOL OUTDIR [--count N] [--periods N] [--seed S] [--rungs R]
+  clharness.py dropin  CLP_TOOL LADDERJIT MODULE ROOT OUTDIR --real REL... --gen N
+                       ClassicLadder against ladderjit's HAL drop-in (loadrt ladderjit with
+                       the .clp) in the same HAL file, period by period
   clharness.py suite   CLP_TOOL ROOT OUTDIR --real REL... --gen N [--other CMD]
                        ClassicLadder against the other side (default: `clp_tool ref`, the
                        reference scan of oracle/classicladder) on real and generated projects
@@ -42,7 +45,7 @@ import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "hal"))
-from halrig import RigError  # noqa: E402
+from halrig import RigError, install_module  # noqa: E402
 
 PERIOD_NS = 1000000  # 1 ms: one scan per call (classicladder.md 4.1)
 ITEMS = 20           # items per streamer/sampler channel (the components take at most 21)
@@ -136,8 +139,10 @@ def chunks(items):
     return [items[i:i + ITEMS] for i in range(0, len(items), ITEMS)] or [[]]
 
 
-def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths):
-    """The HAL commands of one oracle run, and the channel layouts."""
+def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths, dropin=None):
+    """The HAL commands of one oracle run, and the channel layouts. `dropin` (the .so and the
+    trusted key): the same HAL file run on ladderjit's drop-in instead (docs/linuxcnc.md
+    "ClassicLadder drop-in": the loadrt line replaced, the loader line gone)."""
     nbits_in = sum(p.startswith("in-") for p in ins)
     nbits_out = sum(p.startswith("out-") for p in outs)
     in_words = (nbits_in + IN_BITS - 1) // IN_BITS
@@ -159,7 +164,9 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
                        "carry")
     depth = periods + 64
     args = " ".join(f"{k}={v}" for k, v in loadrt.items())
-    lines = [f"loadrt classicladder_rt {args}",
+    first = (f"loadrt ladderjit program={dropin['so']} source={project} trust={dropin['key']} "
+             f"{args}" if dropin else f"loadrt classicladder_rt {args}")
+    lines = [first,
              f"loadrt streamer depth={','.join([str(depth)] * len(s_ch))} "
              f"cfg={','.join(''.join(t for t, _ in c) for c in s_ch)}",
              f"loadrt sampler depth={','.join([str(depth)] * len(o_ch))} "
@@ -200,7 +207,8 @@ def hal_file(hal, project, loadrt, ins, outs, periods, stream_path, sample_paths
                 lines.append(f"net ow{name[1:]} wsum.{name[1:]}.sum {dst}")
             else:
                 lines.append(f"net s-{name} classicladder.0.{name} {dst}")
-    lines.append(f"loadusr -w classicladder --nogui {project}")
+    if not dropin:
+        lines.append(f"loadusr -w classicladder --nogui {project}")
     for c in range(len(s_ch)):
         lines.append(f"loadusr -w halstreamer -c {c} {stream_path[c]}")
     lines.append("start")
@@ -226,8 +234,10 @@ def fmt(v):
     return f"{v:.6f}" if isinstance(v, float) else str(v)
 
 
-def record(clp_tool, project, outdir, periods, seed, hal=None):
-    """ClassicLadder's trace of `project`: returns dict(ok, reason, stimulus, trace, seconds)."""
+def record(clp_tool, project, outdir, periods, seed, hal=None, ladderjit=None):
+    """ClassicLadder's trace of `project`: returns dict(ok, reason, stimulus, trace, seconds).
+    With `ladderjit` (the driver): the same run on ladderjit's HAL drop-in, the project compiled
+    with `ladderjit compile` and signed with a key of the run's own (trace ladderjit-hal.csv)."""
     os.makedirs(outdir, exist_ok=True)
     info = project_info(clp_tool, project)
     if not info["ok"]:
@@ -241,10 +251,23 @@ def record(clp_tool, project, outdir, periods, seed, hal=None):
     proj = os.path.join(hal.dir, "project.clp")
     shutil.copyfile(project, proj)
     os.chmod(proj, 0o644)
+    dropin = None
+    if ladderjit:
+        keys = os.path.join(hal.dir, "keys")
+        so = os.path.join(hal.dir, "project.so")
+        env = dict(hal.env, LADDERJIT_KEY_DIR=keys, LADDERJIT_CACHE="off")
+        r = subprocess.run([ladderjit, "compile", proj, "-o", so], env=env, capture_output=True,
+                           text=True, timeout=300)
+        if r.returncode != 0:
+            return dict(ok=False, reason="ladderjit compile failed: " + (r.stdout + r.stderr)[-800:])
+        os.chmod(so, 0o644)
+        os.chmod(keys, 0o755)  # rtapi_app reads the public key as its fallback user
+        dropin = dict(so=so, key=os.path.join(keys, "aot-signing.pub"))
     # streamer files, one per channel, in channel item order
     lines, s_ch, o_ch = hal_file(hal, proj, loadrt, ins, outs, periods,
                                  [os.path.join(hal.dir, f"stream{c}.txt") for c in range(8)],
-                                 [os.path.join(hal.dir, f"sample{c}.txt") for c in range(8)])
+                                 [os.path.join(hal.dir, f"sample{c}.txt") for c in range(8)],
+                                 dropin)
     col = {p: i for i, p in enumerate(ins)}
     for c, chan in enumerate(s_ch):
         out = []
@@ -310,7 +333,7 @@ def record(clp_tool, project, outdir, periods, seed, hal=None):
                     named[name] = float(v) if t == "f" else int(v)
         trace.append([fmt(named[p]) for p in outs])
     stim_csv = os.path.join(outdir, "stimulus.csv")
-    trace_csv = os.path.join(outdir, "classicladder.csv")
+    trace_csv = os.path.join(outdir, "ladderjit-hal.csv" if ladderjit else "classicladder.csv")
     write_csv(stim_csv, ins, [[fmt(v) for v in row] for row in rows])
     write_csv(trace_csv, outs, trace)
     return dict(ok=True, stimulus=stim_csv, trace=trace_csv, seconds=seconds, outs=outs,
@@ -406,6 +429,46 @@ def cmd_suite(a):
     finally:
         shutil.rmtree(hal.dir, ignore_errors=True)
     print(f"{len(a.real) + a.gen} projects, {bad} with differences or not run")
+    return 1 if bad else 0
+
+
+def cmd_dropin(a):
+    """ClassicLadder against ladderjit's HAL drop-in, both in the same kind of HAL thread with
+    the same streamed inputs, period by period: real projects under ROOT and generated ones.
+    Fails on any difference or any project that does not run."""
+    install_module(a.module)
+    hal = Hal(tempfile.mkdtemp(prefix="cldropin-"))
+    projects = [(os.path.join(a.root, rel), rel, 1 + i) for i, rel in enumerate(a.real)]
+    os.makedirs(a.outdir, exist_ok=True)
+    for k in range(a.gen):
+        seed = a.seed + k
+        clp = os.path.join(a.outdir, f"gen{seed}.clp")
+        subprocess.run([a.clp_tool, "gen", str(seed), clp, "8"], check=True, timeout=60)
+        projects.append((clp, f"gen{seed}.clp", seed))
+    bad = 0
+    try:
+        for path, rel, seed in projects:
+            # the trace folder: beside a generated project, never its own name
+            out = os.path.join(a.outdir, re.sub(r"\.clp$", "", rel.replace("/", "__")))
+            cl = record(a.clp_tool, path, out, a.periods, seed, hal)
+            lj = record(a.clp_tool, path, out, a.periods, seed, hal, ladderjit=a.ladderjit) \
+                if cl["ok"] else cl
+            if not cl["ok"] or not lj["ok"]:
+                bad += 1
+                side = "ClassicLadder" if not cl["ok"] else "ladderjit's drop-in"
+                print(f"{rel}: {side} did not run it: {(cl if not cl['ok'] else lj)['reason']}")
+                continue
+            diffs, n = diff(cl["trace"], lj["trace"])
+            changed, changes = activity(cl["trace"])
+            print(f"{rel}: {a.periods} periods x {len(cl['outs'])} output pins ({changed} changing, "
+                  f"{changes} changes): {n} differences (classicladder_rt {cl['seconds']:.1f} s, "
+                  f"ladderjit {lj['seconds']:.1f} s)", flush=True)
+            for d in diffs:
+                print("  period {} {}: ClassicLadder {} ladderjit {}".format(*d))
+            bad += n != 0
+    finally:
+        shutil.rmtree(hal.dir, ignore_errors=True)
+    print(f"{len(projects)} projects, {bad} with differences or not run")
     return 1 if bad else 0
 
 
@@ -506,6 +569,16 @@ def main():
     s.add_argument("--periods", type=int, default=2000)
     s.add_argument("--seed", type=int, default=1)
     s.add_argument("--other", default="")
+    s = sub.add_parser("dropin")
+    s.add_argument("clp_tool")
+    s.add_argument("ladderjit")
+    s.add_argument("module", help="the built HAL component (ladderjit.so)")
+    s.add_argument("root")
+    s.add_argument("outdir")
+    s.add_argument("--real", nargs="*", default=[], help="projects relative to ROOT")
+    s.add_argument("--gen", type=int, default=0)
+    s.add_argument("--periods", type=int, default=2000)
+    s.add_argument("--seed", type=int, default=1)
     s = sub.add_parser("gen")
     s.add_argument("clp_tool")
     s.add_argument("outdir")
@@ -516,7 +589,7 @@ def main():
     a = ap.parse_args()
     try:
         return {"record": cmd_record, "compare": cmd_compare, "real": cmd_real,
-                "gen": cmd_gen, "suite": cmd_suite}[a.cmd](a)
+                "gen": cmd_gen, "suite": cmd_suite, "dropin": cmd_dropin}[a.cmd](a)
     except RigError as e:
         print(f"error: {e}")
         return 1

@@ -157,4 +157,43 @@ TEST(HalPlan, IecPinsDropThePercentSign) {
             (std::vector<std::string>{"in i0.2", "out q0.1"}));
 }
 
+// The ClassicLadder drop-in (docs/linuxcnc.md "ClassicLadder drop-in"): classicladder_rt's pins
+// for its sizes (classicladder.md 3.3: in-NN, out-NN, s32in-NN, s32out-NN, floatin-NN,
+// floatout-NN; NN %02d; a value > 0 overrides the defaults 15, 15, 10, 10, 10, 10).
+TEST(HalPlan, ClassicLadderPinsAreClassicladderRtsForItsSizes) {
+  const lj::pipeline::Dialect &cl = *lj::pipeline::dialectNamed("classicladder");
+  std::vector<PinSpec> pins;
+  std::string error;
+  ASSERT_TRUE(lj::hal::classicLadderPins({}, cl, pins, error)) << error;
+  ASSERT_EQ(pins.size(), 70u); // the defaults: 15 + 15 + 10 + 10 + 10 + 10
+  EXPECT_EQ(pins[0].name, "in-00");
+  EXPECT_EQ(pins[14].name, "in-14");
+  EXPECT_EQ(pins[15].name, "out-00");
+  EXPECT_EQ(pins[30].name, "s32in-00");
+  EXPECT_EQ(pins[69].name, "floatout-09");
+  EXPECT_FALSE(pins[0].out);
+  EXPECT_TRUE(pins[15].out);
+  EXPECT_EQ(pins[0].type, PinType::Bit);
+  EXPECT_EQ(pins[30].type, PinType::S32);
+  EXPECT_EQ(pins[50].type, PinType::Float); // floatin-00
+  EXPECT_TRUE(pins[50].truncate) << "ClassicLadder reads a float input truncated toward zero";
+  EXPECT_FALSE(pins[60].truncate); // floatout-00
+  EXPECT_EQ(cl.formatAddress(pins[14].addr), "%I14");
+  EXPECT_EQ(cl.formatAddress(pins[30].addr), "%IW0");
+  EXPECT_EQ(cl.formatAddress(pins[69].addr), "%QF9");
+
+  // Sizes as loadrt gives them: 0 or negative keeps the default; past 99 the name has 3 digits.
+  ASSERT_TRUE(lj::hal::classicLadderPins({120, 2, -1, 0, 1, 1}, cl, pins, error)) << error;
+  EXPECT_EQ(pins.size(), 120u + 2 + 10 + 10 + 1 + 1);
+  EXPECT_EQ(pins[119].name, "in-119");
+  EXPECT_EQ(pins[120].name, "out-00");
+
+  // Beyond the classicladder profile (%I0..%I511): refused, naming the parameter.
+  EXPECT_FALSE(lj::hal::classicLadderPins({600, 0, 0, 0, 0, 0}, cl, pins, error));
+  EXPECT_NE(error.find("numPhysInputs=600"), std::string::npos) << error;
+  // The default set passes HAL's name rules under classicladder_rt's prefix.
+  ASSERT_TRUE(lj::hal::classicLadderPins({}, cl, pins, error)) << error;
+  EXPECT_TRUE(lj::hal::checkPins(pins, lj::hal::kClassicPrefix, error)) << error;
+}
+
 } // namespace
