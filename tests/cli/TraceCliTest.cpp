@@ -42,6 +42,13 @@ TEST(TraceCli, WarningsAreOneLineOutsideCheck) {
   EXPECT_EQ(r.err, line);
   r = runCli({"ladder", prog, "--quiet"});
   EXPECT_EQ(r.err, "");
+  // bench too (its table goes to stdout), and --quiet drops the line.
+  r = runCli({"bench", prog, "--engine", "interp", "--scans", "5"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, line);
+  r = runCli({"bench", prog, "--engine", "interp", "--scans", "5", "--quiet"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err, "");
   // With --dialect, the command that lists them says it too.
   r = runCli({"run", prog, "--dialect", "hnc8", "--engine", "interp"});
   EXPECT_NE(r.err.find("`ladderjit check --dialect hnc8 " + prog + "`"), std::string::npos)

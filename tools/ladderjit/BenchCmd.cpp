@@ -302,7 +302,9 @@ int measure(const BenchArgs &a, Measured &m, unsigned rounds) {
   ft.readUs = usSince(tr);
   const int32_t nvalue = effectiveNvalue(src, a.plc2Nvalue, a.plc2NvalueGiven);
   std::optional<VerifiedProgram> &prog = m.prog;
-  prog = loadProgram(src, nvalue, code);
+  // Warnings as run / ladder / serve report them: one line with the count (docs/bench.md).
+  prog = loadProgram(src, nvalue, code, a.quiet ? WarningReport::None : WarningReport::Summary,
+                     a.dialect);
   if (!prog) return code;
   if (const AreaInfo &x = prog->profile->area(Area::Input); x.offset >= offsetof(lj_state, mem)) {
     in.memInputOffset = x.offset;

@@ -168,6 +168,7 @@ struct BenchArgs {
   std::string shapes;         ///< --corpus: comma-separated shape names (empty: all)
   int32_t statements = 10000; ///< --corpus: statements per shape
   std::string keepPrograms;   ///< --corpus: directory to write the generated programs to
+  bool quiet = false;         ///< --quiet: no verifier-warning count line
 };
 /// `ladderjit bench`: compile phases and scan times of PROGRAM per engine and tier
 /// (docs/bench.md).

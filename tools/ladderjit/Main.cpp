@@ -209,6 +209,7 @@ int mainImpl(int argc, char **argv) {
   lastWins(cBench->add_option("--seed", bn.seed, "seed of the pseudo-random inputs (default 1)")
                ->check(kUnsigned));
   cBench->add_flag("--cache", bn.cache, "compile through the object cache (default: off)");
+  cBench->add_flag("--quiet", bn.quiet, "not even the one line that counts verifier warnings");
   cBench->add_flag("--trace", bn.trace,
                    "also time the traced builds of the live view (interp-traced, jit-*-traced)");
   cBench->add_flag("--c-baseline", bn.cBaseline,
