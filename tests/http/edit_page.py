@@ -25,7 +25,7 @@ its stimulus (`serve PROGRAM --http`, the stimulus file's steps written in order
 
 Screenshots of every step go to OUTDIR/*.png. Bounded: every wait has a deadline.
 Usage: edit_page.py LADDERJIT EXAMPLES OUTDIR"""
-import difflib, json, os, shutil, sys, tempfile, time
+import difflib, json, os, shutil, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
@@ -33,8 +33,6 @@ import httputil  # noqa: E402
 import serveutil  # noqa: E402
 from httputil import call, check  # noqa: E402
 
-from selenium import webdriver  # noqa: E402
-from selenium.webdriver.chrome.service import Service  # noqa: E402
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
@@ -46,30 +44,10 @@ os.makedirs(out)
 
 
 def chrome():
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = "/usr/bin/chromium"
-    for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-              "--disable-component-update", "--disable-sync", "--no-first-run",
-              "--window-size=1400,1000", "--user-data-dir=" + tempfile.mkdtemp(prefix="ljedit")]:
-        opts.add_argument(a)
-    d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
-    d.set_script_timeout(20)
-    return d
+    return httputil.chrome(1400, "ljedit")
 
 
-def wait(what, fn, seconds=30):
-    """fn() until truthy (its value) or None after `seconds`."""
-    end = time.time() + seconds
-    while time.time() < end:
-        try:
-            v = fn()
-        except Exception:  # noqa: BLE001 - an element between two renders
-            v = None
-        if v:
-            return v
-        time.sleep(0.1)
-    print("     (waited %d s for %s)" % (seconds, what))
-    return None
+wait = httputil.wait
 
 
 class Page:

@@ -167,3 +167,36 @@ def call(srv, path, body=None, token=True, origin=None, host=None):
         return st, json.loads(rest)
     except ValueError:
         return st, {}
+
+
+def chrome(width=1400, prefix="ljpage"):
+    """Headless Chromium through selenium with a fresh profile (background network, sync and
+    update off) and a 20 s script timeout; selenium is imported here, so the HTTP-only tests
+    do not need it."""
+    import tempfile
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = "/usr/bin/chromium"
+    for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+              "--disable-component-update", "--disable-sync", "--no-first-run",
+              "--window-size=%d,1000" % width, "--user-data-dir=" + tempfile.mkdtemp(prefix=prefix)]:
+        opts.add_argument(a)
+    d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
+    d.set_script_timeout(20)
+    return d
+
+
+def wait(what, fn, seconds=30):
+    """fn() until truthy (its value) or None after `seconds`."""
+    end = time.time() + seconds
+    while time.time() < end:
+        try:
+            v = fn()
+        except Exception:  # noqa: BLE001 - an element between two renders
+            v = None
+        if v:
+            return v
+        time.sleep(0.1)
+    print("     (waited %d s for %s)" % (seconds, what))
+    return None

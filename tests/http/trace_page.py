@@ -25,7 +25,7 @@ R10.0 / STMR ...`) with its three uses in the cross-reference. Screenshots go to
 at the end) is docs/images/trace-panel.png. Bounded: every wait has a deadline.
 
 Usage: trace_page.py LADDERJIT EXAMPLES OUTDIR"""
-import os, re, shutil, sys, tempfile, time
+import os, re, shutil, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
@@ -33,8 +33,6 @@ import httputil  # noqa: E402
 import serveutil  # noqa: E402
 from httputil import check  # noqa: E402
 
-from selenium import webdriver  # noqa: E402
-from selenium.webdriver.chrome.service import Service  # noqa: E402
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.by import By  # noqa: E402
 
@@ -49,29 +47,10 @@ RUN_ON_TICKS = 500 // PERIOD_MS  # STMR 2 0 500 at 10 ms a tick
 
 
 def chrome():
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = "/usr/bin/chromium"
-    for a in ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-              "--disable-component-update", "--disable-sync", "--no-first-run",
-              "--window-size=1700,1000", "--user-data-dir=" + tempfile.mkdtemp(prefix="ljtrace")]:
-        opts.add_argument(a)
-    d = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=opts)
-    d.set_script_timeout(20)
-    return d
+    return httputil.chrome(1700, "ljtrace")
 
 
-def wait(what, fn, seconds=30):
-    end = time.time() + seconds
-    while time.time() < end:
-        try:
-            v = fn()
-        except Exception:  # noqa: BLE001 - an element between two renders
-            v = None
-        if v:
-            return v
-        time.sleep(0.1)
-    print("     (waited %d s for %s)" % (seconds, what))
-    return None
+wait = httputil.wait
 
 
 def expected(ticks, key):
