@@ -9,9 +9,8 @@
 (function () {
   'use strict';
   const L = window.ladder;
-  if (!L || !L.esc || !L.say) return;
+  if (!L || !L.esc || !L.say || !L.api) return;
   const h = L.esc;
-  const KEY = window.LJ_KEY || '';
   // The editor's name for itself (docs/ladder-edit.md "One holder"): one per browser tab.
   let EDITOR = 'page-' + Math.random().toString(36).slice(2, 10);
   try {
@@ -40,19 +39,7 @@
     sent: false, posted: false, input: null, checkTimer: null, mark: null, clip: null
   };
 
-  function api(path, body) {
-    const init = { headers: { 'X-Ladderjit-Key': KEY } };
-    if (body !== undefined) {
-      init.method = 'POST';
-      init.headers['Content-Type'] = 'application/json';
-      init.body = JSON.stringify(body);
-    }
-    return fetch(path, init).then(function (r) {
-      return r.json().catch(function () { return {}; }).then(function (j) {
-        return { status: r.status, body: j };
-      });
-    });
-  }
+  const api = L.api; // live.js: the page's key, {status, body}
 
   // ---- the grid model (ladder/Grid.h GridRung) ----------------------------------------------
   function gridOf(j) {

@@ -217,6 +217,21 @@
     });
     return out;
   }
+  // One API request of the page's scripts (editor.js and trace.js use it too): GET, or POST of
+  // `body` as JSON, with the page's key; {status, body} with the answer's JSON ({} if none).
+  L.api = function (path, body) {
+    var init = { headers: { 'X-Ladderjit-Key': KEY } };
+    if (body !== undefined) {
+      init.method = 'POST';
+      init.headers['Content-Type'] = 'application/json';
+      init.body = JSON.stringify(body);
+    }
+    return fetch(path, init).then(function (r) {
+      return r.json().catch(function () { return {}; }).then(function (j) {
+        return { status: r.status, body: j };
+      });
+    });
+  };
   function readAddrs(list) {
     return fetch('api/read?a=' + list.map(encodeURIComponent).join(','), { headers: HK }).then(function (r) {
       return r.json().then(function (j) { return { ok: r.ok, body: j }; });

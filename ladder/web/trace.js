@@ -26,20 +26,9 @@
   };
   L.trace = T;
 
+  // GET the status (and a capture newer than the one shown), or POST a command (live.js L.api).
   function api(body) {
-    const init = { headers: { 'X-Ladderjit-Key': KEY } };
-    let path = 'api/trace?have=' + T.haveId;
-    if (body !== undefined) {
-      path = 'api/trace';
-      init.method = 'POST';
-      init.headers['Content-Type'] = 'application/json';
-      init.body = JSON.stringify(body);
-    }
-    return fetch(path, init).then(function (r) {
-      return r.json().catch(function () { return {}; }).then(function (j) {
-        return { status: r.status, body: j };
-      });
-    });
+    return L.api(body === undefined ? 'api/trace?have=' + T.haveId : 'api/trace', body);
   }
 
   // ---- the panel -----------------------------------------------------------------------------
