@@ -63,6 +63,9 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
   ctx.setDiscardValueNames(true);
   lower::LowerOptions lo;
   lo.chunkStatements = opts.chunkStatements;
+  lo.mergeIr = kOptMergeIr; // AOT is a whole build at the optimizing tier
+  lo.mergeStores = kOptMergeStores;
+  lo.mergeIndexed = kOptMergeIndexed;
   lo.readableNames = false;
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);

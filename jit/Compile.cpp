@@ -32,6 +32,11 @@ bool emitLlvm(const VerifiedProgram &prog, int optLevel, std::string &out, std::
   llvm::LLVMContext ctx;
   lower::LowerOptions lo;
   lo.readableNames = true;
+  if (optLevel > 0) { // chunks merged as a whole optimizing build merges them
+    lo.mergeIr = kOptMergeIr;
+    lo.mergeStores = kOptMergeStores;
+    lo.mergeIndexed = kOptMergeIndexed;
+  }
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);
   if (!mod) {

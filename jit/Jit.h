@@ -18,6 +18,14 @@ struct CompileTimes;
 /// pipeline + SelectionDAG codegen at CodeGenOptLevel::Less (jit/Pipeline.cpp).
 enum class Tier { Fast, Optimizing };
 
+/// A whole build at the optimizing tier (not an incremental one: there a chunk is the group an
+/// online change compiles again) and AOT emit consecutive chunks of a body with clean cuts into
+/// one function up to these bounds (lowering::LowerOptions::mergeIr / mergeStores /
+/// mergeIndexed; docs/BENCHMARKS.md "Shape corpus").
+inline constexpr int32_t kOptMergeIr = 9000;
+inline constexpr int32_t kOptMergeStores = 200;
+inline constexpr int32_t kOptMergeIndexed = 16;
+
 struct JitOptions {
   Tier tier = Tier::Optimizing;
   /// Statements per generated function for long bodies (0 = one function per body). Only cut

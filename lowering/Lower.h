@@ -25,6 +25,20 @@ struct LowerOptions {
   /// Target statement count of one generated function for part, slice and subroutine bodies;
   /// bodies are cut only where no stack entry is live (0 = never cut). Keeps compile time linear.
   int32_t chunkStatements = 150;
+  /// Whole builds at the optimizing tier: a body cut into chunks (not inside JMP spans) has
+  /// consecutive chunks emitted into one function, through one emitter whose image cache keeps
+  /// field values from rung to rung, until a carried cut or until the function holds
+  /// `mergeIr` IR instructions, `mergeStores` stores or `mergeIndexed` loads and stores at
+  /// addresses computed at run time (0 = one function per chunk). Across fewer function
+  /// boundaries the dense image bytes of a program are loaded and stored once per function
+  /// instead of once per chunk (docs/BENCHMARKS.md "Shape corpus"); the store and indexed
+  /// bounds keep out what makes optimization and code generation grow faster than linearly
+  /// in a function: long chains of neighbouring stores (edge memories) and accesses whose
+  /// address is unknown until run time (table instructions), which every other access must
+  /// be ordered against.
+  int32_t mergeIr = 0;
+  int32_t mergeStores = 0;
+  int32_t mergeIndexed = 0;
   /// Name the IR values after the addresses they hold (readable dumps; costs compile time).
   bool readableNames = true;
   /// Split the program into `partitions` modules compiled independently (in parallel): this

@@ -75,6 +75,107 @@ llvm::Function *declareLeaf(llvm::Module &m, const std::string &symbol, bool car
 
 llvm::Value *stateArg(llvm::Function *fn) { return fn->getArg(fn->arg_size() == 1 ? 0 : 1); }
 
+/// The carry buffer of a cut body, at `b` (its driver's entry): the live entries at carried cuts
+/// (zeroed: dead entries read as 0). No buffer (null) when no cut is carried.
+CarryBuffer carryBuffer(ModuleContext &mc, llvm::IRBuilder<> &b,
+                        const std::vector<ChunkPlan> &chunks) {
+  int32_t stMax = 0, msMax = 0;
+  bool carried = false;
+  for (const ChunkPlan &c : chunks) {
+    if (!c.carriedOut) continue;
+    carried = true;
+    stMax = std::max(stMax, mc.prog.info[c.r.end].depth);
+    msMax = std::max(msMax, mc.prog.info[c.r.end].msDepth);
+  }
+  CarryBuffer carry;
+  if (carried) {
+    const uint64_t size = static_cast<uint64_t>(std::max(stMax + msMax, 1));
+    carry.buf = b.CreateAlloca(llvm::ArrayType::get(b.getInt8Ty(), size), nullptr, "carry");
+    carry.msBase = stMax;
+    b.CreateMemSet(carry.buf, b.getInt8(0), size, llvm::MaybeAlign(1));
+  }
+  return carry;
+}
+
+/// The return of a cut body's driver at `b` (its stop block): the status a chunk returned, where
+/// in a subroutine's own function a RETN (kStatusReturn) ends it normally with `retnStatus`.
+void returnStatus(llvm::IRBuilder<> &b, llvm::Value *status, bool isSub, uint32_t retnStatus) {
+  if (isSub && retnStatus != kStatusReturn)
+    status = b.CreateSelect(b.CreateICmpEQ(status, b.getInt32(kStatusReturn)),
+                            b.getInt32(retnStatus), status);
+  b.CreateRet(status);
+}
+
+/// What LowerOptions::mergeIr / mergeStores / mergeIndexed bound in one function.
+struct FunctionSize {
+  int64_t ir = 0, stores = 0, indexed = 0;
+};
+
+FunctionSize functionSize(const llvm::Function &f) {
+  FunctionSize z;
+  for (const llvm::BasicBlock &bb : f)
+    for (const llvm::Instruction &inst : bb) {
+      ++z.ir;
+      z.stores += llvm::isa<llvm::StoreInst>(inst);
+      const llvm::Value *p = llvm::getLoadStorePointerOperand(&inst);
+      if (p && !llvm::isa<llvm::Argument, llvm::AllocaInst>(p->stripInBoundsConstantOffsets()))
+        ++z.indexed; // an address computed at run time (a table, an indexed operand)
+    }
+  return z;
+}
+
+// lowerBody's chunks (a body without JMP spans cut) emitted into as few functions as
+// LowerOptions::mergeIr / mergeStores / mergeIndexed allow: each function `fn.c<k>` takes
+// consecutive chunks through one emitter until it reaches any of the bounds or a carried cut
+// (whose live entries go through the carry buffer, as lowerBody hands them on); `fn` calls
+// them in order and stops at a non-zero status.
+llvm::Error lowerMergedChunks(ModuleContext &mc, llvm::Function *fn,
+                              const std::vector<ChunkPlan> &chunks, int32_t deadDepth, bool isSub,
+                              uint32_t retnStatus) {
+  llvm::LLVMContext &ctx = fn->getContext();
+  llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", fn));
+  const CarryBuffer carry = carryBuffer(mc, b, chunks);
+  const bool carried = carry.buf != nullptr;
+  const uint32_t chunkRetn = isSub ? kStatusReturn : retnStatus;
+  std::vector<llvm::Function *> parts;
+  llvm::Function *cur = nullptr;
+  std::unique_ptr<FunctionEmitter> fe;
+  CarryBuffer mine;
+  for (size_t k = 0; k < chunks.size(); ++k) {
+    const ChunkPlan &c = chunks[k];
+    if (!cur) {
+      cur =
+          makeBodyFunction(mc, fn->getName().str() + ".c" + std::to_string(parts.size()), carried);
+      cur->addFnAttr(llvm::Attribute::NoInline);
+      fe = std::make_unique<FunctionEmitter>(mc, cur, cur->getArg(0), chunkRetn);
+      mine = CarryBuffer{carried ? cur->getArg(1) : nullptr, carry.msBase, nullptr};
+    }
+    const int32_t dead = k == 0 ? deadDepth : mc.prog.info[c.r.begin].depth;
+    if (llvm::Error e = fe->emitRange(c.r, dead, &c, &mine)) return e;
+    const FunctionSize z = functionSize(*cur);
+    if (k + 1 == chunks.size() || c.carriedOut || z.ir >= mc.opts.mergeIr ||
+        z.stores >= mc.opts.mergeStores || z.indexed >= mc.opts.mergeIndexed) {
+      if (llvm::Error e = fe->finish()) return e;
+      parts.push_back(cur);
+      cur = nullptr;
+    }
+  }
+  llvm::BasicBlock *stop = llvm::BasicBlock::Create(ctx, "stop", fn);
+  llvm::PHINode *status = llvm::PHINode::Create(b.getInt32Ty(), parts.size(), "status", stop);
+  for (llvm::Function *part : parts) {
+    llvm::Value *st = carried ? b.CreateCall(part, {stateArg(fn), carry.buf}, "st")
+                              : b.CreateCall(part, {stateArg(fn)}, "st");
+    llvm::BasicBlock *next = llvm::BasicBlock::Create(ctx, "next", fn);
+    status->addIncoming(st, b.GetInsertBlock());
+    b.CreateCondBr(b.CreateICmpNE(st, b.getInt32(0)), stop, next);
+    b.SetInsertPoint(next);
+  }
+  b.CreateRet(b.getInt32(LJ_FAULT_NONE));
+  b.SetInsertPoint(stop);
+  returnStatus(b, status, isSub, retnStatus);
+  return llvm::Error::success();
+}
+
 // Lowers one body (a part, a slice, a subroutine or an outlined loop body) into `fn`, cutting it
 // into chunk functions when it is long. `retnStatus` is what a taken RETN returns from `fn`: 0
 // from a subroutine's own function, kStatusReturn from an outlined loop body; in a chunk of a
@@ -101,24 +202,12 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
     if (llvm::Error e = fe.emitRange(r, deadDepth)) return e;
     return fe.finish();
   }
+  if (!namer && !chunks.front().jumps && mc.opts.mergeIr > 0)
+    return lowerMergedChunks(mc, fn, chunks, deadDepth, isSub, retnStatus);
   llvm::LLVMContext &ctx = fn->getContext();
   llvm::IRBuilder<> b(llvm::BasicBlock::Create(ctx, "entry", fn));
-  // The carry buffer holds the live entries at carried cuts (zeroed: dead entries read as 0).
-  int32_t stMax = 0, msMax = 0;
-  bool carried = false;
-  for (const ChunkPlan &c : chunks) {
-    if (!c.carriedOut) continue;
-    carried = true;
-    stMax = std::max(stMax, mc.prog.info[c.r.end].depth);
-    msMax = std::max(msMax, mc.prog.info[c.r.end].msDepth);
-  }
-  CarryBuffer carry;
-  if (carried) {
-    const uint64_t size = static_cast<uint64_t>(std::max(stMax + msMax, 1));
-    carry.buf = b.CreateAlloca(llvm::ArrayType::get(b.getInt8Ty(), size), nullptr, "carry");
-    carry.msBase = stMax;
-    b.CreateMemSet(carry.buf, b.getInt8(0), size, llvm::MaybeAlign(1));
-  }
+  const CarryBuffer carry = carryBuffer(mc, b, chunks);
+  const bool carried = carry.buf != nullptr;
   // Chunk k runs in block chunk<k>; a non-zero status goes to `stop`, or with jumps between
   // chunks first to `dispatch`, which goes on at the chunk a kStatusJump names.
   const bool jumps = chunks.front().jumps;
@@ -178,11 +267,7 @@ llvm::Error lowerBody(ModuleContext &mc, llvm::Function *fn, StmtRange r, int32_
     (jumps ? jumpStatus : stopStatus)->addIncoming(st, callAt[k]);
   }
   b.SetInsertPoint(stop);
-  llvm::Value *status = stopStatus;
-  if (isSub && retnStatus != kStatusReturn) // a RETN ends the subroutine normally
-    status = b.CreateSelect(b.CreateICmpEQ(status, b.getInt32(kStatusReturn)),
-                            b.getInt32(retnStatus), status);
-  b.CreateRet(status);
+  returnStatus(b, stopStatus, isSub, retnStatus);
   return llvm::Error::success();
 }
 
