@@ -407,28 +407,49 @@ def compare_one(clp_tool, project, outdir, periods, seed, other, hal):
     return n
 
 
+def generate(clp_tool, outdir, seed, rungs=8):
+    """A generated project `outdir/gen<seed>.clp` (clp_tool gen), its path."""
+    clp = os.path.join(outdir, f"gen{seed}.clp")
+    os.makedirs(outdir, exist_ok=True)
+    subprocess.run([clp_tool, "gen", str(seed), clp, str(rungs)], check=True, timeout=60)
+    return clp
+
+
+def selected_projects(a):
+    """(path, name, seed, trace folder) of `--real` projects under ROOT (seed 1 + index) and of
+    `--gen` generated ones (seeds from `--seed`); a trace folder is never a project's own name."""
+    projects = [(os.path.join(a.root, rel), rel, 1 + i) for i, rel in enumerate(a.real)]
+    for k in range(a.gen):
+        seed = a.seed + k
+        projects.append((generate(a.clp_tool, a.outdir, seed), f"gen{seed}.clp", seed))
+    return [(path, rel, seed,
+             os.path.join(a.outdir, re.sub(r"\.clp$", "", rel.replace("/", "__"))))
+            for path, rel, seed in projects]
+
+
+def add_selection(s):
+    """The project selection `suite` and `dropin` share (selected_projects)."""
+    s.add_argument("root")
+    s.add_argument("outdir")
+    s.add_argument("--real", nargs="*", default=[], help="projects relative to ROOT")
+    s.add_argument("--gen", type=int, default=0)
+    s.add_argument("--periods", type=int, default=2000)
+    s.add_argument("--seed", type=int, default=1)
+
+
 def cmd_suite(a):
     """The CI-sized check: the listed real projects and `--gen` generated ones, ClassicLadder
     against the other side (default: clp_tool's reference scan); fails on any difference."""
     other = a.other or f"{shlex.quote(a.clp_tool)} ref {{project}} {{stimulus}} {{trace}}"
+    projects = selected_projects(a)
     hal = Hal(tempfile.mkdtemp(prefix="clharness-"))
     bad = 0
     try:
-        for i, rel in enumerate(a.real):
-            out = os.path.join(a.outdir, rel.replace("/", "__"))
-            n = compare_one(a.clp_tool, os.path.join(a.root, rel), out, a.periods, 1 + i, other, hal)
-            bad += n != 0
-        for k in range(a.gen):
-            seed = a.seed + k
-            clp = os.path.join(a.outdir, f"gen{seed}.clp")
-            os.makedirs(a.outdir, exist_ok=True)
-            subprocess.run([a.clp_tool, "gen", str(seed), clp, "8"], check=True, timeout=60)
-            n = compare_one(a.clp_tool, clp, os.path.join(a.outdir, f"gen{seed}"), a.periods,
-                            seed, other, hal)
-            bad += n != 0
+        for path, _rel, seed, out in projects:
+            bad += compare_one(a.clp_tool, path, out, a.periods, seed, other, hal) != 0
     finally:
         shutil.rmtree(hal.dir, ignore_errors=True)
-    print(f"{len(a.real) + a.gen} projects, {bad} with differences or not run")
+    print(f"{len(projects)} projects, {bad} with differences or not run")
     return 1 if bad else 0
 
 
@@ -437,19 +458,11 @@ def cmd_dropin(a):
     the same streamed inputs, period by period: real projects under ROOT and generated ones.
     Fails on any difference or any project that does not run."""
     install_module(a.module)
+    projects = selected_projects(a)
     hal = Hal(tempfile.mkdtemp(prefix="cldropin-"))
-    projects = [(os.path.join(a.root, rel), rel, 1 + i) for i, rel in enumerate(a.real)]
-    os.makedirs(a.outdir, exist_ok=True)
-    for k in range(a.gen):
-        seed = a.seed + k
-        clp = os.path.join(a.outdir, f"gen{seed}.clp")
-        subprocess.run([a.clp_tool, "gen", str(seed), clp, "8"], check=True, timeout=60)
-        projects.append((clp, f"gen{seed}.clp", seed))
     bad = 0
     try:
-        for path, rel, seed in projects:
-            # the trace folder: beside a generated project, never its own name
-            out = os.path.join(a.outdir, re.sub(r"\.clp$", "", rel.replace("/", "__")))
+        for path, rel, seed, out in projects:
             cl = record(a.clp_tool, path, out, a.periods, seed, hal)
             lj = record(a.clp_tool, path, out, a.periods, seed, hal, ladderjit=a.ladderjit) \
                 if cl["ok"] else cl
@@ -524,9 +537,7 @@ def cmd_gen(a):
     loaded = 0
     for k in range(a.count):
         seed = a.seed + k
-        clp = os.path.join(a.outdir, f"gen{seed}.clp")
-        os.makedirs(a.outdir, exist_ok=True)
-        subprocess.run([a.clp_tool, "gen", str(seed), clp, str(a.rungs)], check=True, timeout=60)
+        clp = generate(a.clp_tool, a.outdir, seed, a.rungs)
         rec = record(a.clp_tool, clp, os.path.join(a.outdir, f"gen{seed}"), a.periods, seed, hal)
         if rec["ok"]:
             loaded += 1
@@ -562,23 +573,13 @@ def main():
     s.add_argument("--allow-failures", action="store_true")
     s = sub.add_parser("suite")
     s.add_argument("clp_tool")
-    s.add_argument("root")
-    s.add_argument("outdir")
-    s.add_argument("--real", nargs="*", default=[], help="projects relative to ROOT")
-    s.add_argument("--gen", type=int, default=0)
-    s.add_argument("--periods", type=int, default=2000)
-    s.add_argument("--seed", type=int, default=1)
+    add_selection(s)
     s.add_argument("--other", default="")
     s = sub.add_parser("dropin")
     s.add_argument("clp_tool")
     s.add_argument("ladderjit")
     s.add_argument("module", help="the built HAL component (ladderjit.so)")
-    s.add_argument("root")
-    s.add_argument("outdir")
-    s.add_argument("--real", nargs="*", default=[], help="projects relative to ROOT")
-    s.add_argument("--gen", type=int, default=0)
-    s.add_argument("--periods", type=int, default=2000)
-    s.add_argument("--seed", type=int, default=1)
+    add_selection(s)
     s = sub.add_parser("gen")
     s.add_argument("clp_tool")
     s.add_argument("outdir")
