@@ -63,9 +63,7 @@ bool compileSharedObject(const VerifiedProgram &prog, const AotOptions &opts, st
   ctx.setDiscardValueNames(true);
   lower::LowerOptions lo;
   lo.chunkStatements = opts.chunkStatements;
-  lo.mergeIr = kOptMergeIr; // AOT is a whole build at the optimizing tier
-  lo.mergeStores = kOptMergeStores;
-  lo.mergeIndexed = kOptMergeIndexed;
+  mergeChunksAsOptimizingBuild(lo); // AOT is a whole build at the optimizing tier
   lo.readableNames = false;
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);

@@ -32,11 +32,7 @@ bool emitLlvm(const VerifiedProgram &prog, int optLevel, std::string &out, std::
   llvm::LLVMContext ctx;
   lower::LowerOptions lo;
   lo.readableNames = true;
-  if (optLevel > 0) { // chunks merged as a whole optimizing build merges them
-    lo.mergeIr = kOptMergeIr;
-    lo.mergeStores = kOptMergeStores;
-    lo.mergeIndexed = kOptMergeIndexed;
-  }
+  if (optLevel > 0) mergeChunksAsOptimizingBuild(lo); // as a whole optimizing build
   auto mod =
       lower::lowerProgram(prog, ctx, (*tm)->createDataLayout(), (*tm)->getTargetTriple().str(), lo);
   if (!mod) {

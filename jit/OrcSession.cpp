@@ -135,11 +135,7 @@ PartResult compilePart(const VerifiedProgram &prog, const JitOptions &opts,
   ctx.setDiscardValueNames(true); // names only matter in emit-llvm dumps
   lower::LowerOptions lo;
   lo.chunkStatements = opts.chunkStatements;
-  if (tier == Tier::Optimizing) {
-    lo.mergeIr = kOptMergeIr;
-    lo.mergeStores = kOptMergeStores;
-    lo.mergeIndexed = kOptMergeIndexed;
-  }
+  if (tier == Tier::Optimizing) mergeChunksAsOptimizingBuild(lo);
   lo.readableNames = false;
   lo.partitions = parts;
   lo.partition = part;

@@ -1,6 +1,9 @@
 // Native target setup, host TargetMachine and the PassBuilder pipelines (llvm19-orc-notes 3, 9).
 #include "jit/Pipeline.h"
 
+#include "jit/Jit.h"
+#include "lowering/Lower.h"
+
 #include <llvm/Analysis/ValueTracking.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
 #include <llvm/IR/IRBuilder.h>
@@ -144,6 +147,12 @@ void raiseSlpBudget() {
     if (auto it = registered.find("slp-schedule-budget"); it != registered.end())
       (void)it->second->addOccurrence(0, "slp-schedule-budget", "200000");
   });
+}
+
+void mergeChunksAsOptimizingBuild(lower::LowerOptions &lo) {
+  lo.mergeIr = kOptMergeIr;
+  lo.mergeStores = kOptMergeStores;
+  lo.mergeIndexed = kOptMergeIndexed;
 }
 
 void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm) {

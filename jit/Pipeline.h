@@ -9,6 +9,10 @@
 
 #include <memory>
 
+namespace lj::lower {
+struct LowerOptions;
+}
+
 namespace lj::jit {
 
 /// Initialize the native target, asm printer and parser once per process (thread-safe).
@@ -21,6 +25,9 @@ llvm::Expected<std::unique_ptr<llvm::TargetMachine>> hostTargetMachine(llvm::Cod
 /// function pipeline, 1 and 3 = LLVM's standard O1 / O3 (for comparison dumps only).
 /// `tm` supplies the cost model.
 void optimizeModule(llvm::Module &m, int level, llvm::TargetMachine *tm);
+
+/// Sets `lo`'s chunk-merge bounds as a whole optimizing build uses them (jit/Jit.h kOptMerge*).
+void mergeChunksAsOptimizingBuild(lower::LowerOptions &lo);
 
 /// Monotonic time in microseconds, for CompileTimes.
 double nowUs();
