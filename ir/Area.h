@@ -55,6 +55,9 @@ struct AreaInfo {
   /// first `count` elements (FANUC T9000.., C5000..). 0: none.
   int32_t upperLo = 0;
   int32_t upperCount = 0;
+  /// The lowest element number of the first range (FANUC labels and subroutines start at 1:
+  /// L1, P1); elements below it do not exist.
+  int32_t first = 0;
 };
 
 } // namespace lj

@@ -155,7 +155,7 @@ struct TargetProfile {
     if (n < 0) return false;
     if (a == Area::Timer || a == Area::Counter) return tcSlot(a, n) >= 0;
     const AreaInfo &i = area(a);
-    return n < i.count ||
+    return (n >= i.first && n < i.count) ||
            (i.upperCount > 0 && n >= i.upperLo && n < int64_t(i.upperLo) + i.upperCount);
   }
 

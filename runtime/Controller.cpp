@@ -20,6 +20,19 @@
 
 namespace lj::rt {
 
+std::vector<std::string> removedParts(const VerifiedProgram &cur, const VerifiedProgram &next) {
+  std::vector<std::string> out;
+  if (!cur.init.empty() && next.init.empty()) out.push_back("init");
+  if (!cur.plc1.empty() && next.plc1.empty()) out.push_back("PLC1");
+  if (!cur.plc2.empty() && next.plc2.empty()) out.push_back("PLC2");
+  const char *name = cur.profile ? cur.profile->area(Area::Subroutine).name : "S";
+  for (const Subroutine &sub : cur.subs)
+    if (sub.number >= 0 && (sub.number >= static_cast<int32_t>(next.subByNumber.size()) ||
+                            next.subByNumber[static_cast<size_t>(sub.number)] < 0))
+      out.push_back(std::string(name ? name : "S") + std::to_string(sub.number));
+  return out;
+}
+
 namespace {
 
 using nlohmann::json;
@@ -111,14 +124,11 @@ std::string joinDirs(const std::vector<std::string> &dirs) {
 std::string lostParts(const VerifiedProgram &cur, const VerifiedProgram &next) {
   if (next.stmts.empty()) return "the new program is empty";
   std::string lost;
-  auto add = [&](const std::string &part) { lost += (lost.empty() ? "" : ", ") + part; };
-  if (!cur.init.empty() && next.init.empty()) add("the init part");
-  if (!cur.plc1.empty() && next.plc1.empty()) add("PLC1");
-  if (!cur.plc2.empty() && next.plc2.empty()) add("PLC2");
-  for (const Subroutine &sub : cur.subs)
-    if (sub.number >= 0 && sub.number < static_cast<int32_t>(next.subByNumber.size()) &&
-        next.subByNumber[static_cast<size_t>(sub.number)] < 0)
-      add("subroutine S" + std::to_string(sub.number));
+  for (const std::string &part : removedParts(cur, next))
+    lost +=
+        (lost.empty() ? "" : ", ") + (part == "init" ? std::string("the init part")
+                                      : part == "PLC1" || part == "PLC2" ? part
+                                                                         : "subroutine " + part);
   return lost.empty() ? lost : "the new program lacks " + lost + " of the running one";
 }
 

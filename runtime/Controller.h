@@ -58,6 +58,12 @@ struct ChangeStats {
   std::string lastRefusal; ///< the reason of the last one
 };
 
+/// The parts `cur` has and `next` lacks, by the names the network JSON gives them: "init",
+/// "PLC1", "PLC2", a subroutine as its dialect writes it ("S3", FANUC "P3", IL "SR3"). An online
+/// change that loses one needs the operator's word (monitor load --allow-shrink, an edit's
+/// removeParts).
+std::vector<std::string> removedParts(const VerifiedProgram &cur, const VerifiedProgram &next);
+
 class Controller {
 public:
   using Log = std::function<void(const std::string &)>;

@@ -8,6 +8,7 @@
 #include "ladder/Network.h"
 #include "pipeline/Dialects.h"
 
+#include <cctype>
 #include <charconv>
 #include <functional>
 #include <string>
@@ -335,6 +336,73 @@ json convert(const Checker &ck, const json &req) {
   return out;
 }
 
+/// 列表编辑: a new subroutine part named `name` as the dialect writes it (HNC-8 `S7`, FANUC `P7`,
+/// IL `SR7`): its begin and end markers (SP / SPE, IL `SR7:` / RET) as the network JSON writes
+/// them, made from the neutral operations and spelled by the dialect, so the page copies no
+/// dialect's words. The draft's verify checks the rest (a number the dialect does not allow).
+json subroutinePart(const Checker &ck, const std::string &name) {
+  const TargetProfile *pf = ck.prog.profile;
+  if (!pf) return {{"ok", false}, {"error", "this program has no target profile"}};
+  const AreaInfo &area = pf->area(Area::Subroutine);
+  const std::string prefix = area.name ? area.name : "";
+  auto fail = [&](const std::string &why) {
+    return json{{"ok", false},
+                {"error", "'" + name + "': " + why + " (a subroutine is written " + prefix +
+                              "<number>, e.g. " + prefix + "7)"}};
+  };
+  if (prefix.empty() || area.count <= 0)
+    return {{"ok", false},
+            {"error", "the " + std::string(ck.d.name) + " dialect has no subroutines"}};
+  if (name.size() <= prefix.size() || name.size() > prefix.size() + 6) return fail("not a name");
+  for (size_t i = 0; i < prefix.size(); ++i)
+    if (std::toupper(static_cast<unsigned char>(name[i])) != prefix[i]) return fail("not a name");
+  int32_t n = 0;
+  const char *b = name.data() + prefix.size(), *e = name.data() + name.size();
+  auto [ptr, ec] = std::from_chars(b, e, n);
+  if (ec != std::errc() || ptr != e || *b == '+' || *b == '-') return fail("not a number");
+  if (!pf->validIndex(Area::Subroutine, n))
+    return fail("out of range (" + prefix + std::to_string(area.first) + ".." + prefix +
+                std::to_string(area.count - 1) + ")");
+  ladder::Networks one;
+  one.dialect = ck.d.name;
+  one.text = &ck.text;
+  ladder::Part part;
+  part.name = prefix + std::to_string(n);
+  for (Op op : {Op::SubBegin, Op::SubEnd}) {
+    Stmt s;
+    s.op = op;
+    if (op == Op::SubBegin) {
+      s.operandCount = 1;
+      s.ops[0].kind = Operand::Kind::Reg;
+      s.ops[0].area = Area::Subroutine;
+      s.ops[0].index = n;
+    }
+    ladder::Element el;
+    el.op = op;
+    el.drawn = ck.text.spellStmt ? ck.text.spellStmt(s) : spelling(&ck.text, op);
+    el.drawnWhole = s.operandCount == 1 && el.drawn.size() > 1 && el.drawn.back() == ':';
+    for (int k = 0; k < s.operandCount; ++k) {
+      el.operands.push_back(ck.text.formatOperand(s.ops[static_cast<size_t>(k)]));
+      el.symbols.emplace_back();
+    }
+    ladder::Rung r;
+    r.kind = ladder::Rung::Kind::Marker;
+    r.stmts.push_back(std::move(el));
+    part.rungs.push_back(std::move(r));
+  }
+  one.parts.push_back(std::move(part));
+  json w = json::parse(ladder::writeJson(one), nullptr, false);
+  if (w.is_discarded()) return {{"ok", false}, {"error", "no JSON form of the markers"}};
+  json rungs = w["parts"][0]["rungs"];
+  for (json &r : rungs)
+    for (json &st : r["stmts"]) {
+      st.erase("id");
+      st.erase("line");
+      st.erase("col");
+    }
+  return {{"ok", true}, {"name", one.parts[0].name}, {"number", n}, {"rungs", rungs}};
+}
+
 } // namespace
 
 namespace {
@@ -362,8 +430,9 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
   const DialectText &text = prog.dialect ? *prog.dialect : d->text();
   Checker ck{*d, text, prog};
   for (const auto &[k, val] : body.items())
-    if (k != "open" && k != "rungs" && k != "operand" && k != "kind" && k != "box" && k != "index")
-      return bad("unknown field '" + k + "' in /api/edit/grid (open, rungs, operand)");
+    if (k != "open" && k != "rungs" && k != "operand" && k != "kind" && k != "box" &&
+        k != "index" && k != "subroutine")
+      return bad("unknown field '" + k + "' in /api/edit/grid (open, rungs, operand, subroutine)");
 
   if (body.value("open", false)) {
     ladder::Networks nets = ladder::fromProgram(prog);
@@ -382,10 +451,20 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
           jr["grid"] = gridJson(g);
         rungs.push_back(std::move(jr));
       }
-      parts.push_back({{"name", p.name}, {"rungs", rungs}});
+      // A subroutine (its first rung SP / IL `SRn:`) is what 列表编辑 renames and deletes.
+      const bool sub = !p.rungs.empty() && p.rungs[0].kind == ladder::Rung::Kind::Marker &&
+                       !p.rungs[0].stmts.empty() && p.rungs[0].stmts[0].op == Op::SubBegin;
+      parts.push_back({{"name", p.name}, {"rungs", rungs}, {"subroutine", sub}});
     }
     json syms = json::object();
     for (const Symbol &s : prog.symbols) syms[s.name] = s.address;
+    // 列表编辑: how the dialect names a subroutine (HNC-8 S0..S511, FANUC P1..P5000, IL
+    // SR0..SR63), for the page's suggestion; /api/edit/grid {"subroutine"} checks a name.
+    json subs = nullptr;
+    if (prog.profile && prog.profile->area(Area::Subroutine).count > 0) {
+      const AreaInfo &a = prog.profile->area(Area::Subroutine);
+      subs = {{"prefix", a.name}, {"first", a.first}, {"last", a.count - 1}};
+    }
     return {200,
             {{"ok", true},
              {"dialect", d->name},
@@ -395,7 +474,8 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
              {"boxes", catalogue(text)},
              // The edge contacts of the dialect (HNC-8 LDP/LDF, IL LDR/LDF; FANUC PMC has none).
              {"edges", text.spell(Op::LoadRise) != nullptr && text.spell(Op::LoadFall) != nullptr},
-             {"symbols", syms}}};
+             {"symbols", syms},
+             {"subroutines", subs}}};
   }
   if (body.contains("rungs")) {
     if (!body["rungs"].is_array() || body["rungs"].size() > 256)
@@ -406,6 +486,11 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
       out.push_back(convert(ck, r));
     }
     return {200, {{"ok", true}, {"rungs", out}}};
+  }
+  if (body.contains("subroutine")) {
+    if (!body["subroutine"].is_string() || body["subroutine"].get<std::string>().size() > 64)
+      return bad("subroutine: the new part's name as the dialect writes it (\"S7\")");
+    return {200, subroutinePart(ck, body["subroutine"].get<std::string>())};
   }
   if (body.contains("operand")) {
     if (!body["operand"].is_string()) return bad("operand: a string");
@@ -427,7 +512,8 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
     if (const Symbol *s = ck.symbol(op)) a["address"] = s->address;
     return {200, a};
   }
-  return bad("POST /api/edit/grid takes {\"open\":true}, {\"rungs\":[...]} or {\"operand\":...}");
+  return bad("POST /api/edit/grid takes {\"open\":true}, {\"rungs\":[...]}, {\"operand\":...} or "
+             "{\"subroutine\":...}");
 }
 
 } // namespace

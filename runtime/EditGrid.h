@@ -13,7 +13,8 @@
 namespace lj::rt {
 
 /// POST /api/edit/grid with `body` on the running version `v` (null: none runs). Bodies:
-/// `{"open":true}`, `{"rungs":[{"part","rung","grid"}]}`, `{"operand","kind"[,"box","index"]}`.
+/// `{"open":true}`, `{"rungs":[{"part","rung","grid"}]}`, `{"operand","kind"[,"box","index"]}`,
+/// `{"subroutine":"S7"}` (列表编辑: the markers of a new subroutine part in the dialect).
 EditAnswer editGrid(const ProgramVersion *v, const nlohmann::json &body);
 
 } // namespace lj::rt

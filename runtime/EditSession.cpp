@@ -425,11 +425,27 @@ EditAnswer EditSession::post(const std::string &action, const json &body,
   }
   if (action == "draft") return draft(body, editor, client);
   for (const auto &[k, v] : body.items())
-    if (k != "editor")
+    if (k != "editor" && !(action == "update" && k == "removeParts"))
       return refusal(400, "unknown field '" + services::clientText(k) + "' in /api/edit/" + action +
-                              " (it takes only \"editor\"; the draft is the one stored)");
+                              " (it takes only \"editor\"" +
+                              (action == "update" ? " and \"removeParts\"" : "") +
+                              "; the draft is the one stored)");
   if (action == "check") return check(editor);
-  if (action == "update") return update(editor, client);
+  if (action == "update") {
+    // The parts the draft removes (列表编辑: a deleted or renamed subroutine), named by the
+    // operator: an update that loses a part the running program has goes ahead only then.
+    std::vector<std::string> removes;
+    if (body.contains("removeParts")) {
+      if (!body["removeParts"].is_array())
+        return refusal(400, "\"removeParts\" must be an array of part names");
+      for (const json &n : body["removeParts"]) {
+        if (!n.is_string() || n.get<std::string>().empty() || n.get<std::string>().size() > 64)
+          return refusal(400, "\"removeParts\" must be an array of part names");
+        removes.push_back(n.get<std::string>());
+      }
+    }
+    return update(editor, client, removes);
+  }
   if (action == "discard") return discard(editor, client);
   return refusal(404, "no such edit action");
 }
@@ -504,13 +520,16 @@ EditAnswer EditSession::check(const std::string &editor) {
   return {200,
           {{"ok", true},
            {"diagnostics", diags},
+           {"removes",
+            s.cur && s.cur->prog ? removedParts(*s.cur->prog, *p) : std::vector<std::string>{}},
            {"stale", !s.cur || s.cur->hash != draft_->base},
            {"diff",
             unifiedDiff(s.text, bytes, "running/" + baseName(s.path), "draft/" + baseName(s.path))},
            {"init", initJson(*p)}}};
 }
 
-EditAnswer EditSession::update(const std::string &editor, const std::string &client) {
+EditAnswer EditSession::update(const std::string &editor, const std::string &client,
+                               std::vector<std::string> removes) {
   std::lock_guard<std::mutex> g(mu_);
   if (std::optional<EditAnswer> no = notHeldBy(editor)) return *no;
   Served s = served(exec_, ctl_);
@@ -545,6 +564,28 @@ EditAnswer EditSession::update(const std::string &editor, const std::string &cli
     return refusal(422, "the draft does not verify; the running program is unchanged",
                    {{"diagnostics", mapDiagnostics(diagnostics, s.json ? nullptr : &origins)}});
   }
+  // A part the running program has and the draft lacks goes only when the update names it
+  // (the page's confirmation lists them); nothing else is ever dropped by an edit.
+  std::vector<std::string> lost =
+      s.cur->prog ? removedParts(*s.cur->prog, *p) : std::vector<std::string>{};
+  std::sort(lost.begin(), lost.end());
+  std::sort(removes.begin(), removes.end());
+  if (lost != removes) {
+    auto list = [](const std::vector<std::string> &v) {
+      std::string o;
+      for (const std::string &x : v) o += (o.empty() ? "" : ", ") + x;
+      return o.empty() ? std::string("none") : o;
+    };
+    if (log_)
+      log_("edit: update by editor '" + editor + "' from " + client +
+           " refused: the draft removes " + list(lost) + ", the update names " + list(removes));
+    return refusal(409,
+                   "the draft removes the part(s) " + list(lost) +
+                       " of the running program, "
+                       "but the update names " +
+                       list(removes) + " in \"removeParts\"; the running program is unchanged",
+                   {{"reason", "removes-parts"}, {"removes", lost}});
+  }
   const std::string oldHash = s.cur->hash, newHash = formats::sha256Hash(bytes);
   const std::string diff =
       unifiedDiff(s.text, bytes, "a/" + baseName(s.path), "b/" + baseName(s.path));
@@ -566,13 +607,14 @@ EditAnswer EditSession::update(const std::string &editor, const std::string &cli
     if (!commitProgram(s.path, temp, s.text, historyFile, werr)) return false;
     json rec{{"time", utcNow()}, {"client", client}, {"editor", editor},      {"file", s.path},
              {"old", oldHash},   {"new", newHash},   {"history", historyFile}};
+    if (!lost.empty()) rec["removed"] = lost; // parts removed as the update named them
     rec["diff"] =
         diff.size() > kAuditMaxDiff ? diff.substr(0, kAuditMaxDiff) + "\n... (cut)\n" : diff;
     if (!appendAudit(auditPath(s.path), rec, auditError) && log_)
       log_("edit: the audit record could not be written: " + auditError);
     return true;
   };
-  const bool ok = ctl_.change(s.path, std::nullopt, err, {}, false, false, &e);
+  const bool ok = ctl_.change(s.path, std::nullopt, err, {}, !lost.empty(), false, &e);
   ::unlink(temp.c_str()); // still there unless it became the program file
   if (e.stale) return stale(exec_.current() ? exec_.current()->hash : "nothing");
   if (!ok && !e.swapped) {
@@ -587,6 +629,7 @@ EditAnswer EditSession::update(const std::string &editor, const std::string &cli
   if (log_)
     log_("edit: update (更新修改) by editor '" + editor + "' from " + client + ": " + oldHash +
          " -> " + newHash + " running as version " + std::to_string(now ? now->id : 0) +
+         (lost.empty() ? "" : ", removing " + json(lost).dump() + " as the update named them") +
          ", old file kept as '" + historyFile + "', audit in '" + auditPath(s.path) + "'");
   draft_.reset();
   json r{{"ok", true},          {"version", now ? now->id : 0}, {"old", oldHash},

@@ -15,6 +15,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace lj::rt {
 
@@ -49,7 +50,10 @@ private:
   EditAnswer draft(const nlohmann::json &body, const std::string &editor,
                    const std::string &client);
   EditAnswer check(const std::string &editor);
-  EditAnswer update(const std::string &editor, const std::string &client);
+  /// `removes`: the parts the operator agreed to remove (removeParts; the draft's lost parts
+  /// must be exactly these).
+  EditAnswer update(const std::string &editor, const std::string &client,
+                    std::vector<std::string> removes);
   EditAnswer discard(const std::string &editor, const std::string &client);
   /// A draft open by another editor: the 409 naming it, else nullopt. Call with mu_ held.
   std::optional<EditAnswer> heldByOther(const std::string &editor) const;

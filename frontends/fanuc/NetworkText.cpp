@@ -152,6 +152,22 @@ bool printStatements(std::span<const StmtText> stmts, std::string &out, std::str
       continue;
     }
     for (const std::string &c : s.before) out += ";" + (c.empty() ? c : " " + c) + "\n";
+    // CALLU Pn: the front end made it an always-true load and a CALL (Functional.cpp); FANUC
+    // has no word for the load alone (an edited CALLU rung, a renamed subprogram's call).
+    if (s.op == Op::LoadTrue && i + 1 < stmts.size() && stmts[i + 1].op == Op::Call &&
+        stmts[i + 1].role == WrittenRole::None && stmts[i + 1].operands.size() == 1 &&
+        stmts[i + 1].before.empty()) {
+      const StmtText &call = stmts[i + 1];
+      std::string line = "CALLU " + call.operands[0];
+      if (s.hasComment || call.hasComment)
+        line += " ;" + std::string(s.hasComment && !s.comment.empty() ? " " + s.comment : "") +
+                (call.hasComment && !call.comment.empty() ? " " + call.comment : "");
+      out += line + "\n";
+      depth = stackEffect(instrInfo(s.op), depth).after(depth);
+      depth = stackEffect(instrInfo(call.op), depth).after(depth);
+      ++i;
+      continue;
+    }
     std::string word = s.instr.empty() ? spelling(&dialectText(), s.op) : s.instr;
     switch (s.op) {
     case Op::Load: // RD starts a logic line, RD.STK pushes onto a live one (reference 5)

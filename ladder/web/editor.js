@@ -29,14 +29,18 @@
   const CONTACTS = ['no', 'nc', 'rise', 'fall'], OUTPUTS = ['coil', 'coil-not', 'set', 'reset'];
 
   // ---- state ---------------------------------------------------------------------------------
-  // parts[p].rungs[r]: {orig (index in the running JSON's part, -1 for a new rung), grid (or null
-  // with why), comment, dirty, errors [{row,col,message}], net (the converted network), cells
-  // (statement k -> [row,col]), pending (a conversion is on its way)}. A rung object is never
-  // changed in place once shown: an edit makes a new one, so undo keeps the old objects.
+  // parts[p]: {name, orig (index in the running JSON's parts, -1 for a new subroutine), sub (a
+  // subroutine: 列表编辑 renames and deletes it), rungs}. parts[p].rungs[r]: {orig (index in the
+  // running JSON's part, -1 for a new rung), grid (or null with why), json (a rung sent as is: a
+  // new part's marker, a rung whose call a rename changed), comment, dirty, errors
+  // [{row,col,message}], net (the converted network), cells (statement k -> [row,col]), pending
+  // (a conversion is on its way)}. A rung object is never changed in place once shown: an edit
+  // makes a new one, so undo keeps the old objects.
   const E = {
     on: false, loaded: false, base: null, running: null, init: null, dialect: '', boxes: [],
     edges: false, symbols: {}, parts: [], p: 0, r: 0, row: 0, col: 0, undo: [], redo: [],
-    sent: false, posted: false, input: null, checkTimer: null, mark: null, clip: null
+    sent: false, posted: false, input: null, checkTimer: null, mark: null, clip: null, subs: null,
+    removes: []
   };
 
   const api = L.api; // live.js: the page's key, {status, body}
@@ -164,8 +168,9 @@
       E.boxes = g.body.boxes || [];
       E.edges = !!g.body.edges;
       E.symbols = g.body.symbols || {};
-      E.parts = g.body.parts.map(function (p) {
-        return { name: p.name, rungs: p.rungs.map(function (r, i) { return rungObj(r, i); }) };
+      E.subs = g.body.subroutines || null;
+      E.parts = g.body.parts.map(function (p, pi) {
+        return { name: p.name, orig: pi, sub: !!p.subroutine, rungs: p.rungs.map(function (r, i) { return rungObj(r, i); }) };
       });
       E.undo = [];
       E.redo = [];
@@ -214,11 +219,13 @@
     tb('newrung', '新网络 new rung', 'n') + tb('comment', '注释 comment', ';') + '</div>' +
     '<div class="row" id="ednets">' + tb('selnet', '选择网络 select rungs', 's') + tb('copynet', '复制 copy', 'Ctrl+C') +
     tb('cutnet', '剪切 cut', 'Ctrl+X') + tb('pastenet', '粘贴 paste', 'Ctrl+V') +
-    tb('delnet', '删除网络 delete rungs', 'Ctrl+Del') + '</div>' +
+    tb('delnet', '删除网络 delete rungs', 'Ctrl+Del') + '<span class="sep">列表编辑</span>' +
+    tb('addsub', '新子程序 new subroutine', 'p') + tb('rensub', '重命名 rename', 'Shift+P') +
+    tb('delsub', '删除子程序 delete subroutine', '') + '</div>' +
     '<div class="row"><label id="edinlab" for="edin">address</label><input id="edin" autocomplete="off" disabled>' +
     '<span id="edinmsg"></span></div>' +
     '<div id="edbody"><div id="edgridbox" tabindex="0"></div><div id="edside">' +
-    '<h4>双线圈 double coils</h4><div id="eddbl">none</div><h4>Rungs with errors</h4><div id="edbad">none</div></div></div>' +
+    '<h4>列表编辑 parts</h4><div id="edparts"></div><h4>双线圈 double coils</h4><div id="eddbl">none</div><h4>Rungs with errors</h4><div id="edbad">none</div></div></div>' +
     '<div id="ederrs"></div>';
   document.body.appendChild(panel);
   const confirmBox = document.createElement('div');
@@ -259,23 +266,38 @@
 
   function cur() { return E.parts[E.p] && E.parts[E.p].rungs[E.r]; }
   // Edited rungs, plus one per part whose rung list changed (a network deleted, cut or moved).
+  // Parts added, renamed or removed (列表编辑) count too.
   function dirtyCount() {
     let n = 0;
-    E.parts.forEach(function (p, pi) {
+    E.parts.forEach(function (p) {
       p.rungs.forEach(function (r) { if (r.dirty) n++; });
-      const run = E.running && E.running.parts[pi];
-      if (run && (p.rungs.length !== run.rungs.length || p.rungs.some(function (r, i) { return r.orig !== i; }))) n++;
+      const run = E.running && p.orig >= 0 && E.running.parts[p.orig];
+      if (!run || run.name !== p.name) n++;
+      else if (p.rungs.length !== run.rungs.length || p.rungs.some(function (r, i) { return r.orig !== i; })) n++;
     });
-    return n;
+    return n + removedParts().length;
+  }
+  // The running program's parts the edits removed (deleted, or renamed away).
+  function removedParts() {
+    if (!E.running) return [];
+    return E.running.parts.filter(function (rp) {
+      return !E.parts.some(function (p) { return p.name.toUpperCase() === rp.name.toUpperCase(); });
+    }).map(function (rp) { return rp.name; });
   }
   // The selected networks of the shown part: from the mark (选择网络) to the shown rung.
   function selRange() {
     if (!E.mark || E.mark.p !== E.p) return [E.r, E.r];
     return [Math.min(E.mark.r, E.r), Math.max(E.mark.r, E.r)];
   }
-  function runningKind(pi, r) {
-    const run = E.running && E.running.parts[pi];
-    return r.orig >= 0 && run && run.rungs[r.orig] ? run.rungs[r.orig].kind : 'ladder';
+  // A rung's JSON in the running program (null for a new one).
+  function runningRung(part, r) {
+    const run = E.running && part.orig >= 0 && E.running.parts[part.orig];
+    return r.orig >= 0 && run && run.rungs[r.orig] ? run.rungs[r.orig] : null;
+  }
+  function runningKind(part, r) {
+    if (r.json) return r.json.kind;
+    const rr = runningRung(part, r);
+    return rr ? rr.kind : 'ladder';
   }
   function select(p, r, forward) {
     const part = E.parts[p];
@@ -296,10 +318,10 @@
     }
     closeInput();
     render();
-    // Show the same rung in the view.
-    const tab = document.querySelectorAll('.tab')[p];
+    // Show the same rung in the view (a new part has none there yet).
+    const vp = part.orig, tab = vp >= 0 ? document.querySelectorAll('.tab')[vp] : null;
     if (tab && !tab.classList.contains('sel')) tab.click();
-    const orig = cur().orig, div = orig >= 0 && L.rungDiv ? L.rungDiv(p, orig) : null;
+    const orig = cur().orig, div = vp >= 0 && orig >= 0 && L.rungDiv ? L.rungDiv(vp, orig) : null;
     if (div) {
       if (L.drawRung) L.drawRung(div);
       div.scrollIntoView({ block: 'nearest' });
@@ -409,6 +431,19 @@
   }
   // 双线圈 and the rungs with errors, over the whole draft.
   function sideLists() {
+    // Removed parts, but not those renamed (shown as "renamed from").
+    const removed = removedParts().filter(function (n) {
+      return !E.parts.some(function (p) {
+        const run = p.orig >= 0 && E.running ? E.running.parts[p.orig] : null;
+        return run && run.name === n;
+      });
+    });
+    document.getElementById('edparts').innerHTML = E.parts.map(function (p, pi) {
+      const run = p.orig >= 0 && E.running ? E.running.parts[p.orig] : null;
+      const tag = !run ? ' <i>new</i>' : run.name !== p.name ? ' <i>renamed from ' + h(run.name) + '</i>' : '';
+      return '<div' + (pi === E.p ? ' class="cur"' : '') + '><a data-part="' + pi + '">' + h(p.name) + '</a> ' +
+        p.rungs.length + ' rung(s)' + tag + '</div>';
+    }).join('') + removed.map(function (n) { return '<div class="warn">' + h(n) + ' <i>removed</i></div>'; }).join('');
     const coils = {};
     E.parts.forEach(function (p, pi) {
       p.rungs.forEach(function (r, ri) {
@@ -419,8 +454,8 @@
         };
         if (r.grid) {
           r.grid.cells.forEach(function (c) { if (c.k === 'coil' || c.k === 'coil-not') add(c.op); });
-        } else if (r.orig >= 0) {
-          const lr = (L.layout.parts[pi] || { rungs: [] }).rungs[r.orig];
+        } else if (r.orig >= 0 && p.orig >= 0) {
+          const lr = (L.layout.parts[p.orig] || { rungs: [] }).rungs[r.orig];
           if (lr) lr.cells.forEach(function (c) { if (c.kind === 'coil' || c.kind === 'coil-not') add(c.text); });
         }
       });
@@ -440,6 +475,12 @@
     }).join('') : 'none';
   }
   document.getElementById('edside').addEventListener('click', function (e) {
+    const part = e.target.dataset && e.target.dataset.part;
+    if (part !== undefined) {
+      select(+part, 0, true);
+      gridBox.focus();
+      return;
+    }
     const go = e.target.dataset && e.target.dataset.go;
     if (!go) return;
     const pr = go.split(',').map(Number);
@@ -461,8 +502,7 @@
       say(why, true);
       return false;
     }
-    E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: E.parts[E.p].rungs.slice() });
-    if (E.undo.length > 200) E.undo.shift();
+    pushUndo(snap());
     E.redo = [];
     const n = Object.assign({}, rg, { grid: g, comment: comment, dirty: true, errors: [], net: null, cells: null });
     E.parts[E.p].rungs[E.r] = n;
@@ -471,16 +511,41 @@
     scheduleCheck();
     return true;
   }
+  // An undo step: the shown part's rung list (an edit of rungs), or every part with its name and
+  // rungs (列表编辑: a part added, renamed or deleted).
+  function snap() {
+    return { part: E.parts[E.p], r: E.r, row: E.row, col: E.col, rungs: E.parts[E.p].rungs.slice() };
+  }
+  function snapParts() {
+    return {
+      list: E.parts.slice(), names: E.parts.map(function (p) { return p.name; }),
+      all: E.parts.map(function (p) { return p.rungs.slice(); }), p: E.p, r: E.r, row: E.row, col: E.col
+    };
+  }
+  function pushUndo(s) {
+    E.undo.push(s);
+    if (E.undo.length > 200) E.undo.shift();
+  }
   function undo(from, to) {
     const s = from.pop();
     if (!s) {
       say('nothing to ' + (from === E.undo ? 'undo' : 'redo'), true);
       return;
     }
-    to.push({ p: s.p, r: s.r, row: E.row, col: E.col, rungs: E.parts[s.p].rungs.slice() });
-    E.parts[s.p].rungs = s.rungs;
-    E.p = s.p;
-    E.r = Math.min(s.r, s.rungs.length - 1);
+    if (s.list) {
+      to.push(Object.assign(snapParts(), { row: E.row, col: E.col }));
+      E.parts = s.list;
+      s.list.forEach(function (p, i) {
+        p.name = s.names[i];
+        p.rungs = s.all[i];
+      });
+      E.p = Math.min(s.p, E.parts.length - 1);
+    } else {
+      to.push({ part: s.part, r: s.r, row: E.row, col: E.col, rungs: s.part.rungs.slice() });
+      s.part.rungs = s.rungs;
+      E.p = Math.max(0, E.parts.indexOf(s.part));
+    }
+    E.r = Math.max(0, Math.min(s.r, E.parts[E.p].rungs.length - 1));
     E.row = s.row;
     E.col = s.col;
     say(from === E.undo ? 'undone' : 'redone', false);
@@ -520,7 +585,7 @@
   function deleteNets(what) {
     const sr = selRange(), part = E.parts[E.p];
     for (let k = sr[0]; k <= sr[1]; k++) {
-      if (runningKind(E.p, part.rungs[k]) === 'marker') {
+      if (runningKind(part, part.rungs[k]) === 'marker') {
         say('rung ' + (k + 1) + ' is a marker of the program\'s structure (' + (part.rungs[k].why || 'not a network') +
           '): it is not deleted; nothing deleted', true);
         return false;
@@ -530,7 +595,7 @@
       say('a part keeps at least one rung: nothing deleted', true);
       return false;
     }
-    E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: part.rungs.slice() });
+    pushUndo(snap());
     E.redo = [];
     part.rungs = part.rungs.slice(0, sr[0]).concat(part.rungs.slice(sr[1] + 1));
     E.mark = null;
@@ -539,6 +604,111 @@
     closeInput();
     render();
     return true;
+  }
+  // ---- 列表编辑: the part list (docs/ladder-edit.md "The part list") ----------------------------
+  // Whether a rung mentions `name` as an operand (a call of the subroutine, its SP marker).
+  function gridMentions(g, name) {
+    const n = name.toUpperCase();
+    return g.cells.some(function (c) {
+      return String(c.op || '').toUpperCase() === n ||
+        (c.ops || []).some(function (o) { return String(o).toUpperCase() === n; });
+    });
+  }
+  function jsonRenamed(j, from, to) {
+    let hit = false;
+    const walk = function (x) {
+      if (Array.isArray(x)) return x.map(walk);
+      if (!x || typeof x !== 'object') return x;
+      const o = {};
+      Object.keys(x).forEach(function (k) { o[k] = walk(x[k]); });
+      if (typeof o.text === 'string' && o.text.toUpperCase() === from.toUpperCase()) {
+        o.text = to;
+        hit = true;
+      }
+      return o;
+    };
+    const out = walk(j);
+    return hit ? out : null;
+  }
+  // `r` of `part` with every operand `from` written `to` (a new rung object), or `r` itself.
+  function rungRenamed(part, r, from, to) {
+    if (r.grid) {
+      if (!gridMentions(r.grid, from)) return r;
+      const g = copyGrid(r.grid), F = from.toUpperCase();
+      g.cells.forEach(function (c) {
+        if (String(c.op || '').toUpperCase() === F) c.op = to;
+        if (c.ops) c.ops = c.ops.map(function (o) { return String(o).toUpperCase() === F ? to : o; });
+      });
+      return Object.assign({}, r, { grid: g, dirty: true, errors: [], net: null, cells: null });
+    }
+    const j = r.json || runningRung(part, r), n = j ? jsonRenamed(j, from, to) : null;
+    return n ? Object.assign({}, r, { json: n, dirty: true, errors: [] }) : r;
+  }
+  // Where `name` is used outside its own part: [[part index, rung index], ...].
+  function callersOf(name) {
+    const out = [];
+    E.parts.forEach(function (p, pi) {
+      if (p.name.toUpperCase() === name.toUpperCase()) return;
+      p.rungs.forEach(function (r, ri) { if (rungRenamed(p, r, name, name) !== r) out.push([pi, ri]); });
+    });
+    return out;
+  }
+  function placesText(list) {
+    return list.map(function (x) { return E.parts[x[0]].name + ' rung ' + (x[1] + 1); }).join(', ');
+  }
+  function nameTaken(name, except) {
+    return E.parts.some(function (p) { return p !== except && p.name.toUpperCase() === name.toUpperCase(); });
+  }
+  // 新子程序: the part the server made for `a` ({name, rungs}: its markers in the dialect), with
+  // an empty rung between them, after the last part.
+  function addSub(a) {
+    pushUndo(snapParts());
+    E.redo = [];
+    const marker = function (j) {
+      return { orig: -1, json: j, grid: null, why: 'a marker', comment: (j.comment || []).slice(), dirty: true, errors: [], net: null, cells: null, pending: false };
+    };
+    const rungs = a.rungs.map(marker);
+    rungs.splice(1, 0, { orig: -1, grid: blank(1, 8), why: '', comment: [], dirty: true, errors: [], net: null, cells: null, pending: false });
+    E.parts.push({ name: a.name, orig: -1, sub: true, rungs: rungs });
+    E.p = E.parts.length - 1;
+    E.r = 1;
+    E.row = 0;
+    E.col = 0;
+    say('新子程序: ' + a.name + ' added after the last part; its rungs go between its markers (更新修改 puts it live)', false);
+    render();
+  }
+  function renameSub(a) {
+    const part = E.parts[E.p], from = part.name;
+    pushUndo(snapParts());
+    E.redo = [];
+    let calls = 0;
+    E.parts.forEach(function (p) {
+      p.rungs = p.rungs.map(function (r) {
+        const n = rungRenamed(p, r, from, a.name);
+        if (n !== r && p !== part) calls++;
+        return n;
+      });
+    });
+    part.name = a.name;
+    say('重命名: ' + from + ' is now ' + a.name + ' (its marker and ' + calls + ' calling rung(s) changed; 更新修改 puts it live)', false);
+    render();
+    scheduleCheck();
+  }
+  function deleteSub() {
+    const part = E.parts[E.p];
+    if (!part.sub) {
+      say(part.name + ' is not a subroutine: the main parts are the program\'s structure; nothing deleted', true);
+      return;
+    }
+    const calls = callersOf(part.name);
+    pushUndo(snapParts());
+    E.redo = [];
+    E.parts.splice(E.p, 1);
+    E.p = Math.min(E.p, E.parts.length - 1);
+    E.r = 0;
+    say('删除子程序: ' + part.name + ' deleted' + (calls.length ? '; still called from ' + placesText(calls) +
+      ': the check refuses the update until those calls go' : '') + ' (更新修改 asks before removing it)', !!calls.length);
+    select(E.p, 0, true);
   }
   const actions = {
     line: function () { place('line'); },
@@ -591,7 +761,7 @@
     },
     newrung: function () {
       const rg = cur(), cols = rg && rg.grid ? rg.grid.cols : 9;
-      E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: E.parts[E.p].rungs.slice() });
+      pushUndo(snap());
       E.redo = [];
       E.parts[E.p].rungs.splice(E.r + 1, 0, {
         orig: -1, grid: blank(1, Math.max(cols, 8)), why: '', comment: [], dirty: true, errors: [], net: null, cells: null, pending: false
@@ -621,7 +791,7 @@
         say('nothing copied: 复制 (Ctrl+C) a rung first', true);
         return;
       }
-      E.undo.push({ p: E.p, r: E.r, row: E.row, col: E.col, rungs: E.parts[E.p].rungs.slice() });
+      pushUndo(snap());
       E.redo = [];
       const add = E.clip.map(function (c) {
         return { orig: -1, grid: copyGrid(c.grid), why: '', comment: c.comment.slice(), dirty: true, errors: [], net: null, cells: null, pending: false };
@@ -634,6 +804,15 @@
       scheduleCheck();
     },
     delnet: function () { deleteNets('删除网络: deleted'); },
+    addsub: function () { openInput('part-add'); },
+    rensub: function () {
+      if (!E.parts[E.p].sub) {
+        say(E.parts[E.p].name + ' is not a subroutine: only a subroutine is renamed', true);
+        return;
+      }
+      openInput('part-rename');
+    },
+    delsub: function () { deleteSub(); },
     undo: function () { undo(E.undo, E.redo); },
     redo: function () { undo(E.redo, E.undo); },
     prev: function () { select(E.p, E.r - 1, false); },
@@ -660,6 +839,20 @@
   // ---- the input line: an operand, a box, a comment, checked as typed -------------------------
   let inputTimer = null, inputSeq = 0;
   function openInput(mode, kind) {
+    if (mode === 'part-add' || mode === 'part-rename') {
+      E.input = { mode: mode, kind: kind };
+      input.disabled = false;
+      const pre = E.subs ? E.subs.prefix : '';
+      let free = E.subs ? E.subs.first : 0;
+      while (E.subs && nameTaken(pre + free) && free < E.subs.last) free++;
+      document.getElementById('edinlab').textContent = mode === 'part-add' ? '新子程序 new subroutine' :
+        '重命名 rename ' + E.parts[E.p].name + ' to';
+      input.value = mode === 'part-add' ? pre + free : E.parts[E.p].name;
+      input.focus();
+      input.select();
+      checkInput();
+      return;
+    }
     const rg = cur();
     if (!rg || !rg.grid) return;
     const c = at(rg.grid, E.row, E.col);
@@ -708,6 +901,15 @@
   function checkText(text) {
     const mode = E.input && E.input.mode;
     if (mode === 'comment') return Promise.resolve({ ok: true, message: 'comment' });
+    if (mode === 'part-add' || mode === 'part-rename') {
+      const self = mode === 'part-rename' ? E.parts[E.p] : null;
+      return api('api/edit/grid', { subroutine: text.trim() }).then(function (a) {
+        if (!a.body.ok) return { ok: false, message: a.body.error || 'refused' };
+        if (nameTaken(a.body.name, self)) return { ok: false, message: a.body.name + ' is a part of the program already' };
+        if (self && self.name.toUpperCase() === a.body.name.toUpperCase()) return { ok: false, message: 'the same name' };
+        return { ok: true, message: a.body.name + ' ok', body: a.body };
+      });
+    }
     const words = text.trim().split(/\s+/).filter(Boolean);
     if (mode === 'box') {
       const b = boxEntry(words[0]);
@@ -762,7 +964,11 @@
       }
       const words = text.trim().split(/\s+/).filter(Boolean);
       closeInput();
-      if (inp.mode === 'comment') {
+      if (inp.mode === 'part-add') {
+        addSub(a.body);
+      } else if (inp.mode === 'part-rename') {
+        renameSub(a.body);
+      } else if (inp.mode === 'comment') {
         const lines = text.split('|').map(function (s) { return s.trim(); }).filter(Boolean);
         edit(function (g, comment) { comment.splice(0, comment.length); lines.forEach(function (l) { comment.push(l); }); return null; },
           '注释: rung comment set');
@@ -787,7 +993,8 @@
   const KEYS = {
     '-': 'line', '|': 'vline', '1': 'no', '2': 'nc', '3': 'rise', '4': 'fall', '5': 'coil', '6': 'coil-not',
     '7': 'set', '8': 'reset', '9': 'box', Delete: 'del', Backspace: 'delv', r: 'insrow', R: 'delrow',
-    c: 'inscol', n: 'newrung', ';': 'comment', PageUp: 'prev', PageDown: 'next', s: 'selnet'
+    c: 'inscol', n: 'newrung', ';': 'comment', PageUp: 'prev', PageDown: 'next', s: 'selnet',
+    p: 'addsub', P: 'rensub'
   };
   const CTRL_KEYS = { c: 'copynet', x: 'cutnet', v: 'pastenet', Delete: 'delnet' };
   gridBox.addEventListener('keydown', function (e) {
@@ -858,7 +1065,7 @@
     if (!E.on || !E.loaded) return;
     const div = e.target.closest && e.target.closest('div.rg');
     if (!div) return;
-    const p = +div.dataset.p, orig = +div.dataset.r, part = E.parts[p];
+    const p = E.parts.findIndex(function (x) { return x.orig === +div.dataset.p; }), orig = +div.dataset.r, part = E.parts[p];
     if (!part) return;
     const r = part.rungs.findIndex(function (x) { return x.orig === orig; });
     if (r >= 0) select(p, r);
@@ -911,14 +1118,18 @@
   // rung, for drawing the check's diagnostics.
   function makeDraft() {
     const d = JSON.parse(JSON.stringify(E.running)), where = {};
-    E.parts.forEach(function (p, pi) {
-      const jp = d.parts[pi];
-      if (!jp) return;
+    // The parts in the editor's order (列表编辑: new ones, renamed ones, deleted ones left out).
+    d.parts = E.parts.map(function (p) {
+      const run = p.orig >= 0 ? E.running.parts[p.orig] : null;
+      const jp = run ? JSON.parse(JSON.stringify(run)) : {};
+      jp.name = p.name;
       const rungs = [];
       where[p.name] = [];
       p.rungs.forEach(function (r) {
-        if (!r.dirty) {
-          rungs.push(E.running.parts[pi].rungs[r.orig]);
+        if (r.json) {
+          rungs.push(r.json);
+        } else if (!r.dirty) {
+          rungs.push(run.rungs[r.orig]);
         } else if (r.grid && isEmptyGrid(r.grid)) {
           return;
         } else {
@@ -927,6 +1138,7 @@
         where[p.name].push(r);
       });
       jp.rungs = rungs;
+      return jp;
     });
     d.base = E.base;
     d.editor = EDITOR;
@@ -1002,12 +1214,14 @@
       t += ' — the running program changed since this draft was made (draft base ' + a.body.base + ', running ' +
         ((a.body.running || {}).hash || '?') + '): 放弃修改 and edit the running version';
     }
+    if (a.body.reason === 'removes-parts') t += ' — it removes ' + (a.body.removes || []).join(', ');
     if (a.body.reason === 'held' && a.body.holder) t += ' — held by editor ' + a.body.holder.editor + ' (' + a.body.holder.client + ')';
     say(t, true);
     return null;
   }
   function confirmUpdate(c) {
     const init = c.init || E.init || {};
+    E.removes = c.removes || [];
     const warn = (c.diagnostics || []).filter(function (d) { return d.severity !== 'error'; });
     confirmBox.innerHTML = '<h3>更新修改: put the edited program live?</h3>' +
       '<p>The draft verifies. Updating swaps it in at a tick boundary (online change), writes the program file ' +
@@ -1016,6 +1230,8 @@
         '(an update is a program reload) and writes: <b>' +
         h((init.writes || []).join(', ') || 'nothing') + '</b>' + (init.rule ? '<br><small>' + h(init.rule) + '</small>' : '') + '</div>'
         : '<div class="init" id="edinit">This program has no init part: nothing runs besides the new rungs.</div>') +
+      (E.removes.length ? '<div class="init" id="edremoves"><b>This update removes ' + h(E.removes.join(', ')) +
+        '</b> from the running program (列表编辑: deleted or renamed).</div>' : '') +
       (warn.length ? '<p>Warnings:</p><ul>' + warn.map(function (d) { return '<li>' + h(d.message) + '</li>'; }).join('') + '</ul>' : '') +
       '<p>The change:</p><pre>' + h(c.diff || '') + '</pre>' +
       '<button id="edyes" class="go">更新修改 update now</button> <button id="edno">cancel</button>';
@@ -1028,7 +1244,9 @@
     document.getElementById('edyes').onclick = function () {
       confirmBox.style.display = 'none';
       say('updating...', false);
-      api('api/edit/update', { editor: EDITOR }).then(function (u) {
+      const body = { editor: EDITOR };
+      if (E.removes.length) body.removeParts = E.removes;
+      api('api/edit/update', body).then(function (u) {
         if (u.status === 422) {
           markDiagnostics(u.body.diagnostics, makeDraft().where);
           say('更新修改 refused: ' + (u.body.error || 'the draft does not verify') + '; the running program is unchanged', true);

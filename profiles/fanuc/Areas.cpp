@@ -67,17 +67,17 @@ constexpr TargetProfile kFanuc{
         none(),                                   // Param
         {"T", 0, 0, false, false, false, 0},      // Timer: TMRB/TMRBF numbers (timerNumbers)
         none(),                                   // Counter
-        {"L", 10000, 0, false, false, false, 0},  // Label
-        {"P", fanuc::kSubroutines + 1, 0, false, false, false, 0}, // Subroutine P1..P5000
-        byteArea("K", 100, true, kK, 900, 100),                    // KeepRelay
-        byteArea("E", 10000, true, kE),                            // ExtraRelay
-        byteArea("A", 250, true, kA, 9000, 250),                   // MessageBits
-        byteArea("T", 500, true, kT, 9000, 500),                   // TimerData
-        byteArea("C", 400, true, kC, 5000, 200),                   // CounterData
-        byteArea("D", 10000, true, kD),                            // DataTable
-        none(),                                                    // SystemBits
-        none(),                                                    // SystemWords
-        none(),                                                    // ConstWords
+        {"L", 10000, 0, false, false, false, 0, 0, 0, 1},                   // Label L1..L9999
+        {"P", fanuc::kSubroutines + 1, 0, false, false, false, 0, 0, 0, 1}, // Subroutine P1..P5000
+        byteArea("K", 100, true, kK, 900, 100),                             // KeepRelay
+        byteArea("E", 10000, true, kE),                                     // ExtraRelay
+        byteArea("A", 250, true, kA, 9000, 250),                            // MessageBits
+        byteArea("T", 500, true, kT, 9000, 500),                            // TimerData
+        byteArea("C", 400, true, kC, 5000, 200),                            // CounterData
+        byteArea("D", 10000, true, kD),                                     // DataTable
+        none(),                                                             // SystemBits
+        none(),                                                             // SystemWords
+        none(),                                                             // ConstWords
         {"?", 0, 0, false, false, false, 0},
     }},
     // TMRB/TMRBF timer numbers 1..500 (ref 1 specification table, 6.3), in blockState.

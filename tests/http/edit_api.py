@@ -240,6 +240,114 @@ def edit_loop(name, program, coil, contact, before, after, added_line, unknown, 
         srv.stop()
 
 
+def renamed(node, old, new):
+    """`node` (networks JSON) with every operand text `old` written `new` (a subroutine's
+    marker and its calls) and a part named `old` renamed: what the page's 列表编辑 rename sends."""
+    if isinstance(node, dict):
+        out = {k: renamed(v, old, new) for k, v in node.items()}
+        if out.get("text") == old:
+            out["text"] = new
+        if "rungs" in out and out.get("name") == old:
+            out["name"] = new
+        return out
+    if isinstance(node, list):
+        return [renamed(v, old, new) for v in node]
+    return node
+
+
+def part_list(name, program, sub, new_sub, bad_names, new_lines):
+    """列表编辑 (docs/ladder-edit.md "The part list") on `program`, whose subroutine `sub` is
+    called: a new subroutine `new_sub` (its markers from /api/edit/grid, `new_lines` the program
+    text they print as) goes live; deleting it again needs the update to name it
+    (removeParts) and brings the file back byte for byte; deleting the called `sub` is refused by
+    the check (its calls); renaming `sub` (marker and calls) goes live with removeParts [sub]."""
+    d = os.path.join(out, name + "-parts")
+    os.makedirs(d)
+    path = os.path.join(d, os.path.basename(program))
+    shutil.copy(program, path)
+    original = open(path, "rb").read()
+    srv = httputil.Serve(exe, path, d, "serve", duration=150)
+    try:
+        st, g = call(srv, "/api/edit")
+        base, nets = g["running"]["hash"], g["running"]["networks"]
+        st, o = call(srv, "/api/edit/grid", {"open": True})
+        subs = [p["name"] for p in o.get("parts", []) if p.get("subroutine")]
+        check(st == 200 and subs == [sub],
+              "%s: the editor's parts mark the subroutine %s (and nothing else): %s" % (name, sub, subs))
+        for bn in bad_names:
+            st, a = call(srv, "/api/edit/grid", {"subroutine": bn})
+            check(st == 200 and a.get("ok") is False and bn in a.get("error", ""),
+                  "%s: a new subroutine named '%s' is refused with the reason: %s" % (name, bn, a.get("error")))
+        st, a = call(srv, "/api/edit/grid", {"subroutine": new_sub})
+        check(st == 200 and a.get("ok") and a.get("name") == new_sub.upper() and
+              [r["kind"] for r in a.get("rungs", [])] == ["marker", "marker"],
+              "%s: /api/edit/grid makes the markers of a new subroutine %s: %s" % (name, new_sub, a))
+        added = json.loads(json.dumps(nets))
+        added["parts"].append({"name": a.get("name"), "rungs": a.get("rungs", [])})
+        st, r = draft(srv, added, base)
+        st, c = call(srv, "/api/edit/check", {"editor": "tab1"})
+        plus = [l[1:].strip() for l in c.get("diff", "").splitlines() if l.startswith("+") and not l.startswith("+++")]
+        check(st == 200 and plus == new_lines and c.get("removes") == [],
+              "%s: check: the draft adds exactly %s, removes nothing: %d %s" % (name, new_lines, st, plus or c))
+        st, u = call(srv, "/api/edit/update", {"editor": "tab1"})
+        check(st == 200, "%s: the new subroutine goes live: %d %s" % (name, st, u.get("error")))
+        text = open(path).read()
+        check(all(l in [" ".join(x.split()) for x in text.splitlines()] for l in new_lines),
+              "%s: the file holds the new subroutine's lines" % name)
+        st, g = call(srv, "/api/edit")
+        h1, nets1 = g["running"]["hash"], g["running"]["networks"]
+        check([p["name"] for p in nets1["parts"]][-1] == new_sub.upper(),
+              "%s: the running program has the part %s" % (name, new_sub.upper()))
+
+        # Deleting it again: the check names what goes, the update must name it too.
+        gone = json.loads(json.dumps(nets1))
+        gone["parts"] = [p for p in gone["parts"] if p["name"] != new_sub.upper()]
+        draft(srv, gone, h1)
+        st, c = call(srv, "/api/edit/check", {"editor": "tab1"})
+        check(st == 200 and c.get("removes") == [new_sub.upper()],
+              "%s: check says the draft removes %s: %d %s" % (name, new_sub.upper(), st, c.get("removes")))
+        v1 = version(srv)
+        st, u = call(srv, "/api/edit/update", {"editor": "tab1"})
+        check(st == 409 and u.get("reason") == "removes-parts" and u.get("removes") == [new_sub.upper()],
+              "%s: an update that does not name the removed part is refused: %d %s" % (name, st, u.get("error")))
+        st, u = call(srv, "/api/edit/update", {"editor": "tab1", "removeParts": ["PLC1"]})
+        check(st == 409 and version(srv) == v1,
+              "%s: naming another part is refused too, nothing changed: %d" % (name, st))
+        st, u = call(srv, "/api/edit/update", {"editor": "tab1", "removeParts": [new_sub.upper()]})
+        check(st == 200, "%s: with removeParts [%s] the update goes live: %d %s" % (name, new_sub.upper(), st, u.get("error")))
+        check(open(path, "rb").read() == original,
+              "%s: added and deleted again, the file is the original byte for byte" % name)
+        audit = [json.loads(l) for l in open(path + ".edits.jsonl")]
+        check(len(audit) == 2 and audit[1].get("removed") == [new_sub.upper()] and "removed" not in audit[0],
+              "%s: the audit record of the deletion names the removed part" % name)
+
+        # Deleting the called subroutine: the check refuses it (its calls have no target).
+        st, g = call(srv, "/api/edit")
+        h2, nets2 = g["running"]["hash"], g["running"]["networks"]
+        nocall = json.loads(json.dumps(nets2))
+        nocall["parts"] = [p for p in nocall["parts"] if p["name"] != sub]
+        draft(srv, nocall, h2)
+        st, c = call(srv, "/api/edit/check", {"editor": "tab1"})
+        dg = [x for x in c.get("diagnostics", []) if x.get("severity") == "error"]
+        check(st == 422 and dg and dg[0].get("part") and dg[0].get("rung"),
+              "%s: deleting the called %s is refused at a calling rung: %d %s" % (name, sub, st, dg[:1]))
+
+        # Renaming it: the marker and every call (what the page sends), removeParts [sub].
+        ren = renamed(nets2, sub, new_sub.upper())
+        draft(srv, ren, h2)
+        st, c = call(srv, "/api/edit/check", {"editor": "tab1"})
+        check(st == 200 and c.get("removes") == [sub],
+              "%s: renaming %s to %s verifies and removes %s: %d %s" % (name, sub, new_sub.upper(), sub, st, c.get("error") or c.get("removes")))
+        st, u = call(srv, "/api/edit/update", {"editor": "tab1", "removeParts": [sub]})
+        check(st == 200, "%s: the rename goes live: %d %s" % (name, st, u.get("error")))
+        st, g = call(srv, "/api/edit")
+        names = [p["name"] for p in g["running"]["networks"]["parts"]]
+        check(new_sub.upper() in names and sub not in names,
+              "%s: the running program's parts after the rename: %s" % (name, names))
+    finally:
+        srv.stop()
+
+
 def security(program):
     """Every edit route: no token 401, wrong token 403, foreign Origin 403, foreign Host 421;
     under --http-read-only every POST is 403 with the reason (GET still reads)."""
@@ -382,6 +490,16 @@ if which in ("", "iec"):
     # IEC: LD [%MW0 >= %KW0] / ST %M6 / ST %Q0.2 (0 >= 0) gains ANDN %I0.4.
     edit_loop("iec", os.path.join(examples, "conveyor.il"), "%Q0.2", "%I0.4", 1, 0,
               "ANDN %I0.4", "%Z9.9")
+if which in ("", "parts"):
+    # 列表编辑 in each dialect: a new subroutine, deleted again, the called one renamed.
+    part_list("hnc8", os.path.join(examples, "lathe_panel.stl"), "S1", "s7", ["S", "X7", "S9999", "S-1"],
+              ["SP S7", "SPE"])
+    part_list("fanuc", os.path.join(examples, "fanuc_magazine.pmc"), "P10", "P7", ["P", "S7", "P99999", "P0"],
+              ["SP P7", "SPE"])
+    # IL: a subroutine ends at the next SRi: or the end of the text (RET is a return, which
+    # an empty subroutine does not need): the new part prints as its label alone.
+    part_list("iec", os.path.join(examples, "pump_station.il"), "SR0", "SR7", ["SR", "%SR7", "SR64"],
+              ["SR7:"])
 if which in ("", "json"):
     json_program()
 if which in ("", "security"):

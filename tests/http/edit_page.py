@@ -589,6 +589,140 @@ def other(name, program, stim, locks, coil, address, added, delete=False):
         srv.stop()
 
 
+def part_names(page):
+    return page.js("return window.ladder.editor.state().parts.map(function(p){return p.name})")
+
+
+def new_rung_with(page, contact, last_key, last_text):
+    """In the shown (new, empty) rung: NO contact `contact` in column 1, lines, and at the last
+    column the element of key `last_key` (5 output, 9 box) with `last_text`."""
+    g = page.grid()
+    cols = g["grid"]["cols"]
+    page.click_cell(0, 0)
+    page.keys("1")
+    typed(page, contact)
+    for _ in range(cols - 2):
+        page.keys("-", Keys.ARROW_RIGHT)
+    page.keys(last_key)
+    msg = typed(page, last_text)
+    wait("the rung converted", lambda: page.grid()["net"], 20)
+    return msg, page.settled()
+
+
+def parts():
+    """列表编辑 on lathe_panel.stl: key p adds a subroutine S7 (its markers from the server, an
+    empty rung between them) filled with [X480.2]--(R7.0); a new PLC1 rung [X480.3]--[CALL S7];
+    更新修改 puts both live (R7.0 follows X480.2 while X480.3 calls S7, keeps its value when not
+    called; the file has SP S7 ... SPE and CALL S7). Shift+P renames S7
+    to S8 (its marker and the call): the confirmation says S7 is removed, the file then has S8
+    only. 删除子程序 of S8, still called: the check's refusal is shown on the calling rung; Ctrl+Z
+    gives it back."""
+    name = "parts"
+    d = os.path.join(out, name)
+    os.makedirs(d)
+    path = os.path.join(d, "lathe_panel.stl")
+    shutil.copy(os.path.join(examples, "lathe_panel.stl"), path)
+    srv = httputil.Serve(exe, path, d, "serve", duration=200)
+    drv = chrome()
+    page = Page(drv, name)
+    try:
+        lock(srv, name, "X480.2=1")
+        lock(srv, name, "X480.3=1")
+        st, g0 = call(srv, "/api/edit")
+        v0 = g0["running"]["version"]
+        open_editor(page, srv.url, srv.token)
+        focus_grid(page)
+        before = part_names(page)
+        page.keys("p")
+        wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+        check("新子程序" in page.text("edinlab") and page.js("return document.getElementById('edin').value") == "S0",
+              "%s: key p asks for the new subroutine, suggesting the first free number: '%s'" %
+              (name, page.js("return document.getElementById('edin').value")))
+        page.ctrl("a")
+        msg = typed(page, "S7")
+        names = part_names(page)
+        g = page.grid()
+        check(names == before + ["S7"] and g["r"] == 1 and g["dirty"] and "S7" in page.text("edparts"),
+              "%s: S7 is added after the last part and shown at its empty rung: %s '%s' ('%s')" %
+              (name, names, page.text("edwhere"), msg))
+        msg, g = new_rung_with(page, "X480.2", "5", "R7.0")
+        check(g and g["net"] and not g["errors"], "%s: S7's rung [X480.2]--(R7.0) converts: %s" % (name, g and g["errors"]))
+        page.screenshot("new_subroutine")
+        # A PLC1 rung calling it, after PLC1's first rung.
+        page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index("PLC1")))
+        focus_grid(page)
+        page.keys("n")
+        msg, g = new_rung_with(page, "X480.3", "9", "CALL S7")
+        check(g and g["net"] and not g["errors"], "%s: a PLC1 rung [X480.3]--[CALL S7] converts: %s %s" % (name, msg, g and g["errors"]))
+        text = update(page, confirm=True)
+        ok = wait("the new version", lambda: call(srv, "/api/edit")[1]["running"]["version"] > v0, 60)
+        check(ok and "+SP S7" in text and "+CALL S7" in text and "removes" not in text,
+              "%s: 更新修改 puts S7 and its call live (the diff adds SP S7 and CALL S7)" % name)
+        check(serveutil.wait_value(exe, srv.sock, "R7.0", 1, 20), "%s: R7.0 = 1: S7 runs, called from PLC1" % name)
+        lock(srv, name, "X480.2=0")
+        check(serveutil.wait_value(exe, srv.sock, "R7.0", 0, 20), "%s: R7.0 follows X480.2 to 0" % name)
+        # Not called (X480.3 = 0), S7 does not run: R7.0 keeps its value (DIALECT.md 3).
+        lock(srv, name, "X480.3=0")
+        lock(srv, name, "X480.2=1")
+        check(not serveutil.wait_value(exe, srv.sock, "R7.0", 1, 2),
+              "%s: with the call's contact X480.3 at 0, S7 does not run: R7.0 stays 0" % name)
+        text1 = open(path).read()
+        lines = [" ".join(l.split()) for l in text1.splitlines()]
+        check("SP S7" in lines and "OUT R7.0" in lines and "CALL S7" in lines and lines.index("SP S7") > lines.index("2END"),
+              "%s: the file has the subroutine after 2END and the call" % name)
+
+        # Rename S7 -> S8: the marker and the call; the update names S7 as removed.
+        wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
+        time.sleep(1)
+        v1 = call(srv, "/api/edit")[1]["running"]["version"]
+        open_editor(page, srv.url, srv.token)
+        names = part_names(page)
+        page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index("S7")))
+        focus_grid(page)
+        page.keys("P")
+        wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
+        page.ctrl("a")
+        typed(page, "S8")
+        check(part_names(page)[-1] == "S8" and "renamed from S7" in page.text("edparts"),
+              "%s: Shift+P renames S7 to S8: '%s'" % (name, page.text("edparts")))
+        page.screenshot("renamed")
+        text = update(page, confirm=True)
+        ok = wait("the new version", lambda: call(srv, "/api/edit")[1]["running"]["version"] > v1, 60)
+        check(ok and "removes S7" in text and "+CALL S8" in text and "-CALL S7" in text,
+              "%s: the confirmation says the update removes S7; the call is renamed too" % name)
+        text2 = open(path).read()
+        check("SP S8" in text2 and "CALL S8" in text2 and "S7" not in text2,
+              "%s: the file has S8 and no S7" % name)
+        recs = [json.loads(l) for l in open(path + ".edits.jsonl")]
+        check(len(recs) == 2 and recs[1].get("removed") == ["S7"],
+              "%s: the audit record of the rename names S7 as removed" % name)
+
+        # 删除子程序 of the called S8: refused by the check on the call; Ctrl+Z.
+        wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
+        time.sleep(1)
+        v2 = call(srv, "/api/edit")[1]["running"]["version"]
+        open_editor(page, srv.url, srv.token)
+        names = part_names(page)
+        page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index("S8")))
+        page.click(page.d.find_element(By.CSS_SELECTOR, 'button[data-act="delsub"]'))
+        check(part_names(page) == names[:-1] and "still called from PLC1" in page.text("edstate") and
+              "S8 removed" in page.text("edparts"),
+              "%s: 删除子程序 takes S8 out and says where it is still called: '%s'" % (name, page.text("edstate")))
+        page.click(page.d.find_element(By.ID, "edupdate"))
+        ok = wait("the check's refusal", lambda: "does not verify" in page.text("edstate"), 60)
+        check(ok and "S8" in page.text("ederrs") and "PLC1 rung" in page.text("edbad") and
+              call(srv, "/api/edit")[1]["running"]["version"] == v2,
+              "%s: the update is refused on the calling rung (shown, listed under rungs with errors), "
+              "nothing changed: '%s' '%s'" % (name, page.text("ederrs"), page.text("edbad")))
+        page.screenshot("delete_refused")
+        focus_grid(page)
+        page.ctrl("z")
+        check(part_names(page) == names, "%s: Ctrl+Z gives S8 back: %s" % (name, part_names(page)))
+    finally:
+        drv.quit()
+        srv.stop()
+
+
 def read_only():
     """Under --http-read-only the page has no editor and the grid route is refused."""
     name = "read-only"
@@ -615,6 +749,7 @@ def read_only():
 t_start = time.time()
 read_only()
 hnc8()
+parts()
 other("fanuc", "fanuc_coolant.pmc", "fanuc_coolant.stim", ["X0.0=0", "X0.1=1"], "R0.7", "X0.1", "AND.NOT X0.1",
       delete=("R1.0", "M08_ON", ["F10=8", "F7.0=1"], ["F7.0=0"]))
 other("iec", "conveyor.il", "conveyor.stim", ["%I0.0=1", "%I0.1=1", "%I0.3=1", "%I0.4=1"], "%Q0.0", "%I0.4", "ANDN %I0.4")

@@ -95,6 +95,30 @@ TEST(WrittenText, FanucEditedWrittenInstructionPrintsFromItsStatement) {
   EXPECT_EQ(text.find("GTB"), std::string::npos) << text;
 }
 
+TEST(WrittenText, FanucEditedCalluPrintsAsCallu) {
+  const std::string src = std::string(kFanuc) + "END\n";
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(src, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  // The subprogram renamed P1 -> P2 (列表编辑): CALLU's call operand and SP's edited, so the
+  // CALLU no longer prints as written. FANUC has no word for its always-true load alone (4.2:
+  // CALLU is the unconditional call): it prints as CALLU P2, never as "(ON)" and CALL.
+  std::string json = writeJson(fromProgram(*p));
+  for (size_t at = json.find("\"P1\""); at != std::string::npos; at = json.find("\"P1\""))
+    json.replace(at, 4, "\"P2\"");
+  Networks back;
+  std::string error, text;
+  ASSERT_TRUE(readJson(json, back, error, *p->dialect)) << error;
+  ASSERT_TRUE(programText(back, *p, src, text, error)) << error;
+  EXPECT_NE(text.find("\nCALLU P2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nSP P2\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("(ON)"), std::string::npos) << text;
+  Diagnostics d2("again.pmc");
+  EXPECT_TRUE(pipeline::compilePmc(text, "again.pmc", VerifyOptions{}, d2, nullptr))
+      << d2.render() << text;
+}
+
 // IL: XOR (modicon-neza.md 2.6) and N (2.7) are expanded with scratch bits, END / ENDC (4) into
 // a jump to the end of the main program; each prints as written.
 constexpr const char *kIl = "LD %I0.1\n"
