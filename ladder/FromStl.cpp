@@ -387,6 +387,43 @@ void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vecto
   for (size_t i = 0; i < part.size();) {
     DrawnInstr w;
     if (!p.dialect->drawStmts(part, i, w) || w.as == DrawAs::Plain) {
+      // A box the front end recorded as written, one statement with other operands than the
+      // user wrote (FANUC DEC's `nndd` as a value and a mask, GTB as LTB with its operands
+      // swapped, MOVE's two mask nibbles as one byte; ir/Program.h WrittenInstr): drawn with
+      // the word and parameters as written, where the IR's form would show what the user
+      // never wrote (`[LTB 5 D100]` for `GTB D100 5`).
+      const Element &e0 = mine[i];
+      const StackRule rule = instrInfo(e0.op).stack;
+      if (e0.role == WrittenRole::First && !e0.written.empty() &&
+          (i + 1 == part.size() || mine[i + 1].role != WrittenRole::Part) &&
+          (rule == StackRule::Block || rule == StackRule::Push || rule == StackRule::Combine)) {
+        std::vector<std::string> words;
+        for (size_t a = 0; a < e0.written.size();) {
+          const size_t b = e0.written.find_first_of(" \t", a);
+          const size_t end = b == std::string::npos ? e0.written.size() : b;
+          if (end > a) words.push_back(e0.written.substr(a, end - a));
+          a = end + 1;
+        }
+        if (!words.empty()) {
+          Element e = e0;
+          e.drawn = words[0];
+          e.drawnWhole = false;
+          e.implied = 0;
+          e.operands.assign(words.begin() + 1, words.end());
+          e.symbols.assign(e.operands.size(), std::string());
+          for (size_t k = 0; k < e.operands.size(); ++k) // a symbol written as such stays one
+            for (size_t q = 0; q < e0.operands.size() && q < e0.symbols.size(); ++q)
+              if (!e0.symbols[q].empty() && e0.symbols[q] == e.operands[k]) {
+                e.operands[k] = e0.operands[q];
+                e.symbols[k] = e0.symbols[q];
+              }
+          changed = true;
+          drawn.push_back(std::move(e));
+          in.push_back(p.info[static_cast<size_t>(r.begin) + i].hasInput);
+          ++i;
+          continue;
+        }
+      }
       drawn.push_back(mine[i]);
       in.push_back(p.info[static_cast<size_t>(r.begin) + i].hasInput);
       ++i;

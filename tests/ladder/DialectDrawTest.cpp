@@ -122,6 +122,42 @@ TEST(LadderDialect, FanucRotationBoxes) {
   EXPECT_EQ(rotb->operands, (std::vector<std::string>{"2", "D0", "D2", "D4", "D6"}));
 }
 
+// Functional instructions the front end turns into other operands (ir/Program.h WrittenInstr)
+// are drawn as written, the word and parameters of fanuc-pmc.md: DEC's decode specification
+// `nndd` (6.9, DEC SUB4), GTB's operands in their order (6.6; the IR's LTB swaps them), MOVE's two
+// mask nibbles (6.8) - never the IR's `[DEC F10 3 255]`, `[LTB 5 D100]`, `[AND X1 240 R10]`. A
+// symbol written as a parameter stays the address with its symbol.
+TEST(LadderDialect, FanucWrittenParametersAsWritten) {
+  const char *pmc = "RD X0.0\n"
+                    "DEC F10 0311\n"
+                    "WRT R0.0\n"
+                    "RD X0.1\n"
+                    "GTB D100 5\n"
+                    "WRT R0.1\n"
+                    "RD X0.2\n"
+                    "MOVE 1111 0000 X1 R10\n"
+                    "END1\n"
+                    "END2\n"
+                    "END\n";
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const Cell *dec = boxNamed(*fl, "DEC"), *gtb = boxNamed(*fl, "GTB"), *mv = boxNamed(*fl, "MOVE");
+  ASSERT_TRUE(dec && gtb && mv) << "boxes DEC, GTB, MOVE";
+  EXPECT_EQ(dec->operands, (std::vector<std::string>{"F10", "0311"}));
+  EXPECT_EQ(gtb->operands, (std::vector<std::string>{"D100", "5"}));
+  EXPECT_EQ(mv->operands, (std::vector<std::string>{"1111", "0000", "X1", "R10"}));
+  EXPECT_EQ(boxNamed(*fl, "LTB"), nullptr);
+  EXPECT_EQ(boxNamed(*fl, "AND"), nullptr);
+  // The text form too (ladderjit ladder --format text).
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  const std::string text = renderText(fromProgram(*p));
+  EXPECT_NE(text.find("[GTB D100 5]"), std::string::npos) << text;
+  EXPECT_NE(text.find("[MOVE 1111 0000 X1 R10]"), std::string::npos) << text;
+}
+
 // An HNC-8 TMRB writes the time unit (hnc8-core.md: `TMRB 0 0 500`): all three operands drawn.
 TEST(LadderDialect, Hnc8TimerKeepsItsTimeUnit) {
   Diagnostics d("t.stl");
