@@ -43,14 +43,27 @@ const TargetProfile &profileOf(const CliAddress &a) {
   return a.profile ? *a.profile : hnc8::profile();
 }
 
-Cell cellOf(const lj_state &s, const CliAddress &a) {
+/// Where `a`'s element lives: byte offset in lj_state, width, signedness; bytes 0 for T, C, L, S
+/// (no image element).
+struct Place {
+  uint32_t offset;
+  int bytes;
+  bool isSigned;
+};
+
+Place placeOf(const CliAddress &a) {
   if (a.area == Area::None && a.profile) // a system-parameter byte (CliAddress::area)
-    return {reinterpret_cast<const unsigned char *>(&s) + a.index, 1, false};
+    return {static_cast<uint32_t>(a.index), 1, false};
   const TargetProfile &tp = profileOf(a);
   const AreaInfo &info = tp.area(a.area);
-  if (info.bytes == 0) return {nullptr, 0, false}; // T, C, L, S: no image element
-  const auto *base = reinterpret_cast<const unsigned char *>(&s);
-  return {base + tp.elementOffset(a.area, a.index), a.width ? a.width : info.bytes, info.isSigned};
+  if (info.bytes == 0) return {0, 0, false};
+  return {tp.elementOffset(a.area, a.index), a.width ? a.width : info.bytes, info.isSigned};
+}
+
+Cell cellOf(const lj_state &s, const CliAddress &a) {
+  const Place p = placeOf(a);
+  if (p.bytes == 0) return {nullptr, 0, false};
+  return {reinterpret_cast<const unsigned char *>(&s) + p.offset, p.bytes, p.isSigned};
 }
 
 // The element's bits as an unsigned pattern (zero-extended to 32 bits).
@@ -168,6 +181,19 @@ int addressBits(const CliAddress &addr) {
   if (addr.area == Area::None && addr.profile) return 8; // a system-parameter byte
   const int bytes = addr.width ? addr.width : profileOf(addr).area(addr.area).bytes;
   return bytes * 8;
+}
+
+ResolvedAddress resolveAddress(const CliAddress &addr) {
+  ResolvedAddress r;
+  if (addr.area == Area::Timer || addr.area == Area::Counter) return r;
+  const Place p = placeOf(addr);
+  if (p.bytes != 1 && p.bytes != 2 && p.bytes != 4) return r;
+  r.direct = true;
+  r.bytes = static_cast<uint8_t>(p.bytes);
+  r.isSigned = p.isSigned;
+  r.bit = addr.bit;
+  r.offset = p.offset;
+  return r;
 }
 
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value) {

@@ -8,6 +8,7 @@
 #include "ladderjit/abi.h"
 
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
@@ -67,6 +68,72 @@ int addressBits(const CliAddress &addr);
 /// Write `value` to `addr`: a bit sets only that bit, an element keeps the low 8/16/32 bits.
 /// `Cn` sets the count, `Cn.0` the output bit. Call checkWritable first.
 void writeAddress(lj_state &s, const CliAddress &addr, int64_t value);
+
+/// An address resolved once to where it lives in lj_state, for a copy that runs every tick
+/// (the HAL component's pins): readResolved / writeResolved then look nothing up. A timer or
+/// counter (whose slot is not an image element) stays `direct == false`: readAddress /
+/// writeAddress do those.
+struct ResolvedAddress {
+  bool direct = false;
+  uint8_t bytes = 0;     ///< 1, 2 or 4
+  bool isSigned = false; ///< read rule of the element
+  int8_t bit = -1;       ///< bit number, -1 for the whole element
+  uint32_t offset = 0;   ///< byte offset of the element in lj_state
+};
+ResolvedAddress resolveAddress(const CliAddress &addr);
+
+/// readAddress(s, addr) for `r = resolveAddress(addr)`.
+inline int64_t readResolved(const lj_state &s, const ResolvedAddress &r, const CliAddress &addr) {
+  if (!r.direct) return readAddress(s, addr);
+  const auto *p = reinterpret_cast<const unsigned char *>(&s) + r.offset;
+  uint32_t raw = 0;
+  switch (r.bytes) { // fixed sizes: the copies inline (little-endian host, like the ABI)
+  case 1:
+    raw = *p;
+    break;
+  case 2: {
+    uint16_t v;
+    std::memcpy(&v, p, 2);
+    raw = v;
+    break;
+  }
+  default:
+    std::memcpy(&raw, p, 4);
+    break;
+  }
+  if (r.bit >= 0) return (raw >> r.bit) & 1u;
+  if (!r.isSigned) return raw;
+  if (r.bytes == 1) return static_cast<int8_t>(raw);
+  if (r.bytes == 2) return static_cast<int16_t>(raw);
+  return static_cast<int32_t>(raw);
+}
+
+/// writeAddress(s, addr, value) for `r = resolveAddress(addr)`.
+inline void writeResolved(lj_state &s, const ResolvedAddress &r, const CliAddress &addr,
+                          int64_t value) {
+  if (!r.direct) return writeAddress(s, addr, value);
+  auto *p = reinterpret_cast<unsigned char *>(&s) + r.offset;
+  if (r.bit >= 0) { // the bit's byte alone: the same result as the element's read-modify-write
+    unsigned char &b = p[r.bit >> 3];
+    const auto mask = static_cast<unsigned char>(1u << (r.bit & 7));
+    b = static_cast<unsigned char>((value & 1) ? (b | mask) : (b & ~mask));
+    return;
+  }
+  const auto raw = static_cast<uint32_t>(value);
+  switch (r.bytes) {
+  case 1:
+    *p = static_cast<unsigned char>(raw);
+    break;
+  case 2: {
+    const auto v = static_cast<uint16_t>(raw);
+    std::memcpy(p, &v, 2);
+    break;
+  }
+  default:
+    std::memcpy(p, &raw, 4);
+    break;
+  }
+}
 
 /// `addr=value` parsed into its parts (no spaces inside); errors name the whole item.
 struct Assignment {

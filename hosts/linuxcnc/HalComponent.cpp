@@ -1,8 +1,9 @@
 // The LinuxCNC HAL real-time component `ladderjit` (docs/linuxcnc.md):
 //   loadrt ladderjit program=PATH.so [source=PROGRAM] [map=FILE] [trust=KEY.pub[,KEY.pub]]
 //                    [params=FILE] [retain=FILE] [plc2_nvalue=N] [numPhysInputs=N ...]
+//                    [names=PREFIX]
 // A ClassicLadder source (.clp) exports classicladder_rt's pins and `classicladder.0.refresh`
-// (the drop-in, docs/linuxcnc.md).
+// (the drop-in, docs/linuxcnc.md), or PREFIX.* with names=PREFIX.
 // rtapi_app_main (not real-time) reads and verifies the program source, loads the signed AOT
 // .so through the project's trusted loader (engines/AotLoader: signer, identity, ABI, state
 // size, ELF checks, sealed memfd), builds the pin plan (HalPlan.h), creates the pins and exports
@@ -55,6 +56,8 @@ RTAPI_MP_INT(numS32in, "ClassicLadder source: classicladder.0.s32in-NN pins (def
 RTAPI_MP_INT(numS32out, "ClassicLadder source: classicladder.0.s32out-NN pins (default 10)");
 RTAPI_MP_INT(numFloatIn, "ClassicLadder source: classicladder.0.floatin-NN pins (default 10)");
 RTAPI_MP_INT(numFloatOut, "ClassicLadder source: classicladder.0.floatout-NN pins (default 10)");
+static char *names = nullptr;
+RTAPI_MP_STRING(names, "ClassicLadder source: pin and function prefix (default classicladder.0)");
 static int numRungs = 0, numBits = 0, numWords = 0, numTimers = 0, numMonostables = 0,
            numCounters = 0, numTimersIec = 0, numArithmExpr = 0, numSections = 0, numSymbols = 0;
 RTAPI_MP_INT(numRungs, "accepted for classicladder_rt compatibility (sized from the program)");
@@ -123,16 +126,16 @@ void refresh(void *arg, long period) {
     if (p.out) continue;
     switch (p.type) {
     case lj::hal::PinType::Bit:
-      lj::formats::writeAddress(s, p.addr, *halPins[i].b ? 1 : 0);
+      lj::formats::writeResolved(s, p.at, p.addr, *halPins[i].b ? 1 : 0);
       break;
     case lj::hal::PinType::S32:
-      lj::formats::writeAddress(s, p.addr, *halPins[i].s);
+      lj::formats::writeResolved(s, p.at, p.addr, *halPins[i].s);
       break;
     case lj::hal::PinType::U32:
-      lj::formats::writeAddress(s, p.addr, *halPins[i].u);
+      lj::formats::writeResolved(s, p.at, p.addr, *halPins[i].u);
       break;
     case lj::hal::PinType::Float:
-      lj::formats::writeAddress(s, p.addr, inst->fromFloat(i, *halPins[i].f));
+      lj::formats::writeResolved(s, p.at, p.addr, inst->fromFloat(i, *halPins[i].f));
       break;
     }
   }
@@ -142,7 +145,7 @@ void refresh(void *arg, long period) {
   for (size_t i = 0; i < pins.size(); ++i) {
     const lj::hal::PinSpec &p = pins[i];
     if (!p.out) continue;
-    int64_t v = lj::formats::readAddress(s, p.addr);
+    int64_t v = lj::formats::readResolved(s, p.at, p.addr);
     switch (p.type) {
     case lj::hal::PinType::Bit:
       *halPins[i].b = v != 0;
@@ -205,6 +208,7 @@ int start() {
   opt.retain = str(retain);
   opt.plc2Nvalue = plc2_nvalue;
   opt.classic = {numPhysInputs, numPhysOutputs, numS32in, numS32out, numFloatIn, numFloatOut};
+  opt.classicName = str(names);
   opt.log = logLine;
   std::string error;
   instance = lj::hal::Instance::create(opt, kName, error);
@@ -217,10 +221,10 @@ int start() {
       static_cast<HalPtr *>(hal_malloc(static_cast<long>(sizeof(HalPtr) * (pins.size() + 1))));
   status = static_cast<Status *>(hal_malloc(sizeof(Status)));
   if (!halPins || !status) return fail("hal_malloc failed (HAL shared memory full)");
-  // A ClassicLadder source: classicladder_rt's pin and function names (the drop-in); the
-  // status pins keep ladderjit's.
+  // A ClassicLadder source: classicladder_rt's pin and function names (the drop-in), or
+  // names= (beside classicladder_rt in one HAL); the status pins keep ladderjit's.
   const bool classic = instance->classicLadder();
-  const std::string prefix = classic ? lj::hal::kClassicPrefix : kName;
+  const std::string prefix = classic ? lj::hal::classicPrefix(opt) : kName;
   for (size_t i = 0; i < pins.size(); ++i)
     if (int r = makePin(pins[i], halPins[i], prefix.c_str()); r != 0)
       return fail("cannot create pin " + prefix + "." + pins[i].name + " (" + std::to_string(r) +
@@ -238,7 +242,8 @@ int start() {
   if (!r && classic) {
     r = hal_pin_bit_newf(HAL_IN, &status->hideGui, compId, "%s.hide_gui", prefix.c_str());
     if (!r)
-      r = hal_param_s32_newf(HAL_RO, &status->ladderState, compId, "classicladder.ladder-state");
+      r = hal_param_s32_newf(HAL_RO, &status->ladderState, compId, "%s.ladder-state",
+                             opt.classicName.empty() ? "classicladder" : opt.classicName.c_str());
     if (!r) status->ladderState = 2; // RUN: the program runs from the first refresh
   }
   if (r) return fail("cannot create the status pins (" + std::to_string(r) + ")");

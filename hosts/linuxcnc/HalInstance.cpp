@@ -10,6 +10,7 @@
 #include "signing/AotTrust.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <new>
@@ -39,6 +40,16 @@ std::vector<std::string> splitComma(const std::string &s) {
   return out;
 }
 
+/// names=: empty (classicladder_rt's prefix), or a HAL name short enough that its function's
+/// `.refresh.tmax` and every pin fit HAL_NAME_LEN (checkPins checks the pins exactly).
+bool validClassicName(const std::string &n) {
+  if (n.empty()) return true;
+  if (n.size() > 32 || n.front() == '.' || n.back() == '.') return false;
+  return std::all_of(n.begin(), n.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+}
+
 } // namespace
 
 bool loadProgram(const Options &opt, const std::string &sourcePath, const std::string &prefix,
@@ -55,6 +66,11 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
           static_cast<size_t>(std::count(opt.trust.begin(), opt.trust.end(), ',')) + 1) {
     error = "trust: an empty key file name in '" + printable(opt.trust) +
             "' (expected KEY.pub[,KEY.pub...])";
+    return false;
+  }
+  if (!validClassicName(opt.classicName)) {
+    error = "names=" + printable(opt.classicName) +
+            ": expected 1-32 letters, digits, '_', '-' or '.' (not at either end), a HAL name";
     return false;
   }
   pipeline::ProgramSource src;
@@ -94,7 +110,17 @@ bool loadProgram(const Options &opt, const std::string &sourcePath, const std::s
     if (!formats::readFile(opt.map, text, error)) return false;
     if (!applyMap(text, opt.map, out.pins, error, *src.dialect)) return false;
   }
-  return checkPins(out.pins, out.classic ? kClassicPrefix : prefix, error);
+  if (!out.classic && !opt.classicName.empty()) {
+    error = "names=" + printable(opt.classicName) +
+            ": only a ClassicLadder source (.clp) takes names= (its pins are named by " +
+            "classicladder_rt's convention); this program's pins are '" + prefix + ".*'";
+    return false;
+  }
+  return checkPins(out.pins, out.classic ? classicPrefix(opt) : prefix, error);
+}
+
+std::string classicPrefix(const Options &opt) {
+  return opt.classicName.empty() ? std::string(kClassicPrefix) : opt.classicName;
 }
 
 std::string sourceBeside(const std::string &soPath) {
@@ -126,6 +152,7 @@ Instance *Instance::create(const Options &opt, const std::string &prefix, std::s
   inst->engine_ = std::move(first.engine);
   inst->entries_ = first.entries;
   inst->pins_ = std::move(first.pins);
+  for (PinSpec &p : inst->pins_) p.at = formats::resolveAddress(p.addr);
   inst->classic_ = first.classic;
   inst->profile_ = first.profile;
   inst->programHash_ = first.hash;

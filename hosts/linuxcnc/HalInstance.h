@@ -32,6 +32,9 @@ struct Options {
   std::string retain;                ///< retentive store file
   int32_t plc2Nvalue = kNvalueUnset; ///< plc2_nvalue=N (0..2^31-1), or unset
   ClassicSizes classic;              ///< a ClassicLadder source: classicladder_rt's pin sizes
+  /// A ClassicLadder source: the prefix of its pins and function (names=); empty:
+  /// classicladder_rt's own, kClassicPrefix.
+  std::string classicName;
   static constexpr int32_t kNvalueUnset = INT32_MIN;
   std::function<void(const std::string &)> log; ///< RTAPI log (one line per call)
 };
@@ -43,9 +46,13 @@ struct Loaded {
   std::vector<PinSpec> pins;
   const TargetProfile *profile = nullptr;
   std::string hash; ///< "sha256:..." of the program source
-  /// A ClassicLadder source: the pins are classicladder_rt's (prefix kClassicPrefix).
+  /// A ClassicLadder source: the pins are classicladder_rt's (prefix classicPrefix(opt)).
   bool classic = false;
 };
+
+/// The prefix of a ClassicLadder source's pins and function: `names=`, else classicladder_rt's
+/// `classicladder.0`.
+std::string classicPrefix(const Options &opt);
 
 /// Read and verify `sourcePath`, load `opt.program` through the trusted AOT loader, and plan
 /// the pins (with `prefix`). False with `error` naming the file and the problem.

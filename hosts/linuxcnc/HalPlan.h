@@ -24,6 +24,8 @@ struct PinSpec {
   PinType type = PinType::Bit;
   bool out = false; ///< HAL_OUT: program -> HAL; else HAL_IN: HAL -> program, before each tick
   formats::CliAddress addr;
+  /// `addr` resolved to its place in lj_state (Instance::create): the refresh copies through it.
+  formats::ResolvedAddress at;
   double scale = 1.0;    ///< float pins: pin = element * scale (in: element = lround(pin / scale))
   bool truncate = false; ///< float input: element = the pin truncated toward zero (ClassicLadder)
 };

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <memory>
 
 namespace {
@@ -194,6 +195,47 @@ TEST(HalPlan, ClassicLadderPinsAreClassicladderRtsForItsSizes) {
   // The default set passes HAL's name rules under classicladder_rt's prefix.
   ASSERT_TRUE(lj::hal::classicLadderPins({}, cl, pins, error)) << error;
   EXPECT_TRUE(lj::hal::checkPins(pins, lj::hal::kClassicPrefix, error)) << error;
+}
+
+// The refresh's copy through resolved addresses (formats::resolveAddress) writes and reads
+// exactly what writeAddress / readAddress do, for every kind of pin address of each dialect:
+// bits in bytes and words, signed and unsigned elements of 1, 2 and 4 bytes, FANUC's second X
+// range and `:2` words, a counter (not direct: the slow path).
+TEST(HalPlan, ResolvedCopyEqualsWriteAndReadAddress) {
+  const std::vector<std::pair<const char *, std::vector<const char *>>> cases = {
+      {"hnc8", {"X0.0", "X3.7", "Y2.5", "R1.3", "G2620.15", "D5", "W3", "B2", "P1", "C3", "C3.0"}},
+      {"fanuc", {"X0.1", "X200.3", "Y1.7", "R9000.2", "D100:2", "D200:4", "D9", "K0.1"}},
+      {"iec", {"%I0.2", "%Q0.1", "%M5", "%MW3", "%KW0"}},
+      {"classicladder", {"%I14", "%Q3", "%B7", "%IW0", "%QW9", "%W2"}}};
+  uint32_t seed = 12345;
+  auto next = [&seed] {
+    seed = seed * 1103515245u + 12345u;
+    return static_cast<int64_t>(static_cast<int32_t>(seed));
+  };
+  for (const auto &[dialect, addrs] : cases) {
+    const lj::pipeline::Dialect &d = *lj::pipeline::dialectNamed(dialect);
+    for (const char *text : addrs) {
+      std::string err;
+      auto a = d.parseAddress(text, err);
+      ASSERT_TRUE(a) << dialect << " " << text << ": " << err;
+      const lj::formats::ResolvedAddress r = lj::formats::resolveAddress(*a);
+      EXPECT_EQ(r.direct, a->area != lj::Area::Counter && a->area != lj::Area::Timer) << text;
+      auto s1 = std::make_unique<lj_state>(), s2 = std::make_unique<lj_state>();
+      lj_state_reset(s1.get());
+      lj_state_reset(s2.get());
+      for (int k = 0; k < 40; ++k) {
+        const int64_t v = a->isBit() ? (next() & 1) : next();
+        lj::formats::writeAddress(*s1, *a, v);
+        lj::formats::writeResolved(*s2, r, *a, v);
+        ASSERT_EQ(std::memcmp(s1.get(), s2.get(), sizeof(lj_state)), 0) << dialect << " " << text;
+        EXPECT_EQ(lj::formats::readResolved(*s2, r, *a), lj::formats::readAddress(*s1, *a))
+            << dialect << " " << text;
+        // Another value under the bit: the bit's neighbours are kept.
+        if (a->isBit()) std::memset(reinterpret_cast<char *>(s1.get()) + r.offset, 0x5a, 1);
+        if (a->isBit()) std::memset(reinterpret_cast<char *>(s2.get()) + r.offset, 0x5a, 1);
+      }
+    }
+  }
 }
 
 } // namespace
