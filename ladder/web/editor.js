@@ -1151,12 +1151,37 @@
       const rs = where[dg.part], r = rs && rs[(dg.rung || 0) - 1];
       if (!r) return;
       const cell = r.cells && dg.element ? r.cells[dg.element - 1] : null;
-      const e = { row: cell ? cell[0] : -1, col: cell ? cell[1] : -1, message: dg.message };
+      const e = { row: cell ? cell[0] : -1, col: cell ? cell[1] : -1, message: dg.message, element: dg.element || 0 };
       // The rung keeps its converted network: it stays refused until it is edited again.
       r.errors = r.errors.concat([e]);
       if (!first) first = r;
     });
+    placeOnCells();
     return first;
+  }
+  // A refused rung the page did not edit (a call whose subroutine was deleted) has no statement
+  // -> cell map yet: its grid goes to the grid check once for it, then its errors go on their cells.
+  function placeOnCells() {
+    const todo = [];
+    E.parts.forEach(function (p) {
+      p.rungs.forEach(function (r) {
+        if (r.grid && !r.cells && r.errors.some(function (e) { return e.row < 0 && e.element > 0; })) todo.push(r);
+      });
+    });
+    if (!todo.length) return;
+    api('api/edit/grid', { rungs: todo.map(function (r) { return { grid: gridJson(r.grid, r.comment) }; }) }).then(function (a) {
+      if (a.status !== 200) return;
+      todo.forEach(function (r, i) {
+        const ans = a.body.rungs[i];
+        if (!ans || !ans.ok) return;
+        r.cells = ans.cells;
+        r.errors = r.errors.map(function (e) {
+          const c = e.row < 0 && e.element > 0 ? r.cells[e.element - 1] : null;
+          return c ? Object.assign({}, e, { row: c[0], col: c[1] }) : e;
+        });
+      });
+      render();
+    });
   }
   function goToRung(obj) {
     E.parts.forEach(function (p, pi) {

@@ -240,6 +240,9 @@ def typed(page, text):
     page.keys(text)
     msg = wait("checked", lambda: (lambda t: t if " ok" in t else None)(page.text("edinmsg")), 10)
     page.keys(Keys.ENTER)
+    # Enter checks the text once more with the server before it is entered (the input closes):
+    # keys sent before that would land in the input line.
+    wait("entered", lambda: page.js("return document.getElementById('edin').disabled"), 10)
     return msg or page.text("edinmsg")
 
 
@@ -615,8 +618,8 @@ def parts():
     更新修改 puts both live (R7.0 follows X480.2 while X480.3 calls S7, keeps its value when not
     called; the file has SP S7 ... SPE and CALL S7). Shift+P renames S7
     to S8 (its marker and the call): the confirmation says S7 is removed, the file then has S8
-    only. 删除子程序 of S8, still called: the check's refusal is shown on the calling rung; Ctrl+Z
-    gives it back."""
+    only. 删除子程序 of S8, still called: the check's refusal is drawn on the CALL box of the
+    calling rung; Ctrl+Z gives it back."""
     name = "parts"
     d = os.path.join(out, name)
     os.makedirs(d)
@@ -640,6 +643,8 @@ def parts():
               (name, page.js("return document.getElementById('edin').value")))
         page.ctrl("a")
         msg = typed(page, "S7")
+        # Enter checks the name once more with the server, then adds the part.
+        wait("the new part", lambda: "S7" in part_names(page), 10)
         names = part_names(page)
         g = page.grid()
         check(names == before + ["S7"] and g["r"] == 1 and g["dirty"] and "S7" in page.text("edparts"),
@@ -683,6 +688,7 @@ def parts():
         wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
         page.ctrl("a")
         typed(page, "S8")
+        wait("the rename", lambda: part_names(page)[-1] == "S8", 10)
         check(part_names(page)[-1] == "S8" and "renamed from S7" in page.text("edparts"),
               "%s: Shift+P renames S7 to S8: '%s'" % (name, page.text("edparts")))
         page.screenshot("renamed")
@@ -710,10 +716,14 @@ def parts():
               "%s: 删除子程序 takes S8 out and says where it is still called: '%s'" % (name, page.text("edstate")))
         page.click(page.d.find_element(By.ID, "edupdate"))
         ok = wait("the check's refusal", lambda: "does not verify" in page.text("edstate"), 60)
-        check(ok and "S8" in page.text("ederrs") and "PLC1 rung" in page.text("edbad") and
+        marks = wait("the mark on the call", lambda: page.errcells() or None, 10) or []
+        g = page.grid()
+        cols = g["grid"]["cols"] if g and g["grid"] else 0
+        check(ok and "PLC1 rung" in page.text("edbad") and
+              any("S8" in t and g["grid"]["cells"][r * cols + c]["k"] in ("box", "box-part") for r, c, t in marks) and
               call(srv, "/api/edit")[1]["running"]["version"] == v2,
-              "%s: the update is refused on the calling rung (shown, listed under rungs with errors), "
-              "nothing changed: '%s' '%s'" % (name, page.text("ederrs"), page.text("edbad")))
+              "%s: the update is refused, drawn on the CALL box of the calling rung (listed under rungs "
+              "with errors), nothing changed: %s '%s'" % (name, marks, page.text("edbad")))
         page.screenshot("delete_refused")
         focus_grid(page)
         page.ctrl("z")
