@@ -188,16 +188,42 @@ struct DroppedStmt {
   Op op = Op::LoadTrue;
 };
 
+/// A program whose source is a grid of cells (a ClassicLadder rung: each element in its cell,
+/// vertical wires between rows): how its editor draws it, for drawings only (docs/ladder-view.md
+/// "Grid sources"). The statements are the program; this says where each drawn element sits.
+struct GridCellDrawing {
+  int32_t row = 0, col = 0, width = 1, height = 1;
+  /// A ladder Layout cell kind: contact-no|nc|rise|fall, coil, coil-not, set, rst, box, compare,
+  /// operate, jump, call, wire, vlink (a vertical wire on the boundary left of `col`, from the
+  /// middle of `row` down `height` rows).
+  std::string kind;
+  std::string text;                  ///< the variable or block as the editor shows it (`%I0`)
+  std::string symbol;                ///< the variable's symbol, or empty
+  std::vector<std::string> operands; ///< a block's parameters, as shown
+  std::vector<int32_t> pins;         ///< a block's input rows, from `row`
+  StmtId stmt = -1; ///< the statement whose traced value the live view shows, or -1
+};
+struct GridRungDrawing {
+  std::vector<std::string> comment; ///< the rung's label and comment
+  int32_t rows = 0, cols = 0;
+  std::vector<GridCellDrawing> cells;
+};
+struct GridPartDrawing {
+  std::string name; ///< the section, as the editor names it
+  std::vector<GridRungDrawing> rungs;
+};
+
 /// What the parser produces: statements in source order (markers included).
 struct ParsedProgram {
   std::string file;                       ///< name used in diagnostics
   const DialectText *dialect = nullptr;   ///< the front end that read it
   const TargetProfile *profile = nullptr; ///< the target it was written for (set by the front end)
   std::vector<Stmt> stmts;
-  std::vector<DroppedStmt> dropped;  ///< in source order (`before` non-decreasing)
-  std::vector<Comment> comments;     ///< in source order
-  std::vector<Symbol> symbols;       ///< the symbol table the program was parsed with
-  std::vector<WrittenInstr> written; ///< by `first`, disjoint (WrittenInstr)
+  std::vector<DroppedStmt> dropped;   ///< in source order (`before` non-decreasing)
+  std::vector<Comment> comments;      ///< in source order
+  std::vector<Symbol> symbols;        ///< the symbol table the program was parsed with
+  std::vector<WrittenInstr> written;  ///< by `first`, disjoint (WrittenInstr)
+  std::vector<GridPartDrawing> grids; ///< a grid source's drawing (GridRungDrawing), or empty
 };
 
 /// A half-open range of statement indices [begin, end).
@@ -263,9 +289,10 @@ struct VerifiedProgram {
   int32_t plc2Nvalue = 200; ///< the slicing parameter these slices were planned with
   int32_t maxDepth = 0;     ///< deepest ST anywhere (for interpreter stack sizing)
   int32_t maxMsDepth = 0;
-  std::vector<Comment> comments;     ///< as parsed
-  std::vector<Symbol> symbols;       ///< as parsed (Operand::symbol indexes it)
-  std::vector<WrittenInstr> written; ///< as parsed
+  std::vector<Comment> comments;      ///< as parsed
+  std::vector<Symbol> symbols;        ///< as parsed (Operand::symbol indexes it)
+  std::vector<WrittenInstr> written;  ///< as parsed
+  std::vector<GridPartDrawing> grids; ///< as parsed
   /// Every statement in exactly one rung, in order (Rungs.cpp). A slice boundary is always a
   /// rung boundary.
   std::vector<RungRange> rungs;

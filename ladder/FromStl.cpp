@@ -492,6 +492,7 @@ Networks fromProgram(const VerifiedProgram &prog) {
   if (prog.dialect) nets.dialect = prog.dialect->name;
   nets.text = prog.dialect;
   nets.symbols = prog.symbols;
+  nets.grids = prog.grids;
   auto n = static_cast<int32_t>(prog.stmts.size());
   std::vector<Element> elems;
   elems.reserve(prog.stmts.size());

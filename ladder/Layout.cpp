@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
 
 namespace lj::ladder {
 
@@ -405,6 +406,54 @@ void oneGrid(Layout &l) {
 
 } // namespace
 
+/// A grid source drawn as its editor draws it (ir/Program.h GridPartDrawing): every cell where
+/// the source has it, a symbol named under its variable.
+static Layout gridLayout(const Networks &nets, Layout l) {
+  auto symbolOf = [&nets](const std::string &text) {
+    for (const Symbol &s : nets.symbols)
+      if (s.address.size() == text.size() &&
+          std::equal(s.address.begin(), s.address.end(), text.begin(), [](char a, char b) {
+            return std::toupper(static_cast<unsigned char>(a)) ==
+                   std::toupper(static_cast<unsigned char>(b));
+          }))
+        return s.name;
+    return std::string();
+  };
+  for (const GridPartDrawing &gp : nets.grids) {
+    PartLayout pl;
+    pl.name = gp.name;
+    int number = 0;
+    for (const GridRungDrawing &gr : gp.rungs) {
+      RungLayout rl;
+      rl.number = ++number;
+      rl.kind = "ladder";
+      rl.comment = gr.comment;
+      rl.rows = gr.rows;
+      rl.cols = gr.cols;
+      for (const GridCellDrawing &gc : gr.cells) {
+        Cell c;
+        c.row = gc.row;
+        c.col = gc.col;
+        c.width = gc.width;
+        c.height = gc.height;
+        c.kind = gc.kind;
+        c.text = gc.text;
+        c.operands = gc.operands;
+        c.pins = gc.pins;
+        c.stmt = gc.stmt;
+        c.symbol = gc.symbol;
+        if (c.symbol.empty() && (c.kind.rfind("contact", 0) == 0 || c.kind == "coil" ||
+                                 c.kind == "coil-not" || c.kind == "set" || c.kind == "rst"))
+          c.symbol = symbolOf(c.text);
+        rl.cells.push_back(std::move(c));
+      }
+      pl.rungs.push_back(std::move(rl));
+    }
+    l.parts.push_back(std::move(pl));
+  }
+  return l;
+}
+
 Layout layout(const Networks &nets) {
   Layout l;
   l.file = nets.file;
@@ -412,6 +461,7 @@ Layout layout(const Networks &nets) {
     l.commentOpen = nets.text->commentOpen;
     l.commentClose = nets.text->commentClose ? nets.text->commentClose : "";
   }
+  if (!nets.grids.empty()) return gridLayout(nets, std::move(l));
   for (const Part &p : nets.parts) {
     PartLayout pl;
     pl.name = p.name;

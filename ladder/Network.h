@@ -108,6 +108,9 @@ struct Networks {
   /// The dialect's words and text (the front end's DialectText); never null for networks made
   /// by fromProgram or readJson.
   const DialectText *text = nullptr;
+  /// A grid source's drawing (ir/Program.h GridPartDrawing): drawings use it instead of the
+  /// parts' networks; the networks stay the program (JSON, statements).
+  std::vector<GridPartDrawing> grids;
 };
 
 /// Networks of a verified program: every logic rung that has a network whose canonical STL

@@ -4,6 +4,7 @@
 
 #include "ladder/Layout.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace lj::ladder {
@@ -151,7 +152,92 @@ std::string stmtText(const Element &e) {
 
 } // namespace
 
+/// A grid source (ir/Program.h GridPartDrawing) as text, cell by cell where its editor draws it:
+/// each row between the rails `|`, 12 characters a cell, a line of `|` between rows where a
+/// vertical wire joins them.
+static std::string gridText(const Networks &nets) {
+  constexpr size_t kW = 12;
+  std::string out;
+  for (const GridPartDrawing &gp : nets.grids) {
+    out += "=== " + gp.name + " ===\n";
+    int number = 0;
+    for (const GridRungDrawing &gr : gp.rungs) {
+      out += "rung " + std::to_string(++number) + "\n";
+      for (const std::string &c : gr.comment) out += "  " + comment(c) + "\n";
+      const size_t cols = static_cast<size_t>(std::max(gr.cols, 1));
+      std::vector<std::string> rows(static_cast<size_t>(std::max(gr.rows, 0)),
+                                    std::string(cols * kW, ' '));
+      std::vector<std::string> links(rows.size(), std::string(cols * kW + 1, ' '));
+      for (const GridCellDrawing &c : gr.cells) {
+        if (c.row < 0 || static_cast<size_t>(c.row) >= rows.size() || c.col < 0 ||
+            static_cast<size_t>(c.col) >= cols)
+          continue;
+        if (c.kind == "vlink") {
+          links[static_cast<size_t>(c.row)][static_cast<size_t>(c.col) * kW] = '|';
+          continue;
+        }
+        std::string t;
+        const std::string &x = c.text;
+        if (c.kind == "wire")
+          t = "";
+        else if (c.kind == "contact-no")
+          t = "[ " + x + " ]";
+        else if (c.kind == "contact-nc")
+          t = "[/" + x + " ]";
+        else if (c.kind == "contact-rise")
+          t = "[P " + x + "]";
+        else if (c.kind == "contact-fall")
+          t = "[N " + x + "]";
+        else if (c.kind == "coil")
+          t = "( " + x + " )";
+        else if (c.kind == "coil-not")
+          t = "(/" + x + " )";
+        else if (c.kind == "set")
+          t = "(S " + x + ")";
+        else if (c.kind == "rst")
+          t = "(R " + x + ")";
+        else if (c.kind == "operate")
+          t = "{" + x + "}";
+        else if (c.kind == "jump" || c.kind == "call")
+          t = "(" + x + ")";
+        else
+          t = "[" + x + "]";
+        const size_t w = static_cast<size_t>(std::max(c.width, 1)) * kW;
+        std::string cell(w, '-');
+        if (t.size() > w - 2) t = t.substr(0, w - 2);
+        cell.replace((w - t.size()) / 2, t.size(), t);
+        std::string &line = rows[static_cast<size_t>(c.row)];
+        const size_t at = static_cast<size_t>(c.col) * kW;
+        line.replace(at, std::min(w, line.size() - at),
+                     cell.substr(0, std::min(w, line.size() - at)));
+        for (int k = 1; k < c.height && static_cast<size_t>(c.row + k) < rows.size(); ++k) {
+          std::string &below = rows[static_cast<size_t>(c.row + k)];
+          std::string box(std::min(w, below.size() - at), ' ');
+          if (!box.empty()) box.front() = box.back() = '|';
+          below.replace(at, box.size(), box);
+        }
+      }
+      size_t last = rows.size();
+      while (last > 0 && rows[last - 1].find_first_not_of(' ') == std::string::npos &&
+             links[last - 1].find('|') == std::string::npos &&
+             (last < 2 || links[last - 2].find('|') == std::string::npos))
+        --last;
+      for (size_t r = 0; r < last; ++r) {
+        out += "  |" + rows[r] + "|\n";
+        if (links[r].find('|') != std::string::npos)
+          out += "  |" + links[r].substr(0, cols * kW) + "|\n";
+      }
+    }
+  }
+  return out;
+}
+
 std::string renderText(const Networks &nets) {
+  if (!nets.grids.empty()) {
+    gOpen = nets.text && nets.text->commentOpen ? nets.text->commentOpen : ";";
+    gClose = nets.text && nets.text->commentClose ? nets.text->commentClose : "";
+    return gridText(nets);
+  }
   std::string out;
   gSymbols = &nets.symbols;
   gOpen = nets.text && nets.text->commentOpen ? nets.text->commentOpen : ";";

@@ -280,6 +280,10 @@ Served served(Executive &exec, Controller &ctl) {
   if (!s.json && (endsWith(s.path, ".dit") || formats::looksLikeDit(s.text)))
     s.notEditable = "the served PROGRAM is a plc.dit container, which the HNC-8 tools write "
                     "(hash line, sections): it is not edited live; serve its STL to edit it";
+  else if (s.cur->prog && !s.cur->prog->grids.empty())
+    s.notEditable = "the served PROGRAM is a ClassicLadder project, whose rungs are its editor's "
+                    "grid (docs/classicladder.md): edit it in ClassicLadder and save it; the file "
+                    "watch (or `monitor load`) takes the new version";
   return s;
 }
 

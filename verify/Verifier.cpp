@@ -221,6 +221,7 @@ std::optional<VerifiedProgram> verify(const ParsedProgram &parsed, const VerifyO
   prog.comments = parsed.comments;
   prog.symbols = parsed.symbols;
   prog.written = parsed.written;
+  prog.grids = parsed.grids;
   return prog;
 }
 

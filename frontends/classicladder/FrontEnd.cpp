@@ -342,6 +342,10 @@ private:
   /// A ladder section's rungs in #NEXTRUNG order, each with a label a jump can reach.
   void section(const Section &s) {
     section_ = &s;
+    // The drawing: one part per section, named as the editor names it.
+    GridPartDrawing part;
+    part.name = s.subRoutine >= 0 ? "SR" + std::to_string(s.subRoutine) + " " + s.name : s.name;
+    out_.grids.push_back(std::move(part));
     labels_.clear();
     for (int32_t r : s.order) labels_[r] = nextLabel_++;
     for (size_t i = 0; i < s.order.size(); ++i) {
@@ -513,9 +517,151 @@ private:
       tooBig_ = true;
       return;
     }
+    GridRungDrawing dr;
+    if (!r.label.empty() || !r.comment.empty())
+      dr.comment.push_back(r.label +
+                           (r.comment.empty() ? "" : (r.label.empty() ? "" : ": ") + r.comment));
+    dr.rows = h_;
+    dr.cols = w_;
+    drawing_ = out_.grids.empty() ? nullptr : &dr;
     for (int x = 0; x < w_; ++x) {
-      for (int y = 0; y < h_; ++y) cell(r, x, y);
+      for (int y = 0; y < h_; ++y) {
+        const size_t before = out_.stmts.size();
+        cell(r, x, y);
+        if (drawing_) draw(r, x, y, before);
+      }
     }
+    drawing_ = nullptr;
+    if (!out_.grids.empty()) out_.grids.back().rungs.push_back(std::move(dr));
+  }
+
+  /// The drawing of cell (x, y) (ir/Program.h GridCellDrawing): where ClassicLadder's editor
+  /// draws it, its text, and the statement whose traced value the live view shows (a contact's
+  /// AND, an edge contact's or a compare's power, a coil, a block, a jump's condition, a call).
+  void draw(const Rung &r, int x, int y, size_t before) {
+    const Cell &c = r.cells[static_cast<size_t>(x)][static_cast<size_t>(y)];
+    if (y > 0 && c.connectedWithTop) {
+      GridCellDrawing v;
+      v.kind = "vlink";
+      v.row = y - 1;
+      v.col = x;
+      drawing_->cells.push_back(v);
+    }
+    const size_t end = out_.stmts.size();
+    auto first = [&](auto pred) -> StmtId {
+      for (size_t k = before; k < end; ++k)
+        if (pred(out_.stmts[k])) return out_.stmts[k].id;
+      return -1;
+    };
+    const Operand pw = power(x, y);
+    auto writesPowerBit = [&](const Stmt &st) {
+      return st.op == Op::Coil && st.operandCount == 1 && st.ops[0].area == pw.area &&
+             st.ops[0].index == pw.index && st.ops[0].bit == pw.bit;
+    };
+    GridCellDrawing d;
+    d.row = y;
+    d.col = x;
+    switch (c.type) {
+    case 1:
+    case 2:
+    case 3:
+    case 4: {
+      static const char *kinds[] = {"contact-no", "contact-nc", "contact-rise", "contact-fall"};
+      d.kind = kinds[c.type - 1];
+      d.text = varName(c.varType, c.varNum);
+      const StmtId at = first(writesPowerBit);
+      // NO / NC: the AND before the power's store (the contact's conduction); an edge: the power.
+      d.stmt = at < 0 ? -1 : c.type <= 2 ? at - 1 : at;
+      break;
+    }
+    case 9:
+      d.kind = "wire";
+      break;
+    case 50:
+    case 51:
+    case 52:
+    case 53: {
+      static const char *kinds[] = {"coil", "coil-not", "set", "rst"};
+      d.kind = kinds[c.type - 50];
+      d.text = varName(c.varType, c.varNum);
+      d.stmt = end > before ? out_.stmts[end - 1].id : -1;
+      break;
+    }
+    case 10:
+    case 11:
+    case 12:
+    case 13: {
+      int w = 1, h = 1;
+      elementSize(c.type, w, h);
+      static const char *names[] = {"%T", "%M", "%C", "%TM"};
+      d.kind = "box";
+      d.text = names[c.type - 10] + std::to_string(c.varNum);
+      d.col = x - (w - 1);
+      d.width = w;
+      d.height = h;
+      const int rows = c.type == 10 ? 2 : c.type == 12 ? 4 : 1;
+      for (int k = 0; k < rows; ++k) d.pins.push_back(k);
+      d.stmt = first([](const Stmt &st) {
+        return st.op == Op::ClTimer || st.op == Op::ClMonostable || st.op == Op::ClCounter ||
+               st.op == Op::ClIecTimer;
+      });
+      break;
+    }
+    case 20:
+    case 60: {
+      const ArithExpr *a = p_.expression(c.varNum);
+      d.kind = c.type == 20 ? "compare" : "operate";
+      d.text = a ? shownExpression(a->expr.text) : "";
+      d.col = x - 2;
+      d.width = 3;
+      d.stmt = c.type == 20 ? first(writesPowerBit) : -1;
+      break;
+    }
+    case 54: {
+      auto t = p_.rungs.find(c.varNum);
+      d.kind = "jump";
+      d.text = "JUMP " + (t != p_.rungs.end() && !t->second.label.empty()
+                              ? t->second.label
+                              : "rung " + std::to_string(c.varNum));
+      d.stmt = first([](const Stmt &st) { return st.op == Op::Coil; });
+      break;
+    }
+    case 55:
+      d.kind = "call";
+      d.text = "CALL SR" + std::to_string(c.varNum);
+      d.stmt = first([](const Stmt &st) { return st.op == Op::Call; });
+      break;
+    default:
+      return; // FREE, the dead cells of a block, editor codes
+    }
+    if (d.col < 0) d.col = 0;
+    if (!d.text.empty()) // symbols.csv names the variable (display only)
+      for (const Symbol &sym : p_.symbols)
+        if (!sym.symbol.empty() && sym.varName == d.text) d.symbol = sym.symbol;
+    drawing_->cells.push_back(std::move(d));
+  }
+
+  /// An expression as ClassicLadder's editor shows it: `@200/0@:=@200/0@+1` as `%W0:=%W0+1`.
+  static std::string shownExpression(const std::string &text) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+      if (text[i] == '@') {
+        const size_t slash = text.find('/', i + 1), close = text.find('@', i + 1);
+        if (slash != std::string::npos && close != std::string::npos && slash < close) {
+          const std::string t = text.substr(i + 1, slash - i - 1),
+                            n = text.substr(slash + 1, close - slash - 1);
+          if (!t.empty() && !n.empty() && t.find_first_not_of("0123456789") == std::string::npos &&
+              n.find_first_not_of("0123456789") == std::string::npos && t.size() < 6 &&
+              n.size() < 6) {
+            out += varName(std::stoi(t), std::stoi(n));
+            i = close + 1;
+            continue;
+          }
+        }
+      }
+      out += text[i++];
+    }
+    return out;
   }
 
   void cell(const Rung &r, int x, int y) {
@@ -880,10 +1026,11 @@ private:
   const Project &p_;
   ParsedProgram &out_;
   Diagnostics &diags_;
-  std::map<int32_t, int32_t> slots_;  ///< rung index -> first state bit
-  const Section *section_ = nullptr;  ///< the section being mapped
-  std::map<int32_t, int32_t> labels_; ///< its rungs -> their labels
-  int32_t position_ = 0;              ///< the rung being mapped, in the section's order
+  std::map<int32_t, int32_t> slots_;   ///< rung index -> first state bit
+  const Section *section_ = nullptr;   ///< the section being mapped
+  GridRungDrawing *drawing_ = nullptr; ///< the drawing of the rung being mapped
+  std::map<int32_t, int32_t> labels_;  ///< its rungs -> their labels
+  int32_t position_ = 0;               ///< the rung being mapped, in the section's order
   int32_t nextLabel_ = 0;
   int32_t next_ = 0, base_ = 0, rung_ = 0;
   int w_ = 0, h_ = 0;
