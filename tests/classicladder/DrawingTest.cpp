@@ -35,6 +35,17 @@ std::vector<std::string> row(std::vector<std::pair<int, std::string>> at) {
   return r;
 }
 
+/// A row wired by connections from column `from` to column 8, `last` in column 9 and the
+/// cells of `at` (which may replace connections).
+std::vector<std::string> wired(int from, const std::string &last,
+                               std::vector<std::pair<int, std::string>> at) {
+  std::vector<std::string> r(10, "");
+  for (int x = from; x < 9; ++x) r[static_cast<size_t>(x)] = "9-0-0/0";
+  r[9] = last;
+  for (auto &[x, c] : at) r[static_cast<size_t>(x)] = c;
+  return r;
+}
+
 const ladder::Cell *at(const ladder::RungLayout &r, int row, int col, const std::string &kind) {
   for (const ladder::Cell &c : r.cells)
     if (c.row == row && c.col == col && c.kind == kind) return &c;
@@ -52,50 +63,14 @@ TEST(ClDrawing, RungsAreDrawnOnTheirGrid) {
   // coil back to R0. Section "Sub" is SR0 with one rung: %B0 NC -> call... no: %B0 -> %Q2.
   std::string p = "_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n#NAME000=Pump\n"
                   "#NAME001=Sub\n000,0,-1,0,1,0\n001,0,0,2,2,0\n_/FILE-sections.csv\n";
-  std::vector<std::string> r0 = row({{0, "1-0-50/0"},
-                                     {1, "9-0-0/0"},
-                                     {2, "9-0-0/0"},
-                                     {3, "9-0-0/0"},
-                                     {4, "9-0-0/0"},
-                                     {5, "9-0-0/0"},
-                                     {6, "9-0-0/0"},
-                                     {7, "9-0-0/0"},
-                                     {8, "9-0-0/0"},
-                                     {9, "50-0-60/0"}});
-  std::vector<std::string> r1 = row({{0, "2-0-50/1"},
-                                     {1, "9-1-0/0"},
-                                     {2, "99-0-0/0"},
-                                     {3, "13-0-0/0"},
-                                     {4, "9-0-0/0"},
-                                     {5, "9-0-0/0"},
-                                     {6, "9-0-0/0"},
-                                     {7, "9-0-0/0"},
-                                     {8, "9-0-0/0"},
-                                     {9, "52-0-60/1"}});
+  std::vector<std::string> r0 = wired(1, "50-0-60/0", {{0, "1-0-50/0"}});
+  std::vector<std::string> r1 =
+      wired(4, "52-0-60/1", {{0, "2-0-50/1"}, {1, "9-1-0/0"}, {2, "99-0-0/0"}, {3, "13-0-0/0"}});
   std::vector<std::string> r2 = row({{2, "99-0-0/0"}, {3, "99-0-0/0"}});
   p += rungFile(0, 1, "R0", {r0, r1, r2});
   p += rungFile(1, -1, "R1",
-                {row({{0, "99-0-0/0"},
-                      {1, "99-0-0/0"},
-                      {2, "20-0-0/0"},
-                      {3, "9-0-0/0"},
-                      {4, "9-0-0/0"},
-                      {5, "9-0-0/0"},
-                      {6, "9-0-0/0"},
-                      {7, "9-0-0/0"},
-                      {8, "9-0-0/0"},
-                      {9, "54-0-0/0"}})});
-  p += rungFile(2, -1, "S",
-                {row({{0, "1-0-0/0"},
-                      {1, "9-0-0/0"},
-                      {2, "9-0-0/0"},
-                      {3, "9-0-0/0"},
-                      {4, "9-0-0/0"},
-                      {5, "9-0-0/0"},
-                      {6, "9-0-0/0"},
-                      {7, "9-0-0/0"},
-                      {8, "9-0-0/0"},
-                      {9, "50-0-60/2"}})});
+                {wired(3, "54-0-0/0", {{0, "99-0-0/0"}, {1, "99-0-0/0"}, {2, "20-0-0/0"}})});
+  p += rungFile(2, -1, "S", {wired(1, "50-0-60/2", {{0, "1-0-0/0"}})});
   p += "_FILE-arithmetic_expressions.csv\n0000,@270/0@>5\n_/FILE-arithmetic_expressions.csv\n";
   p += "_FILE-timers_iec.csv\n1,10,0\n_/FILE-timers_iec.csv\n";
   p += "_FILE-symbols.csv\n%I0,START,start key\n_/FILE-symbols.csv\n";

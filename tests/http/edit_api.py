@@ -89,16 +89,21 @@ def version(srv):
         return None
 
 
-def edit_loop(name, program, coil, contact, before, after, added_line, unknown, init=None):
-    """The whole loop on `program` (copied to OUT/NAME/): `coil` is `before` while `contact` is
-    locked to 1; after inserting NC `contact` into its rung it is `after` (the rung's logic), and
-    `added_line` is the one line the program text gains."""
+def served_copy(name, program, duration=150):
+    """`program` copied to OUT/NAME/ and served: (its folder, path, original bytes, server)."""
     d = os.path.join(out, name)
     os.makedirs(d)
     path = os.path.join(d, os.path.basename(program))
     shutil.copy(program, path)
     original = open(path, "rb").read()
-    srv = httputil.Serve(exe, path, d, "serve", duration=150)
+    return d, path, original, httputil.Serve(exe, path, d, "serve", duration=duration)
+
+
+def edit_loop(name, program, coil, contact, before, after, added_line, unknown, init=None):
+    """The whole loop on `program` (copied to OUT/NAME/): `coil` is `before` while `contact` is
+    locked to 1; after inserting NC `contact` into its rung it is `after` (the rung's logic), and
+    `added_line` is the one line the program text gains."""
+    d, path, original, srv = served_copy(name, program)
     try:
         st, ans = call(srv, "/api/lock", {"item": contact + "=1"})
         check(st == 200, "%s: lock %s=1 through the live view: %d %s" % (name, contact, st, ans))
@@ -261,12 +266,7 @@ def part_list(name, program, sub, new_sub, bad_names, new_lines):
     text they print as) goes live; deleting it again needs the update to name it
     (removeParts) and brings the file back byte for byte; deleting the called `sub` is refused by
     the check (its calls); renaming `sub` (marker and calls) goes live with removeParts [sub]."""
-    d = os.path.join(out, name + "-parts")
-    os.makedirs(d)
-    path = os.path.join(d, os.path.basename(program))
-    shutil.copy(program, path)
-    original = open(path, "rb").read()
-    srv = httputil.Serve(exe, path, d, "serve", duration=150)
+    d, path, original, srv = served_copy(name + "-parts", program)
     try:
         st, g = call(srv, "/api/edit")
         base, nets = g["running"]["hash"], g["running"]["networks"]

@@ -612,6 +612,18 @@ def new_rung_with(page, contact, last_key, last_text):
     return msg, page.settled()
 
 
+def reopen_at(page, srv, part):
+    """After an update the page reloads: the editor opened again at `part`; (running version,
+    the part names)."""
+    wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
+    time.sleep(1)
+    v = call(srv, "/api/edit")[1]["running"]["version"]
+    open_editor(page, srv.url, srv.token)
+    names = part_names(page)
+    page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index(part)))
+    return v, names
+
+
 def parts():
     """列表编辑 on lathe_panel.stl: key p adds a subroutine S7 (its markers from the server, an
     empty rung between them) filled with [X480.2]--(R7.0); a new PLC1 rung [X480.3]--[CALL S7];
@@ -677,12 +689,7 @@ def parts():
               "%s: the file has the subroutine after 2END and the call" % name)
 
         # Rename S7 -> S8: the marker and the call; the update names S7 as removed.
-        wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
-        time.sleep(1)
-        v1 = call(srv, "/api/edit")[1]["running"]["version"]
-        open_editor(page, srv.url, srv.token)
-        names = part_names(page)
-        page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index("S7")))
+        v1, names = reopen_at(page, srv, "S7")
         focus_grid(page)
         page.keys("P")
         wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
@@ -704,12 +711,7 @@ def parts():
               "%s: the audit record of the rename names S7 as removed" % name)
 
         # 删除子程序 of the called S8: refused by the check on the call; Ctrl+Z.
-        wait("the page reloaded", lambda: page.js("return !!(window.ladder&&window.ladder.live&&window.ladder.live.last)"), 30)
-        time.sleep(1)
-        v2 = call(srv, "/api/edit")[1]["running"]["version"]
-        open_editor(page, srv.url, srv.token)
-        names = part_names(page)
-        page.click(page.d.find_element(By.CSS_SELECTOR, '#edparts a[data-part="%d"]' % names.index("S8")))
+        v2, names = reopen_at(page, srv, "S8")
         page.click(page.d.find_element(By.CSS_SELECTOR, 'button[data-act="delsub"]'))
         check(part_names(page) == names[:-1] and "still called from PLC1" in page.text("edstate") and
               "S8 removed" in page.text("edparts"),

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -74,43 +75,44 @@ TEST(WrittenText, FanucFunctionalInstructionsPrintAsWritten) {
   EXPECT_TRUE(sameStatementsAs(fromProgram(*again), fromProgram(*p), error, false)) << error;
 }
 
-TEST(WrittenText, FanucEditedWrittenInstructionPrintsFromItsStatement) {
+/// kFanuc (with END) whose network JSON `edit` changes, printed back as FANUC text.
+std::string fanucEdited(const std::function<void(std::string &)> &edit) {
   const std::string src = std::string(kFanuc) + "END\n";
   Diagnostics d("t.pmc");
   std::optional<VerifiedProgram> p =
       pipeline::compilePmc(src, "t.pmc", VerifyOptions{}, d, nullptr);
-  ASSERT_TRUE(p) << d.render();
-  // The GTB's constant edited in the JSON (its statement is LTB 5 D100): its written text no
-  // longer holds, so it is printed from the edited statement, LTB 7 D100 (D100 > 7).
+  EXPECT_TRUE(p) << d.render();
+  if (!p) return {};
   std::string json = writeJson(fromProgram(*p));
-  const std::string five = "\"text\": \"5\""; // the GTB's, the first
-  const size_t at = json.find(five);
-  ASSERT_NE(at, std::string::npos) << json;
-  json.replace(at, five.size(), "\"text\": \"7\"");
+  edit(json);
   Networks back;
   std::string error, text;
-  ASSERT_TRUE(readJson(json, back, error, *p->dialect)) << error;
-  ASSERT_TRUE(programText(back, *p, src, text, error)) << error;
+  EXPECT_TRUE(readJson(json, back, error, *p->dialect)) << error;
+  EXPECT_TRUE(programText(back, *p, src, text, error)) << error;
+  return text;
+}
+
+TEST(WrittenText, FanucEditedWrittenInstructionPrintsFromItsStatement) {
+  // The GTB's constant edited in the JSON (its statement is LTB 5 D100): its written text no
+  // longer holds, so it is printed from the edited statement, LTB 7 D100 (D100 > 7).
+  const std::string text = fanucEdited([](std::string &json) {
+    const std::string five = "\"text\": \"5\""; // the GTB's, the first
+    const size_t at = json.find(five);
+    ASSERT_NE(at, std::string::npos) << json;
+    json.replace(at, five.size(), "\"text\": \"7\"");
+  });
   EXPECT_NE(text.find("LTB 7 D100 ; over five\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("GTB"), std::string::npos) << text;
 }
 
 TEST(WrittenText, FanucEditedCalluPrintsAsCallu) {
-  const std::string src = std::string(kFanuc) + "END\n";
-  Diagnostics d("t.pmc");
-  std::optional<VerifiedProgram> p =
-      pipeline::compilePmc(src, "t.pmc", VerifyOptions{}, d, nullptr);
-  ASSERT_TRUE(p) << d.render();
   // The subprogram renamed P1 -> P2 (列表编辑): CALLU's call operand and SP's edited, so the
   // CALLU no longer prints as written. FANUC has no word for its always-true load alone (4.2:
   // CALLU is the unconditional call): it prints as CALLU P2, never as "(ON)" and CALL.
-  std::string json = writeJson(fromProgram(*p));
-  for (size_t at = json.find("\"P1\""); at != std::string::npos; at = json.find("\"P1\""))
-    json.replace(at, 4, "\"P2\"");
-  Networks back;
-  std::string error, text;
-  ASSERT_TRUE(readJson(json, back, error, *p->dialect)) << error;
-  ASSERT_TRUE(programText(back, *p, src, text, error)) << error;
+  const std::string text = fanucEdited([](std::string &json) {
+    for (size_t at = json.find("\"P1\""); at != std::string::npos; at = json.find("\"P1\""))
+      json.replace(at, 4, "\"P2\"");
+  });
   EXPECT_NE(text.find("\nCALLU P2\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nSP P2\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("(ON)"), std::string::npos) << text;
