@@ -80,7 +80,23 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
                  std::vector<LineOrigin> *origins) {
   const DialectText *d = given.text ? given.text : src.dialect;
   if (!d || !d->printStmts) {
-    error = "the " + given.dialect + " dialect prints no program text";
+    // A dialect that prints no text (ClassicLadder: its source is its editor's grid): networks
+    // that are the source's own, unchanged, read back as the source itself.
+    Networks made = fromProgram(src);
+    std::vector<Element> a, b;
+    std::string ignored;
+    if (toStatements(given, a, ignored) && toStatements(made, b, ignored) &&
+        std::equal(a.begin(), a.end(), b.begin(), b.end(), sameElement)) {
+      out.assign(srcText);
+      if (origins)
+        origins->assign(static_cast<size_t>(std::count(srcText.begin(), srcText.end(), '\n')) +
+                            (srcText.empty() || srcText.back() == '\n' ? 0 : 1),
+                        LineOrigin{});
+      return true;
+    }
+    error = "the " + given.dialect +
+            " dialect prints no program text: its network JSON reads back only unchanged (edit "
+            "the program in its own editor)";
     return false;
   }
   Networks made = fromProgram(src);

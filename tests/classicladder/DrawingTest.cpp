@@ -2,6 +2,7 @@
 // "Ladder view"; issue 31 scope 1): every element in its own cell of the rung's grid, a block
 // over the cells it covers, the vertical wires where the cells have them, one part per section;
 // the networks (the program: JSON, statements) stay what the front end made.
+#include "ladder/Json.h"
 #include "ladder/Layout.h"
 #include "ladder/Text.h"
 #include "pipeline/Compile.h"
@@ -54,13 +55,8 @@ const ladder::Cell *at(const ladder::RungLayout &r, int row, int col, const std:
 
 } // namespace
 
-TEST(ClDrawing, RungsAreDrawnOnTheirGrid) {
-  // Main section "Pump": rung 0 (label R0): %I0 NO -- wires -- coil %Q0 on row 0; %I1 NC on
-  // row 1 in column 0, joined to row 0 by the vertical wire on the left of cell (1, 1), then a
-  // wire into it; an IEC timer %TM0 whose alive cell is (3, 1) with its dead cells (2, 1),
-  // (2, 2), (3, 2) (reference 3.2: the block covers 2 x 2 cells) and its output wired to a
-  // set coil %Q1. Rung 1 (label R1): a compare block over columns 0-2 (alive at 2) and a jump
-  // coil back to R0. Section "Sub" is SR0 with one rung: %B0 NC -> call... no: %B0 -> %Q2.
+/// The project of RungsAreDrawnOnTheirGrid (described there).
+std::string drawingProject() {
   std::string p = "_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n#NAME000=Pump\n"
                   "#NAME001=Sub\n000,0,-1,0,1,0\n001,0,0,2,2,0\n_/FILE-sections.csv\n";
   std::vector<std::string> r0 = wired(1, "50-0-60/0", {{0, "1-0-50/0"}});
@@ -75,6 +71,17 @@ TEST(ClDrawing, RungsAreDrawnOnTheirGrid) {
   p += "_FILE-timers_iec.csv\n1,10,0\n_/FILE-timers_iec.csv\n";
   p += "_FILE-symbols.csv\n%I0,START,start key\n_/FILE-symbols.csv\n";
   p += "_/FILES_CLASSICLADDER\n";
+  return p;
+}
+
+TEST(ClDrawing, RungsAreDrawnOnTheirGrid) {
+  // Main section "Pump": rung 0 (label R0): %I0 NO -- wires -- coil %Q0 on row 0; %I1 NC on
+  // row 1 in column 0, joined to row 0 by the vertical wire on the left of cell (1, 1), then a
+  // wire into it; an IEC timer %TM0 whose alive cell is (3, 1) with its dead cells (2, 1),
+  // (2, 2), (3, 2) (reference 3.2: the block covers 2 x 2 cells) and its output wired to a
+  // set coil %Q1. Rung 1 (label R1): a compare block over columns 0-2 (alive at 2) and a jump
+  // coil back to R0. Section "Sub" is SR0 with one rung: %B0 NC -> call... no: %B0 -> %Q2.
+  const std::string p = drawingProject();
   Diagnostics d("t.clp");
   std::optional<VerifiedProgram> prog = pipeline::compileClp(p, "t.clp", VerifyOptions{}, d);
   ASSERT_TRUE(prog) << d.render();
@@ -126,4 +133,27 @@ TEST(ClDrawing, RungsAreDrawnOnTheirGrid) {
   EXPECT_NE(text.find("[ %I0 ]"), std::string::npos) << text;
   EXPECT_NE(text.find("[%TM0]"), std::string::npos) << text;
   EXPECT_NE(text.find("(JUMP R0)"), std::string::npos) << text;
+}
+
+// The network JSON of a project (`ladderjit ladder X.clp --format json`, CLI.md: accepted back as
+// PROGRAM) reads back as the project itself while its networks are unchanged; ClassicLadder
+// prints no program text, so an edited one is refused with the reason.
+TEST(ClDrawing, UnchangedJsonReadsBackAsTheProject) {
+  const std::string p = drawingProject();
+  Diagnostics d("t.clp");
+  std::optional<VerifiedProgram> prog = pipeline::compileClp(p, "t.clp", VerifyOptions{}, d);
+  ASSERT_TRUE(prog) << d.render();
+  const std::string json = ladder::writeJson(ladder::fromProgram(*prog), p);
+  ladder::Networks back;
+  std::string error, text;
+  ASSERT_TRUE(ladder::readJson(json, back, error, *prog->dialect)) << error;
+  ASSERT_TRUE(ladder::programText(back, *prog, p, text, error)) << error;
+  EXPECT_EQ(text, p);
+  std::string edited = json;
+  const size_t at = edited.find("\"%I0\"");
+  ASSERT_NE(at, std::string::npos);
+  edited.replace(at, 5, "\"%I7\"");
+  ASSERT_TRUE(ladder::readJson(edited, back, error, *prog->dialect)) << error;
+  EXPECT_FALSE(ladder::programText(back, *prog, p, text, error));
+  EXPECT_NE(error.find("prints no program text"), std::string::npos) << error;
 }
