@@ -6,6 +6,7 @@
 #include "ir/StackEffect.h"
 
 #include <algorithm>
+#include <string_view>
 #include <unordered_map>
 
 namespace lj::verifier {
@@ -122,6 +123,10 @@ private:
 
   void doubleCoil(int32_t i) {
     const Operand &o = cx_.stmt(i).ops[0];
+    // A front end's own scratch (an area named with `~`: ClassicLadder's cell states, IL's
+    // temporaries) is written wherever the front end needs it; the user never wrote it.
+    const char *areaName = cx_.tp.area(o.area).name;
+    if (areaName && std::string_view(areaName).find('~') != std::string_view::npos) return;
     uint32_t key = ((static_cast<uint32_t>(o.area) * 4096u + static_cast<uint32_t>(o.index)) << 5) |
                    static_cast<uint32_t>(o.bit);
     auto [it, fresh] = coils_.try_emplace(key, i);

@@ -157,3 +157,24 @@ TEST(ClDrawing, UnchangedJsonReadsBackAsTheProject) {
   EXPECT_FALSE(ladder::programText(back, *prog, p, text, error));
   EXPECT_NE(error.find("prints no program text"), std::string::npos) << error;
 }
+
+// The verifier's double-coil warning (双线圈) names what the user wrote twice (%Q0 from two
+// coils), never the front end's own scratch: two compare blocks both use the scratch bit their
+// comparison goes through (before, `warning: double coil: cell319999` on 924.clp).
+TEST(ClDrawing, DoubleCoilWarningsNameUserVariablesOnly) {
+  std::string p = "_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n#NAME000=Main\n"
+                  "000,0,-1,0,0,0\n_/FILE-sections.csv\n";
+  p += rungFile(0, -1, "R0",
+                {wired(3, "50-0-60/0", {{0, "99-0-0/0"}, {1, "99-0-0/0"}, {2, "20-0-0/0"}}),
+                 wired(3, "50-0-60/1", {{0, "99-0-0/0"}, {1, "99-0-0/0"}, {2, "20-0-0/1"}}),
+                 wired(1, "50-0-60/1", {{0, "1-0-50/0"}})});
+  p += "_FILE-arithmetic_expressions.csv\n0000,@270/0@>5\n0001,@270/1@<3\n"
+       "_/FILE-arithmetic_expressions.csv\n_/FILES_CLASSICLADDER\n";
+  Diagnostics d("t.clp");
+  std::optional<VerifiedProgram> prog = pipeline::compileClp(p, "t.clp", VerifyOptions{}, d);
+  ASSERT_TRUE(prog) << d.render();
+  const std::string text = d.render();
+  EXPECT_NE(text.find("double coil: %Q1"), std::string::npos) << text;
+  EXPECT_EQ(text.find("cell"), std::string::npos) << text;
+  EXPECT_EQ(text.find("%~"), std::string::npos) << text;
+}
