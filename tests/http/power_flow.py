@@ -15,9 +15,10 @@ On examples/lathe_panel.stl (hnc8-core.md: LDP/OR/ANI/OUT as a latch):
   conduct without power and the wire to R1.1 stays dark;
 - in every frame, for every output of every ladder rung of the program (all parts, drawn or
   not), the power the page computes at its input equals its traced input (the engine's ST0):
-  the drawing's power flow is the program's. The same check on the FANUC and IEC examples.
+  the drawing's power flow is the program's. The same check on the FANUC and IEC examples, and
+  on a ClassicLadder project drawn on its own grid while its inputs change.
 Usage: power_flow.py LADDERJIT EXAMPLES OUTDIR"""
-import os, sys, time
+import os, subprocess, sys, time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import liveutil  # noqa: E402
@@ -158,7 +159,60 @@ def other(name):
         liveutil.stop(driver, serve)
 
 
+def cell_rows(rows):
+    """A rung's 6 rows of 10 cells (`type-top-vartype/num`, missing cells empty)."""
+    out = []
+    for y in range(6):
+        r = rows[y] if y < len(rows) else {}
+        out.append(" , ".join(r.get(x, "0-0-0/0") for x in range(10)))
+    return "\n".join(out)
+
+
+def classic():
+    """A ClassicLadder project drawn on its own grid (docs/classicladder.md "Ladder view"): NO and
+    NC contacts, a parallel branch through vertical wires, an edge contact, a compare block, an
+    IEC timer and set/reset coils; the page's power flow equals the traced inputs of every output
+    in every frame, while the inputs change."""
+    def wired(a, b, cells):
+        r = {x: "9-0-0/0" for x in range(a, b)}
+        r.update(cells)
+        return r
+    r0 = [wired(2, 9, {0: "1-0-50/0", 1: "2-0-50/1", 9: "50-0-60/0"}),
+          wired(1, 2, {0: "1-0-50/2", 2: "9-1-0/0"}),
+          wired(4, 9, {0: "3-0-50/3", 1: "9-0-0/0", 2: "99-0-0/0", 3: "13-0-0/0", 9: "52-0-60/1"}),
+          {2: "99-0-0/0", 3: "99-0-0/0"},
+          wired(3, 9, {0: "99-0-0/0", 1: "99-0-0/0", 2: "20-0-0/0", 9: "53-0-60/1"})]
+    clp = ("_FILES_CLASSICLADDER\n_FILE-sections.csv\n#VER=1.0\n#NAME000=Main\n000,0,-1,0,0,0\n"
+           "_/FILE-sections.csv\n_FILE-rung_0.csv\n#VER=2.0\n#LABEL=R0\n#COMMENT=flow\n#NEXTRUNG=-1\n"
+           + cell_rows(r0) + "\n_/FILE-rung_0.csv\n_FILE-timers_iec.csv\n1,5,0\n_/FILE-timers_iec.csv\n"
+           "_FILE-arithmetic_expressions.csv\n0000,@270/0@>5\n_/FILE-arithmetic_expressions.csv\n"
+           "_/FILES_CLASSICLADDER\n")
+    path = os.path.join(out, "flow.clp")
+    with open(path, "w") as f:
+        f.write(clp)
+    serve, driver, _, _, sock, _ = liveutil.open_page(exe, path, out, "classicladder")
+    try:
+        check(live(driver), "flow.clp: the page receives traced frames")
+        kinds = driver.execute_script(
+            "return window.ladder.layout.parts[0].rungs[0].cells.map(function(c){return c.kind})")
+        check(all(k in kinds for k in ("contact-no", "contact-nc", "contact-rise", "box", "compare",
+                                       "vlink", "set", "rst")),
+              "flow.clp: the rung is drawn on its grid, every kind of cell: %s" % sorted(set(kinds)))
+        total = consistent(driver, "flow.clp, inputs 0", frames=4)
+        for step in (["%I0=1"], ["%I2=1"], ["%I1=1"], ["%I3=1", "%IW0=9"], ["%I0=0", "%I3=0"]):
+            subprocess.run([exe, "monitor", "--control", sock, "write", *step], capture_output=True,
+                           timeout=10)
+            time.sleep(0.3)
+            total += consistent(driver, "flow.clp after " + " ".join(step), frames=3)
+        shot = os.path.join(out, "power-flow-classicladder.png")
+        driver.save_screenshot(shot)
+        check(os.path.getsize(shot) > 10000, "screenshot " + shot)
+    finally:
+        liveutil.stop(driver, serve)
+
+
 lathe()
+classic()
 for prog in ("catalogue.stl", "tool_change.stl", "fanuc_coolant.pmc", "fanuc_tool_change.pmc",
              "fanuc_magazine.pmc", "conveyor.il", "pump_station.il", "filler.il"):
     other(prog)
