@@ -157,11 +157,18 @@ bool constantAt(std::span<const Stmt> s, size_t i, bool &value) {
 
 bool isEndLabel(const Operand &o) { return o.area == Area::Label && o.index == kEndLabel; }
 
-/// A comparison as written: the IR keeps `a > b` as `b < a`; drawn with the object first when
-/// one side is a constant (`%MW0 > 5`, not `5 < %MW0`). `negated`: `<>` (an `=` and an N).
+/// A comparison as written: the IR keeps `a > b` as `b < a`. The sides in the order the source
+/// has them (their columns, ParserSequence.cpp); without a source (an edited network), the
+/// object first when one side is a constant (`%MW0 > 5`, not `5 < %MW0`). `negated`: `<>` (an
+/// `=` and an N).
 std::string comparisonText(const Stmt &c, bool negated) {
   std::string a = formatOperand(c.ops[0]), b = formatOperand(c.ops[1]);
-  const bool swap = c.ops[0].kind == Operand::Kind::Const && c.ops[1].kind != Operand::Kind::Const;
+  const SourceLoc &la = c.ops[0].loc, &lb = c.ops[1].loc;
+  const bool located =
+      la.line > 0 && la.line == lb.line && la.col > 0 && lb.col > 0 && la.col != lb.col;
+  const bool swap =
+      located ? la.col > lb.col
+              : c.ops[0].kind == Operand::Kind::Const && c.ops[1].kind != Operand::Kind::Const;
   std::string rel = negated ? "<>" : relation(c.op);
   if (swap && !negated) rel = c.op == Op::CompareLt ? ">" : c.op == Op::CompareLe ? ">=" : "=";
   return swap ? b + " " + rel + " " + a : a + " " + rel + " " + b;

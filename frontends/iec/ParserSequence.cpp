@@ -127,6 +127,10 @@ std::optional<Relation> IlParser::comparison(std::string_view text, SourceLoc lo
     if (!a || !b) return std::nullopt;
     out.a = *a;
     out.b = *b;
+    // Each side where it is written (the right one after the operator): the IR keeps `a > b` as
+    // `b < a`, and drawings tell the written order from these columns (NetworkText.cpp).
+    out.a.loc = {loc.line, loc.col + 1};
+    out.b.loc = {loc.line, loc.col + 1 + static_cast<int32_t>(p + out.rel.size())};
     return out;
   }
   error(loc, "LJ2064",

@@ -142,6 +142,20 @@ TEST(LadderDrawing, IecFlowAsWritten) {
     EXPECT_EQ(d->text.find(never), std::string::npos) << never << " in\n" << d->text;
 }
 
+// A comparison of two objects is drawn in the order written (modicon-neza.md 2.8: `[a > b]`);
+// the IR keeps `a > b` as `b < a`, and `[7 <= %MW3]` a constant first as written.
+TEST(LadderDrawing, IecComparisonsInTheirWrittenOrder) {
+  auto d = drawIl("LD [%MW0 > %MW1]\nST %Q0.0\nLD [%MW2 >= %MW4]\nST %Q0.1\n"
+                  "LD [7 <= %MW3]\nST %Q0.2\nEND\n");
+  ASSERT_TRUE(d);
+  const PartLayout *p = part(d->layout, "PLC1");
+  ASSERT_TRUE(p);
+  ASSERT_GE(p->rungs.size(), 3u);
+  EXPECT_EQ(cells(p->rungs[0]), (std::vector<std::string>{"compare %MW0 > %MW1", "coil %Q0.0"}));
+  EXPECT_EQ(cells(p->rungs[1]), (std::vector<std::string>{"compare %MW2 >= %MW4", "coil %Q0.1"}));
+  EXPECT_EQ(cells(p->rungs[2]), (std::vector<std::string>{"compare 7 <= %MW3", "coil %Q0.2"}));
+}
+
 // Operation blocks (1 row x 4 columns) and comparison blocks (1 row x 2 columns) with the
 // expression as written; comments in (* *).
 TEST(LadderDrawing, IecBlocksAndComments) {
