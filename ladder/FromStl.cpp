@@ -377,7 +377,7 @@ std::string partOf(const VerifiedProgram &p, int32_t i) {
 /// is drawn as itself. For drawings only: no statement is read back from it.
 void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vector<Element> &mine,
                  Rung &rung) {
-  if (!p.dialect || !p.dialect->drawStmts) return;
+  if (!p.dialect || (!p.dialect->drawStmts && p.written.empty())) return;
   const StmtRange r = rr.range;
   const std::span<const Stmt> part(p.stmts.data() + r.begin, static_cast<size_t>(r.end - r.begin));
   Rung::Drawing dr;
@@ -386,7 +386,7 @@ void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vecto
   bool changed = false;
   for (size_t i = 0; i < part.size();) {
     DrawnInstr w;
-    if (!p.dialect->drawStmts(part, i, w) || w.as == DrawAs::Plain) {
+    if (!p.dialect->drawStmts || !p.dialect->drawStmts(part, i, w) || w.as == DrawAs::Plain) {
       // A box the front end recorded as written, one statement with other operands than the
       // user wrote (FANUC DEC's `nndd` as a value and a mask, GTB as LTB with its operands
       // swapped, MOVE's two mask nibbles as one byte; ir/Program.h WrittenInstr): drawn with

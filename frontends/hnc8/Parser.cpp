@@ -327,6 +327,22 @@ private:
 
 } // namespace
 
+/// A statement with a constant written other than in decimal (`WAND R0 0xE0 R0`) is recorded
+/// as written (ir/Program.h WrittenInstr), so drawings show `0xE0` where the IR holds 224.
+static void recordIfRadix(ParsedProgram &prog, const std::vector<Token> &toks, const Stmt &s) {
+  if (toks.size() != static_cast<size_t>(s.operandCount) + 1) return;
+  bool other = false;
+  for (int k = 0; k < s.operandCount && !other; ++k) {
+    const Operand &o = s.ops[static_cast<size_t>(k)];
+    other = o.kind == Operand::Kind::Const && o.symbol < 0 &&
+            toks[static_cast<size_t>(k) + 1].text != std::to_string(o.value);
+  }
+  if (!other) return;
+  std::string text(toks[0].text);
+  for (size_t k = 1; k < toks.size(); ++k) text += " " + std::string(toks[k].text);
+  prog.written.push_back({s.id, 1, std::move(text)});
+}
+
 ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &diags) {
   return parseStl(text, std::move(file), diags, nullptr);
 }
@@ -387,6 +403,7 @@ ParsedProgram parseStl(std::string_view text, std::string file, Diagnostics &dia
     if (lp.parse(toks, stmt)) {
       stmt.id = next;
       prog.stmts.push_back(stmt);
+      recordIfRadix(prog, toks, stmt);
       if (hasComment) prog.comments.push_back({line, next, true, std::string(comment)});
     } else if (mnemonic)
       prog.dropped.push_back({static_cast<int32_t>(prog.stmts.size()), known});

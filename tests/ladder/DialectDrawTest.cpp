@@ -158,6 +158,23 @@ TEST(LadderDialect, FanucWrittenParametersAsWritten) {
   EXPECT_NE(text.find("[MOVE 1111 0000 X1 R10]"), std::string::npos) << text;
 }
 
+// An HNC-8 constant written in hex is drawn as written (`WAND R0 0xE0 R0`, lathe_panel.stl's
+// mode reset), not as the IR's 224; a decimal one needs no record.
+TEST(LadderDialect, Hnc8HexConstantAsWritten) {
+  Diagnostics d("t.stl");
+  std::optional<VerifiedProgram> p = pipeline::compileStl(
+      "LDT\nWAND R0 0xE0 R0\nLDT\nWAND R1 15 R1\n", "t.stl", VerifyOptions{}, d);
+  ASSERT_TRUE(p) << d.render();
+  EXPECT_EQ(p->written.size(), 1u);
+  Layout l = layout(fromProgram(*p));
+  std::vector<std::vector<std::string>> ops;
+  for (const PartLayout &pl : l.parts)
+    for (const RungLayout &r : pl.rungs)
+      for (const Cell &c : r.cells)
+        if (c.kind == "box") ops.push_back(c.operands);
+  EXPECT_EQ(ops, (std::vector<std::vector<std::string>>{{"R0", "0xE0", "R0"}, {"R1", "15", "R1"}}));
+}
+
 // An HNC-8 TMRB writes the time unit (hnc8-core.md: `TMRB 0 0 500`): all three operands drawn.
 TEST(LadderDialect, Hnc8TimerKeepsItsTimeUnit) {
   Diagnostics d("t.stl");
