@@ -61,7 +61,9 @@ std::string leafText(const Node &n) {
     if (!e.operands.empty()) t += " " + operandText(e, 0);
   } else {
     t = "[" + drawnText(e);
-    for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k) t += " " + operandText(e, k);
+    for (size_t k = 0; k < e.operands.size() && !e.drawnWhole; ++k)
+      if (!(k < 32 && (e.implied >> k & 1u))) // not in the source: drawn by no view
+        t += " " + operandText(e, k);
     t += "]";
     if (n.rail) t = "|rail| " + t;
   }

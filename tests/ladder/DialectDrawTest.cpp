@@ -101,6 +101,14 @@ TEST(LadderDialect, FanucFixedTimersDrawTheirTwoParameters) {
   EXPECT_EQ(tmrbf->operands, (std::vector<std::string>{"3", "700"}));
   EXPECT_EQ(movw->operands, (std::vector<std::string>{"D100", "D102"}))
       << "other boxes keep theirs";
+  // The text form the same (it printed the implied unit: `[TMRB 2 0 5000]`).
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  const std::string text = renderText(fromProgram(*p));
+  EXPECT_NE(text.find("[TMRB 2 5000]"), std::string::npos) << text;
+  EXPECT_NE(text.find("[TMRBF 3 700]"), std::string::npos) << text;
 }
 
 // ROT / ROTB (ref 6.10): boxes named as the PMC names them, with the parameters as written
