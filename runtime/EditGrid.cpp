@@ -337,9 +337,9 @@ json convert(const Checker &ck, const json &req) {
 }
 
 /// 列表编辑: a new subroutine part named `name` as the dialect writes it (HNC-8 `S7`, FANUC `P7`,
-/// IL `SR7`): its begin and end markers (SP / SPE, IL `SR7:` / RET) as the network JSON writes
-/// them, made from the neutral operations and spelled by the dialect, so the page copies no
-/// dialect's words. The draft's verify checks the rest (a number the dialect does not allow).
+/// IL `SR7`): its begin and end markers (SP / SPE; IL `SR7:` and the implicit end the IL printer
+/// leaves out) as the network JSON writes them, made from the neutral operations and spelled by
+/// the dialect, so the page copies no dialect's words. The draft's verify checks the rest.
 json subroutinePart(const Checker &ck, const std::string &name) {
   const TargetProfile *pf = ck.prog.profile;
   if (!pf) return {{"ok", false}, {"error", "this program has no target profile"}};
