@@ -320,32 +320,15 @@ private:
 
 /// An operand without a dialect to write it (a program no front end made): the profile's area
 /// name and index.
-std::string neutralOperand(const VerifiedProgram &p, const Operand &o) {
+std::string neutralOperand(const TargetProfile *profile, const Operand &o) {
   if (o.kind == Operand::Kind::Const) return std::to_string(o.value);
-  if (o.kind == Operand::Kind::None || !p.profile) return "";
-  std::string t = std::string(p.profile->area(o.area).name) + std::to_string(o.index);
+  if (o.kind == Operand::Kind::None || !profile) return "";
+  std::string t = std::string(profile->area(o.area).name) + std::to_string(o.index);
   return o.kind == Operand::Kind::Bit ? t + "." + std::to_string(o.bit) : t;
 }
 
 Element elementOf(const VerifiedProgram &p, int32_t i) {
-  const Stmt &s = p.stmts[static_cast<size_t>(i)];
-  Element e;
-  e.id = s.id;
-  e.loc = s.loc;
-  e.op = s.op;
-  e.drawn = drawnMnemonic(p, s);
-  // A label written whole, with its operand (IL `%L64:`, `SR0:`; DialectText::spellStmt).
-  e.drawnWhole = s.operandCount == 1 && e.drawn.size() > 1 && e.drawn.back() == ':';
-  for (int k = 0; k < s.operandCount; ++k) {
-    const Operand &o = s.ops[static_cast<size_t>(k)];
-    if (p.dialect && p.dialect->implied && p.dialect->implied(s.op, k)) e.implied |= 1u << k;
-    // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).
-    e.operands.push_back(p.dialect ? p.dialect->formatOperand(o) : neutralOperand(p, o));
-    e.symbols.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < p.symbols.size()
-                            ? p.symbols[static_cast<size_t>(o.symbol)].name
-                            : std::string());
-  }
-  return e;
+  return stmtElement(p.stmts[static_cast<size_t>(i)], p.dialect, p.profile, p.symbols);
 }
 
 bool sameStatements(const std::vector<Element> &a, const std::vector<Element> &b) {
@@ -485,6 +468,27 @@ void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vecto
 }
 
 } // namespace
+
+Element stmtElement(const Stmt &s, const DialectText *d, const TargetProfile *profile,
+                    const std::vector<Symbol> &symbols) {
+  Element e;
+  e.id = s.id;
+  e.loc = s.loc;
+  e.op = s.op;
+  e.drawn = drawnMnemonic(d, s);
+  // A label written whole, with its operand (IL `%L64:`, `SR0:`; DialectText::spellStmt).
+  e.drawnWhole = s.operandCount == 1 && e.drawn.size() > 1 && e.drawn.back() == ':';
+  for (int k = 0; k < s.operandCount; ++k) {
+    const Operand &o = s.ops[static_cast<size_t>(k)];
+    if (d && d->implied && d->implied(s.op, k)) e.implied |= 1u << k;
+    // In the program's own dialect (an IEC program draws `%I0.1`, not the image address).
+    e.operands.push_back(d ? d->formatOperand(o) : neutralOperand(profile, o));
+    e.symbols.push_back(o.symbol >= 0 && static_cast<size_t>(o.symbol) < symbols.size()
+                            ? symbols[static_cast<size_t>(o.symbol)].name
+                            : std::string());
+  }
+  return e;
+}
 
 Networks fromProgram(const VerifiedProgram &prog) {
   Networks nets;

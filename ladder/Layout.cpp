@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cctype>
 
 namespace lj::ladder {
 
@@ -407,18 +406,8 @@ void oneGrid(Layout &l) {
 } // namespace
 
 /// A grid source drawn as its editor draws it (ir/Program.h GridPartDrawing): every cell where
-/// the source has it, a symbol named under its variable.
+/// the source has it, with the symbol the front end named it by.
 static Layout gridLayout(const Networks &nets, Layout l) {
-  auto symbolOf = [&nets](const std::string &text) {
-    for (const Symbol &s : nets.symbols)
-      if (s.address.size() == text.size() &&
-          std::equal(s.address.begin(), s.address.end(), text.begin(), [](char a, char b) {
-            return std::toupper(static_cast<unsigned char>(a)) ==
-                   std::toupper(static_cast<unsigned char>(b));
-          }))
-        return s.name;
-    return std::string();
-  };
   for (const GridPartDrawing &gp : nets.grids) {
     PartLayout pl;
     pl.name = gp.name;
@@ -442,9 +431,6 @@ static Layout gridLayout(const Networks &nets, Layout l) {
         c.pins = gc.pins;
         c.stmt = gc.stmt;
         c.symbol = gc.symbol;
-        if (c.symbol.empty() && (c.kind.rfind("contact", 0) == 0 || c.kind == "coil" ||
-                                 c.kind == "coil-not" || c.kind == "set" || c.kind == "rst"))
-          c.symbol = symbolOf(c.text);
         rl.cells.push_back(std::move(c));
       }
       pl.rungs.push_back(std::move(rl));

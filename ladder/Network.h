@@ -129,9 +129,14 @@ bool toStatements(const Networks &nets, std::vector<Element> &out, std::string &
 bool rungStatements(const Node &network, std::vector<Element> &out, std::string &error,
                     const DialectText *d = nullptr);
 
-/// `s` as the ladder view draws it in `p`'s dialect (docs/ladder-view.md "Dialects"): the front
+/// `s` as the ladder view draws it in dialect `d` (docs/ladder-view.md "Dialects"): the front
 /// end's DialectText::spellStmt, else its spelling of the operation.
-std::string drawnMnemonic(const VerifiedProgram &p, const Stmt &s);
+std::string drawnMnemonic(const DialectText *d, const Stmt &s);
+/// Statement `s` as an element of the networks, in dialect `d` (its word, its operands as the
+/// dialect writes them, the symbols they were written as; `profile` names operands when `d` is
+/// null): what fromProgram makes of every statement.
+Element stmtElement(const Stmt &s, const DialectText *d, const TargetProfile *profile,
+                    const std::vector<Symbol> &symbols);
 /// An element's drawn instruction: `drawn`, else its operation's neutral name.
 inline std::string drawnText(const Element &e) {
   return e.drawn.empty() ? instrInfo(e.op).name : e.drawn;

@@ -9,9 +9,9 @@ namespace lj::ladder {
 const char *const kBlockJoinWord = "ANB";
 const char *const kFanWords[3] = {"MPS", "MRD", "MPP"};
 
-std::string drawnMnemonic(const VerifiedProgram &p, const Stmt &s) {
-  if (p.dialect && p.dialect->spellStmt) return p.dialect->spellStmt(s);
-  return spelling(p.dialect, s.op);
+std::string drawnMnemonic(const DialectText *d, const Stmt &s) {
+  if (d && d->spellStmt) return d->spellStmt(s);
+  return spelling(d, s.op);
 }
 
 } // namespace lj::ladder

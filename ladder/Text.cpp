@@ -178,32 +178,24 @@ static std::string gridText(const Networks &nets) {
           links[static_cast<size_t>(c.row)][static_cast<size_t>(c.col) * kW] = '|';
           continue;
         }
-        std::string t;
-        const std::string &x = c.text;
-        if (c.kind == "wire")
-          t = "";
-        else if (c.kind == "contact-no")
-          t = "[ " + x + " ]";
-        else if (c.kind == "contact-nc")
-          t = "[/" + x + " ]";
-        else if (c.kind == "contact-rise")
-          t = "[P " + x + "]";
-        else if (c.kind == "contact-fall")
-          t = "[N " + x + "]";
-        else if (c.kind == "coil")
-          t = "( " + x + " )";
-        else if (c.kind == "coil-not")
-          t = "(/" + x + " )";
-        else if (c.kind == "set")
-          t = "(S " + x + ")";
-        else if (c.kind == "rst")
-          t = "(R " + x + ")";
-        else if (c.kind == "operate")
-          t = "{" + x + "}";
-        else if (c.kind == "jump" || c.kind == "call")
-          t = "(" + x + ")";
-        else
-          t = "[" + x + "]";
+        // How the cell's text is framed, by kind (a block, compare...: in brackets).
+        static const struct {
+          const char *kind, *open, *close;
+        } kFrames[] = {{"wire", "", ""},
+                       {"contact-no", "[ ", " ]"},
+                       {"contact-nc", "[/", " ]"},
+                       {"contact-rise", "[P ", "]"},
+                       {"contact-fall", "[N ", "]"},
+                       {"coil", "( ", " )"},
+                       {"coil-not", "(/", " )"},
+                       {"set", "(S ", ")"},
+                       {"rst", "(R ", ")"},
+                       {"operate", "{", "}"},
+                       {"jump", "(", ")"},
+                       {"call", "(", ")"}};
+        std::string t = "[" + c.text + "]";
+        for (const auto &f : kFrames)
+          if (c.kind == f.kind) t = f.open + c.text + f.close; // a wire has no text
         const size_t w = static_cast<size_t>(std::max(c.width, 1)) * kW;
         std::string cell(w, '-');
         if (t.size() > w - 2) t = t.substr(0, w - 2);

@@ -79,30 +79,12 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
                  std::string &out, std::string &error, bool printAll,
                  std::vector<LineOrigin> *origins) {
   const DialectText *d = given.text ? given.text : src.dialect;
-  if (!d || !d->printStmts) {
-    // A dialect that prints no text (ClassicLadder: its source is its editor's grid): networks
-    // that are the source's own, unchanged, read back as the source itself.
-    Networks made = fromProgram(src);
-    std::vector<Element> a, b;
-    std::string ignored;
-    if (toStatements(given, a, ignored) && toStatements(made, b, ignored) &&
-        std::equal(a.begin(), a.end(), b.begin(), b.end(), sameElement)) {
-      out.assign(srcText);
-      if (origins)
-        origins->assign(static_cast<size_t>(std::count(srcText.begin(), srcText.end(), '\n')) +
-                            (srcText.empty() || srcText.back() == '\n' ? 0 : 1),
-                        LineOrigin{});
-      return true;
-    }
-    error = "the " + given.dialect +
-            " dialect prints no program text: its network JSON reads back only unchanged (edit "
-            "the program in its own editor)";
-    return false;
-  }
+  const bool prints = d && d->printStmts;
   Networks made = fromProgram(src);
   std::vector<Element> a, b;
   std::vector<std::string> where;
-  if (!toStatements(given, a, error, &where) || !toStatements(made, b, error)) return false;
+  const bool stated = toStatements(given, a, error, &where) && toStatements(made, b, error);
+  if (prints && !stated) return false;
   // The source's lines, each with its line break.
   std::vector<std::string_view> lines;
   for (size_t p = 0; p < srcText.size();) {
@@ -110,6 +92,19 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     size_t e = nl == std::string_view::npos ? srcText.size() : nl + 1;
     lines.push_back(srcText.substr(p, e - p));
     p = e;
+  }
+  if (!prints) {
+    // A dialect that prints no text (ClassicLadder: its source is its editor's grid): networks
+    // that are the source's own, unchanged, read back as the source itself.
+    if (stated && std::equal(a.begin(), a.end(), b.begin(), b.end(), sameElement)) {
+      out.assign(srcText);
+      if (origins) origins->assign(lines.size(), LineOrigin{});
+      return true;
+    }
+    error = "the " + given.dialect +
+            " dialect prints no program text: its network JSON reads back only unchanged (edit "
+            "the program in its own editor)";
+    return false;
   }
   auto count = static_cast<int32_t>(lines.size());
   int32_t tailFrom = count + 1;

@@ -10,7 +10,6 @@
 
 #include <cctype>
 #include <charconv>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -243,6 +242,19 @@ void symbolsIn(ladder::Node &n, const Checker &ck) {
     }
 }
 
+/// `n` (network JSON) without statement ids, lines and columns: the server numbers new
+/// statements after the program's highest id when the draft is read.
+void withoutPlaces(json &n) {
+  if (n.is_object()) {
+    n.erase("id");
+    n.erase("line");
+    n.erase("col");
+    for (auto &[k, v] : n.items()) withoutPlaces(v);
+  } else if (n.is_array()) {
+    for (json &v : n) withoutPlaces(v);
+  }
+}
+
 json convert(const Checker &ck, const json &req) {
   json out = json::object();
   const std::string part = req.value("partName", std::string("rung"));
@@ -319,17 +331,7 @@ json convert(const Checker &ck, const json &req) {
     return out;
   }
   json network = w["parts"][0]["rungs"][0]["network"];
-  std::function<void(json &)> strip = [&strip](json &n) {
-    if (n.is_object()) {
-      n.erase("id");
-      n.erase("line");
-      n.erase("col");
-      for (auto &[k, v] : n.items()) strip(v);
-    } else if (n.is_array()) {
-      for (json &v : n) strip(v);
-    }
-  };
-  strip(network);
+  withoutPlaces(network);
   out["ok"] = true;
   out["network"] = network;
   out["cells"] = cells;
@@ -377,29 +379,16 @@ json subroutinePart(const Checker &ck, const std::string &name) {
       s.ops[0].area = Area::Subroutine;
       s.ops[0].index = n;
     }
-    ladder::Element el;
-    el.op = op;
-    el.drawn = ck.text.spellStmt ? ck.text.spellStmt(s) : spelling(&ck.text, op);
-    el.drawnWhole = s.operandCount == 1 && el.drawn.size() > 1 && el.drawn.back() == ':';
-    for (int k = 0; k < s.operandCount; ++k) {
-      el.operands.push_back(ck.text.formatOperand(s.ops[static_cast<size_t>(k)]));
-      el.symbols.emplace_back();
-    }
     ladder::Rung r;
     r.kind = ladder::Rung::Kind::Marker;
-    r.stmts.push_back(std::move(el));
+    r.stmts.push_back(ladder::stmtElement(s, &ck.text, pf, ck.prog.symbols));
     part.rungs.push_back(std::move(r));
   }
   one.parts.push_back(std::move(part));
   json w = json::parse(ladder::writeJson(one), nullptr, false);
   if (w.is_discarded()) return {{"ok", false}, {"error", "no JSON form of the markers"}};
   json rungs = w["parts"][0]["rungs"];
-  for (json &r : rungs)
-    for (json &st : r["stmts"]) {
-      st.erase("id");
-      st.erase("line");
-      st.erase("col");
-    }
+  withoutPlaces(rungs);
   return {{"ok", true}, {"name", one.parts[0].name}, {"number", n}, {"rungs", rungs}};
 }
 
