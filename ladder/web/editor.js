@@ -1090,26 +1090,34 @@
     if (!todo.length) return Promise.resolve(true);
     todo.forEach(function (t) { t.obj.pending = true; });
     render();
-    const chunks = [];
-    for (let i = 0; i < todo.length; i += 32) chunks.push(todo.slice(i, i + 32));
-    return Promise.all(chunks.map(function (ch) {
-      return api('api/edit/grid', { rungs: ch.map(function (t) { return t.req; }) }).then(function (a) {
-        ch.forEach(function (t, i) {
-          t.obj.pending = false;
-          const ans = a.status === 200 ? a.body.rungs[i] : { ok: false, errors: [{ row: -1, col: -1, message: a.body.error || 'HTTP ' + a.status }] };
-          if (ans.ok) {
-            t.obj.net = ans.network;
-            t.obj.cells = ans.cells;
-            t.obj.errors = [];
-          } else {
-            t.obj.errors = ans.errors;
-          }
-        });
-      });
-    })).then(function () {
+    return gridCheck(todo.map(function (t) { return t.req; }), function (i, ans) {
+      const t = todo[i];
+      t.obj.pending = false;
+      if (ans.ok) {
+        t.obj.net = ans.network;
+        t.obj.cells = ans.cells;
+        t.obj.errors = [];
+      } else {
+        t.obj.errors = ans.errors;
+      }
+    }).then(function () {
       render();
       return true;
     });
+  }
+  // The server's grid check of `reqs` ({grid, ...} each), at most 32 a request (the route
+  // takes 256); `each(i, answer)` for every one, a refused request answering for all of its own.
+  function gridCheck(reqs, each) {
+    const calls = [];
+    for (let at = 0; at < reqs.length; at += 32) {
+      const from = at, part = reqs.slice(at, at + 32);
+      calls.push(api('api/edit/grid', { rungs: part }).then(function (a) {
+        part.forEach(function (_r, i) {
+          each(from + i, a.status === 200 ? a.body.rungs[i] : { ok: false, errors: [{ row: -1, col: -1, message: a.body.error || 'HTTP ' + a.status }] });
+        });
+      }));
+    }
+    return Promise.all(calls);
   }
 
   // ---- 更新修改 / 放弃修改 ---------------------------------------------------------------------
@@ -1169,19 +1177,15 @@
       });
     });
     if (!todo.length) return;
-    api('api/edit/grid', { rungs: todo.map(function (r) { return { grid: gridJson(r.grid, r.comment) }; }) }).then(function (a) {
-      if (a.status !== 200) return;
-      todo.forEach(function (r, i) {
-        const ans = a.body.rungs[i];
-        if (!ans || !ans.ok) return;
-        r.cells = ans.cells;
-        r.errors = r.errors.map(function (e) {
-          const c = e.row < 0 && e.element > 0 ? r.cells[e.element - 1] : null;
-          return c ? Object.assign({}, e, { row: c[0], col: c[1] }) : e;
-        });
+    gridCheck(todo.map(function (r) { return { grid: gridJson(r.grid, r.comment) }; }), function (i, ans) {
+      const r = todo[i];
+      if (!ans || !ans.ok) return;
+      r.cells = ans.cells;
+      r.errors = r.errors.map(function (e) {
+        const c = e.row < 0 && e.element > 0 ? r.cells[e.element - 1] : null;
+        return c ? Object.assign({}, e, { row: c[0], col: c[1] }) : e;
       });
-      render();
-    });
+    }).then(render);
   }
   function goToRung(obj) {
     E.parts.forEach(function (p, pi) {
