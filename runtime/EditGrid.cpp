@@ -7,6 +7,7 @@
 #include "ladder/Json.h"
 #include "ladder/Network.h"
 #include "pipeline/Dialects.h"
+#include "services/HttpServer.h"
 
 #include <cctype>
 #include <charconv>
@@ -349,8 +350,9 @@ json subroutinePart(const Checker &ck, const std::string &name) {
   const std::string prefix = area.name ? area.name : "";
   auto fail = [&](const std::string &why) {
     return json{{"ok", false},
-                {"error", "'" + name + "': " + why + " (a subroutine is written " + prefix +
-                              "<number>, e.g. " + prefix + "7)"}};
+                {"error", "'" + services::clientText(name) + "': " + why +
+                              " (a subroutine is written " + prefix + "<number>, e.g. " + prefix +
+                              "7)"}};
   };
   if (prefix.empty() || area.count <= 0)
     return {{"ok", false},
@@ -421,7 +423,8 @@ EditAnswer gridRoute(const ProgramVersion *v, const json &body) {
   for (const auto &[k, val] : body.items())
     if (k != "open" && k != "rungs" && k != "operand" && k != "kind" && k != "box" &&
         k != "index" && k != "subroutine")
-      return bad("unknown field '" + k + "' in /api/edit/grid (open, rungs, operand, subroutine)");
+      return bad("unknown field '" + services::clientText(k) +
+                 "' in /api/edit/grid (open, rungs, operand, subroutine)");
 
   if (body.value("open", false)) {
     ladder::Networks nets = ladder::fromProgram(prog);
