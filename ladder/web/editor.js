@@ -1109,8 +1109,8 @@
   // takes 256); `each(i, answer)` for every one, a refused request answering for all of its own.
   function gridCheck(reqs, each) {
     const calls = [];
-    for (let at = 0; at < reqs.length; at += 32) {
-      const from = at, part = reqs.slice(at, at + 32);
+    for (let k = 0; k < reqs.length; k += 32) {
+      const from = k, part = reqs.slice(k, k + 32);
       calls.push(api('api/edit/grid', { rungs: part }).then(function (a) {
         part.forEach(function (_r, i) {
           each(from + i, a.status === 200 ? a.body.rungs[i] : { ok: false, errors: [{ row: -1, col: -1, message: a.body.error || 'HTTP ' + a.status }] });
