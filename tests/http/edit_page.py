@@ -234,15 +234,19 @@ def files_after_update(name, path, original, added):
           (name, [{k: r.get(k) for k in ("editor", "client", "old", "new")} for r in recs]))
 
 
+def enter(page):
+    """Enter in the input line. Enter checks the text once more with the server before it is
+    entered (the input closes): keys sent, or the grid read, before that would race it."""
+    page.keys(Keys.ENTER)
+    wait("entered", lambda: page.js("return document.getElementById('edin').disabled"), 10)
+
+
 def typed(page, text):
     """Into the input line once it has the focus, checked as typed, Enter."""
     wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
     page.keys(text)
     msg = wait("checked", lambda: (lambda t: t if " ok" in t else None)(page.text("edinmsg")), 10)
-    page.keys(Keys.ENTER)
-    # Enter checks the text once more with the server before it is entered (the input closes):
-    # keys sent before that would land in the input line.
-    wait("entered", lambda: page.js("return document.getElementById('edin').disabled"), 10)
+    enter(page)
     return msg or page.text("edinmsg")
 
 
@@ -449,7 +453,7 @@ def hnc8():
         wait("the input", lambda: page.js("return document.activeElement.id") == "edin", 5)
         page.keys("Y0.2")
         wait("checked", lambda: "ok" in page.text("edinmsg"), 10)
-        page.keys(Keys.ENTER)
+        enter(page)
         g = page.settled()
         marks = page.errcells()
         check(g and g["errors"] and any(c > 3 and "after an output" in t for _, c, t in marks),
@@ -475,7 +479,7 @@ def hnc8():
         page.ctrl("a")
         page.keys("X0.5")
         wait("checked", lambda: "ok" in page.text("edinmsg"), 10)
-        page.keys(Keys.ENTER)
+        enter(page)
         page.settled()
         page.click(drv.find_element(By.ID, "edupdate"))
         ok = wait("the check's refusal", lambda: "does not verify" in page.text("edstate"), 60)
