@@ -127,8 +127,11 @@ private:
     // temporaries) is written wherever the front end needs it; the user never wrote it.
     const char *areaName = cx_.tp.area(o.area).name;
     if (areaName && std::string_view(areaName).find('~') != std::string_view::npos) return;
-    uint32_t key = ((static_cast<uint32_t>(o.area) * 4096u + static_cast<uint32_t>(o.index)) << 5) |
-                   static_cast<uint32_t>(o.bit);
+    // Area, element and bit each in a field of their own: an element number of 4096 and more
+    // (FANUC E4096, D) must not reach the next area's elements.
+    const uint64_t key = static_cast<uint64_t>(o.area) << 40 |
+                         static_cast<uint64_t>(static_cast<uint32_t>(o.index)) << 8 |
+                         static_cast<uint8_t>(o.bit);
     auto [it, fresh] = coils_.try_emplace(key, i);
     if (fresh) return;
     const Stmt &first = cx_.stmt(it->second);
@@ -271,7 +274,7 @@ private:
   std::vector<CallSite> &calls_;
   std::vector<int32_t> scope_; // per statement of the unit
   std::unordered_map<int32_t, int32_t> labels_;
-  std::unordered_map<uint32_t, int32_t> coils_;
+  std::unordered_map<uint64_t, int32_t> coils_;
   std::vector<int32_t> mps_; // open MPS statements (-1: a dropped line's MPS)
   std::vector<DroppedStmt>::const_iterator dropIt_;
 };

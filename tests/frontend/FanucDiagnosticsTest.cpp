@@ -180,3 +180,19 @@ TEST(FanucDiagnostics, SelectCallRules) {
 
 } // namespace
 } // namespace lj
+
+namespace lj {
+namespace {
+
+// DIALECT.md 6: a double coil is the same bit written by two output instructions. E4096.0 and
+// A0.0 are different bits (reference 2: E0..E9999, A0..A249); the verifier's key once folded an
+// element number of 4096 into the next area's element 0 and warned about A0.0.
+TEST(FanucDiagnostics, DoubleCoilOnlyForTheSameBit) {
+  EXPECT_EQ(test::fanucDiags("RD X0.0\nWRT E4096.0\nRD X0.1\nWRT A0.0\nEND1\nEND2\nEND\n"), "");
+  EXPECT_EQ(test::fanucDiags("RD X0.0\nWRT E9999.7\nRD X0.1\nWRT E9999.7\nEND1\nEND2\nEND\n"),
+            "t.pmc:4:5: warning: double coil: E9999.7 is also written on line 2 [LJ1015]\n"
+            "t.pmc:2:5: note: first write of E9999.7 is here\n");
+}
+
+} // namespace
+} // namespace lj
