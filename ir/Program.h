@@ -169,6 +169,10 @@ struct DialectText {
   /// nullptr: `;` to the end of the line (HNC-8, FANUC).
   const char *commentOpen = nullptr;
   const char *commentClose = nullptr;
+  /// An instruction the front end recorded as written (WrittenInstr::text, one line) as the
+  /// dialect's drawings name it, where its written word is a code rather than a name (FANUC
+  /// `SUB 25 0001 D0 100 R10` drawn as `DECB 0001 D0 100 R10`). nullptr: drawn as written.
+  std::string (*drawWritten)(std::string_view written) = nullptr;
 };
 
 /// Whether dialect `d` spells `op`.

@@ -380,11 +380,13 @@ void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vecto
       if (e0.role == WrittenRole::First && !e0.written.empty() &&
           (i + 1 == part.size() || mine[i + 1].role != WrittenRole::Part) &&
           (rule == StackRule::Block || rule == StackRule::Push || rule == StackRule::Combine)) {
+        const std::string written =
+            p.dialect->drawWritten ? p.dialect->drawWritten(e0.written) : e0.written;
         std::vector<std::string> words;
-        for (size_t a = 0; a < e0.written.size();) {
-          const size_t b = e0.written.find_first_of(" \t", a);
-          const size_t end = b == std::string::npos ? e0.written.size() : b;
-          if (end > a) words.push_back(e0.written.substr(a, end - a));
+        for (size_t a = 0; a < written.size();) {
+          const size_t b = written.find_first_of(" \t", a);
+          const size_t end = b == std::string::npos ? written.size() : b;
+          if (end > a) words.push_back(written.substr(a, end - a));
           a = end + 1;
         }
         if (!words.empty()) {

@@ -707,6 +707,25 @@ namespace detail { // NetworkText.cpp: how a statement is drawn
 bool drawStatements(std::span<const Stmt> stmts, size_t i, DrawnInstr &out);
 } // namespace detail
 
+/// `SUB n ...` as a FANUC ladder names the box: by the name of SUB n (reference 6, the SUB
+/// number table), unless the name is a basic instruction's (SUB 60 AND, SUB 61 OR), which the
+/// text form must keep apart from the bit logic and the drawing keeps as written.
+std::string drawWritten(std::string_view written) {
+  std::vector<frontend::Word> w;
+  std::string_view comment;
+  bool hasComment = false;
+  if (written.find('\n') == std::string_view::npos)
+    frontend::splitLine(written, w, comment, hasComment);
+  if (w.size() < 2 || detail::upper(std::string(w[0].text)) != "SUB" || w[1].text.empty() ||
+      w[1].text.size() > 4 || w[1].text.find_first_not_of("0123456789") != std::string_view::npos)
+    return std::string(written);
+  const char *name = detail::functionalName(std::stoll(std::string(w[1].text)));
+  if (!name || basicNamed(name) || isMarkerName(name)) return std::string(written);
+  std::string out = name;
+  for (size_t k = 2; k < w.size(); ++k) out += " " + std::string(w[k].text);
+  return out;
+}
+
 const DialectText &dialectText() {
   static constexpr DialectText kText{"fanuc",
                                      &spell,
@@ -716,7 +735,10 @@ const DialectText &dialectText() {
                                      &detail::lookupWord,
                                      &detail::printStatements,
                                      &symbolRules,
-                                     &detail::drawStatements};
+                                     &detail::drawStatements,
+                                     nullptr,
+                                     nullptr,
+                                     &drawWritten};
   return kText;
 }
 

@@ -5,6 +5,7 @@
 #include "frontends/fanuc/FrontEnd.h"
 #include "frontends/hnc8/FrontEnd.h"
 #include "frontends/iec/FrontEnd.h"
+#include "ladder/Json.h"
 #include "ladder/Layout.h"
 #include "ladder/Text.h"
 #include "pipeline/Compile.h"
@@ -164,6 +165,47 @@ TEST(LadderDialect, FanucWrittenParametersAsWritten) {
   const std::string text = renderText(fromProgram(*p));
   EXPECT_NE(text.find("[GTB D100 5]"), std::string::npos) << text;
   EXPECT_NE(text.find("[MOVE 1111 0000 X1 R10]"), std::string::npos) << text;
+}
+
+// A functional instruction written `SUB n` with its parameters on `(PRM)` lines (fanuc-pmc.md
+// 6.1, "SUB 5 / (PRM) 1") is a box under the name of SUB n, as one written by name: SUB 4 is
+// DEC, SUB 25 DECB (the SUB number table). SUB 60 and SUB 61 are the word AND / OR, which in the
+// PMC's text are RD-logic instructions: those boxes keep the `SUB n` they were written with.
+TEST(LadderDialect, FanucSubNumberDrawnByName) {
+  const char *pmc = "RD X0.0\n"
+                    "SUB 4\n"
+                    "(PRM) F10\n"
+                    "(PRM) 0311\n"
+                    "WRT R0.0\n"
+                    "RD X0.1\n"
+                    "SUB 25\n"
+                    "(PRM) 0001\n"
+                    "(PRM) D0\n"
+                    "(PRM) 100\n"
+                    "(PRM) R10\n"
+                    "RD X0.2\n"
+                    "SUB 60 1002 F26 D14 D12\n"
+                    "END1\n"
+                    "END2\n"
+                    "END\n";
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const Cell *dec = boxNamed(*fl, "DEC"), *decb = boxNamed(*fl, "DECB"),
+             *sub60 = boxNamed(*fl, "SUB");
+  ASSERT_TRUE(dec && decb && sub60) << "boxes DEC, DECB and SUB (60)";
+  EXPECT_EQ(dec->operands, (std::vector<std::string>{"F10", "0311"}));
+  EXPECT_EQ(decb->operands, (std::vector<std::string>{"0001", "D0", "100", "R10"}));
+  EXPECT_EQ(sub60->operands, (std::vector<std::string>{"60", "1002", "F26", "D14", "D12"}));
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  const std::string text = renderText(fromProgram(*p));
+  EXPECT_NE(text.find("[DEC F10 0311]"), std::string::npos) << text;
+  EXPECT_NE(text.find("[DECB 0001 D0 100 R10]"), std::string::npos) << text;
+  EXPECT_NE(text.find("[SUB 60 1002 F26 D14 D12]"), std::string::npos) << text;
+  // The JSON keeps the instruction as written: networks -> program text gives it back.
+  EXPECT_NE(writeJson(fromProgram(*p)).find("SUB 25 0001 D0 100 R10"), std::string::npos);
 }
 
 // An HNC-8 constant written in hex is drawn as written (`WAND R0 0xE0 R0`, lathe_panel.stl's
