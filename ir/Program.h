@@ -84,6 +84,9 @@ struct WrittenInstr {
   int32_t first = 0;
   int32_t count = 0;
   std::string text;
+  /// The source line `text` starts on where that is a line before its first statement's: a
+  /// line that made no statement (FANUC COME) went with it. 0: its first statement's line.
+  int32_t line = 0;
 };
 
 /// One statement of a network as text, for DialectText::printStmts: the operation (which fixes
@@ -173,6 +176,10 @@ struct DialectText {
   /// dialect's drawings name it, where its written word is a code rather than a name (FANUC
   /// `SUB 25 0001 D0 100 R10` drawn as `DECB 0001 D0 100 R10`). nullptr: drawn as written.
   std::string (*drawWritten)(std::string_view written) = nullptr;
+  /// Whether a line of an instruction recorded as written is one that made no statement and
+  /// stands between rungs (FANUC `COME`, `NOP`): drawings show it as a marker before the rung
+  /// whose statement carries it. nullptr: none is.
+  bool (*markerLine)(std::string_view line) = nullptr;
 };
 
 /// Whether dialect `d` spells `op`.

@@ -176,6 +176,10 @@ public:
     const int top = y;
     out +=
         "<g class=\"rung\" data-part=\"" + esc(partName) + "\" data-rung=\"" + n(r.number) + "\">";
+    for (const std::string &m : r.lead) { // a marker written before it (FANUC COME)
+      y += kRH / 2; // where a marker rung (END1) draws its text: the middle of its width
+      text(kLM + (kMinInputCols + 1) * kCW / 2, y - 6, m, "mn");
+    }
     for (const std::string &c : r.comment) {
       y += kCommentH;
       text(kLM + 4, y - 3, commentLine(commentOpen, commentClose, c), "cm", "start");
@@ -320,6 +324,7 @@ std::string layoutJson(const Layout &l, bool compact) {
       json rung{{"number", r.number}, {"kind", r.kind}, {"comment", r.comment},
                 {"cols", r.cols},     {"rows", r.rows}, {"cells", cells}};
       if (!r.hidden.empty()) rung["hidden"] = r.hidden;
+      if (!r.lead.empty()) rung["lead"] = r.lead;
       rungs.push_back(std::move(rung));
     }
     parts.push_back({{"name", p.name}, {"rungs", rungs}});

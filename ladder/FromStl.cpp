@@ -471,6 +471,19 @@ void drawWritten(const VerifiedProgram &p, const RungRange &rr, const std::vecto
 
 } // namespace
 
+std::vector<std::string> leadLines(const DialectText *d, std::string_view written) {
+  std::vector<std::string> lead;
+  if (!d || !d->markerLine) return lead;
+  for (size_t nl; (nl = written.find('\n')) != std::string_view::npos;
+       written.remove_prefix(nl + 1)) {
+    std::string_view line = written.substr(0, nl);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (!d->markerLine(line)) break;
+    lead.emplace_back(line);
+  }
+  return lead;
+}
+
 Element stmtElement(const Stmt &s, const DialectText *d, const TargetProfile *profile,
                     const std::vector<Symbol> &symbols) {
   Element e;
@@ -539,6 +552,8 @@ Networks fromProgram(const VerifiedProgram &prog) {
       elems[static_cast<size_t>(i)].before = std::move(before[static_cast<size_t>(i)]);
     std::vector<Element> mine(elems.begin() + r.begin, elems.begin() + r.end);
     drawWritten(prog, rr, mine, rung);
+    if (!mine.empty() && mine[0].role == WrittenRole::First)
+      rung.lead = leadLines(prog.dialect, mine[0].written);
     if (rr.kind == RungRange::Kind::Marker) {
       rung.kind = Rung::Kind::Marker;
       rung.stmts = std::move(mine);

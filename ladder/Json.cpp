@@ -315,7 +315,17 @@ public:
   bool rung(const json &j, const std::string &path, Rung &r) {
     if (!j.is_object()) return fail(path, "expected an object");
     std::string kind;
-    if (!str(j, "kind", path, kind) || !strings(j, "comment", path, r.comment)) return false;
+    if (!str(j, "kind", path, kind) || !strings(j, "comment", path, r.comment) ||
+        !strings(j, "lead", path, r.lead))
+      return false;
+    // Only the lines the dialect writes between rungs (FANUC COME, NOP): networks -> program
+    // text prints them as they are.
+    for (size_t i = 0; i < r.lead.size(); ++i)
+      if (!d_ || !d_->markerLine || !d_->markerLine(r.lead[i]))
+        return fail(path + ".lead[" + std::to_string(i) + "]",
+                    quoteToken(r.lead[i], 40) + " is no line the " +
+                        std::string(d_ ? d_->name : "") +
+                        " dialect writes between rungs (FANUC COME, NOP)");
     if (kind == "ladder") {
       r.kind = Rung::Kind::Ladder;
       if (!j.contains("network")) return fail(path, "missing \"network\"");
@@ -383,6 +393,7 @@ std::string writeJson(const Networks &nets, std::string_view source) {
     for (size_t i = 0; i < p.rungs.size(); ++i) {
       const Rung &r = p.rungs[i];
       json jr{{"number", i + 1}, {"kind", kindName(r.kind)}, {"comment", r.comment}};
+      if (!r.lead.empty()) jr["lead"] = r.lead;
       if (r.kind == Rung::Kind::Ladder) {
         jr["network"] = nodeJson(r.network, nets.text);
       } else {

@@ -325,6 +325,7 @@ RungLayout layoutRung(const Rung &rung, int number, const std::vector<Symbol> &s
   RungLayout r;
   r.number = number;
   r.comment = rung.comment;
+  r.lead = rung.lead;
   // As the user wrote it where the dialect says so (Rung::drawing), else as the statements are.
   const Rung::Drawing *d = rung.drawing.empty() ? nullptr : &rung.drawing[0];
   const Rung::Kind kind = d ? d->kind : rung.kind;

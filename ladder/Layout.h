@@ -45,6 +45,8 @@ struct RungLayout {
   int cols = 0, rows = 0;           ///< grid size between the rails
   std::vector<Cell> cells;
   std::vector<StmtId> hidden; ///< statements the front end added on its own: drawn by no cell
+  /// Markers drawn before the rung (Rung::lead: FANUC `COME` written before it).
+  std::vector<std::string> lead;
 };
 
 struct PartLayout {

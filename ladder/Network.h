@@ -38,6 +38,9 @@ struct Element {
   /// the ids of the other statements the front end made of it (drawn by this element).
   DrawAs form = DrawAs::Plain;
   std::vector<StmtId> covers;
+  /// Set by toStatements on a rung's first statement: the rung's Rung::lead, which networks ->
+  /// program text prints before it when it is printed from its statements.
+  std::vector<std::string> lead;
 };
 
 enum class NodeKind : uint8_t { Series, Parallel, FanOut, Contact, Coil, Box };
@@ -88,6 +91,12 @@ struct Rung {
     std::vector<StmtId> hidden;
   };
   std::vector<Drawing> drawing; ///< none or one
+  /// Lines written before the rung's first statement that made none of their own (FANUC
+  /// `COME`, `NOP`; DialectText::markerLine), as written: drawn as markers before the rung, and
+  /// printed before it when networks -> program text prints the rung from its statements (its
+  /// first statement's `written` holds them too while that instruction is unchanged). The JSON's
+  /// rung "lead" (docs/ladder-json.md).
+  std::vector<std::string> lead;
 };
 
 /// A program part: "init", "PLC1", "PLC2" or a subroutine "S<n>".
@@ -112,6 +121,10 @@ struct Networks {
   /// parts' networks; the networks stay the program (JSON, statements).
   std::vector<GridPartDrawing> grids;
 };
+
+/// The lines at the start of an instruction's written text (Element::written) that made no
+/// statement and stand between rungs (DialectText::markerLine: FANUC `COME`): a rung's lead.
+std::vector<std::string> leadLines(const DialectText *d, std::string_view written);
 
 /// Networks of a verified program: every logic rung that has a network whose canonical STL
 /// (with the recorded join/entry hints) is exactly its statements becomes Ladder, the others Stl.

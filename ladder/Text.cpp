@@ -244,6 +244,7 @@ std::string renderText(const Networks &nets) {
       const Rung::Drawing *d = rung.drawing.empty() ? nullptr : &rung.drawing[0];
       const Rung::Kind kind = d ? d->kind : rung.kind;
       const std::vector<Element> &stmts = d ? d->stmts : rung.stmts;
+      for (const std::string &m : rung.lead) out += "--- " + m + " ---\n";
       if (kind == Rung::Kind::Marker) {
         for (const std::string &c : rung.comment) out += comment(c) + "\n";
         for (const Element &e : stmts) out += "--- " + stmtText(e) + " ---\n";

@@ -214,6 +214,7 @@ bool toStatements(const Networks &nets, std::vector<Element> &out, std::string &
       if (out.size() > first) {
         auto &b = out[first].before;
         b.insert(b.begin(), rung.comment.begin(), rung.comment.end());
+        out[first].lead = rung.lead;
       }
     }
   }

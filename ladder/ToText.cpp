@@ -35,6 +35,12 @@ std::vector<Group> groupsOf(const VerifiedProgram &src, int32_t lineCount, int32
     if (!c.trailing && c.stmt >= 0 && static_cast<size_t>(c.stmt) <= n)
       commentLine[static_cast<size_t>(c.stmt)] =
           std::min(commentLine[static_cast<size_t>(c.stmt)], c.line);
+  // A line that made no statement (FANUC COME) starts the rung whose first instruction it went
+  // with: deleting or printing anew the rung before keeps it.
+  for (const WrittenInstr &w : src.written)
+    if (w.line > 0 && w.first >= 0 && static_cast<size_t>(w.first) < n)
+      commentLine[static_cast<size_t>(w.first)] =
+          std::min(commentLine[static_cast<size_t>(w.first)], w.line);
   std::vector<Group> out;
   int32_t lastLine = 0; // the last line of any statement so far
   for (const RungRange &r : src.rungs) {
@@ -154,11 +160,17 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     std::string err;
     if (!out.empty() && out.back() != '\n') out += '\n';
     const size_t before = out.size();
+    // The lines written before the rung that made no statement (Rung::lead: FANUC COME), where
+    // its first instruction is printed from its statements (its written text would hold them).
+    const std::vector<std::string> &lead = a[from].lead;
+    const bool leads = a[from].role != WrittenRole::First;
+    if (leads)
+      for (const std::string &l : lead) out += l + "\n";
     if (d->printStmts(t, out, err)) {
       if (origins) {
         // A line per comment line before a statement (given to that statement) and one per
         // statement; a dialect's extra lines (an IL closing parenthesis) go to the last.
-        std::vector<size_t> plan;
+        std::vector<size_t> plan(leads ? lead.size() : 0, from);
         for (size_t k = from; k < to; ++k) {
           plan.insert(plan.end(), a[k].before.size(), k);
           plan.push_back(k);
@@ -214,6 +226,10 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
     if (!same)
       for (size_t k = i; k < e; ++k)
         if (a[k].role != WrittenRole::None) {
+          // Its lines that made no statement (FANUC COME) still stand before it, from a JSON
+          // without the rung's "lead" too.
+          if (a[k].role == WrittenRole::First && a[k].lead.empty())
+            a[k].lead = leadLines(d, a[k].written);
           a[k].role = WrittenRole::None;
           a[k].written.clear();
         }

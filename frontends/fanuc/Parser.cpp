@@ -169,10 +169,11 @@ public:
       basic(*b, toks);
       // A WRT inside COM..COME is the IR's CommonCoil: printed back as written.
       const int32_t n = stmtCount() - next;
-      record(next, joined(toks), n > 1 || (n == 1 && prog_.stmts.back().op != b->op));
+      record(next, joined(toks), n > 1 || (n == 1 && prog_.stmts.back().op != b->op),
+             toks[0].loc.line);
     } else if (isMarkerName(head)) {
       marker(head, toks);
-      record(next, joined(toks), false);
+      record(next, joined(toks), false, toks[0].loc.line);
     } else if (head == "SUB" || detail::isFunctionalName(head)) {
       detail::Functional f;
       f.head = toks[0];
@@ -206,7 +207,7 @@ public:
     std::string text(f.head.text);
     if (!f.number.text.empty()) text += " " + std::string(f.number.text);
     for (const Token &t : f.params) text += " " + std::string(t.text);
-    record(pendingFirst_, std::move(text), !printsAsWritten(f, pendingFirst_));
+    record(pendingFirst_, std::move(text), !printsAsWritten(f, pendingFirst_), f.head.loc.line);
     if (pendingComment_ && static_cast<int32_t>(prog_.stmts.size()) > pendingFirst_)
       prog_.comments.push_back({f.head.loc.line, pendingFirst_, true, *pendingComment_});
     pendingComment_.reset();
@@ -256,18 +257,21 @@ public:
   /// The statements from `first` on came from the instruction written `text`: recorded as
   /// written when `need`. An instruction with no statement of its own (COME, NOP) goes with
   /// the next one that has statements, which is then recorded as written.
-  void record(int32_t first, std::string text, bool need) {
+  void record(int32_t first, std::string text, bool need, int32_t line) {
     const int32_t n = stmtCount() - first;
     if (n <= 0) {
+      if (pendingWritten_.empty()) pendingLine_ = line;
       pendingWritten_ += (pendingWritten_.empty() ? "" : "\n") + text;
       return;
     }
+    int32_t from = 0;
     if (!pendingWritten_.empty()) {
       text = pendingWritten_ + "\n" + text;
       pendingWritten_.clear();
       need = true;
+      from = pendingLine_;
     }
-    if (need) prog_.written.push_back({first, n, std::move(text)});
+    if (need) prog_.written.push_back({first, n, std::move(text), from});
   }
 
   void finish(int32_t lastLine) {
@@ -594,6 +598,7 @@ private:
   std::optional<detail::Functional> pending_;
   std::optional<std::string> pendingComment_;
   std::string pendingWritten_; ///< instructions without statements so far (record())
+  int32_t pendingLine_ = 0;    ///< the line of the first of them
   int32_t pendingFirst_ = 0;
   std::map<std::pair<char, int64_t>, SourceLoc> numbers_;
   detail::FlowRegions regions_;
@@ -726,6 +731,17 @@ std::string drawWritten(std::string_view written) {
   return out;
 }
 
+/// COME and NOP make no statement (reference 6.1): a FANUC ladder draws them between the rungs.
+bool markerLine(std::string_view line) {
+  std::vector<frontend::Word> w;
+  std::string_view comment;
+  bool hasComment = false;
+  frontend::splitLine(line, w, comment, hasComment);
+  if (w.empty()) return false;
+  const std::string head = detail::upper(std::string(w[0].text));
+  return head == "COME" || head == "NOP";
+}
+
 const DialectText &dialectText() {
   static constexpr DialectText kText{"fanuc",
                                      &spell,
@@ -738,7 +754,8 @@ const DialectText &dialectText() {
                                      &detail::drawStatements,
                                      nullptr,
                                      nullptr,
-                                     &drawWritten};
+                                     &drawWritten,
+                                     &markerLine};
   return kText;
 }
 

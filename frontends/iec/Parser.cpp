@@ -45,11 +45,12 @@ void IlParser::run(std::string_view text) {
   insertPresets();
 }
 
-void IlParser::record(size_t first, std::string_view code) {
+void IlParser::record(size_t first, std::string_view code, int32_t line) {
   const size_t n = prog_.stmts.size() - first;
   while (!code.empty() && blank(code.front())) code.remove_prefix(1);
   while (!code.empty() && blank(code.back())) code.remove_suffix(1);
   if (n == 0) {
+    if (pendingWritten_.empty()) pendingLine_ = line;
     pendingWritten_ += (pendingWritten_.empty() ? "" : "\n") + std::string(code);
     return;
   }
@@ -66,10 +67,12 @@ void IlParser::record(size_t first, std::string_view code) {
     }
   }
   if (!need) return;
+  const int32_t from = pendingWritten_.empty() ? 0 : pendingLine_;
   std::string text =
       pendingWritten_.empty() ? std::string(code) : pendingWritten_ + "\n" + std::string(code);
   pendingWritten_.clear();
-  prog_.written.push_back({static_cast<int32_t>(first), static_cast<int32_t>(n), std::move(text)});
+  prog_.written.push_back(
+      {static_cast<int32_t>(first), static_cast<int32_t>(n), std::move(text), from});
 }
 
 void IlParser::insertPresets() {
@@ -114,7 +117,7 @@ void IlParser::handleLine(std::string_view line, int32_t lineNo) {
     if (!blank(c)) hasCode = true;
   if (hasCode) {
     statement(code, lineNo);
-    record(before, code);
+    record(before, code, lineNo);
   }
   if (hadComment) {
     while (!comment.empty() && blank(comment.back())) comment.pop_back();

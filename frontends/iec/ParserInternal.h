@@ -82,7 +82,7 @@ private:
   /// bits of N / XOR / OPEN / SHORT / JMPCN / RETCN and the block inputs, END's jump, a block's
   /// run). A line without statements (BLK, OUT_BLK, END_BLK, CONFIG, NOP) goes with the next line
   /// that has statements, which is then recorded as written.
-  void record(size_t first, std::string_view code);
+  void record(size_t first, std::string_view code, int32_t line);
   void statement(const std::string &code, int32_t lineNo);
   void instruction(const std::string &mnem, std::optional<char> paren, std::string_view text,
                    SourceLoc loc, SourceLoc opLoc);
@@ -161,6 +161,7 @@ private:
   bool inComment_ = false;
   SourceLoc commentLoc_;
   std::string pendingWritten_;  ///< lines without statements so far (record())
+  int32_t pendingLine_ = 0;     ///< the line of the first of them
   size_t lastFirst_ = SIZE_MAX; ///< the first statement of the last line that had statements
   std::string lastText_;        ///< that line as written
 };

@@ -1141,7 +1141,11 @@
         } else if (r.grid && isEmptyGrid(r.grid)) {
           return;
         } else {
-          rungs.push({ number: rungs.length + 1, kind: 'ladder', comment: r.comment, network: r.net });
+          const nr = { number: rungs.length + 1, kind: 'ladder', comment: r.comment, network: r.net };
+          // The lines written before it that made no statement (FANUC COME) stay before it.
+          const lead = r.orig >= 0 && run && run.rungs[r.orig] ? run.rungs[r.orig].lead : null;
+          if (lead) nr.lead = lead;
+          rungs.push(nr);
         }
         where[p.name].push(r);
       });

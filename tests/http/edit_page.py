@@ -22,6 +22,7 @@ its stimulus (`serve PROGRAM --http`, the stimulus file's steps written in order
   an NC contact (X0.1, %I0.4, locked to 1) inserted just before the output by mouse and keys,
   更新修改 confirmed, the output goes 1 -> 0, the file holds the new line (`AND.NOT X0.1`,
   `ANDN %I0.4`).
+- a FANUC program with COM..COME: the rung after COME edited the same way keeps COME before it.
 
 Screenshots of every step go to OUTDIR/*.png. Bounded: every wait has a deadline.
 Usage: edit_page.py LADDERJIT EXAMPLES OUTDIR"""
@@ -768,6 +769,18 @@ hnc8()
 parts()
 other("fanuc", "fanuc_coolant.pmc", "fanuc_coolant.stim", ["X0.0=0", "X0.1=1"], "R0.7", "X0.1", "AND.NOT X0.1",
       delete=("R1.0", "M08_ON", ["F10=8", "F7.0=1"], ["F7.0=0"]))
+# FANUC COM..COME (fanuc-pmc.md 6.1): COME makes no statement and is drawn before the rung after
+# it; that rung edited in the page (its converted grid carries no written text) keeps COME
+# before it through the rung's "lead", else the update would be refused ("COM on line 2 has no
+# COME before END1").
+come = os.path.join(out, "come-src")
+os.makedirs(come)
+with open(os.path.join(come, "come.pmc"), "w") as f:
+    f.write("RD X0.0\nCOM\nRD X0.1\nWRT R0.0\nCOME\nRD X0.2\nWRT R1.0\nEND1\nEND2\nEND\n")
+with open(os.path.join(come, "come.stim"), "w") as f:
+    f.write("@0 X0.2=1\n")
+other("fanuc-come", os.path.join(come, "come.pmc"), os.path.join(come, "come.stim"), ["X0.3=1"], "R1.0",
+      "X0.3", "AND.NOT X0.3")
 other("iec", "conveyor.il", "conveyor.stim", ["%I0.0=1", "%I0.1=1", "%I0.3=1", "%I0.4=1"], "%Q0.0", "%I0.4", "ANDN %I0.4")
 print("%.0f s" % (time.time() - t_start))
 httputil.finish()

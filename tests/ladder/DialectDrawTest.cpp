@@ -208,6 +208,29 @@ TEST(LadderDialect, FanucSubNumberDrawnByName) {
   EXPECT_NE(writeJson(fromProgram(*p)).find("SUB 25 0001 D0 100 R10"), std::string::npos);
 }
 
+// COME and NOP make no statement (fanuc-pmc.md 6.1): drawn as the markers a FANUC ladder shows
+// between the rungs, before the rung they were written before (the layout's "lead").
+TEST(LadderDialect, FanucComeDrawnBetweenRungs) {
+  const char *pmc = "RD X0.0\nCOM\nRD X0.1\nWRT Y0.0\nCOME\nRD X0.3\nWRT Y0.2\nNOP\n"
+                    "RD X0.4\nWRT Y0.3\nEND1\nEND2\nEND\n";
+  std::optional<Layout> fl = fanucLayout(pmc);
+  ASSERT_TRUE(fl);
+  const std::vector<RungLayout> &rs = fl->parts[0].rungs;
+  ASSERT_EQ(rs.size(), 5u); // COM, three coil rungs, END1
+  EXPECT_TRUE(rs[1].lead.empty());
+  EXPECT_EQ(rs[2].lead, std::vector<std::string>{"COME"});
+  EXPECT_EQ(rs[3].lead, std::vector<std::string>{"NOP"});
+  EXPECT_NE(layoutJson(*fl).find("\"lead\""), std::string::npos);
+  EXPECT_NE(renderSvg(*fl).find(">COME<"), std::string::npos);
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(pmc, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  const std::string text = renderText(fromProgram(*p));
+  EXPECT_NE(text.find("-( )- Y0.0\n--- COME ---\nrung 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("-( )- Y0.2\n--- NOP ---\nrung 4\n"), std::string::npos) << text;
+}
+
 // An HNC-8 constant written in hex is drawn as written (`WAND R0 0xE0 R0`, lathe_panel.stl's
 // mode reset), not as the IR's 224; a decimal one needs no record.
 TEST(LadderDialect, Hnc8HexConstantAsWritten) {

@@ -121,6 +121,111 @@ TEST(WrittenText, FanucEditedCalluPrintsAsCallu) {
       << d2.render() << text;
 }
 
+// COM / COME (fanuc-pmc.md 6.1, "COM: when ACT = 0, coils up to COME are written 0"): COME makes
+// no statement of its own. It stands between two rungs and stays there whichever of them is
+// edited: the rung before it printed anew (COME must not go with it), the rung after it printed
+// from its statements (COME stays before it), through the JSON's written text or its rung "lead"
+// as the page editor sends it (a converted grid carries no written text). Losing it would be the
+// front end's error "COM on line 2 has no COME before END1".
+constexpr const char *kCom = "RD X0.0\n"
+                             "COM\n"
+                             "RD X0.1\n"
+                             "WRT Y0.0\n"
+                             "RD X0.2\n"
+                             "WRT Y0.1\n"
+                             "COME\n"
+                             "RD X0.3\n"
+                             "WRT Y0.2\n"
+                             "END1\n"
+                             "END2\n"
+                             "END\n";
+
+/// kCom's networks, `edit`ed, printed back as FANUC text (empty when refused, `error` says why).
+std::string comEdited(const std::function<void(Networks &)> &edit, std::string &error) {
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(kCom, "t.pmc", VerifyOptions{}, d, nullptr);
+  EXPECT_TRUE(p) << d.render();
+  if (!p) return {};
+  Networks back;
+  EXPECT_TRUE(readJson(writeJson(fromProgram(*p)), back, error, *p->dialect)) << error;
+  edit(back);
+  std::string text;
+  if (!programText(back, *p, kCom, text, error)) return {};
+  Diagnostics d2("again.pmc");
+  if (!pipeline::compilePmc(text, "again.pmc", VerifyOptions{}, d2, nullptr)) {
+    error = d2.render();
+    return {};
+  }
+  return text;
+}
+
+/// The contact that starts rung `r` of PLC1.
+Element &firstContact(Networks &n, size_t r) {
+  return n.parts[0].rungs[r].network.children[0].elem;
+}
+
+TEST(WrittenText, FanucComeStaysBetweenItsRungs) {
+  std::string error;
+  // The rung's lead, as the JSON and the drawing give it.
+  comEdited(
+      [](Networks &n) {
+        ASSERT_EQ(n.parts[0].rungs.size(), 5u); // COM, 3 coil rungs, END1
+        EXPECT_EQ(n.parts[0].rungs[3].lead, std::vector<std::string>{"COME"});
+        EXPECT_TRUE(n.parts[0].rungs[2].lead.empty());
+      },
+      error);
+  // The rung before COME edited.
+  std::string text = comEdited([](Networks &n) { firstContact(n, 2).operands[0] = "X0.5"; }, error);
+  EXPECT_EQ(text, "RD X0.0\nCOM\nRD X0.1\nWRT Y0.0\nRD X0.5\nWRT Y0.1\nCOME\nRD X0.3\nWRT Y0.2\n"
+                  "END1\nEND2\nEND\n")
+      << error;
+  // The rung after COME edited in the JSON (its written text "COME / RD X0.3" no longer holds).
+  text = comEdited([](Networks &n) { firstContact(n, 3).operands[0] = "X0.4"; }, error);
+  EXPECT_NE(text.find("WRT Y0.1\nCOME\nRD X0.4\n"), std::string::npos) << text << error;
+  // Both, the second as the page editor sends it: no written text, the rung's lead.
+  text = comEdited(
+      [](Networks &n) {
+        firstContact(n, 2).operands[0] = "X0.5";
+        Element &e = firstContact(n, 3);
+        e.operands[0] = "X0.4";
+        e.role = WrittenRole::None;
+        e.written.clear();
+      },
+      error);
+  EXPECT_NE(text.find("RD X0.5\nWRT Y0.1\nCOME\nRD X0.4\n"), std::string::npos) << text << error;
+  // Without the lead either, COME is gone: refused by the front end, never a different program.
+  text = comEdited(
+      [](Networks &n) {
+        firstContact(n, 2).operands[0] = "X0.5";
+        Element &e = firstContact(n, 3);
+        e.role = WrittenRole::None;
+        e.written.clear();
+        n.parts[0].rungs[3].lead.clear();
+      },
+      error);
+  EXPECT_EQ(text, "");
+  EXPECT_NE(error.find("has no COME"), std::string::npos) << error;
+}
+
+TEST(WrittenText, FanucLeadTakesOnlyLinesBetweenRungs) {
+  Diagnostics d("t.pmc");
+  std::optional<VerifiedProgram> p =
+      pipeline::compilePmc(kCom, "t.pmc", VerifyOptions{}, d, nullptr);
+  ASSERT_TRUE(p) << d.render();
+  std::string json = writeJson(fromProgram(*p));
+  const size_t at = json.find("\"COME\"", json.find("\"lead\""));
+  ASSERT_NE(at, std::string::npos) << json;
+  json.replace(at, 6, "\"WRT Y0.7\"");
+  Networks back;
+  std::string error;
+  EXPECT_FALSE(readJson(json, back, error, *p->dialect));
+  EXPECT_NE(error.find("rungs[3].lead[0]: 'WRT Y0.7' is no line the fanuc dialect writes between "
+                       "rungs"),
+            std::string::npos)
+      << error;
+}
+
 // IL: XOR (modicon-neza.md 2.6) and N (2.7) are expanded with scratch bits, END / ENDC (4) into
 // a jump to the end of the main program; each prints as written.
 constexpr const char *kIl = "LD %I0.1\n"
