@@ -49,6 +49,11 @@ TEST(Usage, HelpExitsZero) {
   for (const char *opt : {"--engine", "--ticks", "--period-ms", "--plc2-nvalue", "--set",
                           "--stimulus", "--watch", "--format", "--dump", "--params"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  // Every dialect and the extension that means it (CLI.md: PROGRAM's dialect by extension), in
+  // the tool's description and --dialect's help; the help once named three of the four.
+  for (const char *d : {"hnc8", ".stl", "fanuc", ".pmc", "iec", ".il", "classicladder", ".clp"})
+    EXPECT_NE(r.out.find(d), std::string::npos) << d << "\n" << r.out;
+  EXPECT_NE(runCli({"--help"}).out.find("ClassicLadder projects (.clp)"), std::string::npos);
 }
 
 TEST(Usage, ServeValidatesBeforeRunning) {

@@ -63,7 +63,7 @@ def check(root):
         shipped = folder not in ('tests', 'bench') and f != 'tests/lint/structure_lint.py'
         for no, line in enumerate(lines, 1):
             where = f'{f}:{no}'
-            if shipped and '../shared' in line:
+            if shipped and SHARED.search(line):
                 problems.append(f'{where}: cites ../shared (a clone has none; cite the manual by '
                                 f'name and section)')
             if folder != 'tests' and re.search(r'\blj::io\b|namespace\s+lj::io\b', line):
@@ -99,6 +99,10 @@ def check(root):
     return problems
 
 
+# The workspace's shared folder by any path: ../shared/... or the absolute /work/shared/...
+SHARED = re.compile(r'\.\./shared\b|/work/shared\b')
+
+
 def self_test():
     cases = {
         'ir/A.h': '#include "frontends/hnc8/Symbols.h"\n',
@@ -108,6 +112,7 @@ def self_test():
         'formats/E.cpp': '#include "engines/AotLoader.h"\n',
         'jit/F.cpp': '#include "engines/AotLoader.h"\n',
         'docs/g.md': 'see ../shared/reference/hnc8-core.md\n',
+        'tools/J.cpp': '// exactly as /work/shared/spec/CLI.md\n',
         'docs/unlisted.md': 'a page nobody can find\n',
         'docs/ok.md': 'listed\n',
         'README.md': '- `docs/ok.md`, `docs/g.md`: listed\n',

@@ -1,8 +1,10 @@
-// The `ladderjit` driver: CLI11 subcommands exactly as /work/shared/spec/CLI.md; the work is in
-// the command functions (Commands.h). Usage errors exit 2, never a crash or an exception.
+// The `ladderjit` driver: CLI11 subcommands exactly as the command-line contract (CLI.md; README
+// "Commands"); the work is in the command functions (Commands.h). Usage errors exit 2, never a
+// crash or an exception.
 #include "tools/ladderjit/Commands.h"
 
 #include "ir/Diagnostics.h"
+#include "pipeline/Dialects.h"
 
 #include <CLI/CLI.hpp>
 
@@ -55,15 +57,27 @@ CLI::Option *lastWins(CLI::Option *o) {
   return o->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 }
 
-const char *const kProgramHelp = "STL file, plc.dit container or ladder JSON (.json)";
-const char *const kDialectHelp = "dialect of PROGRAM: hnc8 | fanuc | iec (default: by extension, "
-                                 ".stl/.dit hnc8, .pmc fanuc, .il iec, .json as it names; "
-                                 "other names hnc8); this build has hnc8, fanuc and iec";
+const char *const kProgramHelp = "program file (.stl, plc.dit, .pmc, .il, .clp) or its ladder JSON "
+                                 "(.json)";
+
+/// --dialect's help, from the dialects of this build and their extensions.
+std::string dialectHelp() {
+  std::string names, exts;
+  for (const lj::pipeline::Dialect *d : lj::pipeline::allDialects()) {
+    names += (names.empty() ? "" : " | ") + std::string(d->name);
+    std::string e;
+    for (const char *x : d->extensions) e += (e.empty() ? "" : "/") + std::string(x);
+    exts += (exts.empty() ? "" : ", ") + e + " " + d->name;
+  }
+  return "dialect of PROGRAM: " + names + " (default: by extension, " + exts +
+         ", .json as it names; other names " + lj::pipeline::defaultDialect().name + ")";
+}
 
 int mainImpl(int argc, char **argv) {
   CLI::App app{"ladderjit: CNC PLC programs in HNC-8 STL (.stl, plc.dit), FANUC 0i-D PMC "
-               "mnemonics (.pmc) and IEC 61131-3 IL of the Modicon Neza (.il), or their ladder "
-               "network JSON, checked, drawn as ladder and run in a reference interpreter, an LLVM "
+               "mnemonics (.pmc), IEC 61131-3 IL of the Modicon Neza (.il) and LinuxCNC "
+               "ClassicLadder projects (.clp), or their ladder network JSON, checked, drawn as "
+               "ladder and run in a reference interpreter, an LLVM "
                "JIT or an AOT shared object; `serve` is the real-time runtime with a live ladder "
                "view, and the HAL component ladderjit.so runs a compiled program in LinuxCNC "
                "(docs/linuxcnc.md)",
@@ -79,7 +93,7 @@ int mainImpl(int argc, char **argv) {
 
   CheckArgs check;
   CLI::App *cCheck = app.add_subcommand("check", "parse and verify; print diagnostics");
-  lastWins(cCheck->add_option("--dialect", check.dialect, kDialectHelp));
+  lastWins(cCheck->add_option("--dialect", check.dialect, dialectHelp()));
   cCheck->add_option("PROGRAM", check.program, kProgramHelp)->required();
   cCheck->add_flag("--print", check.print, "print the verified program");
   CLI::Option *checkNvalue = lastWins(
@@ -88,7 +102,7 @@ int mainImpl(int argc, char **argv) {
 
   RunArgs run;
   CLI::App *cRun = app.add_subcommand("run", "simulate ticks and print the watch table");
-  lastWins(cRun->add_option("--dialect", run.dialect, kDialectHelp));
+  lastWins(cRun->add_option("--dialect", run.dialect, dialectHelp()));
   cRun->add_option("PROGRAM", run.program, kProgramHelp)->required();
   lastWins(cRun->add_option("--engine", run.engine, "interp | jit | aot:PATH.so (default jit)"));
   lastWins(cRun->add_option("--ticks", run.ticks, "number of ticks (default 1)")->check(kUnsigned));
@@ -130,7 +144,7 @@ int mainImpl(int argc, char **argv) {
 
   EmitArgs emit;
   CLI::App *cEmit = app.add_subcommand("emit-llvm", "print the LLVM IR the JIT would compile");
-  lastWins(cEmit->add_option("--dialect", emit.dialect, kDialectHelp));
+  lastWins(cEmit->add_option("--dialect", emit.dialect, dialectHelp()));
   cEmit->add_option("PROGRAM", emit.program, kProgramHelp)->required();
   lastWins(cEmit->add_option("-O", emit.optLevel, "optimization level 0..3 (default 2)")
                ->check(CLI::Range(0, 3)));
@@ -142,7 +156,7 @@ int mainImpl(int argc, char **argv) {
 
   DitArgs dit;
   CLI::App *cDit = app.add_subcommand("dit", "write a plc.dit container from an STL file");
-  lastWins(cDit->add_option("--dialect", dit.dialect, kDialectHelp));
+  lastWins(cDit->add_option("--dialect", dit.dialect, dialectHelp()));
   cDit->add_option("PROGRAM", dit.program, "STL file")->required();
   lastWins(cDit->add_option("--symbols", dit.symbols, "symbols file, 'NAME ADDR [comment]' lines"));
   lastWins(cDit->add_option("--params", dit.params, "P values, 'P12=345' per line"));
@@ -156,7 +170,7 @@ int mainImpl(int argc, char **argv) {
 
   FuzzArgs fz;
   CLI::App *cFuzz = app.add_subcommand("fuzz", "differential test: interpreter against JIT");
-  lastWins(cFuzz->add_option("--dialect", fz.dialect, kDialectHelp));
+  lastWins(cFuzz->add_option("--dialect", fz.dialect, dialectHelp()));
   lastWins(cFuzz->add_option("--seed", fz.seed, "random seed (default 1)")->check(kUnsigned));
   lastWins(cFuzz->add_option("--programs", fz.programs, "number of programs (default 1000)")
                ->check(kUnsigned));
@@ -181,7 +195,7 @@ int mainImpl(int argc, char **argv) {
   BenchArgs bn;
   CLI::App *cBench = app.add_subcommand(
       "bench", "compile phases and scan times of PROGRAM per engine and tier (docs/bench.md)");
-  lastWins(cBench->add_option("--dialect", bn.dialect, kDialectHelp));
+  lastWins(cBench->add_option("--dialect", bn.dialect, dialectHelp()));
   cBench->add_option("PROGRAM", bn.program, kProgramHelp);
   cBench->add_flag("--corpus", bn.corpus,
                    "instead of PROGRAM: every shape of the benchmark shape corpus on jit-opt, aot, "
@@ -227,7 +241,7 @@ int mainImpl(int argc, char **argv) {
   LadderArgs lad;
   CLI::App *cLadder = app.add_subcommand(
       "ladder", "the program as ladder networks (text, json) or drawn (svg, html, layout json)");
-  lastWins(cLadder->add_option("--dialect", lad.dialect, kDialectHelp));
+  lastWins(cLadder->add_option("--dialect", lad.dialect, dialectHelp()));
   cLadder->add_option("PROGRAM", lad.program, kProgramHelp)->required();
   lastWins(cLadder->add_option("--format", lad.format,
                                "text | json | svg | html | layout (default text)"));
@@ -241,7 +255,7 @@ int mainImpl(int argc, char **argv) {
   CLI::App *cCompile =
       app.add_subcommand("compile", "ahead-of-time build to a shared object with the C ABI");
   cCompile->add_option("PROGRAM", comp.program, kProgramHelp)->required();
-  lastWins(cCompile->add_option("--dialect", comp.dialect, kDialectHelp));
+  lastWins(cCompile->add_option("--dialect", comp.dialect, dialectHelp()));
   lastWins(cCompile->add_option("-o,--output", comp.output, "shared object to write"))->required();
   lastWins(cCompile->add_option("--cpu", comp.cpu, "host | generic (default host)"));
   CLI::Option *compNvalue =
@@ -264,7 +278,7 @@ int mainImpl(int argc, char **argv) {
 
   ServeArgs serve;
   CLI::App *cServe = app.add_subcommand("serve", "real-time runtime (docs/serve.md)");
-  lastWins(cServe->add_option("--dialect", serve.dialect, kDialectHelp));
+  lastWins(cServe->add_option("--dialect", serve.dialect, dialectHelp()));
   cServe->add_option("PROGRAM", serve.program, kProgramHelp)->required();
   lastWins(
       cServe->add_option("--engine", serve.engine, "jit | interp | aot:PATH.so (default jit)"));
