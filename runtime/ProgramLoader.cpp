@@ -7,6 +7,7 @@
 #include "ir/Trace.h"
 #include "pipeline/ProgramFile.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace lj::rt {
@@ -24,6 +25,22 @@ std::vector<StmtId> stmtsOnLine(const VerifiedProgram &prog, int32_t line) {
   return ids;
 }
 
+/// The contact instructions as the program's dialect writes them (HNC-8 `LD LDI AND ...`,
+/// FANUC `RD RD.NOT AND ...`, IL `LD LDN AND ...`), each word once.
+static std::string contactWords(const DialectText *d) {
+  std::string out;
+  std::vector<std::string_view> seen;
+  for (int k = 0; k < kOpCount; ++k) {
+    const Op op = static_cast<Op>(k);
+    if (!isContact(op) || (d && !spells(*d, op))) continue;
+    const std::string_view w = spelling(d, op);
+    if (std::find(seen.begin(), seen.end(), w) != seen.end()) continue;
+    seen.push_back(w);
+    out += (out.empty() ? "" : " ") + std::string(w);
+  }
+  return out;
+}
+
 bool checkForces(const VerifiedProgram &prog, ContactForces &forces, std::string &error,
                  std::vector<std::string> *dropped) {
   for (auto it = forces.begin(); it != forces.end();) {
@@ -34,8 +51,7 @@ bool checkForces(const VerifiedProgram &prog, ContactForces &forces, std::string
     } else if (!isContact(st->op)) {
       why = prog.file + ":" + std::to_string(st->loc.line) + ": statement id " +
             std::to_string(it->first) + " is '" + std::string(spelling(prog.dialect, st->op)) +
-            "', not a contact (only LD LDI AND ANI OR ORI LDP LDF ANDP ANDF ORP ORF can be "
-            "forced)";
+            "', not a contact (only " + contactWords(prog.dialect) + " can be forced)";
     }
     if (why.empty()) {
       ++it;

@@ -26,9 +26,9 @@ namespace {
 // A temporary STL file.
 class TempProgram {
 public:
-  explicit TempProgram(const std::string &text) {
+  explicit TempProgram(const std::string &text, const std::string &ext = ".stl") {
     path_ = (std::filesystem::temp_directory_path() /
-             ("ljrt-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++) + ".stl"))
+             ("ljrt-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++) + ext))
                 .string();
     write(text);
   }
@@ -385,6 +385,11 @@ TEST(Executive, ForceOnANonContactIdIsRefused) {
                                                " is 'OUT', not a contact"),
             std::string::npos)
       << r.dump();
+  // The contacts that can be forced, named in the dialect's words (DIALECT.md 2.1).
+  EXPECT_NE(r["error"].get<std::string>().find(
+                "(only LD LDI LDP LDF AND ANI OR ORI ANDP ANDF ORP ORF can be forced)"),
+            std::string::npos)
+      << r.dump();
   r = ctl.handle({{"cmd", "force"}, {"id", 4000}, {"mode", "on"}});
   EXPECT_FALSE(r["ok"].get<bool>());
   EXPECT_NE(r["error"].get<std::string>().find("statement id 4000 does not exist"),
@@ -393,6 +398,29 @@ TEST(Executive, ForceOnANonContactIdIsRefused) {
   r = ctl.handle({{"cmd", "force"}, {"id", 1}, {"line", 7}, {"mode", "on"}});
   EXPECT_FALSE(r["ok"].get<bool>()); // one of the two, not both
   EXPECT_EQ(exec.current()->id, 1u);
+}
+
+// A FANUC program's refusal names FANUC's contacts (fanuc-pmc.md 5: RD, RD.NOT, AND, AND.NOT,
+// OR, OR.NOT; RD.STK pushes as RD does), not HNC-8's LD / LDI it once listed for every dialect.
+TEST(Executive, ForceRefusalInTheDialectsWords) {
+  TempProgram p("RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n", ".pmc");
+  ProgramLoader loader("jit", -1);
+  std::string err;
+  auto v = loader.load(p.path(), {}, err);
+  ASSERT_TRUE(v) << err;
+  Exchange ex;
+  Executive exec(ex, ExecutiveOptions{});
+  ASSERT_TRUE(exec.start(v, err)) << err;
+  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  const StmtId wrt = idOnLine(exec, 2);
+  ASSERT_GE(wrt, 0);
+  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"id", wrt}, {"mode", "on"}});
+  EXPECT_FALSE(r["ok"].get<bool>());
+  const std::string e = r.value("error", "");
+  EXPECT_NE(e.find("is 'WRT', not a contact (only RD RD.NOT AND AND.NOT OR OR.NOT"),
+            std::string::npos)
+      << e;
+  EXPECT_EQ(e.find("LDI"), std::string::npos) << e;
 }
 
 // Online change latency (docs/serve.md): after the session's first optimized build, a change
