@@ -23,11 +23,29 @@ std::optional<VerifiedProgram> verifyParsed(const ParsedProgram &parsed, const V
   return prog;
 }
 
+/// Lines end with LF or CRLF. A text whose lines end with a CR alone would reach the front end
+/// as one long line ("LD takes 1 operand, got 3"): say what is wrong instead (false).
+bool lineEndsOk(std::string_view text, Diagnostics &diags) {
+  for (size_t i = 0, line = 1, lineStart = 0; i + 1 < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      lineStart = i + 1;
+    } else if (text[i] == '\r' && text[i + 1] != '\n') {
+      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)}, "LJ0001",
+                  "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
+                  "not with CR alone");
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 std::optional<VerifiedProgram> compileStl(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
+  if (!lineEndsOk(text, diags)) return std::nullopt;
   const int32_t limit = opts.maxStatements.value_or(hnc8::profile().maxStatements);
   ParsedProgram parsed = parseStl(text, std::move(file), diags, symbols, limit);
   // A program cut short at the statement limit is not verified (its end would look missing).
@@ -40,6 +58,7 @@ std::optional<VerifiedProgram> compileStl(std::string_view text, std::string fil
 std::optional<VerifiedProgram> compilePmc(std::string_view text, std::string file,
                                           const VerifyOptions &opts, Diagnostics &diags,
                                           const SymbolTable *symbols) {
+  if (!lineEndsOk(text, diags)) return std::nullopt;
   return verifyParsed(fanuc::parsePmc(text, std::move(file), diags, symbols), opts, diags);
 }
 
@@ -50,6 +69,7 @@ std::optional<VerifiedProgram> compileIl(std::string_view text, std::string file
     diags.error({}, "LJ0002", "an IEC IL program takes no symbol table");
     return std::nullopt;
   }
+  if (!lineEndsOk(text, diags)) return std::nullopt;
   return verifyParsed(iec::parseIl(text, std::move(file), diags), opts, diags);
 }
 
@@ -61,6 +81,7 @@ std::optional<VerifiedProgram> compileClp(std::string_view text, std::string fil
                 "a ClassicLadder project takes no symbol table (its symbols.csv is its own)");
     return std::nullopt;
   }
+  if (!lineEndsOk(text, diags)) return std::nullopt;
   return verifyParsed(classicladder::parseClp(text, std::move(file), diags), opts, diags);
 }
 

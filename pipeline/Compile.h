@@ -1,6 +1,7 @@
 // Program text -> verified program: a dialect's front end parses, the verifier checks
 // (DIALECT.md 6). The one place where parse and verify meet, so no front end includes verify/
 // and every command, the fuzzer, the benchmarks and the tests compile a program the same way.
+// Every compile refuses a text with a line that ends in a CR alone (LJ0001) before its front end.
 #pragma once
 
 #include "ir/Diagnostics.h"

@@ -155,20 +155,7 @@ std::optional<VerifiedProgram> verifyProgram(const ProgramSource &src, int32_t p
                                              std::string &diagnostics, size_t *warnings) {
   if (warnings) *warnings = 0;
   Diagnostics diags(src.path);
-  // Lines end with LF or CRLF. A file whose lines end with a CR alone would reach the front
-  // end as one long line ("LD takes 1 operand, got 3"): say what is wrong instead.
-  for (size_t i = 0, line = 1, lineStart = 0; i + 1 < src.text.size(); ++i) {
-    if (src.text[i] == '\n') {
-      ++line;
-      lineStart = i + 1;
-    } else if (src.text[i] == '\r' && src.text[i + 1] != '\n') {
-      diags.error({static_cast<int32_t>(line), static_cast<int32_t>(i - lineStart + 1)}, "LJ0001",
-                  "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
-                  "not with CR alone");
-      diagnostics = diags.render();
-      return std::nullopt;
-    }
-  }
+  // (A line ending in a CR alone is refused by every dialect's compile: pipeline/Compile.cpp.)
   VerifyOptions opts;
   opts.plc2Nvalue = plc2Nvalue;
   const SymbolTable *symbols = src.dit      ? &src.dit->symbols

@@ -132,3 +132,36 @@ TEST(Robustness, DeepNesting) {
 
 } // namespace
 } // namespace lj
+
+namespace lj {
+namespace {
+
+// A line that ends in a CR alone is refused by every dialect's compile (LJ0001), not only by the
+// commands' file reading: libFuzzer's fuzz_il found `LD <CR><CR>...0` accepted by
+// pipeline::compileIl as one line whose network JSON did not read back.
+TEST(Robustness, BareCarriageReturnRefusedByEveryCompile) {
+  const VerifyOptions opts;
+  struct Case {
+    std::optional<VerifiedProgram> (*compile)(std::string_view, std::string, const VerifyOptions &,
+                                              Diagnostics &, const SymbolTable *);
+    const char *text;
+  };
+  for (const Case &c : {Case{pipeline::compileStl, "LD X0.0\rOUT Y0.0\n"},
+                        Case{pipeline::compilePmc, "RD X0.0\rWRT Y0.0\nEND1\nEND2\nEND\n"},
+                        Case{pipeline::compileIl, "LD \r\r0\nLDR %I0.4\n"},
+                        Case{pipeline::compileClp, "_FILES_CLASSICLADDER\r\n\r_END\n"}}) {
+    Diagnostics d("t");
+    EXPECT_FALSE(c.compile(c.text, "t", opts, d, nullptr)) << c.text;
+    EXPECT_NE(d.render().find(
+                  "a carriage return (CR) without a line feed: lines must end with LF or CRLF, "
+                  "not with CR alone [LJ0001]"),
+              std::string::npos)
+        << d.render();
+  }
+  // CRLF line ends are fine.
+  Diagnostics d("t");
+  EXPECT_TRUE(pipeline::compileStl("LD X0.0\r\nOUT Y0.0\r\n", "t", opts, d, nullptr)) << d.render();
+}
+
+} // namespace
+} // namespace lj
