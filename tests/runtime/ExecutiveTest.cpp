@@ -274,16 +274,26 @@ TEST(Executive, FailedCompileKeepsTheOldProgram) {
   EXPECT_NE(logs.back().find("old program keeps running"), std::string::npos);
 }
 
+/// A program file loaded by `engine` and running under a controller (the force tests).
+struct Running {
+  Running(const std::string &path, const char *engine) : loader(engine, -1) {
+    auto v = loader.load(path, {}, error);
+    if (v && exec.start(v, error))
+      ctl = std::make_unique<Controller>(ex, exec, loader, path, nullptr);
+  }
+  ProgramLoader loader;
+  Exchange ex;
+  Executive exec{ex, ExecutiveOptions{}};
+  std::string error;
+  std::unique_ptr<Controller> ctl; ///< null: it did not load or start (`error` says why)
+};
+
 TEST(Executive, ForcingRecompilesAndRejectsNonContacts) {
   TempProgram p(kCounting); // line 7 = LD X1.0, line 8 = OUT Y1.0
-  ProgramLoader loader("interp", -1);
-  std::string err;
-  auto v = loader.load(p.path(), {}, err);
-  ASSERT_TRUE(v) << err;
-  Exchange ex;
-  Executive exec(ex, ExecutiveOptions{});
-  ASSERT_TRUE(exec.start(v, err)) << err;
-  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  Running run(p.path(), "interp");
+  ASSERT_TRUE(run.ctl) << run.error;
+  Exchange &ex = run.ex;
+  Controller &ctl = *run.ctl;
   nlohmann::json r = ctl.handle({{"cmd", "force"}, {"line", 7}, {"mode", "on"}});
   ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
   waitTicks(ex, 2);
@@ -369,14 +379,10 @@ TEST(Executive, ForceByIdSurvivesOnlineChange) {
 // nothing is recompiled.
 TEST(Executive, ForceOnANonContactIdIsRefused) {
   TempProgram p(kCounting);
-  ProgramLoader loader("jit", -1);
-  std::string err;
-  auto v = loader.load(p.path(), {}, err);
-  ASSERT_TRUE(v) << err;
-  Exchange ex;
-  Executive exec(ex, ExecutiveOptions{});
-  ASSERT_TRUE(exec.start(v, err)) << err;
-  Controller ctl(ex, exec, loader, p.path(), nullptr);
+  Running run(p.path(), "jit");
+  ASSERT_TRUE(run.ctl) << run.error;
+  Executive &exec = run.exec;
+  Controller &ctl = *run.ctl;
   const StmtId out = idOnLine(exec, 8);
   ASSERT_GE(out, 0);
   nlohmann::json r = ctl.handle({{"cmd", "force"}, {"id", out}, {"mode", "off"}});
@@ -404,17 +410,11 @@ TEST(Executive, ForceOnANonContactIdIsRefused) {
 // OR, OR.NOT; RD.STK pushes as RD does), not HNC-8's LD / LDI it once listed for every dialect.
 TEST(Executive, ForceRefusalInTheDialectsWords) {
   TempProgram p("RD X0.0\nWRT Y0.0\nEND1\nEND2\nEND\n", ".pmc");
-  ProgramLoader loader("jit", -1);
-  std::string err;
-  auto v = loader.load(p.path(), {}, err);
-  ASSERT_TRUE(v) << err;
-  Exchange ex;
-  Executive exec(ex, ExecutiveOptions{});
-  ASSERT_TRUE(exec.start(v, err)) << err;
-  Controller ctl(ex, exec, loader, p.path(), nullptr);
-  const StmtId wrt = idOnLine(exec, 2);
+  Running run(p.path(), "jit");
+  ASSERT_TRUE(run.ctl) << run.error;
+  const StmtId wrt = idOnLine(run.exec, 2);
   ASSERT_GE(wrt, 0);
-  nlohmann::json r = ctl.handle({{"cmd", "force"}, {"id", wrt}, {"mode", "on"}});
+  nlohmann::json r = run.ctl->handle({{"cmd", "force"}, {"id", wrt}, {"mode", "on"}});
   EXPECT_FALSE(r["ok"].get<bool>());
   const std::string e = r.value("error", "");
   EXPECT_NE(e.find("is 'WRT', not a contact (only RD RD.NOT AND AND.NOT OR OR.NOT"),
