@@ -16,7 +16,7 @@ namespace {
 bool sameElement(const Element &a, const Element &b) {
   return a.op == b.op && a.operands == b.operands && a.symbols == b.symbols && a.id == b.id &&
          a.before == b.before && a.hasComment == b.hasComment && a.comment == b.comment &&
-         a.role == b.role && a.written == b.written;
+         a.role == b.role && a.written == b.written && a.lead == b.lead;
 }
 
 /// A run of whole source lines holding whole rungs: statements [begin, end) of the program,
@@ -211,6 +211,17 @@ bool programText(const Networks &given, const VerifiedProgram &src, std::string_
   std::unordered_map<StmtId, size_t> posA, posB;
   for (size_t i = 0; i < a.size(); ++i) posA.emplace(a[i].id, i);
   for (size_t i = 0; i < b.size(); ++i) posB.emplace(b[i].id, i);
+  // A rung's lead (COME before it) and its first instruction's written text say the same: a
+  // lead edited in the JSON while the instruction keeps the text it was written with would
+  // print that text, not the lead.
+  for (size_t k = 0; k < a.size(); ++k)
+    if (!a[k].lead.empty() && a[k].role == WrittenRole::First && !a[k].written.empty() &&
+        leadLines(d, a[k].written) != a[k].lead) {
+      error = where[k] + " (id " + std::to_string(a[k].id) +
+              "): the rung's \"lead\" is not the lines its first instruction was written after "
+              "(its \"written\"): add or remove COME / NOP in the program text";
+      return false;
+    }
   // An instruction printed as written (WrittenRole) whose statements the networks changed is
   // printed from its statements: its text is the one they were made from.
   for (size_t i = 0; i < a.size();) {

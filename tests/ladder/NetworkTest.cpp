@@ -5,6 +5,7 @@
 #include "frontends/hnc8/FrontEnd.h"
 #include "ladder/Json.h"
 #include "pipeline/Compile.h"
+#include "verify/Verify.h"
 
 #include <gtest/gtest.h>
 
@@ -84,9 +85,15 @@ TEST(LadderNetwork, CanonicalStlWithoutHints) {
 
 // A lone CR inside a comment (found by fuzz_il: an IL comment over CR-only lines) must not make
 // the JSON unreadable: comment lines hold no line break. Before it: one line per CR-separated
-// piece; trailing: the CR becomes a blank.
+// piece; trailing: the CR becomes a blank. The pipeline's compile refuses such a text (LJ0001,
+// RobustnessTest), so the program is parsed and verified here directly: fromProgram takes any
+// verified program.
 TEST(LadderNetwork, CommentsWithCarriageReturnsStayReadable) {
-  Networks n = fromProgram(verified("; one\rtwo\nLD X0.0 ; a\rb\nOUT Y0.0\n"));
+  Diagnostics d("t.stl");
+  std::optional<VerifiedProgram> p =
+      verify(parseStl("; one\rtwo\nLD X0.0 ; a\rb\nOUT Y0.0\n", "t.stl", d), VerifyOptions{}, d);
+  ASSERT_TRUE(p) << d.render();
+  Networks n = fromProgram(*p);
   ASSERT_EQ(n.parts[0].rungs.size(), 1u);
   EXPECT_EQ(n.parts[0].rungs[0].comment, (std::vector<std::string>{"one", "two"}));
   EXPECT_EQ(n.parts[0].rungs[0].network.children[0].elem.comment, "a b");

@@ -208,6 +208,22 @@ TEST(WrittenText, FanucComeStaysBetweenItsRungs) {
   EXPECT_NE(error.find("has no COME"), std::string::npos) << error;
 }
 
+// A lead edited in the JSON is never dropped silently: one added to a rung is printed (here a
+// second COME, which the front end refuses: COME without COM), one that contradicts the written
+// text its rung's first instruction keeps is refused with the reason.
+TEST(WrittenText, FanucLeadEditsAreNeverDropped) {
+  std::string error;
+  std::string text = comEdited([](Networks &n) { n.parts[0].rungs[2].lead = {"COME"}; }, error);
+  EXPECT_EQ(text, "");
+  EXPECT_NE(error.find("without COM"), std::string::npos) << error;
+  text = comEdited([](Networks &n) { n.parts[0].rungs[3].lead = {"NOP"}; }, error);
+  EXPECT_EQ(text, "");
+  EXPECT_NE(error.find("PLC1 rung 4 element 1 (id 6): the rung's \"lead\" is not the lines its "
+                       "first instruction was written after"),
+            std::string::npos)
+      << error;
+}
+
 TEST(WrittenText, FanucLeadTakesOnlyLinesBetweenRungs) {
   Diagnostics d("t.pmc");
   std::optional<VerifiedProgram> p =
