@@ -102,6 +102,24 @@ const Basic *basicNamed(std::string_view n) {
   return nullptr;
 }
 
+/// The SUB number written `digits` (1 to 4 decimal digits, as the SUB number table has them),
+/// or -1: not such a number.
+int64_t subNumber(std::string_view digits) {
+  if (digits.empty() || digits.size() > 4 ||
+      digits.find_first_not_of("0123456789") != std::string_view::npos)
+    return -1;
+  return std::stoll(std::string(digits));
+}
+
+/// The words of `line` (frontend::splitLine), its comment left out.
+std::vector<frontend::Word> wordsOf(std::string_view line) {
+  std::vector<frontend::Word> w;
+  std::string_view comment;
+  bool hasComment = false;
+  frontend::splitLine(line, w, comment, hasComment);
+  return w;
+}
+
 bool isMarkerName(std::string_view n) {
   return n == "END1" || n == "END2" || n == "END3" || n == "END" || n == "SP" || n == "SPE";
 }
@@ -157,12 +175,7 @@ public:
       return;
     }
     if (!isMarkerName(head)) {
-      int64_t sub = -1;
-      if (head == "SUB" && toks.size() >= 2 && toks[1].text.size() <= 4 &&
-          std::all_of(toks[1].text.begin(), toks[1].text.end(),
-                      [](char c) { return c >= '0' && c <= '9'; }) &&
-          !toks[1].text.empty())
-        sub = std::stoll(std::string(toks[1].text));
+      const int64_t sub = head == "SUB" && toks.size() >= 2 ? subNumber(toks[1].text) : -1;
       if (detail::insideSelect(*this, head, sub, toks[0].loc)) return;
     }
     if (const Basic *b = basicNamed(head)) {
@@ -229,11 +242,7 @@ public:
     if (stmtCount() - first != 1) return false;
     std::string want(f.head.text);
     if (!f.number.text.empty()) {
-      const std::string digits(f.number.text);
-      const char *name =
-          digits.size() <= 4 && digits.find_first_not_of("0123456789") == std::string::npos
-              ? detail::functionalName(std::stoll(digits))
-              : nullptr;
+      const char *name = detail::functionalName(subNumber(f.number.text));
       if (!name) return false;
       want = name;
     }
@@ -716,15 +725,11 @@ bool drawStatements(std::span<const Stmt> stmts, size_t i, DrawnInstr &out);
 /// number table), unless the name is a basic instruction's (SUB 60 AND, SUB 61 OR), which the
 /// text form must keep apart from the bit logic and the drawing keeps as written.
 std::string drawWritten(std::string_view written) {
-  std::vector<frontend::Word> w;
-  std::string_view comment;
-  bool hasComment = false;
-  if (written.find('\n') == std::string_view::npos)
-    frontend::splitLine(written, w, comment, hasComment);
-  if (w.size() < 2 || detail::upper(std::string(w[0].text)) != "SUB" || w[1].text.empty() ||
-      w[1].text.size() > 4 || w[1].text.find_first_not_of("0123456789") != std::string_view::npos)
-    return std::string(written);
-  const char *name = detail::functionalName(std::stoll(std::string(w[1].text)));
+  const std::vector<frontend::Word> w = written.find('\n') == std::string_view::npos
+                                            ? wordsOf(written)
+                                            : std::vector<frontend::Word>{};
+  if (w.size() < 2 || detail::upper(std::string(w[0].text)) != "SUB") return std::string(written);
+  const char *name = detail::functionalName(subNumber(w[1].text));
   if (!name || basicNamed(name) || isMarkerName(name)) return std::string(written);
   std::string out = name;
   for (size_t k = 2; k < w.size(); ++k) out += " " + std::string(w[k].text);
@@ -733,10 +738,7 @@ std::string drawWritten(std::string_view written) {
 
 /// COME and NOP make no statement (reference 6.1): a FANUC ladder draws them between the rungs.
 bool markerLine(std::string_view line) {
-  std::vector<frontend::Word> w;
-  std::string_view comment;
-  bool hasComment = false;
-  frontend::splitLine(line, w, comment, hasComment);
+  const std::vector<frontend::Word> w = wordsOf(line);
   if (w.empty()) return false;
   const std::string head = detail::upper(std::string(w[0].text));
   return head == "COME" || head == "NOP";
