@@ -26,27 +26,29 @@ struct Group {
   int32_t from = 0, to = 0;
 };
 
-/// The groups of `src`: a rung starts a new group where its first line (its comment block's, or
-/// its first statement's) comes after every line of the rungs before it.
+/// The groups of `src`: a rung starts a new group where its first line (its comment block's, a
+/// line that made no statement written before it, or its first statement's) comes after every
+/// line of the rungs before it.
 std::vector<Group> groupsOf(const VerifiedProgram &src, int32_t lineCount, int32_t &tailFrom) {
   const size_t n = src.stmts.size();
-  std::vector<int32_t> commentLine(n + 1, INT32_MAX);
+  // headLine[k]: the first line before statement k that goes with it (INT32_MAX: none).
+  std::vector<int32_t> headLine(n + 1, INT32_MAX);
+  auto goesWith = [&](int32_t stmt, int32_t line, size_t count) {
+    if (stmt >= 0 && static_cast<size_t>(stmt) < count)
+      headLine[static_cast<size_t>(stmt)] = std::min(headLine[static_cast<size_t>(stmt)], line);
+  };
   for (const Comment &c : src.comments)
-    if (!c.trailing && c.stmt >= 0 && static_cast<size_t>(c.stmt) <= n)
-      commentLine[static_cast<size_t>(c.stmt)] =
-          std::min(commentLine[static_cast<size_t>(c.stmt)], c.line);
+    if (!c.trailing) goesWith(c.stmt, c.line, n + 1); // n: the comment block after the last
   // A line that made no statement (FANUC COME) starts the rung whose first instruction it went
   // with: deleting or printing anew the rung before keeps it.
   for (const WrittenInstr &w : src.written)
-    if (w.line > 0 && w.first >= 0 && static_cast<size_t>(w.first) < n)
-      commentLine[static_cast<size_t>(w.first)] =
-          std::min(commentLine[static_cast<size_t>(w.first)], w.line);
+    if (w.line > 0) goesWith(w.first, w.line, n);
   std::vector<Group> out;
   int32_t lastLine = 0; // the last line of any statement so far
   for (const RungRange &r : src.rungs) {
     if (r.range.empty()) continue;
     const auto b = static_cast<size_t>(r.range.begin);
-    const int32_t first = std::min(commentLine[b], src.stmts[b].loc.line);
+    const int32_t first = std::min(headLine[b], src.stmts[b].loc.line);
     if (out.empty() || first > lastLine) {
       if (!out.empty()) out.back().to = first;
       out.push_back({b, b, first, first});
@@ -56,8 +58,7 @@ std::vector<Group> groupsOf(const VerifiedProgram &src, int32_t lineCount, int32
       lastLine = std::max(lastLine, src.stmts[i].loc.line);
   }
   // The tail: the comment block after the last statement, and whatever follows.
-  tailFrom =
-      commentLine[n] != INT32_MAX && commentLine[n] > lastLine ? commentLine[n] : lastLine + 1;
+  tailFrom = headLine[n] != INT32_MAX && headLine[n] > lastLine ? headLine[n] : lastLine + 1;
   tailFrom = std::min(tailFrom, lineCount + 1);
   if (!out.empty()) out.back().to = tailFrom;
   return out;
